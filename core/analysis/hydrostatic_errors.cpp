@@ -1,0 +1,100 @@
+#include "analysis/hydrostatic_errors.hpp"
+
+#include "support/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sphkern {
+
+std::vector<Shell> select_shells(const std::vector<Shell>& all, const std::vector<double>& radii,
+                                 const std::string& lattice_name)
+{
+    std::vector<Shell> chosen;
+    for (double r : radii) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const Shell& s) { return std::abs(s.radius - r) < 1e-6; });
+        if (it == all.end()) {
+            std::ostringstream s;
+            s.precision(10);
+            s << "lattice " << lattice_name << " has no neighbour shell at radius " << r << " d";
+            auto nearest = std::min_element(all.begin(), all.end(), [&](const Shell& a, const Shell& b) {
+                return std::abs(a.radius - r) < std::abs(b.radius - r);
+            });
+            if (nearest != all.end()) s << " (nearest: " << nearest->radius << " d)";
+            fail_input(s.str());
+        }
+        if (std::none_of(chosen.begin(), chosen.end(), [&](const Shell& c) { return c.radius == it->radius; }))
+            chosen.push_back(*it);
+    }
+    std::sort(chosen.begin(), chosen.end(), [](const Shell& a, const Shell& b) { return a.radius < b.radius; });
+    return chosen;
+}
+
+HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
+                                     const Eigen::Vector3d& gravity, double k_max, const EvaluationMode& mode)
+    : kernel_(kernel), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.normalized()), mode_(mode)
+{
+    if (!kernel.supports(dim_))
+        fail_input("kernel " + kernel.name() + " is defined in " + kernel.plugin().dimensions_text() +
+                   "D only, not on the " + std::to_string(dim_) + "D lattice " + lattice.name);
+    double reach = kernel.support() * k_max;
+    if (mode.shell_radii)
+        for (double r : *mode.shell_radii) reach = std::max(reach, r + 1e-6);
+    all_shells_ = lattice_shells(lattice, site, reach);
+    terms_ = mode.shell_radii ? select_shells(all_shells_, *mode.shell_radii, lattice.name) : all_shells_;
+    for (const auto& t : terms_) moment_along_gravity_.push_back(t.moment * gravity_);
+}
+
+std::size_t HydrostaticErrors::active_terms(double k) const
+{
+    if (mode_.continue_past_support) return terms_.size();
+    double reach = kernel_.support() * k;
+    std::size_t n = 0;
+    while (n < terms_.size() && terms_[n].radius <= reach) ++n;
+    return n;
+}
+
+std::vector<double> HydrostaticErrors::breakpoints(double k_min, double k_max) const
+{
+    std::vector<double> ks;
+    if (mode_.continue_past_support) return ks;
+    for (const auto& t : terms_) {
+        double k = t.radius / kernel_.support();
+        if (k > k_min && k < k_max) ks.push_back(k);
+    }
+    return ks;
+}
+
+ErrorValues HydrostaticErrors::at_piece(double k, std::size_t active) const
+{
+    const double kd = std::pow(k, dim_);
+    double density = kernel_.w(0.0, dim_, k);
+    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    for (std::size_t s = 0; s < active; ++s) {
+        const Shell& t = terms_[s];
+        double q = t.radius / k;
+        density += t.count * kernel_.w(q, dim_, k);
+        gradient += (t.radius * kernel_.dw(q, dim_, k)) * moment_along_gravity_[s];
+    }
+    gradient *= -a_p_ / (kd * k);
+    ErrorValues v;
+    v.eps_rho = a_p_ * density / kd - 1.0;
+    double along = gradient.dot(gravity_);
+    v.eps_gradp = along - 1.0;
+    v.lateral = (gradient - along * gravity_).norm();
+    double reach = kernel_.support() * k;
+    for (const auto& s : all_shells_)
+        if (s.radius <= reach) v.neighbours += s.count;
+    return v;
+}
+
+std::pair<double, double> HydrostaticErrors::shell_contribution(const Shell& shell, double k) const
+{
+    const double kd = std::pow(k, dim_);
+    double q = shell.radius / k;
+    return {a_p_ * shell.count * kernel_.w(q, dim_, k) / kd,
+            -a_p_ * shell.radius * kernel_.dw(q, dim_, k) * shell.directional_moment(gravity_) / (kd * k)};
+}
+
+} // namespace sphkern

@@ -1,0 +1,95 @@
+#include "cli/command.hpp"
+
+#include "support/error.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace sphkern::cli {
+
+void add_plugin_option(CLI::App& command, CommonOptions& options)
+{
+    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)");
+}
+
+void add_json_option(CLI::App& command, CommonOptions& options)
+{
+    command.add_flag("--json", options.json, "Print machine-readable JSON on stdout");
+}
+
+void add_set_option(CLI::App& command, std::vector<std::string>& sets)
+{
+    command.add_option("--set", sets, "Kernel parameter NAME=VALUE (repeatable)");
+}
+
+std::map<std::string, double> parse_sets(const std::vector<std::string>& sets)
+{
+    std::map<std::string, double> values;
+    for (const auto& s : sets) {
+        auto eq = s.find('=');
+        char* end = nullptr;
+        double v = eq == std::string::npos ? 0 : std::strtod(s.c_str() + eq + 1, &end);
+        if (eq == std::string::npos || eq == 0 || eq + 1 == s.size() || !end || *end != '\0' || !std::isfinite(v))
+            throw Error(ExitCode::usage, "--set " + s + ": expected NAME=VALUE with a finite number");
+        values[s.substr(0, eq)] = v;
+    }
+    return values;
+}
+
+KernelRegistry discover_kernels(const CommonOptions& options)
+{
+    std::vector<std::filesystem::path> files(options.plugins.begin(), options.plugins.end());
+    return KernelRegistry::discover(files);
+}
+
+Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std::vector<std::string>& sets)
+{
+    return Kernel(registry.find(spec), parse_sets(sets));
+}
+
+void add_evaluation_options(CLI::App& command, EvaluationOptions& options)
+{
+    command.add_option("--ap", options.ap, "Volume coefficient: a name the lattice offers or a positive number")
+        ->capture_default_str();
+    command.add_option("--gravity", options.gravity, "Gravity direction x,y[,z] (default: the lattice's)");
+    command.add_option("--site", options.site, "Motif site of the particle")->capture_default_str();
+    command.add_option("--shells", options.shells,
+                       "Sum over these shell radii only (in d, comma-separated), as the paper does");
+    command.add_flag("--continue-past-support", options.continue_past_support,
+                     "Evaluate the kernel's formula past q = R instead of truncating (needs --shells)");
+}
+
+EvaluationMode evaluation_mode(const EvaluationOptions& options)
+{
+    EvaluationMode mode;
+    mode.continue_past_support = options.continue_past_support;
+    if (!options.shells.empty()) {
+        std::vector<double> radii;
+        std::stringstream list(options.shells);
+        std::string item;
+        while (std::getline(list, item, ',')) {
+            char* end = nullptr;
+            double r = std::strtod(item.c_str(), &end);
+            if (item.empty() || !end || *end != '\0' || !std::isfinite(r) || r <= 0)
+                throw Error(ExitCode::usage, "--shells " + options.shells + ": \"" + item +
+                                                 "\" is not a positive number");
+            radii.push_back(r);
+        }
+        mode.shell_radii = radii;
+    } else if (options.continue_past_support) {
+        throw Error(ExitCode::usage, "--continue-past-support needs an explicit --shells list");
+    }
+    return mode;
+}
+
+Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options)
+{
+    return options.gravity.empty() ? lattice.gravity
+                                   : parse_direction(options.gravity, lattice.dimension, "--gravity");
+}
+
+void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+
+} // namespace sphkern::cli

@@ -1,0 +1,61 @@
+// What every subcommand shares: how it registers, common options, and helpers to
+// turn command-line text into kernels, lattices and numbers.
+#pragma once
+
+#include "analysis/hydrostatic_errors.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "lattices/lattice.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sphkern::cli {
+
+// A subcommand registers its options and returns the action to run if chosen.
+using Action = std::function<int()>;
+
+struct CommonOptions {
+    std::vector<std::string> plugins; // --plugin FILE, repeatable
+    bool json = false;
+};
+
+void add_plugin_option(CLI::App& command, CommonOptions& options);
+void add_json_option(CLI::App& command, CommonOptions& options);
+
+// --set NAME=VALUE pairs for kernel parameters.
+void add_set_option(CLI::App& command, std::vector<std::string>& sets);
+std::map<std::string, double> parse_sets(const std::vector<std::string>& sets);
+
+KernelRegistry discover_kernels(const CommonOptions& options);
+Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std::vector<std::string>& sets);
+
+// The evaluation options shared by eps, roots and the commands after them.
+struct EvaluationOptions {
+    std::string ap = "voronoi";
+    std::string gravity;  // empty: the lattice's
+    int site = 0;
+    std::string shells;   // explicit radii "1,1.732,2"
+    bool continue_past_support = false;
+};
+void add_evaluation_options(CLI::App& command, EvaluationOptions& options);
+EvaluationMode evaluation_mode(const EvaluationOptions& options);
+Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
+
+// Prints `document` to stdout, pretty and complete.
+void print_json(const nlohmann::json& document);
+
+Action add_kernels_command(CLI::App& app);
+Action add_check_command(CLI::App& app);
+Action add_lattices_command(CLI::App& app);
+Action add_shells_command(CLI::App& app);
+Action add_eps_command(CLI::App& app);
+Action add_roots_command(CLI::App& app);
+Action add_run_command(CLI::App& app);
+
+} // namespace sphkern::cli

@@ -1,0 +1,53 @@
+// `sphkern eps`: both bulk errors of one kernel on one lattice at one k.
+#include "cli/command.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+namespace sphkern::cli {
+
+Action add_eps_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("eps", "eps_rho and eps_gradP of a kernel on a lattice at one k");
+    struct Options : CommonOptions {
+        std::string kernel, lattice;
+        double k = 0;
+        std::vector<std::string> sets;
+        EvaluationOptions evaluation;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
+    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
+    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
+    add_evaluation_options(*command, options->evaluation);
+    add_set_option(*command, options->sets);
+    add_plugin_option(*command, *options);
+    add_json_option(*command, *options);
+    return [options] {
+        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
+            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100]", options->k));
+        auto lattice = load_lattice(options->lattice);
+        auto registry = discover_kernels(*options);
+        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        double a_p = lattice.volume_coefficient(options->evaluation.ap);
+        HydrostaticErrors errors(kernel, lattice, options->evaluation.site, a_p, gravity_of(lattice, options->evaluation),
+                                 options->k, evaluation_mode(options->evaluation));
+        auto v = errors.at(options->k);
+        if (options->json) {
+            print_json({{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", options->k}, {"a_p", a_p},
+                        {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp}, {"lateral", v.lateral},
+                        {"neighbours", v.neighbours}, {"support_radius", kernel.support() * options->k}});
+            return 0;
+        }
+        fmt::print("{} on {} at k = {}, a_p = {:.10g}\n", kernel.label(), lattice.name, options->k, a_p);
+        fmt::print("  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
+                   v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, kernel.support() * options->k);
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

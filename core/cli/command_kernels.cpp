@@ -1,0 +1,44 @@
+// `sphkern kernels`: the kernels sphkern can find, with their metadata.
+#include "cli/command.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace sphkern::cli {
+
+Action add_kernels_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("kernels", "List the kernel plugins found");
+    auto options = std::make_shared<CommonOptions>();
+    add_plugin_option(*command, *options);
+    add_json_option(*command, *options);
+    return [options] {
+        auto registry = discover_kernels(*options);
+        if (options->json) {
+            nlohmann::json list = nlohmann::json::array();
+            for (const auto& p : registry.plugins()) {
+                nlohmann::json parameters = nlohmann::json::array();
+                for (const auto& q : p->parameters)
+                    parameters.push_back({{"name", q.name}, {"description", q.description},
+                                          {"default", q.default_value}, {"min", q.min_value}, {"max", q.max_value}});
+                list.push_back({{"name", p->name}, {"title", p->title}, {"support", p->support},
+                                {"dimensions", p->dimensions}, {"parameters", parameters},
+                                {"breakpoints", p->breakpoints}, {"separate_derivative", p->separate_derivative},
+                                {"reference", p->reference}, {"file", p->file.string()}});
+            }
+            print_json(list);
+            return 0;
+        }
+        fmt::print("{:<20} {:>4} {:<6} {:<12} {}\n", "name", "R", "dims", "parameters", "reference / file");
+        for (const auto& p : registry.plugins()) {
+            std::string params;
+            for (const auto& q : p->parameters) params += (params.empty() ? "" : ",") + q.name;
+            fmt::print("{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
+                       params.empty() ? "-" : params, p->reference, "", p->file.string());
+        }
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

@@ -1,0 +1,45 @@
+// `sphkern lattices`: the shipped lattices, their volume coefficients and gravity.
+#include "cli/command.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace sphkern::cli {
+
+nlohmann::json lattice_summary(const Lattice& l)
+{
+    nlohmann::json coefficients = nlohmann::json::object();
+    for (const auto& c : l.volume_coefficients) coefficients[c.name] = c.value;
+    std::vector<double> gravity(l.gravity.data(), l.gravity.data() + l.dimension);
+    return {{"name", l.name},   {"title", l.title},
+            {"dimension", l.dimension}, {"sites", l.sites()},
+            {"volume_coefficients", coefficients}, {"gravity", gravity}, {"file", l.file}};
+}
+
+Action add_lattices_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("lattices", "List the shipped lattices");
+    auto options = std::make_shared<CommonOptions>();
+    add_json_option(*command, *options);
+    return [options] {
+        nlohmann::json list = nlohmann::json::array();
+        for (const auto& name : shipped_lattice_names()) list.push_back(lattice_summary(load_lattice(name)));
+        if (options->json) {
+            print_json(list);
+            return 0;
+        }
+        fmt::print("{:<12} {:>3} {:>5}  {:<44} {}\n", "name", "D", "sites", "a_p variants", "gravity");
+        for (const auto& l : list) {
+            std::string coefficients, gravity;
+            for (const auto& [name, value] : l["volume_coefficients"].items())
+                coefficients += fmt::format("{}{}={:.6g}", coefficients.empty() ? "" : " ", name, value.get<double>());
+            for (double g : l["gravity"]) gravity += fmt::format("{}{:.4g}", gravity.empty() ? "" : ",", g);
+            fmt::print("{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(), l["dimension"].get<int>(),
+                       l["sites"].get<int>(), coefficients, gravity);
+        }
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

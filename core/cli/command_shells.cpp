@@ -1,0 +1,56 @@
+// `sphkern shells`: the neighbour shells of a lattice site.
+#include "cli/command.hpp"
+
+#include "lattices/shells.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace sphkern::cli {
+
+Action add_shells_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("shells", "Neighbour shells of a lattice site up to a radius");
+    struct Options : CommonOptions {
+        std::string lattice;
+        double radius = 0;
+        int site = 0;
+        std::string gravity;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
+    command->add_option("--radius", options->radius, "Largest radius, in units of d")->required();
+    command->add_option("--site", options->site, "Motif site")->capture_default_str();
+    command->add_option("--gravity", options->gravity, "Direction for the moments (default: the lattice's)");
+    add_json_option(*command, *options);
+    return [options] {
+        auto lattice = load_lattice(options->lattice);
+        Eigen::Vector3d e = options->gravity.empty()
+                                ? lattice.gravity
+                                : parse_direction(options->gravity, lattice.dimension, "--gravity");
+        auto shells = lattice_shells(lattice, options->site, options->radius);
+        if (options->json) {
+            nlohmann::json list = nlohmann::json::array();
+            int total = 0;
+            for (const auto& s : shells) {
+                total += s.count;
+                list.push_back({{"radius", s.radius}, {"radius_squared", s.radius * s.radius}, {"count", s.count},
+                                {"cumulative", total}, {"gravity_moment", s.directional_moment(e)}});
+            }
+            print_json({{"lattice", lattice.name}, {"site", options->site}, {"radius", options->radius},
+                        {"shells", list}});
+            return 0;
+        }
+        fmt::print("{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total", "sum (e.r^)^2");
+        int total = 0;
+        for (const auto& s : shells) {
+            total += s.count;
+            fmt::print("{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s.radius, s.radius * s.radius, s.count, total,
+                       s.directional_moment(e));
+        }
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

@@ -1,0 +1,68 @@
+// sphkern: accuracy of SPH smoothing kernels on regular particle lattices.
+#include "cli/command.hpp"
+#include "support/error.hpp"
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+
+using namespace sphkern;
+
+int main(int argc, char** argv)
+{
+    // Logs go to stderr; results to stdout or files.
+    auto logger = spdlog::stderr_color_mt("sphkern");
+    logger->set_pattern("sphkern: %^%l%$: %v");
+    spdlog::set_default_logger(logger);
+    spdlog::set_level(spdlog::level::info);
+
+    CLI::App app{"sphkern " SPHKERN_VERSION ": accuracy of SPH smoothing kernels on regular particle lattices"};
+    app.set_version_flag("--version", "sphkern " SPHKERN_VERSION);
+    app.require_subcommand(1);
+    std::string log_level = "info";
+    app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
+
+    std::vector<std::pair<CLI::App*, cli::Action>> commands;
+    auto add = [&](cli::Action (*add_command)(CLI::App&)) {
+        std::size_t before = app.get_subcommands({}).size();
+        cli::Action action = add_command(app);
+        commands.emplace_back(app.get_subcommands({})[before], std::move(action));
+    };
+    add(cli::add_run_command);
+    add(cli::add_kernels_command);
+    add(cli::add_check_command);
+    add(cli::add_lattices_command);
+    add(cli::add_shells_command);
+    add(cli::add_eps_command);
+    add(cli::add_roots_command);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "sphkern: error: " << e.what() << " (see sphkern --help)" << std::endl;
+        return static_cast<int>(ExitCode::usage);
+    }
+    spdlog::set_level(spdlog::level::from_str(log_level));
+
+    try {
+        for (auto& [command, action] : commands)
+            if (command->parsed()) return action();
+    } catch (const Error& e) {
+        std::cerr << "sphkern: error: " << e.what() << std::endl;
+        return static_cast<int>(e.code());
+    } catch (const std::bad_alloc&) {
+        std::cerr << "sphkern: error: out of memory" << std::endl;
+        return static_cast<int>(ExitCode::input);
+    } catch (const std::exception& e) {
+        std::cerr << "sphkern: error: " << e.what() << std::endl;
+        return static_cast<int>(ExitCode::input);
+    }
+    return 0;
+}

@@ -1,0 +1,49 @@
+#include "kernels/kernel.hpp"
+
+#include "support/error.hpp"
+#include "support/json_input.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sphkern {
+
+Kernel::Kernel(std::shared_ptr<const KernelPlugin> plugin, const std::map<std::string, double>& values)
+    : plugin_(std::move(plugin)), d_(plugin_->descriptor)
+{
+    std::vector<std::string> names;
+    for (const auto& p : plugin_->parameters) {
+        names.push_back(p.name);
+        values_.push_back(p.default_value);
+    }
+    for (const auto& [name, value] : values) {
+        std::size_t i = 0;
+        while (i < names.size() && names[i] != name) ++i;
+        if (i == names.size()) {
+            std::string message = "kernel " + plugin_->name + " has no parameter \"" + name + "\"";
+            if (auto s = closest_match(name, names)) message += " (did you mean \"" + *s + "\"?)";
+            fail_input(message + (names.empty() ? "; it has no parameters" : ""));
+        }
+        const auto& p = plugin_->parameters[i];
+        if (!std::isfinite(value) || value < p.min_value || value > p.max_value) {
+            std::ostringstream s;
+            s << "kernel " << plugin_->name << ": parameter " << name << " = " << value
+              << " is out of range, expected a value in [" << p.min_value << ", " << p.max_value << "]";
+            fail_input(s.str());
+        }
+        values_[i] = value;
+    }
+}
+
+std::string Kernel::label() const
+{
+    if (values_.empty()) return name();
+    std::ostringstream s;
+    s << name() << "(";
+    for (std::size_t i = 0; i < values_.size(); ++i)
+        s << (i ? ", " : "") << plugin_->parameters[i].name << "=" << values_[i];
+    s << ")";
+    return s.str();
+}
+
+} // namespace sphkern

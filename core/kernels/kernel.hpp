@@ -1,0 +1,51 @@
+// A kernel ready to evaluate: a plugin plus values for its parameters. Evaluates the
+// plugin's formula as written; truncation at the support R is the caller's choice.
+#pragma once
+
+#include "kernels/kernel_plugin.hpp"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+class Kernel {
+public:
+    // `values` overrides parameter defaults by name; unknown names and values out of
+    // the declared range throw Error(input).
+    explicit Kernel(std::shared_ptr<const KernelPlugin> plugin, const std::map<std::string, double>& values = {});
+
+    const KernelPlugin& plugin() const { return *plugin_; }
+    const std::string& name() const { return plugin_->name; }
+    double support() const { return plugin_->support; }
+    bool supports(int dim) const { return plugin_->supports(dim); }
+    const std::vector<double>& parameter_values() const { return values_; }
+
+    // h^D W(q) and h^(D+1) dW/dr (q), the plugin's formulas for any q >= 0.
+    double w(double q, int dim, double k) const { return d_->w(q, dim, k, values_.data()); }
+    double dw(double q, int dim, double k) const { return d_->dw(q, dim, k, values_.data()); }
+    void w_batch(const double* q, double* out, std::size_t n, int dim, double k) const
+    {
+        d_->w_batch(q, out, n, dim, k, values_.data());
+    }
+    void dw_batch(const double* q, double* out, std::size_t n, int dim, double k) const
+    {
+        d_->dw_batch(q, out, n, dim, k, values_.data());
+    }
+
+    // Truncated at R: zero for q > R.
+    double w_truncated(double q, int dim, double k) const { return q > support() ? 0.0 : w(q, dim, k); }
+    double dw_truncated(double q, int dim, double k) const { return q > support() ? 0.0 : dw(q, dim, k); }
+
+    // "name" or "name(a=0.3)" for reports.
+    std::string label() const;
+
+private:
+    std::shared_ptr<const KernelPlugin> plugin_;
+    const sphkern_kernel_descriptor* d_;
+    std::vector<double> values_;
+};
+
+} // namespace sphkern

@@ -1,0 +1,169 @@
+#include "kernels/kernel_plugin.hpp"
+
+#include "support/error.hpp"
+#include "support/isolated_call.hpp"
+
+#include <boost/dll/shared_library.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace sphkern {
+
+namespace {
+
+bool valid_identifier(const char* s)
+{
+    if (!s || !*s) return false;
+    std::size_t n = 0;
+    for (; s[n] && n <= 64; ++n) {
+        char c = s[n];
+        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+    }
+    return n <= 64;
+}
+
+bool valid_text(const char* s)
+{
+    if (!s) return false;
+    for (std::size_t n = 0; s[n]; ++n)
+        if (n > 4096) return false;
+    return true;
+}
+
+std::shared_ptr<boost::dll::shared_library> open_library(const std::filesystem::path& file)
+{
+    try {
+        return std::make_shared<boost::dll::shared_library>(
+            boost::dll::fs::path(file.string()),
+            boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
+    } catch (const std::exception& e) {
+        throw Error(ExitCode::plugin, file.string() + ": not a loadable shared library: " + e.what());
+    }
+}
+
+const sphkern_kernel_descriptor* call_entry(const boost::dll::shared_library& library, const std::string& file)
+{
+    if (!library.has(SPHKERN_ENTRY_NAME))
+        throw Error(ExitCode::plugin, file + ": not a sphkern kernel plugin (no exported " SPHKERN_ENTRY_NAME ")");
+    auto entry = library.get<const sphkern_kernel_descriptor*()>(SPHKERN_ENTRY_NAME);
+    const sphkern_kernel_descriptor* descriptor = entry();
+    if (!descriptor) throw Error(ExitCode::plugin, file + ": " SPHKERN_ENTRY_NAME " returned no descriptor");
+    return descriptor;
+}
+
+} // namespace
+
+bool KernelPlugin::supports(int dim) const
+{
+    for (int d : dimensions)
+        if (d == dim) return true;
+    return false;
+}
+
+std::string KernelPlugin::dimensions_text() const
+{
+    std::string s;
+    for (int d : dimensions) s += (s.empty() ? "" : ",") + std::to_string(d);
+    return s;
+}
+
+std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
+{
+    if (d->abi_version != SPHKERN_KERNEL_ABI_VERSION)
+        return "ABI version " + std::to_string(d->abi_version) + ", this sphkern needs version " +
+               std::to_string(SPHKERN_KERNEL_ABI_VERSION) + " (rebuild the plugin against this sphkern)";
+    if (!valid_identifier(d->name)) return "name must be 1 to 64 characters of [a-z0-9_]";
+    if (!valid_text(d->title) || !valid_text(d->reference)) return "title and reference must be C strings";
+    if (!std::isfinite(d->support) || d->support <= 0 || d->support > 100)
+        return "support R must be a finite number in (0, 100]";
+    if (d->dimensions == 0 || (d->dimensions & ~(SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3))) != 0)
+        return "dimensions must be a non-empty subset of 1, 2, 3";
+    if (d->parameter_count > 16 || (d->parameter_count > 0 && !d->parameters))
+        return "at most 16 parameters, with a parameter array";
+    for (uint32_t i = 0; i < d->parameter_count; ++i) {
+        const auto& p = d->parameters[i];
+        if (!valid_identifier(p.name) || !valid_text(p.description))
+            return "parameter " + std::to_string(i) + ": name must be [a-z0-9_]+ and description a C string";
+        if (!std::isfinite(p.min_value) || !std::isfinite(p.max_value) || !std::isfinite(p.default_value) ||
+            p.min_value > p.default_value || p.default_value > p.max_value)
+            return std::string("parameter ") + p.name + ": needs finite min <= default <= max";
+    }
+    if (d->breakpoint_count > 64 || (d->breakpoint_count > 0 && !d->breakpoints))
+        return "at most 64 breakpoints, with a breakpoint array";
+    for (uint32_t i = 0; i < d->breakpoint_count; ++i) {
+        double b = d->breakpoints[i];
+        if (!std::isfinite(b) || b <= 0 || b >= d->support || (i > 0 && b <= d->breakpoints[i - 1]))
+            return "breakpoints must increase strictly inside (0, R)";
+    }
+    if (!d->w || !d->dw || !d->w_batch || !d->dw_batch) return "a kernel function pointer is null";
+
+    std::vector<double> params;
+    for (uint32_t i = 0; i < d->parameter_count; ++i) params.push_back(d->parameters[i].default_value);
+    const int steps = 60;
+    std::vector<double> qs(steps + 1), batch_w(steps + 1), batch_dw(steps + 1);
+    for (int i = 0; i <= steps; ++i) qs[i] = 1.5 * d->support * i / steps;
+    for (int dim = 1; dim <= 3; ++dim) {
+        if (!(d->dimensions & SPHKERN_DIM(dim))) continue;
+        for (double k : {0.9, 1.0, 1.1, 1.25}) {
+            d->w_batch(qs.data(), batch_w.data(), qs.size(), dim, k, params.data());
+            d->dw_batch(qs.data(), batch_dw.data(), qs.size(), dim, k, params.data());
+            for (int i = 0; i <= steps; ++i) {
+                double w = d->w(qs[i], dim, k, params.data()), dw = d->dw(qs[i], dim, k, params.data());
+                std::ostringstream at;
+                at << " at q = " << qs[i] << ", D = " << dim << ", k = " << k;
+                if (!std::isfinite(w) || !std::isfinite(dw)) return "non-finite value" + at.str();
+                if (std::abs(batch_w[i] - w) > 1e-12 * (1 + std::abs(w)) ||
+                    std::abs(batch_dw[i] - dw) > 1e-12 * (1 + std::abs(dw)))
+                    return "batch and scalar functions disagree" + at.str();
+            }
+        }
+    }
+    return {};
+}
+
+std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::path& file)
+{
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw Error(ExitCode::plugin, name + ": no such plugin file");
+    if (std::filesystem::is_directory(file, ec))
+        throw Error(ExitCode::plugin, name + ": is a folder, expected a plugin file");
+
+    auto verdict = run_isolated(
+        [&]() -> std::string {
+            try {
+                auto library = open_library(file);
+                auto reason = validate_kernel_descriptor(call_entry(*library, name));
+                return reason.empty() ? "" : name + ": invalid kernel descriptor: " + reason;
+            } catch (const Error& e) {
+                return e.what(); // already names the file
+            }
+        },
+        plugin_probe_timeout);
+    if (auto* failure = std::get_if<IsolatedFailure>(&verdict))
+        throw Error(ExitCode::plugin, name + ": plugin " + failure->reason);
+    if (const auto& message = std::get<std::string>(verdict); !message.empty())
+        throw Error(ExitCode::plugin, message);
+
+    auto plugin = std::make_shared<KernelPlugin>();
+    plugin->file = std::filesystem::absolute(file);
+    plugin->library = open_library(file);
+    const auto* d = call_entry(*plugin->library, name);
+    plugin->descriptor = d;
+    plugin->name = d->name;
+    plugin->title = d->title;
+    plugin->reference = d->reference;
+    plugin->support = d->support;
+    for (int dim = 1; dim <= 3; ++dim)
+        if (d->dimensions & SPHKERN_DIM(dim)) plugin->dimensions.push_back(dim);
+    for (uint32_t i = 0; i < d->parameter_count; ++i) {
+        const auto& p = d->parameters[i];
+        plugin->parameters.push_back({p.name, p.description, p.default_value, p.min_value, p.max_value});
+    }
+    plugin->breakpoints.assign(d->breakpoints, d->breakpoints + d->breakpoint_count);
+    plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;
+    return plugin;
+}
+
+} // namespace sphkern

@@ -1,0 +1,109 @@
+#include "kernels/kernel_registry.hpp"
+
+#include "support/error.hpp"
+#include "support/install_paths.hpp"
+#include "support/json_input.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+namespace sphkern {
+namespace fs = std::filesystem;
+
+bool looks_like_path(const std::string& spec, const std::string& extension)
+{
+    return spec.find('/') != std::string::npos ||
+           (spec.size() > extension.size() && spec.compare(spec.size() - extension.size(), extension.size(), extension) == 0);
+}
+
+std::vector<fs::path> kernel_plugin_folders()
+{
+    std::vector<fs::path> candidates = {executable_folder() / "plugins",
+                                        executable_folder().parent_path() / "lib" / "sphkern" / "plugins"};
+    if (const char* env = std::getenv("SPHKERN_PLUGIN_PATH")) {
+        std::stringstream list(env);
+        std::string folder;
+        while (std::getline(list, folder, ':'))
+            if (!folder.empty()) candidates.emplace_back(folder);
+    }
+    std::vector<fs::path> folders;
+    std::error_code ec;
+    for (const auto& c : candidates) {
+        if (!fs::is_directory(c, ec)) continue;
+        auto canonical = fs::weakly_canonical(c, ec);
+        if (std::find(folders.begin(), folders.end(), canonical) == folders.end()) folders.push_back(canonical);
+    }
+    return folders;
+}
+
+void KernelRegistry::add(std::shared_ptr<const KernelPlugin> plugin)
+{
+    for (const auto& p : plugins_) {
+        if (p->name != plugin->name) continue;
+        throw Error(ExitCode::plugin, "two plugins are named \"" + plugin->name + "\": " + p->file.string() + " and " +
+                                          plugin->file.string());
+    }
+    plugins_.push_back(std::move(plugin));
+}
+
+KernelRegistry KernelRegistry::from_files(const std::vector<fs::path>& files)
+{
+    KernelRegistry registry;
+    for (const auto& f : files) registry.add(load_kernel_plugin(f));
+    return registry;
+}
+
+KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_files)
+{
+    KernelRegistry registry;
+    std::vector<fs::path> seen;
+    std::error_code ec;
+    for (const auto& folder : kernel_plugin_folders()) {
+        std::vector<fs::path> files;
+        for (const auto& entry : fs::directory_iterator(folder, ec))
+            if (entry.path().extension() == ".so" && !entry.is_directory(ec)) files.push_back(entry.path());
+        std::sort(files.begin(), files.end());
+        for (const auto& file : files) {
+            try {
+                registry.add(load_kernel_plugin(file));
+                seen.push_back(fs::weakly_canonical(file, ec));
+            } catch (const Error& e) {
+                if (e.code() != ExitCode::plugin || std::string(e.what()).rfind("two plugins", 0) == 0) throw;
+                spdlog::warn("skipping {}", e.what());
+            }
+        }
+    }
+    for (const auto& file : explicit_files) {
+        if (std::find(seen.begin(), seen.end(), fs::weakly_canonical(file, ec)) != seen.end()) continue;
+        registry.add(load_kernel_plugin(file));
+    }
+    return registry;
+}
+
+std::shared_ptr<const KernelPlugin> KernelRegistry::find(const std::string& spec)
+{
+    if (looks_like_path(spec, ".so")) {
+        std::error_code ec;
+        auto canonical = fs::weakly_canonical(spec, ec);
+        for (const auto& p : plugins_)
+            if (p->file == canonical) return p;
+        auto plugin = load_kernel_plugin(spec);
+        add(plugin);
+        return plugin;
+    }
+    std::vector<std::string> names;
+    for (const auto& p : plugins_) {
+        if (p->name == spec) return p;
+        names.push_back(p->name);
+    }
+    std::string message = "unknown kernel \"" + spec + "\"";
+    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    fail_input(message + "; known kernels: " + (list.empty() ? "none found (no plugin folder)" : list));
+}
+
+} // namespace sphkern

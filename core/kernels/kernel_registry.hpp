@@ -1,0 +1,39 @@
+// Finds kernel plugins: the build tree's and the install prefix's plugin folders,
+// SPHKERN_PLUGIN_PATH, and files named on the command line.
+#pragma once
+
+#include "kernels/kernel_plugin.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+// The folders searched, in order, that exist.
+std::vector<std::filesystem::path> kernel_plugin_folders();
+
+class KernelRegistry {
+public:
+    // Loads every plugin in the plugin folders (a broken one there is skipped with a
+    // warning) and every file in `explicit_files` (a broken one is an error). Two
+    // plugins with one name are an error naming both files.
+    static KernelRegistry discover(const std::vector<std::filesystem::path>& explicit_files);
+
+    // Loads only the given files (as `check --plugin` does).
+    static KernelRegistry from_files(const std::vector<std::filesystem::path>& files);
+
+    const std::vector<std::shared_ptr<const KernelPlugin>>& plugins() const { return plugins_; }
+
+    // A kernel by name, or by plugin file path (a spec containing '/' or ending in .so).
+    std::shared_ptr<const KernelPlugin> find(const std::string& spec);
+
+private:
+    void add(std::shared_ptr<const KernelPlugin> plugin);
+    std::vector<std::shared_ptr<const KernelPlugin>> plugins_;
+};
+
+bool looks_like_path(const std::string& spec, const std::string& extension);
+
+} // namespace sphkern

@@ -1,0 +1,199 @@
+#include "lattices/lattice.hpp"
+
+#include "kernels/kernel_registry.hpp"
+#include "lattices/lattice_points.hpp"
+#include "support/error.hpp"
+#include "support/install_paths.hpp"
+#include "support/json_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace sphkern {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double max_coordinate = 1e6;
+
+Eigen::Vector3d read_vector(const JsonNode& node, int dimension, double limit)
+{
+    if (!node.is_array()) node.error("expected an array of " + std::to_string(dimension) + " numbers, got " +
+                                     json_type_name(node.value()));
+    if (node.size() != static_cast<std::size_t>(dimension))
+        node.error("expected " + std::to_string(dimension) + " components (dimension is " +
+                   std::to_string(dimension) + "), got " + std::to_string(node.size()));
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    for (int i = 0; i < dimension; ++i) v[i] = node[static_cast<std::size_t>(i)].number_in(-limit, limit);
+    return v;
+}
+
+// The smallest distance between two lattice points, in the file's units.
+double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif)
+{
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < dimension; ++i) shortest = std::min(shortest, basis.col(i).norm());
+    double nearest = shortest; // a primitive vector is itself a lattice translation
+    for (int site = 0; site < static_cast<int>(motif.size()); ++site)
+        for_each_lattice_point(basis / shortest, dimension, motif, site, 1.0,
+                               [&](const Eigen::Vector3d& x) { nearest = std::min(nearest, x.norm() * shortest); });
+    return nearest;
+}
+
+} // namespace
+
+double Lattice::volume_per_site() const { return std::abs(basis.determinant()) / sites(); }
+
+double Lattice::volume_coefficient(const std::string& spec) const
+{
+    for (const auto& c : volume_coefficients)
+        if (c.name == spec) return c.value;
+    char* end = nullptr;
+    double value = std::strtod(spec.c_str(), &end);
+    if (!spec.empty() && end && *end == '\0') {
+        if (!std::isfinite(value) || value <= 0 || value > 1e6)
+            fail_input("volume coefficient a_p = " + spec + " is not allowed, expected a positive number up to 1e6");
+        return value;
+    }
+    std::vector<std::string> names;
+    std::string list;
+    for (const auto& c : volume_coefficients) {
+        names.push_back(c.name);
+        list += (list.empty() ? "" : ", ") + c.name;
+    }
+    std::string message = "lattice " + name + " has no volume coefficient \"" + spec + "\"";
+    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    fail_input(message + "; expected one of " + list + " or a positive number");
+}
+
+Lattice read_lattice(const fs::path& file)
+{
+    auto document = read_json_file(file);
+    JsonNode root(document, file.string());
+    root.expect_object();
+    root.expect_keys({"$schema", "name", "title", "dimension", "basis", "motif", "volume_coefficients", "gravity"});
+
+    Lattice lattice;
+    lattice.file = file.string();
+    auto name_node = root.at("name");
+    lattice.name = name_node.string();
+    if (lattice.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
+        lattice.name.size() > 64)
+        name_node.error("expected a name of up to 64 characters of [a-z0-9_-]");
+    lattice.title = root.find("title") ? root.at("title").string() : lattice.name;
+    lattice.dimension = static_cast<int>(root.at("dimension").integer_in(2, 3));
+    const int dim = lattice.dimension;
+
+    auto basis_node = root.at("basis");
+    basis_node.expect_array(static_cast<std::size_t>(dim), static_cast<std::size_t>(dim));
+    lattice.basis = Eigen::Matrix3d::Identity();
+    for (int i = 0; i < dim; ++i)
+        lattice.basis.col(i) = read_vector(basis_node[static_cast<std::size_t>(i)], dim, max_coordinate);
+    double lengths = 1;
+    for (int i = 0; i < dim; ++i) lengths *= lattice.basis.col(i).norm();
+    if (lengths == 0 || std::abs(lattice.basis.determinant()) < 1e-9 * lengths)
+        basis_node.error(dim == 2 ? "degenerate basis: the vectors are collinear or zero, expected two independent vectors"
+                                  : "degenerate basis: the vectors are coplanar or zero, expected three independent vectors");
+
+    auto motif_node = root.at("motif");
+    motif_node.expect_array(1, 1000);
+    for (std::size_t i = 0; i < motif_node.size(); ++i) {
+        Eigen::Vector3d f = read_vector(motif_node[i], dim, 1e3);
+        for (int c = 0; c < dim; ++c) {
+            f[c] -= std::floor(f[c]);
+            if (f[c] > 1 - 1e-12) f[c] = 0; // wrap 0.9999999999999 to 0
+        }
+        for (std::size_t j = 0; j < lattice.motif.size(); ++j) {
+            Eigen::Vector3d delta = f - lattice.motif[j];
+            for (int c = 0; c < dim; ++c) delta[c] -= std::round(delta[c]);
+            if ((lattice.basis * delta).norm() < 1e-6 * std::pow(std::abs(lattice.basis.determinant()), 1.0 / dim))
+                motif_node[i].error("duplicate motif site: the same position as /motif/" + std::to_string(j));
+        }
+        lattice.motif.push_back(f);
+    }
+
+    // Rescale so that the nearest-neighbour distance is 1.
+    double d = nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
+    if (!(d > 1e-6 * lattice.basis.colwise().norm().maxCoeff()))
+        basis_node.error("absurd geometry: the nearest-neighbour distance is below 1e-6 of the cell size");
+    lattice.basis /= d;
+    if (dim == 2) lattice.basis.col(2) = Eigen::Vector3d::UnitZ();
+
+    lattice.gravity = dim == 2 ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, -1);
+    if (auto g = root.find("gravity")) {
+        Eigen::Vector3d v = read_vector(*g, dim, max_coordinate);
+        if (v.norm() < 1e-12) g->error("gravity has zero length, expected a non-zero direction vector");
+        lattice.gravity = v.normalized();
+    }
+
+    lattice.volume_coefficients = {
+        {"voronoi", lattice.volume_per_site(), "computed"},
+        {"ball", dim == 2 ? pi / 4 : pi / 6, "computed"},
+        {"cube", 1.0, "computed"},
+    };
+    if (auto extra = root.find("volume_coefficients")) {
+        extra->expect_object();
+        for (const auto& [key, unused] : extra->value().items()) {
+            auto value_node = extra->at(key);
+            if (key.empty() || key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+                value_node.error("expected a name of [a-z0-9_]");
+            for (const auto& c : lattice.volume_coefficients)
+                if (c.name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
+            double v = value_node.number();
+            if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
+            lattice.volume_coefficients.push_back({key, v, file.string()});
+        }
+    }
+    return lattice;
+}
+
+std::vector<std::string> shipped_lattice_names()
+{
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(data_folder("lattices"), ec)) {
+        auto p = entry.path();
+        if (p.extension() == ".json" && p.filename().string().find(".schema.") == std::string::npos)
+            names.push_back(p.stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+Lattice load_lattice(const std::string& spec)
+{
+    if (looks_like_path(spec, ".json")) return read_lattice(spec);
+    auto names = shipped_lattice_names();
+    if (std::find(names.begin(), names.end(), spec) != names.end())
+        return read_lattice(data_folder("lattices") / (spec + ".json"));
+    std::string message = "unknown lattice \"" + spec + "\"";
+    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    fail_input(message + "; shipped lattices: " + list + ", or give a path to a lattice file");
+}
+
+Eigen::Vector3d parse_direction(const std::string& text, int dimension, const std::string& what)
+{
+    std::vector<double> parts;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        char* end = nullptr;
+        double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
+            fail_input(what + " \"" + text + "\": \"" + item + "\" is not a finite number");
+        parts.push_back(v);
+    }
+    if (static_cast<int>(parts.size()) != dimension)
+        fail_input(what + " \"" + text + "\": expected " + std::to_string(dimension) + " comma-separated components");
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    for (int i = 0; i < dimension; ++i) v[i] = parts[static_cast<std::size_t>(i)];
+    if (v.norm() < 1e-12) fail_input(what + " \"" + text + "\" has zero length, expected a direction");
+    return v.normalized();
+}
+
+} // namespace sphkern

@@ -1,0 +1,48 @@
+#include "lattices/lattice_points.hpp"
+
+#include "support/error.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sphkern {
+
+double lattice_point_bound(double r_max, int dimension) { return std::pow(2.0 * r_max + 1.0, dimension); }
+
+void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
+                            int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit)
+{
+    // |n_i| <= |row_i(basis^-1)| r_max + 1 bounds the box that can hold points within r_max.
+    Eigen::Matrix3d inverse = basis.inverse();
+    long long extent[3] = {0, 0, 0};
+    double box = 1;
+    for (int i = 0; i < dimension; ++i) {
+        double e = std::ceil(inverse.row(i).norm() * r_max) + 1;
+        if (e > 1e6) e = 1e6;
+        extent[i] = static_cast<long long>(e);
+        box *= 2.0 * e + 1;
+    }
+    box *= static_cast<double>(motif.size());
+    if (box > 50.0 * max_lattice_points) {
+        std::ostringstream s;
+        s << "radius " << r_max << " needs a search over " << box << " cells, more than the limit of "
+          << 50.0 * max_lattice_points << " (the radius is too large or the basis too skewed)";
+        fail_input(s.str());
+    }
+    const double r2 = r_max * r_max * (1 + 1e-12);
+    const Eigen::Vector3d& origin = motif[static_cast<std::size_t>(site)];
+    for (const auto& m : motif) {
+        Eigen::Vector3d offset = m - origin;
+        for (long long a = -extent[0]; a <= extent[0]; ++a)
+            for (long long b = -extent[1]; b <= extent[1]; ++b)
+                for (long long c = -extent[2]; c <= extent[2]; ++c) {
+                    Eigen::Vector3d f(double(a) + offset.x(), double(b) + offset.y(), double(c) + offset.z());
+                    Eigen::Vector3d x = basis * f;
+                    double d2 = x.squaredNorm();
+                    if (d2 > r2 || d2 < 1e-18) continue;
+                    visit(x);
+                }
+    }
+}
+
+} // namespace sphkern

@@ -1,0 +1,25 @@
+// Integer-indexed enumeration of the lattice points around one site: every point is
+// basis * (n + motif_t - motif_s) for integer n, so no error accumulates.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace sphkern {
+
+// The hard limit on points one request may enumerate.
+inline constexpr std::size_t max_lattice_points = 5'000'000;
+
+// Calls `visit(x)` for every lattice point x != 0 with |x| <= r_max around `site`.
+// Throws Error(input) before enumerating if the request exceeds the limit.
+void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
+                            int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit);
+
+// An upper bound on the number of points within r_max of a site when the nearest
+// neighbour distance is 1: disjoint balls of radius 1/2 fit in a ball of r_max + 1/2.
+double lattice_point_bound(double r_max, int dimension);
+
+} // namespace sphkern

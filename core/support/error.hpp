@@ -1,0 +1,30 @@
+// The one error type every fallible operation throws: a one-line message and the
+// documented exit code the command line turns it into.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace sphkern {
+
+enum class ExitCode : int {
+    ok = 0,
+    check_failed = 1, // `check`: a kernel check failed (or warned, with --strict)
+    usage = 2,        // bad command-line arguments
+    input = 3,        // a bad input file, value or name (lattice, study, a_p, k, ...)
+    plugin = 4,       // a plugin that cannot be loaded, validated or run
+    output = 5,       // results could not be written, or the output exists
+};
+
+class Error : public std::runtime_error {
+public:
+    Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+    ExitCode code() const { return code_; }
+
+private:
+    ExitCode code_;
+};
+
+[[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
+
+} // namespace sphkern

@@ -1,0 +1,102 @@
+#include "support/isolated_call.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <exception>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace sphkern {
+
+namespace {
+
+void write_all(int fd, const std::string& data)
+{
+    const char* p = data.data();
+    std::size_t left = data.size();
+    while (left > 0) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return;
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+}
+
+} // namespace
+
+std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std::string()>& work,
+                                                        double timeout_seconds)
+{
+    int fds[2];
+    if (::pipe(fds) != 0) return IsolatedFailure{std::string("cannot create a pipe: ") + std::strerror(errno)};
+    pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        return IsolatedFailure{std::string("cannot fork: ") + std::strerror(errno)};
+    }
+    if (pid == 0) {
+        ::close(fds[0]);
+        std::string out;
+        char status = 'o';
+        try {
+            out = work();
+        } catch (const std::exception& e) {
+            status = 'e';
+            out = e.what();
+        } catch (...) {
+            status = 'e';
+            out = "threw an unknown C++ exception";
+        }
+        write_all(fds[1], std::string(1, status) + out);
+        ::close(fds[1]);
+        ::_exit(0); // no atexit handlers or static destructors of the parent's state
+    }
+    ::close(fds[1]);
+    std::string received;
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
+    bool timed_out = false;
+    char buffer[65536];
+    for (;;) {
+        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            timed_out = true;
+            break;
+        }
+        pollfd p{fds[0], POLLIN, 0};
+        int ready = ::poll(&p, 1, static_cast<int>(left.count()));
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready == 0) {
+            timed_out = true;
+            break;
+        }
+        ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        received.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fds[0]);
+    if (timed_out) ::kill(pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (timed_out) {
+        char text[64];
+        std::snprintf(text, sizeof text, "did not finish within %g s (endless loop?)", timeout_seconds);
+        return IsolatedFailure{text};
+    }
+    if (WIFSIGNALED(status)) {
+        int sig = WTERMSIG(status);
+        return IsolatedFailure{"crashed with signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")"};
+    }
+    if (received.empty()) return IsolatedFailure{"exited with status " + std::to_string(WEXITSTATUS(status)) +
+                                                  " before answering"};
+    if (received[0] == 'e') return IsolatedFailure{"threw an exception: " + received.substr(1)};
+    return received.substr(1);
+}
+
+} // namespace sphkern

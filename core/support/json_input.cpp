@@ -1,0 +1,210 @@
+#include "support/json_input.hpp"
+
+#include "support/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace sphkern {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string strip_exception_prefix(const std::string& what)
+{
+    // nlohmann prefixes "[json.exception.parse_error.101] "; the prefix helps nobody.
+    auto close = what.find("] ");
+    return what.rfind("[json.exception", 0) == 0 && close != std::string::npos ? what.substr(close + 2) : what;
+}
+
+// Deepest bracket nesting outside strings; stops counting once past the limit.
+int nesting_depth(const std::string& text)
+{
+    int depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
+    for (char c : text) {
+        if (in_string) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') in_string = false;
+            continue;
+        }
+        if (c == '"') in_string = true;
+        else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+            if (deepest > max_json_depth) break;
+        } else if (c == ']' || c == '}') --depth;
+    }
+    return deepest;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+} // namespace
+
+std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates)
+{
+    std::optional<std::string> best;
+    std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const auto& candidate : candidates) {
+        std::size_t distance = edit_distance(word, candidate);
+        if (distance < best_distance) {
+            best_distance = distance;
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+nlohmann::json read_json_file(const fs::path& file)
+{
+    const std::string name = file.string();
+    std::error_code ec;
+    auto status = fs::status(file, ec);
+    if (ec || !fs::exists(status)) fail_input(name + ": no such file");
+    if (fs::is_directory(status)) fail_input(name + ": is a folder, expected a JSON file");
+    auto size = fs::file_size(file, ec);
+    if (!ec && size > max_json_bytes)
+        fail_input(name + ": file is " + std::to_string(size) + " bytes, more than the limit of " +
+                   std::to_string(max_json_bytes) + " for a JSON input");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) fail_input(name + ": cannot be read (permission denied?)");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    std::string text = buffer.str();
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail_input(name + ": file is empty, expected JSON");
+    if (nesting_depth(text) > max_json_depth)
+        fail_input(name + ": JSON nested deeper than " + std::to_string(max_json_depth) + " levels");
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        fail_input(name + ": not valid JSON: " + strip_exception_prefix(e.what()));
+    }
+}
+
+std::string json_type_name(const nlohmann::json& value)
+{
+    if (value.is_number()) return "a number";
+    if (value.is_string()) return "a string";
+    if (value.is_array()) return "an array";
+    if (value.is_object()) return "an object";
+    if (value.is_boolean()) return "a boolean";
+    return "null";
+}
+
+void JsonNode::error(const std::string& what) const { fail_input(file_ + ": " + path() + ": " + what); }
+
+void JsonNode::expect_object() const
+{
+    if (!value_->is_object()) error("expected an object, got " + json_type_name(*value_));
+}
+
+JsonNode JsonNode::at(std::string_view key) const
+{
+    auto found = find(key);
+    if (!found) error("missing required key \"" + std::string(key) + "\"");
+    return *found;
+}
+
+std::optional<JsonNode> JsonNode::find(std::string_view key) const
+{
+    expect_object();
+    auto it = value_->find(key);
+    if (it == value_->end()) return std::nullopt;
+    return JsonNode(*it, file_, path_ + "/" + std::string(key));
+}
+
+JsonNode JsonNode::operator[](std::size_t index) const
+{
+    return JsonNode((*value_)[index], file_, path_ + "/" + std::to_string(index));
+}
+
+void JsonNode::expect_keys(std::initializer_list<std::string_view> known) const
+{
+    expect_object();
+    std::vector<std::string> names(known.begin(), known.end());
+    for (const auto& [key, unused] : value_->items()) {
+        if (std::find(names.begin(), names.end(), key) != names.end()) continue;
+        std::string message = "unknown key \"" + key + "\"";
+        if (auto suggestion = closest_match(key, names)) message += " (did you mean \"" + *suggestion + "\"?)";
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        error(message + "; expected one of: " + list);
+    }
+}
+
+std::size_t JsonNode::expect_array(std::size_t min_size, std::size_t max_size) const
+{
+    if (!value_->is_array()) error("expected an array, got " + json_type_name(*value_));
+    if (value_->size() < min_size)
+        error(value_->empty() ? "empty array, expected at least " + std::to_string(min_size) + " element(s)"
+                              : "expected at least " + std::to_string(min_size) + " elements, got " +
+                                    std::to_string(value_->size()));
+    if (value_->size() > max_size)
+        error("expected at most " + std::to_string(max_size) + " elements, got " + std::to_string(value_->size()));
+    return value_->size();
+}
+
+double JsonNode::number() const
+{
+    if (!value_->is_number()) error("expected a number, got " + json_type_name(*value_));
+    double v = value_->get<double>();
+    if (!std::isfinite(v)) error("expected a finite number");
+    return v;
+}
+
+double JsonNode::number_in(double lo, double hi) const
+{
+    double v = number();
+    if (v < lo || v > hi) {
+        std::ostringstream s;
+        s << "value " << v << " is out of range, expected a number in [" << lo << ", " << hi << "]";
+        error(s.str());
+    }
+    return v;
+}
+
+long long JsonNode::integer_in(long long lo, long long hi) const
+{
+    if (!value_->is_number_integer()) error("expected an integer, got " + json_type_name(*value_));
+    long long v = value_->get<long long>();
+    if (value_->is_number_unsigned() && value_->get<unsigned long long>() > static_cast<unsigned long long>(hi))
+        v = hi + 1;
+    if (v < lo || v > hi)
+        error("value " + value_->dump() + " is out of range, expected an integer in [" + std::to_string(lo) + ", " +
+              std::to_string(hi) + "]");
+    return v;
+}
+
+std::string JsonNode::string() const
+{
+    if (!value_->is_string()) error("expected a string, got " + json_type_name(*value_));
+    auto s = value_->get<std::string>();
+    if (s.empty()) error("expected a non-empty string");
+    return s;
+}
+
+bool JsonNode::boolean() const
+{
+    if (!value_->is_boolean()) error("expected true or false, got " + json_type_name(*value_));
+    return value_->get<bool>();
+}
+
+} // namespace sphkern

@@ -1,0 +1,29 @@
+/* Quartic kernel of Liu (paper eq. 9), R = 2. One formula: continues past R. */
+#include <sphkern/kernel_plugin.h>
+
+#define PI 3.14159265358979323846
+
+static double sigma(int dim) { return dim == 1 ? 1.0 : dim == 2 ? 15.0 / (7.0 * PI) : 315.0 / (208.0 * PI); }
+
+static double w(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    return sigma(dim) * (2.0 / 3.0 + q * q * (-9.0 / 8.0 + q * (19.0 / 24.0 - 5.0 / 32.0 * q)));
+}
+
+static double dw(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    return sigma(dim) * q * (-9.0 / 4.0 + q * (19.0 / 8.0 - 5.0 / 8.0 * q));
+}
+
+SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
+SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+
+static const sphkern_kernel_descriptor descriptor = {
+    SPHKERN_KERNEL_ABI_VERSION, "liu_quartic", "Quartic kernel (Liu)",
+    "Liu & Liu, Smoothed Particle Hydrodynamics, World Scientific (2003); Potapov & Reshetnikova (2021) eq. 9",
+    2.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
+    w, dw, w_batch, dw_batch};
+
+SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

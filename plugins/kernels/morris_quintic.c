@@ -1,0 +1,36 @@
+/* Morris quintic spline (paper eq. 7), R = 3, with the exact sigma_3 = 1/(120 pi). */
+#include <sphkern/kernel_plugin.h>
+
+#define PI 3.14159265358979323846
+
+static double sigma(int dim)
+{
+    return dim == 1 ? 1.0 / 120.0 : dim == 2 ? 7.0 / (478.0 * PI) : 1.0 / (120.0 * PI);
+}
+static double p5(double x) { return x > 0.0 ? x * x * x * x * x : 0.0; }
+static double p4(double x) { return x > 0.0 ? x * x * x * x : 0.0; }
+
+static double w(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    return sigma(dim) * (p5(3.0 - q) - 6.0 * p5(2.0 - q) + 15.0 * p5(1.0 - q));
+}
+
+static double dw(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    return -5.0 * sigma(dim) * (p4(3.0 - q) - 6.0 * p4(2.0 - q) + 15.0 * p4(1.0 - q));
+}
+
+SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
+SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+
+static const double breakpoints[] = {1.0, 2.0};
+
+static const sphkern_kernel_descriptor descriptor = {
+    SPHKERN_KERNEL_ABI_VERSION, "morris_quintic", "Quintic spline (Morris)",
+    "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214; Potapov & Reshetnikova (2021) eq. 7",
+    3.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 2u, breakpoints,
+    w, dw, w_batch, dw_batch};
+
+SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,0 +1,35 @@
+/* Wendland C4, support 2h as in PySPH and DualSPHysics; 2D and 3D only. Zero past R. */
+#include <sphkern/kernel_plugin.h>
+
+#define PI 3.14159265358979323846
+
+static double sigma(int dim) { return dim == 2 ? 9.0 / (4.0 * PI) : 495.0 / (256.0 * PI); }
+
+static double w(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    if (q >= 2.0) return 0.0;
+    double t = 1.0 - 0.5 * q;
+    double t5 = t * t * t * t * t;
+    return sigma(dim) * t5 * t * (35.0 / 12.0 * q * q + 3.0 * q + 1.0);
+}
+
+static double dw(double q, int dim, double k, const double* p)
+{
+    (void)k; (void)p;
+    if (q >= 2.0) return 0.0;
+    double t = 1.0 - 0.5 * q;
+    double t5 = t * t * t * t * t;
+    return sigma(dim) * -14.0 / 3.0 * q * t5 * (1.0 + 2.5 * q);
+}
+
+SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
+SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+
+static const sphkern_kernel_descriptor descriptor = {
+    SPHKERN_KERNEL_ABI_VERSION, "wendland_c4", "Wendland C4",
+    "Wendland, Adv. Comput. Math. 4 (1995) 389; Dehnen & Aly, MNRAS 425 (2012) 1068",
+    2.0, SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
+    w, dw, w_batch, dw_batch};
+
+SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,0 +1,29 @@
+# sphkern_add_kernel_plugin(<name> SOURCES <files>...)
+#
+# Builds a kernel plugin: a module library named <name>.so with hidden visibility
+# that sees only the plugin header, and installs it into sphkern's plugin folder.
+# Used by sphkern's own plugins and, through find_package(sphkern), by third parties.
+function(sphkern_add_kernel_plugin name)
+  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  if(NOT ARG_SOURCES)
+    message(FATAL_ERROR "sphkern_add_kernel_plugin(${name}): SOURCES is required")
+  endif()
+  add_library(${name} MODULE ${ARG_SOURCES})
+  if(TARGET sphkern::plugin_sdk)
+    target_link_libraries(${name} PRIVATE sphkern::plugin_sdk)
+  else()
+    target_link_libraries(${name} PRIVATE sphkern_plugin_sdk)
+  endif()
+  set_target_properties(${name} PROPERTIES
+    PREFIX ""
+    C_VISIBILITY_PRESET hidden
+    CXX_VISIBILITY_PRESET hidden
+    VISIBILITY_INLINES_HIDDEN ON)
+  if(SPHKERN_BUILD_PLUGIN_DIR)
+    set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${SPHKERN_BUILD_PLUGIN_DIR}")
+  endif()
+  if(NOT SPHKERN_PLUGIN_INSTALL_DIR)
+    message(FATAL_ERROR "sphkern_add_kernel_plugin: SPHKERN_PLUGIN_INSTALL_DIR is not set")
+  endif()
+  install(TARGETS ${name} LIBRARY DESTINATION "${SPHKERN_PLUGIN_INSTALL_DIR}")
+endfunction()
