@@ -1,9 +1,82 @@
-// `sphkern run`: placeholder replaced below.
+// `sphkern run`: a study (default: the paper's) into a results folder, complete or not at all.
 #include "cli/command.hpp"
+
+#include "study/plots.hpp"
+#include "study/report.hpp"
+#include "study/study_runner.hpp"
+#include "support/install_paths.hpp"
+#include "support/output_folder.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
 namespace sphkern::cli {
+
+namespace {
+
+std::string curves_csv(const StudyResults& results)
+{
+    std::string s = "lattice,mode,kernel,volume_coefficient,a_p,k,eps_rho,eps_gradp,lateral,neighbours\n";
+    for (const auto& c : results.cases)
+        for (const auto& [k, v] : c.curve)
+            s += fmt::format("{},{},\"{}\",{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", c.lattice, c.mode,
+                             c.kernel_label, c.ap_name, c.a_p, k, v.eps_rho, v.eps_gradp, v.lateral, v.neighbours);
+    return s;
+}
+
+} // namespace
+
 Action add_run_command(CLI::App& app)
 {
-    app.add_subcommand("run", "Run a study");
-    return [] { return 0; };
+    auto* command = app.add_subcommand("run", "Run a study (default: share/studies/potapov2021.json)");
+    struct Options : CommonOptions {
+        std::string study;
+        std::string output;
+        bool no_plots = false;
+        bool force = false;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("study", options->study, "Study file, or the name of a shipped study");
+    command->add_option("-o,--output", options->output, "Results folder (default: sphkern-results/<study name>)");
+    command->add_flag("--no-plots", options->no_plots, "Do not draw the SVG figures");
+    command->add_flag("--force", options->force, "Replace an existing results folder");
+    add_plugin_option(*command, *options);
+    return [options] {
+        auto started = std::chrono::steady_clock::now();
+        std::filesystem::path file = options->study.empty() ? data_folder("studies") / "potapov2021.json"
+                                     : looks_like_path(options->study, ".json")
+                                         ? std::filesystem::path(options->study)
+                                         : data_folder("studies") / (options->study + ".json");
+        Study study = read_study(file);
+        std::filesystem::path target =
+            options->output.empty() ? std::filesystem::path("sphkern-results") / study.name : std::filesystem::path(options->output);
+        OutputFolder output(target, options->force);
+
+        auto registry = discover_kernels(*options);
+        StudyResults results = run_study(study, registry);
+
+        std::vector<std::string> figures;
+        if (study.plots && !options->no_plots) {
+            auto gnuplot = find_gnuplot();
+            if (gnuplot.empty()) spdlog::warn("gnuplot not found on PATH: figures skipped");
+            else figures = draw_study_plots(study, results, output.staging() / "plots", gnuplot);
+        }
+        output.write("results.json", study_results_json(study, results).dump(1) + "\n");
+        output.write("curves.csv", curves_csv(results));
+        output.write("report.md", report_markdown(study, results, figures));
+        output.commit();
+
+        std::string summary = replication_markdown(results);
+        std::cout << (summary.empty() ? verdicts_markdown(study, results) : summary) << std::flush;
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        spdlog::info("{} cases in {:.3f} s; report, results.json, curves.csv{} in {}", results.cases.size(), seconds,
+                     figures.empty() ? "" : " and figures", target.string());
+        return 0;
+    };
 }
+
 } // namespace sphkern::cli

@@ -1,0 +1,179 @@
+#include "study/report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace sphkern {
+
+namespace {
+
+std::string number(const nlohmann::json& v, int decimals = 5)
+{
+    if (v.is_number()) return fmt::format("{:.{}f}", v.get<double>(), decimals);
+    if (v.is_string()) return v.get<std::string>();
+    return "-";
+}
+
+std::string fixed(double v, int decimals = 5)
+{
+    if (std::abs(v) >= 1e3) return fmt::format("{:.3g}", v);
+    return fmt::format("{:.{}f}", v, decimals);
+}
+
+std::string eps_name(const std::string& function) { return function == "rho" ? "eps_rho" : "eps_gradP"; }
+
+std::string intervals_text(const Acceptance& a)
+{
+    if (a.intervals.empty()) return "-";
+    std::string s;
+    for (const auto& i : a.intervals) s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", i.from, i.to);
+    return s;
+}
+
+} // namespace
+
+std::string replication_markdown(const StudyResults& results)
+{
+    if (results.comparison.empty()) return {};
+    const auto& ref = results.reference;
+    std::string s = fmt::format(
+        "## Replication of the reference table\n\n{}: lattice {}, a_p = {}, mode \"{}\". A row is reproduced when k "
+        "and both errors agree within {}.\n\n",
+        ref.value("source", "reference"), ref.value("lattice", "?"), ref.value("volume_coefficient", "?"),
+        ref.value("mode", "?"), results.tolerance);
+    s += "| kernel | zero of | k (paper) | k (sphkern) | Δk | eps_rho (paper) | eps_rho (sphkern) | eps_gradP (paper) "
+         "| eps_gradP (sphkern) | status | note |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+    int reproduced = 0, errata = 0;
+    for (const auto& r : results.comparison) {
+        reproduced += r.status == "reproduced";
+        errata += r.status == "erratum";
+        const auto& p = r.reference;
+        if (r.function == "none") {
+            s += fmt::format("| {} | - | no root | {} | | | | | | {} | {} |\n", r.kernel,
+                             r.status == "reproduced" ? "no root" : "roots found", r.status, r.note);
+            continue;
+        }
+        std::string gradp_paper = p.contains("printed_eps_gradp") ? p["printed_eps_gradp"].get<std::string>()
+                                                                   : number(p.value("eps_gradp", nlohmann::json()));
+        if (r.computed)
+            s += fmt::format("| {} | {} | {} | {:.5f} | {:+.1e} | {} | {} | {} | {} | {} | {} |\n", r.kernel,
+                             eps_name(r.function), number(p["k"]), r.computed->k, r.computed->k - p["k"].get<double>(),
+                             number(p["eps_rho"]), fixed(r.computed->values.eps_rho), gradp_paper,
+                             fixed(r.computed->values.eps_gradp), r.status, r.note);
+        else
+            s += fmt::format("| {} | {} | {} | - | | {} | | {} | | {} | {} |\n", r.kernel, eps_name(r.function),
+                             number(p["k"]), number(p["eps_rho"]), gradp_paper, r.status, r.note);
+    }
+    s += fmt::format("\n{} of {} rows reproduced; {} row(s) marked as errata of the paper; {} differ.\n\n", reproduced,
+                     results.comparison.size(), errata, results.comparison.size() - reproduced - errata);
+    return s;
+}
+
+std::string verdicts_markdown(const Study& study, const StudyResults& results)
+{
+    std::string s = fmt::format("## Condition (22): |eps_rho| <= {} and |eps_gradP| <= {} for some k in [{}, {}]\n\n",
+                                study.epsilon, study.epsilon, study.k_min, study.k_max);
+    std::string current;
+    for (const auto& c : results.cases) {
+        std::string heading = fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}\n\n", c.lattice, c.dimension,
+                                          c.mode, c.ap_name, c.a_p);
+        if (heading != current) {
+            s += (current.empty() ? "" : "\n") + heading +
+                 "| kernel | verdict | k where (22) holds | best k | max(|eps_rho|, |eps_gradP|) at best k |\n"
+                 "|---|---|---|---|---|\n";
+            current = heading;
+        }
+        s += fmt::format("| {} | {} | {} | {:.4f} | {:.2e} |\n", c.kernel_label,
+                         c.acceptance.passes() ? "**pass**" : "fail", intervals_text(c.acceptance), c.acceptance.best_k,
+                         c.acceptance.best_error);
+    }
+    return s + "\n";
+}
+
+std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
+{
+    std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: k in [{}, {}], {} samples per curve, epsilon = {}.\n"
+                                "Errors are the bulk relative errors of method.md section 2 (a particle on a lattice "
+                                "site, gravity along the lattice's default direction).\n\n",
+                                study.title, SPHKERN_VERSION, study.file, study.k_min, study.k_max, study.samples,
+                                study.epsilon);
+    s += "Modes: ";
+    for (const auto& m : study.modes) {
+        s += fmt::format("**{}** ", m.name);
+        if (m.is_automatic()) {
+            s += "(every shell inside the support, kernel truncated at R; what a correct SPH code computes); ";
+        } else {
+            s += "(fixed shell lists by R:";
+            for (const auto& [R, radii] : m.shells_by_support) {
+                s += fmt::format(" R = {}: {{", R);
+                for (std::size_t i = 0; i < radii.size(); ++i) s += fmt::format("{}{:.4f}", i ? ", " : "", radii[i]);
+                s += "}";
+            }
+            if (m.continue_all) s += "; every kernel's formula continued past R";
+            else if (!m.continue_kernels.empty()) {
+                s += "; formula continued past R for";
+                for (const auto& k : m.continue_kernels) s += " " + k;
+            }
+            s += "); ";
+        }
+    }
+    s += "\n\n";
+    s += replication_markdown(results);
+
+    // Why the non-automatic modes differ from the default, root by root.
+    bool any = false;
+    for (const auto& c : results.cases) {
+        if (c.automatic || c.explanations.empty()) continue;
+        if (!any) {
+            s += "## Why the modes differ\n\nFor every root of a fixed-shell mode: the same error in the default "
+                 "evaluation at that k, the nearest default root, and each term that differs (its contribution to "
+                 "the error that vanished).\n\n"
+                 "| lattice | a_p | mode | kernel | zero of | k | default value at k | nearest default root | cause |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n";
+            any = true;
+        }
+        for (const auto& e : c.explanations) {
+            std::string causes;
+            for (const auto& d : e.differences)
+                causes += fmt::format("{}shell r = {:.4f} d ({}) {} at q = {:.3f}: {:+.5f}", causes.empty() ? "" : "; ",
+                                      d.radius, d.count, d.reason, d.q, d.contribution);
+            if (causes.empty()) causes = "none: identical terms";
+            s += fmt::format("| {} | {} | {} | {} | {} | {:.5f} | {} | {} | {} |\n", c.lattice, c.ap_name, c.mode,
+                             c.kernel_label, eps_name(e.root.function), e.root.k, fixed(e.default_value),
+                             e.default_root_k ? fmt::format("{:.5f}", *e.default_root_k) : std::string("none"), causes);
+        }
+    }
+    if (any) s += "\n";
+
+    s += "## Roots and jumps\n\n";
+    std::string current;
+    for (const auto& c : results.cases) {
+        std::string heading = fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", c.lattice, c.mode, c.ap_name, c.a_p);
+        if (heading != current) {
+            s += (current.empty() ? "" : "\n") + heading +
+                 "| kernel | zero of | k | eps_rho | eps_gradP | N_H | H/d |\n|---|---|---|---|---|---|---|\n";
+            current = heading;
+        }
+        if (c.scan.roots.empty()) s += fmt::format("| {} | no root | | | | | |\n", c.kernel_label);
+        for (const auto& r : c.scan.roots)
+            s += fmt::format("| {} | {} | {:.5f} | {} | {} | {} | {:.4f} |\n", c.kernel_label, eps_name(r.function),
+                             r.k, fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
+                             r.support_radius);
+        for (const auto& j : c.scan.jumps)
+            s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c.kernel_label,
+                             eps_name(j.function), j.kind, j.k, fixed(j.left), fixed(j.right));
+    }
+    s += "\n" + verdicts_markdown(study, results);
+
+    if (!figures.empty()) {
+        s += "## Figures\n\neps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= epsilon shaded "
+             "(as the paper's Figs. 4 to 6).\n\n";
+        for (const auto& f : figures) s += fmt::format("![{}]({})\n\n", f, f);
+    }
+    return s;
+}
+
+} // namespace sphkern

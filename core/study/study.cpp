@@ -1,0 +1,179 @@
+#include "study/study.hpp"
+
+#include "analysis/results_json.hpp"
+#include "support/error.hpp"
+#include "support/install_paths.hpp"
+#include "support/json_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+namespace sphkern {
+namespace fs = std::filesystem;
+
+bool StudyMode::continues(const std::string& kernel) const
+{
+    return continue_all || std::find(continue_kernels.begin(), continue_kernels.end(), kernel) != continue_kernels.end();
+}
+
+std::optional<double> parse_radius(const nlohmann::json& value)
+{
+    if (value.is_number()) {
+        double r = value.get<double>();
+        return std::isfinite(r) && r > 0 && r < 1e3 ? std::optional(r) : std::nullopt;
+    }
+    if (!value.is_string()) return std::nullopt;
+    static const std::regex sqrt_form(R"(sqrt\(\s*([0-9]+(\.[0-9]*)?)\s*\))");
+    std::smatch match;
+    std::string text = value.get<std::string>();
+    if (!std::regex_match(text, match, sqrt_form)) return std::nullopt;
+    double r = std::sqrt(std::stod(match[1].str()));
+    return r > 0 && r < 1e3 ? std::optional(r) : std::nullopt;
+}
+
+namespace {
+
+std::vector<std::string> string_list(const JsonNode& node)
+{
+    node.expect_array(1, 1000);
+    std::vector<std::string> items;
+    for (std::size_t i = 0; i < node.size(); ++i) items.push_back(node[i].string());
+    return items;
+}
+
+StudyMode read_mode(const JsonNode& node)
+{
+    node.expect_keys({"name", "shells", "continue_past_support"});
+    StudyMode mode;
+    mode.json_path = node.path();
+    mode.name = node.at("name").string();
+    if (mode.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
+        node.at("name").error("expected a name of [a-z0-9_-]");
+    if (auto shells = node.find("shells")) {
+        shells->expect_object();
+        if (shells->value().empty()) shells->error("empty object, expected shell lists keyed by kernel support R");
+        for (const auto& [key, unused] : shells->value().items()) {
+            auto list = shells->at(key);
+            char* end = nullptr;
+            double R = std::strtod(key.c_str(), &end);
+            if (key.empty() || *end != '\0' || !(R > 0))
+                list.error("key must be a kernel support R such as \"2\"");
+            list.expect_array(1, 10000);
+            std::vector<double> radii;
+            for (std::size_t i = 0; i < list.size(); ++i) {
+                auto r = parse_radius(list[i].value());
+                if (!r) list[i].error("expected a shell radius in units of d: a positive number or \"sqrt(N)\"");
+                radii.push_back(*r);
+            }
+            mode.shells_by_support[key] = radii;
+        }
+    }
+    if (auto c = node.find("continue_past_support")) {
+        if (c->is_boolean()) mode.continue_all = c->boolean();
+        else if (c->is_array()) mode.continue_kernels = string_list(*c);
+        else c->error("expected true, false or an array of kernel names, got " + json_type_name(c->value()));
+        if ((mode.continue_all || !mode.continue_kernels.empty()) && mode.shells_by_support.empty())
+            c->error("continuing past the support needs explicit \"shells\" in the same mode");
+    }
+    return mode;
+}
+
+} // namespace
+
+Study read_study(const fs::path& file)
+{
+    Study study;
+    study.file = file.string();
+    study.document = read_json_file(file);
+    JsonNode root(study.document, study.file);
+    root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
+                      "compare_with", "plots"});
+    study.name = root.at("name").string();
+    if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
+        root.at("name").error("expected a name of [a-z0-9_-]");
+    study.title = root.find("title") ? root.at("title").string() : study.name;
+
+    auto kernels = root.at("kernels");
+    kernels.expect_array(1, 1000);
+    for (std::size_t i = 0; i < kernels.size(); ++i) {
+        auto item = kernels[i];
+        StudyKernel k;
+        k.json_path = item.path();
+        if (item.is_string()) {
+            k.spec = item.string();
+        } else if (item.is_object()) {
+            item.expect_keys({"kernel", "set"});
+            k.spec = item.at("kernel").string();
+            if (auto set = item.find("set")) {
+                set->expect_object();
+                for (const auto& [name, unused] : set->value().items()) k.parameters[name] = set->at(name).number();
+            }
+        } else {
+            item.error("expected a kernel name, a plugin file or {\"kernel\": ..., \"set\": {...}}, got " +
+                       json_type_name(item.value()));
+        }
+        if (k.spec.find('/') != std::string::npos && fs::path(k.spec).is_relative())
+            k.spec = (file.parent_path() / k.spec).string();
+        study.kernels.push_back(k);
+    }
+    study.lattices = string_list(root.at("lattices"));
+    for (auto& l : study.lattices)
+        if (l.find('/') != std::string::npos && fs::path(l).is_relative()) l = (file.parent_path() / l).string();
+
+    if (auto ap = root.find("volume_coefficients")) {
+        ap->expect_array(1, 100);
+        for (std::size_t i = 0; i < ap->size(); ++i) {
+            auto item = (*ap)[i];
+            if (item.is_number()) {
+                double v = item.number();
+                if (v <= 0 || v > 1e6) item.error("expected a positive volume coefficient up to 1e6");
+                study.volume_coefficients.push_back(item.value().dump());
+            } else {
+                study.volume_coefficients.push_back(item.string());
+            }
+        }
+    } else {
+        study.volume_coefficients = {"voronoi"};
+    }
+
+    if (auto k = root.find("k")) {
+        k->expect_keys({"min", "max", "samples"});
+        if (auto v = k->find("min")) study.k_min = v->number();
+        if (auto v = k->find("max")) study.k_max = v->number();
+        if (auto v = k->find("samples")) study.samples = static_cast<int>(v->integer_in(2, 100000));
+        try {
+            check_k_interval(study.k_min, study.k_max, "k interval");
+        } catch (const Error& e) {
+            k->error(e.what());
+        }
+    }
+    if (auto e = root.find("epsilon")) {
+        study.epsilon = e->number();
+        if (study.epsilon <= 0 || study.epsilon >= 1) e->error("expected a tolerance in (0, 1)");
+    }
+    if (auto modes = root.find("modes")) {
+        modes->expect_array(1, 20);
+        for (std::size_t i = 0; i < modes->size(); ++i) {
+            study.modes.push_back(read_mode((*modes)[i]));
+            for (std::size_t j = 0; j + 1 < study.modes.size(); ++j)
+                if (study.modes[j].name == study.modes.back().name)
+                    (*modes)[i].at("name").error("duplicate mode name \"" + study.modes.back().name + "\"");
+        }
+    } else {
+        study.modes.push_back({"default", {}, false, {}, "/modes"});
+    }
+    if (auto c = root.find("compare_with")) {
+        fs::path reference = c->string();
+        if (reference.is_relative()) {
+            fs::path beside = file.parent_path() / reference;
+            reference = fs::exists(beside) ? beside : data_folder("reference") / reference;
+        }
+        if (!fs::is_regular_file(reference)) c->error("no reference table \"" + c->string() + "\" beside the study or in share/reference");
+        study.compare_with = reference;
+    }
+    if (auto p = root.find("plots")) study.plots = p->boolean();
+    return study;
+}
+
+} // namespace sphkern

@@ -1,0 +1,56 @@
+// A study: kernels x lattices x volume coefficients x evaluation modes over a
+// k-interval, read from a JSON file (share/docs/study-format.md).
+#pragma once
+
+#include "analysis/hydrostatic_errors.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+struct StudyKernel {
+    std::string spec; // name or plugin file
+    std::map<std::string, double> parameters;
+    std::string json_path;
+};
+
+struct StudyMode {
+    std::string name;
+    // Explicit shell radii per kernel support R ("1", "2", ...); empty: automatic shells.
+    std::map<std::string, std::vector<double>> shells_by_support;
+    bool continue_all = false;
+    std::vector<std::string> continue_kernels; // kernels whose formula is continued past R
+    std::string json_path;
+
+    bool is_automatic() const { return shells_by_support.empty() && !continue_all && continue_kernels.empty(); }
+    bool continues(const std::string& kernel) const;
+};
+
+struct Study {
+    std::string file;
+    nlohmann::json document; // echoed into results.json
+    std::string name;
+    std::string title;
+    std::vector<StudyKernel> kernels;
+    std::vector<std::string> lattices;
+    std::vector<std::string> volume_coefficients;
+    double k_min = 0.75, k_max = 1.25;
+    int samples = 501;
+    double epsilon = 0.01;
+    std::vector<StudyMode> modes;
+    std::optional<std::filesystem::path> compare_with; // a reference table (share/reference)
+    bool plots = true;
+};
+
+Study read_study(const std::filesystem::path& file);
+
+// Parses a shell radius: a number or "sqrt(N)".
+std::optional<double> parse_radius(const nlohmann::json& value);
+
+} // namespace sphkern

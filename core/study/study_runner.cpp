@@ -1,0 +1,240 @@
+#include "study/study_runner.hpp"
+
+#include "analysis/results_json.hpp"
+#include "lattices/lattice.hpp"
+#include "support/error.hpp"
+#include "support/json_input.hpp"
+#include "support/progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphkern {
+
+namespace {
+
+std::string support_key(double R)
+{
+    std::ostringstream s;
+    s << R;
+    return s.str();
+}
+
+EvaluationMode mode_for(const StudyMode& mode, const Kernel& kernel, const Study& study)
+{
+    EvaluationMode m;
+    if (mode.shells_by_support.empty()) return m;
+    auto it = mode.shells_by_support.find(support_key(kernel.support()));
+    if (it == mode.shells_by_support.end())
+        fail_input(study.file + ": " + mode.json_path + "/shells: no shell list for kernel " + kernel.name() +
+                   " with support R = " + support_key(kernel.support()) + ", expected a key \"" +
+                   support_key(kernel.support()) + "\"");
+    m.shell_radii = it->second;
+    m.continue_past_support = mode.continues(kernel.name());
+    return m;
+}
+
+std::vector<RootExplanation> explain(const HydrostaticErrors& mode, const HydrostaticErrors& automatic,
+                                     const RootScan& scan, const RootScan& automatic_scan)
+{
+    std::vector<RootExplanation> explanations;
+    const double R = mode.kernel().support();
+    for (const auto& root : scan.roots) {
+        bool rho = root.function == "rho";
+        RootExplanation e;
+        e.root = root;
+        auto v = automatic.at(root.k);
+        e.default_value = rho ? v.eps_rho : v.eps_gradp;
+        for (const auto& r : automatic_scan.roots)
+            if (r.function == root.function &&
+                (!e.default_root_k || std::abs(r.k - root.k) < std::abs(*e.default_root_k - root.k)))
+                e.default_root_k = r.k;
+        std::size_t active = mode.active_terms(root.k);
+        for (std::size_t i = 0; i < active; ++i) {
+            const Shell& s = mode.terms()[i];
+            if (s.radius <= R * root.k) continue;
+            auto c = mode.shell_contribution(s, root.k);
+            e.differences.push_back({s.radius, s.count, "evaluated past R", s.radius / root.k, rho ? c.first : c.second});
+        }
+        for (const auto& s : automatic.terms()) {
+            if (s.radius > R * root.k) break;
+            bool listed = std::any_of(mode.terms().begin(), mode.terms().end(),
+                                      [&](const Shell& t) { return t.radius == s.radius; });
+            if (listed) continue;
+            auto c = automatic.shell_contribution(s, root.k);
+            e.differences.push_back(
+                {s.radius, s.count, "left out of the shell list", s.radius / root.k, rho ? c.first : c.second});
+        }
+        explanations.push_back(std::move(e));
+    }
+    return explanations;
+}
+
+void compare(const Study& study, StudyResults& results)
+{
+    auto document = read_json_file(*study.compare_with);
+    JsonNode root(document, study.compare_with->string());
+    root.expect_keys({"source", "lattice", "volume_coefficient", "mode", "tolerance", "rows"});
+    results.reference = document;
+    std::string lattice = root.at("lattice").string(), ap = root.at("volume_coefficient").string(),
+                mode = root.at("mode").string();
+    results.tolerance = root.find("tolerance") ? root.at("tolerance").number_in(0, 1) : 1e-4;
+    auto rows = root.at("rows");
+    rows.expect_array(1);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        auto row = rows[i];
+        ComparisonRow c;
+        c.reference = row.value();
+        c.kernel = row.at("kernel").string();
+        auto match = std::find_if(results.cases.begin(), results.cases.end(), [&](const StudyCase& s) {
+            return s.lattice == lattice && s.mode == mode && s.ap_name == ap && s.kernel == c.kernel;
+        });
+        if (match == results.cases.end())
+            row.error("the study has no case " + c.kernel + " / " + lattice + " / " + ap + " / mode " + mode);
+        if (row.value().value("no_root", false)) {
+            c.function = "none";
+            c.status = match->scan.roots.empty() ? "reproduced" : "differs";
+            c.note = match->scan.roots.empty() ? "no root in the interval" : "sphkern finds roots in the interval";
+            results.comparison.push_back(c);
+            continue;
+        }
+        double k = row.at("k").number();
+        const auto& gradp_value = row.value().at("eps_gradp");
+        c.function = gradp_value.is_number() && gradp_value.get<double>() == 0 ? "gradp" : "rho";
+        for (const auto& r : match->scan.roots)
+            if (r.function == c.function && (!c.computed || std::abs(r.k - k) < std::abs(c.computed->k - k)))
+                c.computed = r;
+        if (!c.computed || std::abs(c.computed->k - k) > 0.05) {
+            c.computed.reset();
+            c.status = row.find("erratum") ? "erratum" : "differs";
+            c.note = "no root of eps_" + c.function + " near this k";
+        } else {
+            bool within = std::abs(c.computed->k - k) <= results.tolerance;
+            for (const char* key : {"eps_rho", "eps_gradp"}) {
+                const auto& v = row.value().at(key);
+                if (!v.is_number() || row.find(std::string("erratum_") + key)) continue;
+                double computed = std::string(key) == "eps_rho" ? c.computed->values.eps_rho : c.computed->values.eps_gradp;
+                within = within && std::abs(computed - v.get<double>()) <= results.tolerance;
+            }
+            c.status = row.find("erratum") ? "erratum" : within ? "reproduced" : "differs";
+        }
+        if (auto e = row.find("erratum")) c.note = e->string();
+        if (auto e = row.find("erratum_eps_gradp")) c.note = "eps_gradP: " + e->string();
+        results.comparison.push_back(c);
+    }
+}
+
+} // namespace
+
+StudyResults run_study(const Study& study, KernelRegistry& registry)
+{
+    std::vector<Kernel> kernels;
+    for (const auto& k : study.kernels) {
+        try {
+            kernels.push_back(Kernel(registry.find(k.spec), k.parameters));
+        } catch (const Error& e) {
+            throw Error(e.code(), study.file + ": " + k.json_path + ": " + e.what());
+        }
+    }
+    std::vector<Lattice> lattices;
+    for (std::size_t i = 0; i < study.lattices.size(); ++i) {
+        try {
+            lattices.push_back(load_lattice(study.lattices[i]));
+        } catch (const Error& e) {
+            throw Error(e.code(), study.file + ": /lattices/" + std::to_string(i) + ": " + e.what());
+        }
+    }
+    for (std::size_t i = 0; i < kernels.size(); ++i)
+        for (const auto& l : lattices)
+            if (!kernels[i].supports(l.dimension))
+                fail_input(study.file + ": " + study.kernels[i].json_path + ": kernel " + kernels[i].name() +
+                           " is defined in " + kernels[i].plugin().dimensions_text() + "D only, not on the " +
+                           std::to_string(l.dimension) + "D lattice " + l.name);
+
+    StudyResults results;
+    Progress progress("study " + study.name,
+                      lattices.size() * kernels.size() * study.volume_coefficients.size() * study.modes.size());
+    for (const auto& lattice : lattices) {
+        std::vector<double> aps;
+        for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i) {
+            try {
+                aps.push_back(lattice.volume_coefficient(study.volume_coefficients[i]));
+            } catch (const Error& e) {
+                throw Error(e.code(), study.file + ": /volume_coefficients/" + std::to_string(i) + ": " + e.what());
+            }
+        }
+        for (const auto& kernel : kernels)
+            for (std::size_t a = 0; a < aps.size(); ++a) {
+                HydrostaticErrors automatic(kernel, lattice, 0, aps[a], lattice.gravity, study.k_max);
+                RootScan automatic_scan = find_roots(automatic, study.k_min, study.k_max);
+                for (const auto& mode : study.modes) {
+                    StudyCase c;
+                    c.lattice = lattice.name;
+                    c.dimension = lattice.dimension;
+                    c.mode = mode.name;
+                    c.automatic = mode.is_automatic();
+                    c.kernel = kernel.name();
+                    c.kernel_label = kernel.label();
+                    c.support = kernel.support();
+                    c.ap_name = study.volume_coefficients[a];
+                    c.a_p = aps[a];
+                    HydrostaticErrors errors(kernel, lattice, 0, aps[a], lattice.gravity, study.k_max,
+                                             mode_for(mode, kernel, study));
+                    for (int i = 0; i < study.samples; ++i) {
+                        double k = study.k_min + (study.k_max - study.k_min) * i / (study.samples - 1);
+                        c.curve.emplace_back(k, errors.at(k));
+                    }
+                    c.scan = c.automatic ? automatic_scan : find_roots(errors, study.k_min, study.k_max);
+                    c.acceptance = evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon);
+                    if (!c.automatic) c.explanations = explain(errors, automatic, c.scan, automatic_scan);
+                    results.cases.push_back(std::move(c));
+                    progress.step(kernel.name() + " on " + lattice.name);
+                }
+            }
+    }
+    if (study.compare_with) compare(study, results);
+    return results;
+}
+
+nlohmann::json study_results_json(const Study& study, const StudyResults& results)
+{
+    nlohmann::json cases = nlohmann::json::array();
+    for (const auto& c : results.cases) {
+        nlohmann::json curve = nlohmann::json::object(
+            {{"k", nlohmann::json::array()}, {"eps_rho", nlohmann::json::array()},
+             {"eps_gradp", nlohmann::json::array()}, {"neighbours", nlohmann::json::array()}});
+        for (const auto& [k, v] : c.curve) {
+            curve["k"].push_back(k);
+            curve["eps_rho"].push_back(v.eps_rho);
+            curve["eps_gradp"].push_back(v.eps_gradp);
+            curve["neighbours"].push_back(v.neighbours);
+        }
+        nlohmann::json explanations = nlohmann::json::array();
+        for (const auto& e : c.explanations) {
+            nlohmann::json diffs = nlohmann::json::array();
+            for (const auto& d : e.differences)
+                diffs.push_back({{"radius", d.radius}, {"count", d.count}, {"reason", d.reason}, {"q", d.q},
+                                 {"contribution", d.contribution}});
+            explanations.push_back({{"function", e.root.function}, {"k", e.root.k},
+                                    {"default_value", e.default_value},
+                                    {"default_root_k", e.default_root_k ? nlohmann::json(*e.default_root_k) : nullptr},
+                                    {"differences", diffs}});
+        }
+        auto scan = root_scan_json(c.scan);
+        cases.push_back({{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
+                         {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
+                         {"jumps", scan["jumps"]}, {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
+                         {"explanations", explanations}, {"curve", curve}});
+    }
+    nlohmann::json comparison = nlohmann::json::array();
+    for (const auto& r : results.comparison)
+        comparison.push_back({{"reference", r.reference},
+                              {"function", r.function},
+                              {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
+                              {"status", r.status},
+                              {"note", r.note}});
+    return {{"sphkern_version", SPHKERN_VERSION}, {"study", study.document}, {"study_file", study.file},
+            {"cases", cases}, {"comparison", comparison}};
+}
+
+} // namespace sphkern

@@ -1,0 +1,71 @@
+// Runs a study: every kernel x lattice x volume coefficient x mode, with curves,
+// roots, jumps, condition (22), mode-difference explanations and the comparison
+// with a reference table.
+#pragma once
+
+#include "analysis/acceptance.hpp"
+#include "analysis/roots.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "study/study.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+// Why a root of a non-automatic mode differs from the default evaluation at that k.
+struct ModeDifference {
+    double radius;      // shell radius in d
+    int count;
+    std::string reason; // "evaluated past R" or "left out of the shell list"
+    double q;           // r / h at the root
+    double contribution; // to the function that vanished, in the mode (past R) or missing from it
+};
+
+struct RootExplanation {
+    Root root;
+    double default_value = 0;              // the same function in the default evaluation at root.k
+    std::optional<double> default_root_k;  // nearest root of the same function in the default evaluation
+    std::vector<ModeDifference> differences;
+};
+
+struct StudyCase {
+    std::string lattice;
+    int dimension = 0;
+    std::string mode;
+    bool automatic = true;
+    std::string kernel;      // name
+    std::string kernel_label;
+    double support = 0;
+    std::string ap_name;
+    double a_p = 0;
+    std::vector<std::pair<double, ErrorValues>> curve;
+    RootScan scan;
+    Acceptance acceptance;
+    std::vector<RootExplanation> explanations; // non-automatic modes only
+};
+
+struct ComparisonRow {
+    nlohmann::json reference;        // the row as published
+    std::string kernel;
+    std::string function;            // "rho", "gradp" or "none"
+    std::optional<Root> computed;    // the matching root in the compared mode
+    std::string status;              // "reproduced", "differs", "erratum"
+    std::string note;
+};
+
+struct StudyResults {
+    std::vector<StudyCase> cases;
+    std::vector<ComparisonRow> comparison;
+    double tolerance = 1e-4;
+    nlohmann::json reference; // the whole reference table, if any
+};
+
+StudyResults run_study(const Study& study, KernelRegistry& registry);
+
+nlohmann::json study_results_json(const Study& study, const StudyResults& results);
+
+} // namespace sphkern
