@@ -6,6 +6,7 @@
 #include <boost/dll/shared_library.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace sphkern {
@@ -53,6 +54,13 @@ const sphkern_kernel_descriptor* call_entry(const boost::dll::shared_library& li
 }
 
 } // namespace
+
+double plugin_probe_timeout()
+{
+    const char* text = std::getenv("SPHKERN_PLUGIN_TIMEOUT");
+    double seconds = text ? std::strtod(text, nullptr) : 0;
+    return seconds > 0 && seconds < 3600 ? seconds : 10.0;
+}
 
 bool KernelPlugin::supports(int dim) const
 {
@@ -140,7 +148,7 @@ std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::pa
                 return e.what(); // already names the file
             }
         },
-        plugin_probe_timeout);
+        plugin_probe_timeout());
     if (auto* failure = std::get_if<IsolatedFailure>(&verdict))
         throw Error(ExitCode::plugin, name + ": plugin " + failure->reason);
     if (const auto& message = std::get<std::string>(verdict); !message.empty())

@@ -49,7 +49,7 @@ std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* descript
 // in a child process first. Throws Error(plugin) naming the file and the reason.
 std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::path& file);
 
-// Seconds a plugin may take to load and answer the probes.
-inline constexpr double plugin_probe_timeout = 10.0;
+// Seconds a plugin may take to load and answer the probes: 10, or SPHKERN_PLUGIN_TIMEOUT.
+double plugin_probe_timeout();
 
 } // namespace sphkern

@@ -71,9 +71,9 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         int rows = (static_cast<int>(kernels.size()) + columns - 1) / columns;
         std::string name = key.first + "-" + key.second;
         std::string script = fmt::format(
-            "set terminal svg size {},{} dynamic enhanced font 'sans,11' background '#ffffff'\n"
-            "set output '{}'\nset multiplot layout {},{} title '{} on {}, mode {}: eps_{{/Symbol r}} solid, "
-            "eps_{{/Symbol \\321}}P dashed'\n"
+            "set encoding utf8\nset terminal svg size {},{} dynamic enhanced font 'sans,11' background '#ffffff'\n"
+            "set output '{}'\nset multiplot layout {},{} title '{} on {}, mode {}: ε_ρ solid, "
+            "ε_{{∇P}} dashed'\n"
             "set grid\nset xrange [{}:{}]\nset yrange [-0.1:0.1]\nset xlabel 'k'\nset key bottom right font ',9'\n",
             420 * columns, 340 * rows, name + ".svg", rows, columns,
             study.name, key.first, key.second, study.k_min, study.k_max);
@@ -91,7 +91,7 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
                                     ", ${} using 1:2 with lines lw 2 dt 2 lc rgb '{}' title 'a_p = {} (gradP)' noenhanced",
                                     rho, rgb, c->ap_name, gradp, rgb, c->ap_name);
             }
-            script += plot + "\n";
+            script += plot + "\nunset key\n"; // the legend of the first panel serves all
         }
         script += "unset multiplot\n";
         fs::path script_file = folder / (name + ".gp");

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Sets sphkern up on Debian 12 and runs it:
+#   bash share/bootstrap.sh run [STUDY] [sphkern run options]   the default study (the main job)
+#   bash share/bootstrap.sh test                                every test
+# Installs the missing Debian packages (as root, or through sudo), configures and
+# builds into build/, then runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(cmake make g++ libeigen3-dev libboost-dev libboost-filesystem-dev libspdlog-dev libfmt-dev
+    nlohmann-json3-dev doctest-dev libcli11-dev gnuplot-nox libbenchmark-dev python3 python3-jsonschema)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    echo "bootstrap: installing ${missing[*]}" >&2
+    sudo=""
+    [[ $(id -u) -eq 0 ]] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$(nproc)" >&2
+
+case "${1:-run}" in
+run)
+    shift || true
+    if (($#)) && [[ $1 != -* ]]; then study=$1; shift; else study=potapov2021; fi
+    exec build/sphkern run "$study" --force "$@"
+    ;;
+test)
+    exec ctest --test-dir build --output-on-failure -j 2
+    ;;
+*)
+    echo "usage: bash share/bootstrap.sh run [STUDY] [options] | test" >&2
+    exit 2
+    ;;
+esac

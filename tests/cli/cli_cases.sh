@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# Bad inputs on the command line: each must give its documented exit code and one
+# error line matching a pattern, and never a crash.
+# Usage: cli_cases.sh SPHKERN BROKEN_PLUGIN_DIR DATA_DIR
+set -u
+sphkern=$1 broken=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export SPHKERN_PLUGIN_TIMEOUT=2
+passed=0 failed=0
+
+expect() { # expect CODE PATTERN -- ARGS...
+    local code=$1 pattern=$2
+    shift 3
+    local err out status
+    out=$("$sphkern" "$@" 2>"$work/stderr")
+    status=$?
+    err=$(cat "$work/stderr")
+    if [[ $status -ne $code ]] || ! grep -qE -- "$pattern" <<<"$err" || [[ $(grep -c . <<<"$err") -gt 1 ]]; then
+        echo "FAIL: sphkern $* -> exit $status (expected $code), stderr: $err (expected /$pattern/)"
+        failed=$((failed + 1))
+    else
+        passed=$((passed + 1))
+    fi
+}
+
+lattice() { # lattice NAME JSON: writes $work/NAME.json
+    printf '%s' "$2" >"$work/$1.json"
+}
+
+# Lattice files.
+lattice ok '{"name": "t", "dimension": 2, "basis": [[1, 0], [0.5, 0.8660254037844386]], "motif": [[0, 0]]}'
+expect 0 '^$' -- shells "$work/ok.json" --radius 2
+lattice truncated '{"name": "t", "dimension": 2, "basis": [[1, 0], [0.5'
+expect 3 'truncated.json: not valid JSON' -- shells "$work/truncated.json" --radius 2
+lattice notjson 'hello'
+expect 3 'notjson.json: not valid JSON' -- shells "$work/notjson.json" --radius 2
+lattice empty ''
+expect 3 'empty.json: file is empty' -- shells "$work/empty.json" --radius 2
+lattice wrongtype '{"name": "t", "dimension": "2", "basis": [[1, 0], [0, 1]], "motif": [[0, 0]]}'
+expect 3 'wrongtype.json: /dimension: expected an integer, got a string' -- shells "$work/wrongtype.json" --radius 2
+lattice missing '{"name": "t", "dimension": 2, "motif": [[0, 0]]}'
+expect 3 'missing.json: /: missing required key "basis"' -- shells "$work/missing.json" --radius 2
+lattice unknown '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]], "gravty": [0, -1]}'
+expect 3 'unknown key "gravty" \(did you mean "gravity"\?\)' -- shells "$work/unknown.json" --radius 2
+lattice collinear '{"name": "t", "dimension": 2, "basis": [[1, 0], [2, 0]], "motif": [[0, 0]]}'
+expect 3 'collinear.json: /basis: degenerate basis: the vectors are collinear' -- shells "$work/collinear.json" --radius 2
+lattice coplanar '{"name": "t", "dimension": 3, "basis": [[1, 0, 0], [0, 1, 0], [1, 1, 0]], "motif": [[0, 0, 0]]}'
+expect 3 'coplanar.json: /basis: degenerate basis: the vectors are coplanar' -- shells "$work/coplanar.json" --radius 2
+lattice vectors '{"name": "t", "dimension": 3, "basis": [[1, 0, 0], [0, 1, 0]], "motif": [[0, 0, 0]]}'
+expect 3 'vectors.json: /basis: expected at least 3 elements, got 2' -- shells "$work/vectors.json" --radius 2
+lattice components '{"name": "t", "dimension": 2, "basis": [[1, 0, 0], [0, 1]], "motif": [[0, 0]]}'
+expect 3 'components.json: /basis/0: expected 2 components' -- shells "$work/components.json" --radius 2
+lattice emptymotif '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": []}'
+expect 3 'emptymotif.json: /motif: empty array' -- shells "$work/emptymotif.json" --radius 2
+lattice duplicate '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0], [1, 1]]}'
+expect 3 'duplicate.json: /motif/1: duplicate motif site' -- shells "$work/duplicate.json" --radius 2
+lattice huge '{"name": "t", "dimension": 2, "basis": [[1e400, 0], [0, 1]], "motif": [[0, 0]]}'
+expect 3 'huge.json: not valid JSON' -- shells "$work/huge.json" --radius 2
+lattice absurd '{"name": "t", "dimension": 2, "basis": [[1e9, 0], [0, 1]], "motif": [[0, 0]]}'
+expect 3 'absurd.json: /basis/0/0: value 1e\+09 is out of range' -- shells "$work/absurd.json" --radius 2
+lattice zerogravity '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]], "gravity": [0, 0]}'
+expect 3 'zerogravity.json: /gravity: gravity has zero length' -- shells "$work/zerogravity.json" --radius 2
+printf '{"name": "\xff\xfe"}' >"$work/utf8.json"
+expect 3 'utf8.json: not valid JSON.*UTF-8' -- shells "$work/utf8.json" --radius 2
+python3 -c "print('[' * 200000 + ']' * 200000)" >"$work/deep.json"
+expect 3 'deep.json: JSON nested deeper than 64 levels' -- shells "$work/deep.json" --radius 2
+truncate -s 100M "$work/big.json"
+expect 3 'big.json: file is 104857600 bytes, more than the limit' -- shells "$work/big.json" --radius 2
+expect 3 'nowhere.json: no such file' -- shells "$work/nowhere.json" --radius 2
+mkdir "$work/folder.json"
+expect 3 'folder.json: is a folder' -- shells "$work/folder.json" --radius 2
+expect 3 'unknown lattice "fccc" \(did you mean "fcc"\?\)' -- shells fccc --radius 2
+expect 3 'radius 0 is not allowed' -- shells fcc --radius 0
+expect 3 'radius -1 is not allowed' -- shells fcc --radius -1
+expect 3 'more than the limit of 5000000' -- shells fcc --radius 1e5
+
+# Command-line values.
+expect 2 'error: ' -- shells fcc
+expect 2 'error: ' -- frobnicate
+expect 2 '--k -1 is not allowed' -- eps cubic_bspline fcc --k -1
+expect 3 'has zero length' -- eps cubic_bspline fcc --k 1 --gravity 0,0,0
+expect 3 'expected 3 comma-separated components' -- eps cubic_bspline fcc --k 1 --gravity 0,-1
+expect 3 'a_p = -1 is not allowed' -- eps cubic_bspline fcc --k 1 --ap -1
+expect 3 'no volume coefficient "hexagon"' -- eps cubic_bspline triangular --k 1 --ap hexagon
+expect 3 'composite is defined in 2D only, not on the 3D lattice fcc' -- eps composite fcc --k 1
+expect 3 'unknown kernel "cubic";' -- eps cubic fcc --k 1
+expect 3 'min < max' -- roots cubic_bspline fcc --kmin 1.2 --kmax 0.8
+expect 3 'min < max' -- roots cubic_bspline fcc --kmin 0 --kmax 0.8
+expect 3 'no neighbour shell at radius 1.5 d' -- roots cubic_bspline triangular --shells 1,1.5
+expect 2 'needs an explicit --shells' -- roots cubic_bspline triangular --continue-past-support
+expect 2 '--set x: expected NAME=VALUE' -- eps cubic_bspline fcc --k 1 --set x
+expect 3 'has no parameter "alpha"' -- eps cubic_bspline fcc --k 1 --set alpha=1
+
+# Plugins named on the command line.
+expect 4 'wrong_abi.so: invalid kernel descriptor: ABI version 999' -- kernels --plugin "$broken/wrong_abi.so"
+expect 4 'crash_in_w.so: plugin crashed with signal 11' -- kernels --plugin "$broken/crash_in_w.so"
+expect 4 'endless_loop.so: plugin did not finish within 2 s' -- eps "$broken/endless_loop.so" triangular --k 1
+expect 4 'no_entry.so: not a sphkern kernel plugin' -- check --plugin "$broken/no_entry.so"
+expect 4 'not-a-plugin.so: not a loadable shared library' -- check --plugin "$broken/not-a-plugin.so"
+expect 4 'two plugins are named "cubic_bspline"' -- kernels --plugin "$broken/duplicate_name.so"
+expect 1 '^$' -- check --plugin "$broken/unnormalised.so"
+expect 0 '^$' -- check cubic_bspline
+expect 1 '^$' -- check super_gaussian --strict
+expect 0 '^$' -- check super_gaussian
+
+# Studies.
+study() { printf '%s' "$2" >"$work/$1.json"; }
+study s_kernels '{"name": "s", "kernels": [], "lattices": ["fcc"]}'
+expect 3 's_kernels.json: /kernels: empty array' -- run "$work/s_kernels.json" -o "$work/out1"
+study s_kernel '{"name": "s", "kernels": ["cubic_bsplin"], "lattices": ["fcc"]}'
+expect 3 's_kernel.json: /kernels/0: unknown kernel "cubic_bsplin" \(did you mean "cubic_bspline"\?\)' -- run "$work/s_kernel.json" -o "$work/out2"
+study s_dim '{"name": "s", "kernels": ["composite"], "lattices": ["fcc"]}'
+expect 3 's_dim.json: /kernels/0: kernel composite is defined in 2D only' -- run "$work/s_dim.json" -o "$work/out3"
+study s_k '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "k": {"min": 1.3, "max": 1.0}}'
+expect 3 's_k.json: /k: k interval: \[1.3, 1\] is not allowed' -- run "$work/s_k.json" -o "$work/out4"
+study s_ap '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": [0]}'
+expect 3 's_ap.json: /volume_coefficients/0: expected a positive volume coefficient' -- run "$work/s_ap.json" -o "$work/out5"
+study s_key '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "epsilom": 0.01}'
+expect 3 's_key.json: /: unknown key "epsilom" \(did you mean "epsilon"\?\)' -- run "$work/s_key.json" -o "$work/out6"
+study s_lat '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcx"]}'
+expect 3 's_lat.json: /lattices/0: unknown lattice "fcx"' -- run "$work/s_lat.json" -o "$work/out7"
+study s_shell '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "modes": [{"name": "p", "shells": {"2": [1, "sqrt(x)"]}}]}'
+expect 3 's_shell.json: /modes/0/shells/2/1: expected a shell radius' -- run "$work/s_shell.json" -o "$work/out8"
+study s_nor '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "modes": [{"name": "p", "shells": {"3": [1]}}]}'
+expect 3 's_nor.json: /modes/0/shells: no shell list for kernel cubic_bspline with support R = 2' -- run "$work/s_nor.json" -o "$work/out9"
+study s_ok '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false}'
+expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10"
+expect 5 'out10: already exists; use --force' -- run "$work/s_ok.json" -o "$work/out10"
+expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
+# A failed run leaves no output folder behind, partial or not.
+[[ -z $(ls -A "$work" | grep -E '^out[1-9]$|partial') ]] && passed=$((passed + 1)) || {
+    echo "FAIL: a failed run left output behind: $(ls -A "$work")"
+    failed=$((failed + 1))
+}
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]

@@ -1,0 +1,20 @@
+// A deliberately broken kernel plugin for the loader tests: a C++ exception thrown
+// across the C boundary.
+#include <sphkern/kernel_plugin.h>
+
+#include <stdexcept>
+
+static double w(double q, int, double, const double*)
+{
+    if (q > 0.5) throw std::runtime_error("kernel blew up");
+    return 1.0 - q * q;
+}
+static double dw(double q, int, double, const double*) { return -2.0 * q; }
+SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
+SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+
+static const sphkern_kernel_descriptor descriptor = {
+    SPHKERN_KERNEL_ABI_VERSION, "throws_exception", "broken", "", 1.0, SPHKERN_DIM(2), 0u, 0u, nullptr, 0u, nullptr,
+    w, dw, w_batch, dw_batch};
+
+extern "C" SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,0 +1,48 @@
+// Shared test helpers: the shipped kernels by name, and an independent brute-force
+// sum over lattice points that does not use the shell code.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "lattices/lattice.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace sphkern::test {
+
+inline KernelRegistry& shipped_kernels()
+{
+    static KernelRegistry registry = KernelRegistry::discover({});
+    return registry;
+}
+
+inline Kernel shipped_kernel(const std::string& name) { return Kernel(shipped_kernels().find(name)); }
+
+struct BruteForce {
+    double eps_rho, eps_gradp;
+};
+
+// eps_rho and eps_gradP by summing W over every lattice point in a large box,
+// truncating at R (method.md section 2, written out directly).
+inline BruteForce brute_force_errors(const Kernel& kernel, const Lattice& lattice, double k, double a_p,
+                                     const Eigen::Vector3d& e)
+{
+    const int dim = lattice.dimension, n = 12;
+    const double R = kernel.support();
+    double density = kernel.w(0, dim, k), gradient = 0;
+    for (const auto& site : lattice.motif)
+        for (int a = -n; a <= n; ++a)
+            for (int b = -n; b <= n; ++b)
+                for (int c = (dim == 3 ? -n : 0); c <= (dim == 3 ? n : 0); ++c) {
+                    Eigen::Vector3d x = lattice.basis * (Eigen::Vector3d(a, b, c) + site - lattice.motif[0]);
+                    double r = x.norm();
+                    if (r < 1e-12 || r / k > R) continue;
+                    density += kernel.w(r / k, dim, k);
+                    gradient += std::pow(e.dot(x), 2) / r * kernel.dw(r / k, dim, k);
+                }
+    return {a_p * density / std::pow(k, dim) - 1, -a_p * gradient / std::pow(k, dim + 1) - 1};
+}
+
+} // namespace sphkern::test
