@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <map>
 #include <set>
 
@@ -31,6 +33,20 @@ std::string intervals_text(const Acceptance& a)
     std::string s;
     for (const auto& i : a.intervals) s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", i.from, i.to);
     return s;
+}
+
+// The cases grouped by lattice, mode and a_p, in the order they first appear.
+std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
+{
+    std::vector<std::vector<const StudyCase*>> groups;
+    std::map<std::tuple<std::string, std::string, std::string>, std::size_t> index;
+    for (const auto& c : results.cases) {
+        auto key = std::make_tuple(c.lattice, c.mode, c.ap_name);
+        auto [it, added] = index.emplace(key, groups.size());
+        if (added) groups.emplace_back();
+        groups[it->second].push_back(&c);
+    }
+    return groups;
 }
 
 } // namespace
@@ -76,21 +92,41 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
 {
     std::string s = fmt::format("## Condition (22): |eps_rho| <= {} and |eps_gradP| <= {} for some k in [{}, {}]\n\n",
                                 study.epsilon, study.epsilon, study.k_min, study.k_max);
-    std::string current;
-    for (const auto& c : results.cases) {
-        std::string heading = fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}\n\n", c.lattice, c.dimension,
-                                          c.mode, c.ap_name, c.a_p);
-        if (heading != current) {
-            s += (current.empty() ? "" : "\n") + heading +
-                 "| kernel | verdict | k where (22) holds | best k | max(|eps_rho|, |eps_gradP|) at best k |\n"
-                 "|---|---|---|---|---|\n";
-            current = heading;
-        }
-        s += fmt::format("| {} | {} | {} | {:.4f} | {:.2e} |\n", c.kernel_label,
-                         c.acceptance.passes() ? "**pass**" : "fail", intervals_text(c.acceptance), c.acceptance.best_k,
-                         c.acceptance.best_error);
+    // A summary matrix first: kernels down, lattice / mode / a_p across.
+    auto groups = grouped(results);
+    std::vector<std::string> kernels;
+    for (const auto& c : results.cases)
+        if (std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end()) kernels.push_back(c.kernel_label);
+    s += "| kernel |";
+    std::string rule = "|---|";
+    for (const auto& g : groups) {
+        s += fmt::format(" {} {}{} |", g[0]->lattice, g[0]->ap_name, study.modes.size() > 1 ? " (" + g[0]->mode + ")" : "");
+        rule += "---|";
     }
-    return s + "\n";
+    s += "\n" + rule + "\n";
+    for (const auto& kernel : kernels) {
+        s += "| " + kernel + " |";
+        for (const auto& g : groups) {
+            auto it = std::find_if(g.begin(), g.end(), [&](const StudyCase* c) { return c->kernel_label == kernel; });
+            s += it == g.end() ? " |"
+                 : (*it)->acceptance.passes() ? fmt::format(" **pass** k={:.3f} |", (*it)->acceptance.best_k)
+                                              : fmt::format(" fail ({:.2g}) |", (*it)->acceptance.best_error);
+        }
+        s += "\n";
+    }
+    s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
+    for (const auto& g : groups) {
+        s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
+                         g[0]->ap_name, g[0]->a_p) +
+             "| kernel | verdict | k where (22) holds | best k | max(|eps_rho|, |eps_gradP|) at best k |\n"
+             "|---|---|---|---|---|\n";
+        for (const auto* c : g)
+            s += fmt::format("| {} | {} | {} | {:.4f} | {:.2e} |\n", c->kernel_label,
+                             c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
+                             c->acceptance.best_k, c->acceptance.best_error);
+        s += "\n";
+    }
+    return s;
 }
 
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
@@ -149,24 +185,22 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
     if (any) s += "\n";
 
     s += "## Roots and jumps\n\n";
-    std::string current;
-    for (const auto& c : results.cases) {
-        std::string heading = fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", c.lattice, c.mode, c.ap_name, c.a_p);
-        if (heading != current) {
-            s += (current.empty() ? "" : "\n") + heading +
-                 "| kernel | zero of | k | eps_rho | eps_gradP | N_H | H/d |\n|---|---|---|---|---|---|---|\n";
-            current = heading;
+    for (const auto& g : grouped(results)) {
+        s += fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->mode, g[0]->ap_name, g[0]->a_p) +
+             "| kernel | zero of | k | eps_rho | eps_gradP | N_H | H/d |\n|---|---|---|---|---|---|---|\n";
+        for (const auto* c : g) {
+            if (c->scan.roots.empty()) s += fmt::format("| {} | no root | | | | | |\n", c->kernel_label);
+            for (const auto& r : c->scan.roots)
+                s += fmt::format("| {} | {} | {:.5f} | {} | {} | {} | {:.4f} |\n", c->kernel_label, eps_name(r.function),
+                                 r.k, fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
+                                 r.support_radius);
+            for (const auto& j : c->scan.jumps)
+                s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c->kernel_label,
+                                 eps_name(j.function), j.kind, j.k, fixed(j.left), fixed(j.right));
         }
-        if (c.scan.roots.empty()) s += fmt::format("| {} | no root | | | | | |\n", c.kernel_label);
-        for (const auto& r : c.scan.roots)
-            s += fmt::format("| {} | {} | {:.5f} | {} | {} | {} | {:.4f} |\n", c.kernel_label, eps_name(r.function),
-                             r.k, fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
-                             r.support_radius);
-        for (const auto& j : c.scan.jumps)
-            s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c.kernel_label,
-                             eps_name(j.function), j.kind, j.k, fixed(j.left), fixed(j.right));
+        s += "\n";
     }
-    s += "\n" + verdicts_markdown(study, results);
+    s += verdicts_markdown(study, results);
 
     if (!figures.empty()) {
         s += "## Figures\n\neps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= epsilon shaded "
