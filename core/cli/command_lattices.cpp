@@ -22,7 +22,9 @@ Action add_lattices_command(CLI::App& app)
     auto* command = app.add_subcommand("lattices", "List the shipped lattices");
     auto options = std::make_shared<CommonOptions>();
     add_json_option(*command, *options);
+    add_plugin_option(*command, *options);
     return [options] {
+        if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         nlohmann::json list = nlohmann::json::array();
         for (const auto& name : shipped_lattice_names()) list.push_back(lattice_summary(load_lattice(name)));
         if (options->json) {

@@ -24,7 +24,9 @@ Action add_shells_command(CLI::App& app)
     command->add_option("--site", options->site, "Motif site")->capture_default_str();
     command->add_option("--gravity", options->gravity, "Direction for the moments (default: the lattice's)");
     add_json_option(*command, *options);
+    add_plugin_option(*command, *options);
     return [options] {
+        if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         auto lattice = load_lattice(options->lattice);
         Eigen::Vector3d e = options->gravity.empty()
                                 ? lattice.gravity
