@@ -57,5 +57,7 @@ Action add_shells_command(CLI::App& app);
 Action add_eps_command(CLI::App& app);
 Action add_roots_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
+Action add_surface_command(CLI::App& app);
+Action add_block_command(CLI::App& app);
 
 } // namespace sphkern::cli

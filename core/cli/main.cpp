@@ -36,6 +36,8 @@ int main(int argc, char** argv)
     add(cli::add_shells_command);
     add(cli::add_eps_command);
     add(cli::add_roots_command);
+    add(cli::add_surface_command);
+    add(cli::add_block_command);
 
     try {
         app.parse(argc, argv);

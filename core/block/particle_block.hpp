@@ -1,0 +1,60 @@
+// A finite block of lattice cells filled with particles: the independent check of the
+// lattice sums by direct SPH summation, and the scalable path (method.md section 7).
+#pragma once
+
+#include "analysis/surface_profile.hpp"
+#include "kernels/kernel.hpp"
+#include "lattices/lattice.hpp"
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+inline constexpr std::size_t max_block_particles = 20'000'000;
+
+struct BlockOptions {
+    std::array<long long, 3> cells = {1, 1, 1}; // along the basis vectors; the last is vertical
+    bool periodic = false;                      // lateral sides
+    double k = 1.0;
+    double a_p = 1.0;
+    GradientForm form = GradientForm::sum;
+    int threads = 0; // 0: every core
+};
+
+struct BlockTimings {
+    double setup = 0, density = 0, gradient = 0; // seconds
+};
+
+struct LayerRange {
+    int layer;
+    int particles;
+    double rho_min, rho_max, gradp_min, gradp_max;
+};
+
+struct BlockResult {
+    int dimension = 0;
+    std::vector<Eigen::Vector3d> positions;
+    std::vector<int> layer;         // 0 on top
+    std::vector<double> eps_rho;    // per particle
+    std::vector<double> eps_gradp;  // per particle, along gravity
+    Eigen::Vector3d gravity;        // normal to the top face, pointing down
+    double spacing = 0;             // between layers
+    std::size_t pair_interactions = 0; // per pass
+    int threads = 1;
+    BlockTimings timings;
+    std::vector<LayerRange> layers() const;
+};
+
+// Builds the block and evaluates every particle's density and pressure gradient by
+// direct sums over the neighbours found with a cell list. Sizes and memory are
+// checked before anything is allocated; throws Error(input) with one line.
+BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const BlockOptions& options);
+
+// The top face's downward normal for a block of this lattice.
+Eigen::Vector3d block_gravity(const Lattice& lattice);
+
+} // namespace sphkern

@@ -1,0 +1,78 @@
+// `sphkern surface`: the error profile below a free surface, layer by layer.
+#include "cli/command.hpp"
+
+#include "analysis/surface_profile.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+namespace sphkern::cli {
+
+nlohmann::json surface_json(const SurfaceProfile& profile)
+{
+    nlohmann::json layers = nlohmann::json::array();
+    for (const auto& l : profile.layers)
+        layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
+                          {"neighbours", l.neighbours}});
+    return {{"spacing", profile.spacing},
+            {"layers", layers},
+            {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
+                      {"neighbours", profile.bulk.neighbours}}}};
+}
+
+Action add_surface_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
+    struct Options : CommonOptions {
+        std::string kernel, lattice, form = "sum";
+        double k = 0;
+        int layers = 4;
+        std::vector<std::string> sets;
+        EvaluationOptions evaluation;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
+    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
+    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
+    command->add_option("--layers", options->layers, "Report at least this many layers")->capture_default_str();
+    command->add_option("--form", options->form, "Gradient form: sum, difference or monaghan")->capture_default_str();
+    command->add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
+        ->capture_default_str();
+    command->add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
+    command->add_option("--site", options->evaluation.site, "Motif site on the top layer")->capture_default_str();
+    add_set_option(*command, options->sets);
+    add_plugin_option(*command, *options);
+    add_json_option(*command, *options);
+    return [options] {
+        auto form = parse_gradient_form(options->form);
+        auto lattice = load_lattice(options->lattice);
+        auto registry = discover_kernels(*options);
+        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        double a_p = lattice.volume_coefficient(options->evaluation.ap);
+        auto profile = surface_profile(kernel, lattice, options->evaluation.site, a_p,
+                                       gravity_of(lattice, options->evaluation), options->k, options->layers, form);
+        if (options->json) {
+            auto document = surface_json(profile);
+            document["kernel"] = kernel.label();
+            document["lattice"] = lattice.name;
+            document["k"] = options->k;
+            document["a_p"] = a_p;
+            document["form"] = gradient_form_name(form);
+            print_json(document);
+            return 0;
+        }
+        fmt::print("{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(), lattice.name,
+                   options->k, a_p, gradient_form_name(form), profile.spacing);
+        fmt::print("{:>5} {:>10} {:>6} {:>14} {:>14}\n", "layer", "depth/d", "N", "eps_rho", "eps_gradP");
+        for (const auto& l : profile.layers)
+            fmt::print("{:>5} {:>10.5f} {:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth, l.neighbours, l.eps_rho, l.eps_gradp);
+        fmt::print("{:>5} {:>10} {:>6} {:>14.8f} {:>14.8f}\n", "bulk", "", profile.bulk.neighbours, profile.bulk.eps_rho,
+                   profile.bulk.eps_gradp);
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli
