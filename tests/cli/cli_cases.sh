@@ -92,6 +92,22 @@ expect 2 'needs an explicit --shells' -- roots cubic_bspline triangular --contin
 expect 2 '--set x: expected NAME=VALUE' -- eps cubic_bspline fcc --k 1 --set x
 expect 3 'has no parameter "alpha"' -- eps cubic_bspline fcc --k 1 --set alpha=1
 
+# Surface profiles and particle blocks.
+expect 3 'not normal to a family of equally spaced planes' -- surface cubic_bspline triangular --k 1.2 --gravity 1.4142,-1
+expect 3 'gradient form "up" is unknown' -- surface cubic_bspline fcc --k 1.2 --form up
+expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size 0,10,10
+expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size -4,10,10
+expect 3 'more than the limit of 20000000' -- block cubic_bspline fcc --k 1.2 --size 100000,100000,100000
+expect 2 'the lattice is 3D, give 3 sizes' -- block cubic_bspline fcc --k 1.2 --size 10,10
+expect 2 'expected N1,N2\[,N3\] integers' -- block cubic_bspline fcc --k 1.2 --size 10,x,10
+expect 3 'a periodic block needs more than' -- block cubic_bspline fcc --k 1.2 --size 3,3,3 --periodic
+expect 5 'is a folder' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --vtk "$work"
+expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 8,8,8 --periodic --vtk "$work/b.vtk" --csv "$work/b.csv"
+[[ $(grep -c '^' "$work/b.csv") -eq 513 ]] && grep -q 'SCALARS eps_gradp double 1' "$work/b.vtk" && passed=$((passed + 1)) || {
+    echo "FAIL: block --csv/--vtk files incomplete"
+    failed=$((failed + 1))
+}
+
 # Plugins named on the command line.
 expect 4 'wrong_abi.so: invalid kernel descriptor: ABI version 999' -- kernels --plugin "$broken/wrong_abi.so"
 expect 4 'crash_in_w.so: plugin crashed with signal 11' -- kernels --plugin "$broken/crash_in_w.so"

@@ -9,12 +9,17 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace sphkern::test {
 
 inline KernelRegistry& shipped_kernels()
 {
-    static KernelRegistry registry = KernelRegistry::discover({});
+    // The build tree's plugins, also when the test binary runs outside ctest.
+    static KernelRegistry registry = [] {
+        ::setenv("SPHKERN_PLUGIN_PATH", SPHKERN_BUILD_DIR "/plugins", 0);
+        return KernelRegistry::discover({});
+    }();
     return registry;
 }
 
