@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <type_traits>
 
 namespace sphkern {
 
@@ -47,32 +48,29 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The cell list: bins are the lattice cells themselves (each holds the motif's sites),
-// and the stencil keeps the bin offsets whose closest pair of sites is within reach.
-struct Stencil {
-    std::vector<Eigen::Vector3i> offsets;
-    Eigen::Vector3i extent = Eigen::Vector3i::Zero();
-};
-
-Stencil make_stencil(const Lattice& lattice, double reach)
+// The cell list: the bins are the lattice cells themselves (each holds the motif's
+// sites), and the stencil keeps the bin offsets whose closest pair of sites is in reach.
+std::vector<Eigen::Vector3i> make_stencil(const Lattice& lattice, double reach, Eigen::Vector3i& extent)
 {
-    Stencil stencil;
+    std::vector<Eigen::Vector3i> offsets;
+    extent.setZero();
     Eigen::Matrix3d inverse = lattice.basis.inverse();
     int range[3] = {0, 0, 0};
     for (int i = 0; i < lattice.dimension; ++i) range[i] = static_cast<int>(std::ceil(inverse.row(i).norm() * reach)) + 1;
     const double reach2 = reach * reach * (1 + 1e-12);
-    for (int a = -range[0]; a <= range[0]; ++a)
+    // Offsets into one neighbour row of cells follow each other: that row stays in cache.
+    for (int c = -range[2]; c <= range[2]; ++c)
         for (int b = -range[1]; b <= range[1]; ++b)
-            for (int c = -range[2]; c <= range[2]; ++c) {
+            for (int a = -range[0]; a <= range[0]; ++a) {
                 double closest = INFINITY;
                 for (const auto& ms : lattice.motif)
                     for (const auto& mt : lattice.motif)
                         closest = std::min(closest, (lattice.basis * (Eigen::Vector3d(a, b, c) + mt - ms)).squaredNorm());
                 if (closest > reach2) continue;
-                stencil.offsets.emplace_back(a, b, c);
-                stencil.extent = stencil.extent.cwiseMax(Eigen::Vector3i(std::abs(a), std::abs(b), std::abs(c)));
+                offsets.emplace_back(a, b, c);
+                extent = extent.cwiseMax(Eigen::Vector3i(std::abs(a), std::abs(b), std::abs(c)));
             }
-    return stencil;
+    return offsets;
 }
 
 template <class Work>
@@ -89,6 +87,69 @@ void parallel_for(std::size_t n, int threads, const Work& work)
         pool.emplace_back([&work, t, begin, end] { work(t, begin, end); });
     }
     for (auto& th : pool) th.join();
+}
+
+// A contiguous run of particles i = first_i + p and their neighbours j = first_j + p
+// (seen through a periodic image shifted by `shift`), p < length.
+struct Run {
+    std::size_t first_i, first_j, length, offset; // offset: of the run's first particle in its row
+    Eigen::Vector3d shift;
+};
+
+// q = r / h, r^2 and (unless `height` is null) height = e . (x_j - x_i) along a run. Plain pointers and no
+// branch, so that the compiler vectorises it.
+SPHKERN_VECTOR_CLONES void run_distances(const double* __restrict x, const double* __restrict y, const double* __restrict z, const Run& run,
+                   double inv_k, const Eigen::Vector3d& e, double* __restrict q, double* __restrict r2,
+                   double* __restrict height)
+{
+    const double ex = e.x(), ey = e.y(), ez = e.z(), sx = run.shift.x(), sy = run.shift.y(), sz = run.shift.z();
+    const double *xi = x + run.first_i, *yi = y + run.first_i, *zi = z + run.first_i;
+    const double *xj = x + run.first_j, *yj = y + run.first_j, *zj = z + run.first_j;
+    if (!height) { // the density needs no height
+        for (std::size_t p = 0; p < run.length; ++p) {
+            const double dx = xj[p] + sx - xi[p], dy = yj[p] + sy - yi[p], dz = zj[p] + sz - zi[p];
+            r2[p] = dx * dx + dy * dy + dz * dz;
+            q[p] = std::sqrt(r2[p]) * inv_k;
+        }
+        return;
+    }
+    for (std::size_t p = 0; p < run.length; ++p) {
+        const double dx = xj[p] + sx - xi[p], dy = yj[p] + sy - yi[p], dz = zj[p] + sz - zi[p];
+        r2[p] = dx * dx + dy * dy + dz * dz;
+        q[p] = std::sqrt(r2[p]) * inv_k;
+        height[p] = ex * dx + ey * dy + ez * dz;
+    }
+}
+
+// sum[p] += w[p] for the pairs within reach (adding +0.0 otherwise leaves the sum as it is).
+SPHKERN_VECTOR_CLONES void run_density(const double* __restrict w, const double* __restrict r2, double reach2, std::size_t length,
+                 double* __restrict sum, std::size_t& pairs)
+{
+    std::size_t found = 0;
+    for (std::size_t p = 0; p < length; ++p) {
+        const bool inside = r2[p] <= reach2;
+        sum[p] += inside ? w[p] : 0.0;
+        found += inside;
+    }
+    pairs += found;
+}
+
+// sum[p] += weight_ij W'(r) (x_i - x_j) . e / r for the pairs within reach, with
+// (x_i - x_j) . e = -height and the weight of each form for P = rho0 g depth.
+template <GradientForm form>
+SPHKERN_VECTOR_CLONES void run_gradient(const double* __restrict depth_i, const double* __restrict depth_j, const double* __restrict rho_i,
+                  const double* __restrict rho_j, const double* __restrict dw, const double* __restrict height,
+                  const double* __restrict q, const double* __restrict r2, double reach2, double k, std::size_t length,
+                  double* __restrict sum)
+{
+    for (std::size_t p = 0; p < length; ++p) {
+        double weight;
+        if constexpr (form == GradientForm::sum) weight = depth_i[p] + depth_j[p];
+        else if constexpr (form == GradientForm::difference) weight = depth_j[p] - depth_i[p];
+        else weight = rho_i[p] * (depth_i[p] / (rho_i[p] * rho_i[p]) + depth_j[p] / (rho_j[p] * rho_j[p]));
+        const double term = weight * dw[p] * -height[p] / (q[p] * k);
+        sum[p] += r2[p] <= reach2 ? term : 0.0;
+    }
 }
 
 } // namespace
@@ -117,12 +178,13 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
         fail_input(s.str());
     }
     const double reach = kernel.support() * options.k;
-    const Stencil stencil = make_stencil(lattice, reach);
+    Eigen::Vector3i extent;
+    const auto stencil = make_stencil(lattice, reach, extent);
     const int lateral = dim - 1; // the last basis vector is vertical
     if (options.periodic)
         for (int i = 0; i < lateral; ++i)
-            if (options.cells[static_cast<std::size_t>(i)] <= 2 * stencil.extent[i])
-                fail_input("a periodic block needs more than " + std::to_string(2 * stencil.extent[i]) +
+            if (options.cells[static_cast<std::size_t>(i)] <= 2 * extent[i])
+                fail_input("a periodic block needs more than " + std::to_string(2 * extent[i]) +
                            " cells along basis vector " + std::to_string(i + 1) + " at this support (R k = " +
                            std::to_string(reach) + " d)");
 
@@ -132,19 +194,26 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.spacing = layer_spacing(lattice, 0, result.gravity);
     result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const int sites = lattice.sites();
-    const long long n1 = options.cells[0], n2 = options.cells[1], n3 = options.cells[2];
-    const std::size_t count = static_cast<std::size_t>(total);
+    const long long size[3] = {options.cells[0], options.cells[1], options.cells[2]};
+    const long long n1 = size[0], n2 = size[1], n3 = size[2];
+    const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3), count = static_cast<std::size_t>(total);
+    // Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
+    // so that a row of cells is a contiguous run for every site.
     result.positions.resize(count);
-    // Particle index = ((c3 * n2 + c2) * n1 + c1) * sites + site: cell by cell.
-    for (long long c3 = 0; c3 < n3; ++c3)
-        for (long long c2 = 0; c2 < n2; ++c2)
-            for (long long c1 = 0; c1 < n1; ++c1)
-                for (int s = 0; s < sites; ++s)
-                    result.positions[static_cast<std::size_t>(((c3 * n2 + c2) * n1 + c1) * sites + s)] =
-                        lattice.basis * (Eigen::Vector3d(double(c1), double(c2), double(c3)) + lattice.motif[static_cast<std::size_t>(s)]);
+    std::vector<double> x(count), y(count), z(count);
+    for (int s = 0; s < sites; ++s)
+        for (std::size_t c = 0; c < cells; ++c) {
+            const long long cc = static_cast<long long>(c);
+            const Eigen::Vector3d index(double(cc % n1), double((cc / n1) % n2), double(cc / (n1 * n2)));
+            const std::size_t i = static_cast<std::size_t>(s) * cells + c;
+            result.positions[i] = lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)]);
+            x[i] = result.positions[i].x();
+            y[i] = result.positions[i].y();
+            z[i] = result.positions[i].z();
+        }
     std::vector<double> depth(count);
     double top = -INFINITY;
-    for (const auto& x : result.positions) top = std::max(top, -result.gravity.dot(x));
+    for (const auto& p : result.positions) top = std::max(top, -result.gravity.dot(p));
     result.layer.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         depth[i] = top + result.gravity.dot(result.positions[i]);
@@ -153,130 +222,113 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.timings.setup = seconds_since(started);
 
     const double reach2 = reach * reach * (1 + 1e-12);
-    const long long size[3] = {n1, n2, n3};
-    const double kd = std::pow(options.k, dim), kd1 = kd * options.k;
-    // The flat index difference of each stencil offset, for cells whose stencil stays inside the block.
-    std::vector<std::ptrdiff_t> flat;
-    for (const auto& o : stencil.offsets) flat.push_back(static_cast<std::ptrdiff_t>(((o[2] * n2 + o[1]) * n1 + o[0]) * sites));
-    // Coordinates packed x, y, z per particle in a plain array: one memory stream per
-    // stencil offset, and no aliasing with the output buffers.
-    std::vector<double> packed(3 * count);
-    for (std::size_t i = 0; i < count; ++i)
-        for (int d = 0; d < 3; ++d) packed[3 * i + static_cast<std::size_t>(d)] = result.positions[i][d];
-    const Eigen::Vector3d e = result.gravity;
-    const double inv_k = 1 / options.k;
-    const std::size_t most = flat.size() * static_cast<std::size_t>(sites);
+    const double k = options.k, inv_k = 1 / k, kd = std::pow(k, dim), kd1 = kd * k;
 
-    // The neighbours j != i of particle i within reach: fills q = r / h, height = e . (x_j - x_i)
-    // and j; returns how many.
-    auto gather = [&, p = packed.data()](std::size_t i, double* __restrict q,
-                                                                    double* __restrict height,
-                                                                    std::size_t* __restrict index) {
-        const long long cell = static_cast<long long>(i) / sites;
-        const long long c[3] = {cell % n1, (cell / n1) % n2, cell / (n1 * n2)};
-        const double xi = p[3 * i], yi = p[3 * i + 1], zi = p[3 * i + 2];
-        const double ex = e.x(), ey = e.y(), ez = e.z();
-        std::size_t n = 0;
-        bool interior = true;
-        for (int d = 0; d < dim; ++d) interior = interior && c[d] >= stencil.extent[d] && c[d] + stencil.extent[d] < size[d];
-        if (interior) { // the common case: no bounds, no periodic images
-            const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(cell * sites);
-            for (std::ptrdiff_t delta : flat)
-                for (int s = 0; s < sites; ++s) {
-                    const std::size_t j = static_cast<std::size_t>(base + delta + s);
-                    const double dx = p[3 * j] - xi, dy = p[3 * j + 1] - yi, dz = p[3 * j + 2] - zi;
-                    const double r2 = dx * dx + dy * dy + dz * dz;
-                    if (r2 <= reach2 && j != i) {
-                        q[n] = std::sqrt(r2) * inv_k;
-                        height[n] = ex * dx + ey * dy + ez * dz;
-                        index[n++] = j;
-                    }
-                }
-            return n;
+    // The runs of one row of cells (fixed c2, c3), one site pair and one stencil offset:
+    // the row's particles whose neighbour cell exists, split where a periodic side wraps.
+    auto row_runs = [&](std::size_t row, int s, int t, const Eigen::Vector3i& o, std::vector<Run>& runs) {
+        runs.clear();
+        const long long c[3] = {0, static_cast<long long>(row) % n2, static_cast<long long>(row) / n2};
+        long long target[3] = {0, 0, 0};
+        Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+        for (int d = 1; d < 3; ++d) {
+            target[d] = c[d] + o[d];
+            if (target[d] >= 0 && target[d] < size[d]) continue;
+            if (!options.periodic || d >= lateral) return;
+            long long wrap = target[d] < 0 ? size[d] : -size[d];
+            target[d] += wrap;
+            shift -= static_cast<double>(wrap) * lattice.basis.col(d);
         }
-        for (const auto& o : stencil.offsets) {
-            long long t[3];
-            Eigen::Vector3d shift = Eigen::Vector3d::Zero();
-            bool inside = true;
-            for (int d = 0; d < 3 && inside; ++d) {
-                t[d] = c[d] + o[d];
-                if (t[d] >= 0 && t[d] < size[d]) continue;
-                if (!options.periodic || d >= lateral) {
-                    inside = false;
-                } else {
-                    long long wrap = t[d] < 0 ? 1 : -1;
-                    t[d] += wrap * size[d];
-                    shift -= static_cast<double>(wrap * size[d]) * lattice.basis.col(d);
+        const std::size_t row_i = static_cast<std::size_t>(s) * cells + row * static_cast<std::size_t>(n1);
+        const std::size_t row_j = static_cast<std::size_t>(t) * cells + static_cast<std::size_t>((target[2] * n2 + target[1]) * n1);
+        auto add = [&](long long lo, long long hi, long long wrap) {
+            if (hi <= lo) return;
+            Eigen::Vector3d s1 = shift - static_cast<double>(wrap) * lattice.basis.col(0);
+            runs.push_back({row_i + static_cast<std::size_t>(lo), row_j + static_cast<std::size_t>(lo + o[0] + wrap),
+                            static_cast<std::size_t>(hi - lo), static_cast<std::size_t>(lo), s1});
+        };
+        add(std::max(0LL, -static_cast<long long>(o[0])), std::min(n1, n1 - o[0]), 0);
+        if (options.periodic && lateral > 0) {
+            if (o[0] < 0) add(0, -o[0], n1);    // wraps to the far end
+            if (o[0] > 0) add(n1 - o[0], n1, -n1);
+        }
+    };
+    // Every particle of a row sums its neighbours in stencil order whatever thread does the
+    // row, so the results do not depend on the thread count.
+    const std::size_t rows = static_cast<std::size_t>(n2 * n3);
+    auto for_each_run = [&](std::size_t row, int s, std::vector<Run>& runs, auto&& visit) {
+        for (const auto& o : stencil)
+            for (int t = 0; t < sites; ++t) {
+                row_runs(row, s, t, o, runs);
+                for (const auto& run : runs) {
+                    // The particle itself: offset 0, same site, no image.
+                    if (o.isZero() && t == s) continue;
+                    visit(run);
                 }
             }
-            if (!inside) continue;
-            std::size_t first = static_cast<std::size_t>(((t[2] * n2 + t[1]) * n1 + t[0]) * sites);
-            for (int s = 0; s < sites; ++s) {
-                std::size_t j = first + static_cast<std::size_t>(s);
-                if (j == i && shift.isZero()) continue;
-                const double dx = p[3 * j] + shift.x() - xi, dy = p[3 * j + 1] + shift.y() - yi,
-                             dz = p[3 * j + 2] + shift.z() - zi;
-                const double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 <= reach2) {
-                    q[n] = std::sqrt(r2) * inv_k;
-                    height[n] = ex * dx + ey * dy + ez * dz;
-                    index[n++] = j;
-                }
-            }
-        }
-        return n;
     };
 
-    // Density pass: sum over neighbours, kernel values through the batch interface.
+    // Density pass.
     result.eps_rho.resize(count);
     std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
-    auto t = Clock::now();
-    const double self = kernel.w(0, dim, options.k);
-    parallel_for(count, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        std::vector<double> q(most), height(most), w(most);
-        std::vector<std::size_t> index(most);
+    auto t0 = Clock::now();
+    const double self = kernel.w(0, dim, k);
+    parallel_for(rows, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
+        const std::size_t n = static_cast<std::size_t>(n1);
+        std::vector<double> q(n), r2(n), w(n), sum(n);
+        std::vector<Run> runs;
         std::size_t found = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-            std::size_t n = gather(i, q.data(), height.data(), index.data());
-            kernel.w_batch(q.data(), w.data(), n, dim, options.k);
-            double sum = self;
-            for (std::size_t p = 0; p < n; ++p) sum += w[p];
-            result.eps_rho[i] = options.a_p * sum / kd - 1;
-            found += n;
-        }
+        for (std::size_t row = begin; row < end; ++row)
+            for (int s = 0; s < sites; ++s) {
+                std::fill(sum.begin(), sum.end(), self);
+                for_each_run(row, s, runs, [&](const Run& run) {
+                    run_distances(x.data(), y.data(), z.data(), run, inv_k, result.gravity, q.data(), r2.data(), nullptr);
+                    kernel.w_batch(q.data(), w.data(), run.length, dim, k);
+                    run_density(w.data(), r2.data(), reach2, run.length, sum.data() + run.offset, found);
+                });
+                const std::size_t first = static_cast<std::size_t>(s) * cells + row * n;
+                for (std::size_t p = 0; p < n; ++p) result.eps_rho[first + p] = options.a_p * sum[p] / kd - 1;
+            }
         pairs[static_cast<std::size_t>(thread)] = found;
     });
-    result.timings.density = seconds_since(t);
+    result.timings.density = seconds_since(t0);
     for (auto p : pairs) result.pair_interactions += p;
 
-    // Gradient pass: P = rho0 g depth, the chosen form, projected on gravity:
-    // sum_j weight_ij W'(r) (x_i - x_j) . e / r, with (x_i - x_j) . e = -height.
-    result.eps_gradp.resize(count);
-    t = Clock::now();
+    // Gradient pass.
     const GradientForm form = options.form;
-    parallel_for(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
-        std::vector<double> q(most), height(most), dw(most);
-        std::vector<std::size_t> index(most);
-        for (std::size_t i = begin; i < end; ++i) {
-            std::size_t n = gather(i, q.data(), height.data(), index.data());
-            kernel.dw_batch(q.data(), dw.data(), n, dim, options.k);
-            const double depth_i = depth[i], rho_i = 1 + result.eps_rho[i];
-            double sum = 0;
-            for (std::size_t p = 0; p < n; ++p) {
-                const double depth_j = depth[index[p]];
-                double weight;
-                if (form == GradientForm::sum) weight = depth_i + depth_j;
-                else if (form == GradientForm::difference) weight = depth_j - depth_i;
-                else {
-                    const double rho_j = 1 + result.eps_rho[index[p]];
-                    weight = rho_i * (depth_i / (rho_i * rho_i) + depth_j / (rho_j * rho_j));
-                }
-                sum += weight * dw[p] * -height[p] / (q[p] * options.k);
+    std::vector<double> density;
+    if (form == GradientForm::monaghan) {
+        density.resize(count);
+        for (std::size_t i = 0; i < count; ++i) density[i] = 1 + result.eps_rho[i];
+    }
+    const double* rho = form == GradientForm::monaghan ? density.data() : depth.data(); // unused unless Monaghan
+    result.eps_gradp.resize(count);
+    t0 = Clock::now();
+    parallel_for(rows, result.threads, [&](int, std::size_t begin, std::size_t end) {
+        const std::size_t n = static_cast<std::size_t>(n1);
+        std::vector<double> q(n), r2(n), height(n), dw(n), sum(n);
+        std::vector<Run> runs;
+        for (std::size_t row = begin; row < end; ++row)
+            for (int s = 0; s < sites; ++s) {
+                std::fill(sum.begin(), sum.end(), 0.0);
+                for_each_run(row, s, runs, [&](const Run& run) {
+                    run_distances(x.data(), y.data(), z.data(), run, inv_k, result.gravity, q.data(), r2.data(), height.data());
+                    kernel.dw_batch(q.data(), dw.data(), run.length, dim, k);
+                    auto call = [&](auto f) {
+                        run_gradient<decltype(f)::value>(depth.data() + run.first_i, depth.data() + run.first_j,
+                                                         rho + run.first_i, rho + run.first_j, dw.data(), height.data(),
+                                                         q.data(), r2.data(), reach2, k, run.length, sum.data() + run.offset);
+                    };
+                    if (form == GradientForm::sum) call(std::integral_constant<GradientForm, GradientForm::sum>{});
+                    else if (form == GradientForm::difference)
+                        call(std::integral_constant<GradientForm, GradientForm::difference>{});
+                    else call(std::integral_constant<GradientForm, GradientForm::monaghan>{});
+                });
+                const std::size_t first = static_cast<std::size_t>(s) * cells + row * n;
+                for (std::size_t p = 0; p < n; ++p) result.eps_gradp[first + p] = options.a_p * sum[p] / kd1 - 1;
             }
-            result.eps_gradp[i] = options.a_p * sum / kd1 - 1;
-        }
     });
-    result.timings.gradient = seconds_since(t);
+    result.timings.gradient = seconds_since(t0);
     return result;
 }
 

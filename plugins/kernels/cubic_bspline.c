@@ -5,20 +5,21 @@
 
 static double sigma(int dim) { return dim == 1 ? 1.0 : dim == 2 ? 15.0 / (7.0 * PI) : 3.0 / (2.0 * PI); }
 
-static double w(double q, int dim, double k, const double* p)
+/* Branch-free (?: on both pieces) so that the batch loop vectorises. */
+static inline double w(double q, int dim, double k, const double* p)
 {
     (void)k; (void)p;
-    if (q <= 1.0) return sigma(dim) * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
-    if (q <= 2.0) return sigma(dim) * (2.0 - q) * (2.0 - q) * (2.0 - q) / 6.0;
-    return 0.0;
+    double t = 2.0 - q;
+    double inner = 2.0 / 3.0 - q * q + 0.5 * q * q * q, outer = t * t * t / 6.0;
+    return sigma(dim) * (q <= 1.0 ? inner : q <= 2.0 ? outer : 0.0);
 }
 
-static double dw(double q, int dim, double k, const double* p)
+static inline double dw(double q, int dim, double k, const double* p)
 {
     (void)k; (void)p;
-    if (q <= 1.0) return sigma(dim) * (-2.0 * q + 1.5 * q * q);
-    if (q <= 2.0) return sigma(dim) * -0.5 * (2.0 - q) * (2.0 - q);
-    return 0.0;
+    double t = 2.0 - q;
+    double inner = -2.0 * q + 1.5 * q * q, outer = -0.5 * t * t;
+    return sigma(dim) * (q <= 1.0 ? inner : q <= 2.0 ? outer : 0.0);
 }
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
