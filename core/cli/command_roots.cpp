@@ -13,18 +13,57 @@
 
 namespace sphkern::cli {
 
+namespace {
+
+struct RootsOptions : CommonOptions {
+    std::string kernel, lattice;
+    double k_min = 0.75, k_max = 1.25, epsilon = 0.01;
+    std::vector<std::string> sets;
+    EvaluationOptions evaluation;
+};
+
+// Roots of one kernel on one lattice: printed, or appended to `collected` as JSON.
+void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& lattice, nlohmann::json* collected)
+{
+    double a_p = lattice.volume_coefficient(options.evaluation.ap);
+    HydrostaticErrors errors(kernel, lattice, options.evaluation.site, a_p, gravity_of(lattice, options.evaluation),
+                             options.k_max, evaluation_mode(options.evaluation));
+    auto scan = find_roots(errors, options.k_min, options.k_max);
+    auto acceptance = evaluate_acceptance(errors, options.k_min, options.k_max, options.epsilon);
+    if (options.json) {
+        auto document = root_scan_json(scan);
+        document["kernel"] = kernel.label();
+        document["lattice"] = lattice.name;
+        document["a_p"] = a_p;
+        document["k_range"] = {options.k_min, options.k_max};
+        document["acceptance"] = acceptance_json(acceptance, options.epsilon);
+        if (collected) collected->push_back(document);
+        else print_json(document);
+        return;
+    }
+    fmt::print("{} on {}, a_p = {:.10g}, k in [{}, {}]\n", kernel.label(), lattice.name, a_p, options.k_min,
+               options.k_max);
+    fmt::print("{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
+    for (const auto& r : scan.roots)
+        fmt::print("{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k, r.values.eps_rho,
+                   r.values.eps_gradp, r.values.neighbours, r.support_radius);
+    if (scan.roots.empty()) fmt::print("(no root in the interval)\n");
+    for (const auto& j : scan.jumps)
+        fmt::print("jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind, j.left,
+                   j.right);
+    fmt::print("condition (22), epsilon = {}: {}", options.epsilon, acceptance.passes() ? "passes for k in" : "fails");
+    for (const auto& i : acceptance.intervals) fmt::print(" [{:.6f}, {:.6f}]", i.from, i.to);
+    fmt::print("; best k = {:.6f} with max |eps| = {:.3g}\n", acceptance.best_k, acceptance.best_error);
+}
+
+} // namespace
+
 Action add_roots_command(CLI::App& app)
 {
     auto* command = app.add_subcommand("roots", "Roots in k of eps_rho and eps_gradP, jumps and condition (22)");
-    struct Options : CommonOptions {
-        std::string kernel, lattice;
-        double k_min = 0.75, k_max = 1.25, epsilon = 0.01;
-        std::vector<std::string> sets;
-        EvaluationOptions evaluation;
-    };
-    auto options = std::make_shared<Options>();
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
+    auto options = std::make_shared<RootsOptions>();
+    command->add_option("kernel", options->kernel, "Kernel name or plugin file, or all")->required();
+    command->add_option("lattice", options->lattice, "Lattice name or file, or all (every shipped lattice)")->required();
     command->add_option("--kmin", options->k_min, "Smallest k")->capture_default_str();
     command->add_option("--kmax", options->k_max, "Largest k")->capture_default_str();
     command->add_option("--epsilon", options->epsilon, "Tolerance of condition (22)")->capture_default_str();
@@ -36,37 +75,25 @@ Action add_roots_command(CLI::App& app)
         check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
-        auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
-        double a_p = lattice.volume_coefficient(options->evaluation.ap);
-        HydrostaticErrors errors(kernel, lattice, options->evaluation.site, a_p, gravity_of(lattice, options->evaluation),
-                                 options->k_max, evaluation_mode(options->evaluation));
-        auto scan = find_roots(errors, options->k_min, options->k_max);
-        auto acceptance = evaluate_acceptance(errors, options->k_min, options->k_max, options->epsilon);
-        if (options->json) {
-            auto document = root_scan_json(scan);
-            document["kernel"] = kernel.label();
-            document["lattice"] = lattice.name;
-            document["a_p"] = a_p;
-            document["k_range"] = {options->k_min, options->k_max};
-            document["acceptance"] = acceptance_json(acceptance, options->epsilon);
-            print_json(document);
-            return 0;
-        }
-        fmt::print("{} on {}, a_p = {:.10g}, k in [{}, {}]\n", kernel.label(), lattice.name, a_p, options->k_min,
-                   options->k_max);
-        fmt::print("{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
-        for (const auto& r : scan.roots)
-            fmt::print("{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k, r.values.eps_rho,
-                       r.values.eps_gradp, r.values.neighbours, r.support_radius);
-        if (scan.roots.empty()) fmt::print("(no root in the interval)\n");
-        for (const auto& j : scan.jumps)
-            fmt::print("jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind, j.left,
-                       j.right);
-        fmt::print("condition (22), epsilon = {}: {}", options->epsilon, acceptance.passes() ? "passes for k in" : "fails");
-        for (const auto& i : acceptance.intervals) fmt::print(" [{:.6f}, {:.6f}]", i.from, i.to);
-        fmt::print("; best k = {:.6f} with max |eps| = {:.3g}\n", acceptance.best_k, acceptance.best_error);
+        std::vector<Lattice> lattices;
+        if (options->lattice == "all")
+            for (const auto& name : shipped_lattice_names()) lattices.push_back(load_lattice(name));
+        else
+            lattices.push_back(load_lattice(options->lattice));
+        std::vector<Kernel> kernels;
+        if (options->kernel == "all")
+            for (const auto& p : registry.plugins()) kernels.emplace_back(p, parse_sets(options->sets));
+        else
+            kernels.push_back(make_kernel(registry, options->kernel, options->sets));
+        const bool many = kernels.size() > 1 || lattices.size() > 1;
+        nlohmann::json all = nlohmann::json::array();
+        for (const auto& lattice : lattices)
+            for (const auto& kernel : kernels) {
+                if (many && !kernel.supports(lattice.dimension)) continue; // "all": the pairs that exist
+                run_one(*options, kernel, lattice, many ? &all : nullptr);
+            }
+        if (many && options->json) print_json(all);
         return 0;
     };
 }

@@ -14,26 +14,39 @@ lattices=$("$sphkern" lattices --json | python3 -c "import json,sys; print(' '.j
 cat >"$work/shells.sh" <<SH
 for l in $lattices; do "$sphkern" shells \$l --radius 6 --json >/dev/null; done
 SH
-cat >"$work/roots.sh" <<SH
-for k in \$("$sphkern" kernels --json | python3 -c "import json,sys; print(' '.join(k['name']+':'+','.join(map(str,k['dimensions'])) for k in json.load(sys.stdin)))"); do
-  name=\${k%%:*}; dims=\${k#*:}
-  for l in $lattices; do
-    d=\$("$sphkern" lattices --json | python3 -c "import json,sys; print([x['dimension'] for x in json.load(sys.stdin) if x['name']=='\$l'][0])")
-    case ",\$dims," in *",\$d,"*) echo "\$name \$l";; esac
-  done
-done
-SH
-bash "$work/roots.sh" >"$work/pairs.txt"
-{
-    echo 'for pair in \'
-    sed 's/.*/  "&" \\/' "$work/pairs.txt"
-    echo '; do set -- $pair; "'"$sphkern"'" roots $1 $2 --json >/dev/null; done'
-} >"$work/all-roots.sh"
+pairs=$("$sphkern" roots all all --json | python3 -c "import json,sys; print(len(json.load(sys.stdin)))")
 
 hyperfine -N -w 3 -r 20 --export-markdown "$work/study.md" \
     "$sphkern run --no-plots --force -o $work/study" >&2
 hyperfine -w 2 -r 10 --export-markdown "$work/shells.md" "bash $work/shells.sh" >&2
-hyperfine -w 1 -r 5 --export-markdown "$work/roots.md" "bash $work/all-roots.sh" >&2
+hyperfine -N -w 2 -r 10 --export-markdown "$work/roots.md" "$sphkern roots all all --json" >&2
+
+# The block engine: 10^6 particles of a periodic fcc block, five runs.
+for run in 1 2 3 4 5; do
+    "$sphkern" block cubic_bspline fcc --k 1.2 --size 100,100,100 --periodic --json >"$work/block-$run.json"
+done
+python3 - "$work" >"$work/block.md" <<'PY'
+import json, statistics, sys
+runs = [json.load(open(f"{sys.argv[1]}/block-{i}.json")) for i in range(1, 6)]
+r = runs[0]
+print(f"{r['particles']} particles, {r['pair_interactions_per_pass']} pair interactions per pass, {r['threads']} threads.\n")
+print("| pass | min [s] | median [s] | max [s] |\n|---|---:|---:|---:|")
+for key in ("setup", "density", "gradient"):
+    v = [x["seconds"][key] for x in runs]
+    print(f"| {key} | {min(v):.4f} | {statistics.median(v):.4f} | {max(v):.4f} |")
+both = [x["seconds"]["density"] + x["seconds"]["gradient"] for x in runs]
+print(f"| density + gradient | {min(both):.4f} | {statistics.median(both):.4f} | {max(both):.4f} |")
+rate = [2 * x["pair_interactions_per_pass"] / (x["seconds"]["density"] + x["seconds"]["gradient"]) for x in runs]
+print(f"\nPair interactions per second (both passes): median {statistics.median(rate):.3g}, best {max(rate):.3g}.")
+PY
+
+# PySPH side by side: the same positions, SummationDensity with its CubicSpline.
+/usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" >"$work/pysph-serial.json"
+/usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" --openmp >"$work/pysph-openmp.json"
+
+# The plugin call cost, with Google Benchmark.
+"$PWD/$build/tests/kernel_call_benchmark" --benchmark_repetitions=10 --benchmark_report_aggregates_only=true \
+    --benchmark_format=json >"$work/calls.json" 2>/dev/null
 
 {
     echo "# Benchmarks"
@@ -56,8 +69,48 @@ hyperfine -w 1 -r 5 --export-markdown "$work/roots.md" "bash $work/all-roots.sh"
     echo
     echo "## \`sphkern roots\` for every kernel on every shipped lattice (target: under 1 s)"
     echo
-    echo "$(wc -l <"$work/pairs.txt") kernel-lattice pairs (every kernel on every lattice of a dimension it supports), one process each."
+    echo "\`sphkern roots all all --json\`: $pairs kernel-lattice pairs (every kernel on every lattice of a dimension it supports) in one process."
     echo
-    sed "s#bash $work/all-roots.sh#all kernel-lattice pairs#" "$work/roots.md"
+    sed "s#$sphkern#sphkern#g" "$work/roots.md"
+    echo
+    echo "## The particle-block engine on 10^6 particles (target: both passes under 0.25 s)"
+    echo
+    echo "\`sphkern block cubic_bspline fcc --k 1.2 --size 100,100,100 --periodic --json\`, five runs:"
+    echo
+    cat "$work/block.md"
+    echo
+    echo "## Against PySPH (target: the density pass at least 3 times faster)"
+    echo
+    echo "\`/usr/bin/python3 share/scripts/pysph_compare.py [--openmp]\`: the free 100 x 100 x 100 fcc block (PySPH's periodic"
+    echo "domains are axis-aligned, fcc's cell is not), PySPH $(/usr/bin/python3 -c 'import pysph; print(pysph.__version__)') from Debian,"
+    echo "SummationDensity with its CubicSpline through SPHEvaluator.evaluate() (neighbour search included, best of three"
+    echo "warm calls), against sphkern's density pass (neighbour search included) on the same positions."
+    echo
+    python3 - "$work" <<'PY'
+import json, sys
+print("| PySPH | particles | pairs | sphkern density [s] | PySPH evaluate [s] | PySPH / sphkern | max relative difference |")
+print("|---|---:|---:|---:|---:|---:|---:|")
+for name, label in (("serial", "serial"), ("openmp", "OpenMP, 2 threads")):
+    r = json.load(open(f"{sys.argv[1]}/pysph-{name}.json"))
+    print(f"| {label} | {r['particles']} | {r['pair_interactions']} | {r['sphkern_density_seconds']:.4f} | "
+          f"{r['pysph_evaluate_seconds']:.4f} | {r['ratio_pysph_over_sphkern_density']:.2f} | {r['max_relative_density_difference']:.1e} |")
+PY
+    echo
+    echo "## The plugin call cost (target: the batch interface within 10% of inline code)"
+    echo
+    echo "\`$build/tests/kernel_call_benchmark --benchmark_repetitions=10\` (Google Benchmark): the cubic_bspline plugin's"
+    echo "batch and scalar functions on 100 values of q, against the same source compiled into the benchmark."
+    echo
+    python3 - "$work" <<'PY'
+import json, sys
+r = json.load(open(f"{sys.argv[1]}/calls.json"))
+med = {b["run_name"]: b for b in r["benchmarks"] if b.get("aggregate_name") == "median"}
+print("| benchmark | median time per 100 values [ns] | values per second |\n|---|---:|---:|")
+for name in ("inline_batch", "plugin_batch", "plugin_scalar"):
+    b = med[name]
+    print(f"| {name} | {b['real_time']:.1f} | {b['items_per_second']:.3g} |")
+ratio = med["plugin_batch"]["real_time"] / med["inline_batch"]["real_time"]
+print(f"\nplugin_batch / inline_batch = {ratio:.3f}.")
+PY
 } >"$out"
 echo "wrote $out" >&2

@@ -81,7 +81,7 @@ typedef const sphkern_kernel_descriptor* (*sphkern_kernel_entry_fn)(void);
 /* Compiles a batch loop once per instruction set and picks one at load time (GCC on
  * x86-64), so that a branch-free scalar formula runs in wide vector registers. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define SPHKERN_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#define SPHKERN_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define SPHKERN_VECTOR_CLONES
 #endif
