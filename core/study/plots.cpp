@@ -46,6 +46,22 @@ std::string datablock(const std::string& name, const StudyCase& c, bool rho)
     return s + "EOD\n";
 }
 
+// Keeps the script beside the figure and runs gnuplot inside the folder, so that the
+// script names its output relatively.
+void run_gnuplot(const fs::path& folder, const std::string& name, const std::string& script, const fs::path& gnuplot)
+{
+    fs::path script_file = folder / (name + ".gp");
+    std::ofstream(script_file) << script;
+    std::string command = "cd '" + folder.string() + "' && '" + gnuplot.string() + "' '" + name + ".gp' 2>&1";
+    std::string output;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) throw Error(ExitCode::output, "cannot run gnuplot for " + script_file.string());
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    if (::pclose(pipe) != 0)
+        throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + ": " + output.substr(0, output.find('\n')));
+}
+
 } // namespace
 
 std::vector<std::string> draw_study_plots(const Study& study, const StudyResults& results, const fs::path& folder,
@@ -94,19 +110,52 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
             script += plot + "\nunset key\n"; // the legend of the first panel serves all
         }
         script += "unset multiplot\n";
-        fs::path script_file = folder / (name + ".gp");
-        std::ofstream(script_file) << script;
-        // Run inside the folder so that the kept script names its output relatively.
-        std::string command = "cd '" + folder.string() + "' && '" + gnuplot.string() + "' '" + name + ".gp' 2>&1";
-        std::string output;
-        if (FILE* pipe = ::popen(command.c_str(), "r")) {
-            char buffer[512];
-            while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-            int status = ::pclose(pipe);
-            if (status != 0)
-                throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + ": " +
-                                                  output.substr(0, output.find('\n')));
+        run_gnuplot(folder, name, script, gnuplot);
+        written.push_back(folder.filename().string() + "/" + name + ".svg");
+    }
+    // Free-surface profiles: a figure per lattice, a panel per kernel, a curve per form.
+    std::vector<std::string> surface_lattices;
+    for (const auto& c : results.surface)
+        if (std::find(surface_lattices.begin(), surface_lattices.end(), c.lattice) == surface_lattices.end())
+            surface_lattices.push_back(c.lattice);
+    for (const auto& lattice : surface_lattices) {
+        std::vector<std::string> kernels;
+        for (const auto& c : results.surface)
+            if (c.lattice == lattice && std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end())
+                kernels.push_back(c.kernel_label);
+        int columns = std::min<int>(3, static_cast<int>(kernels.size()));
+        int rows = (static_cast<int>(kernels.size()) + columns - 1) / columns;
+        std::string name = lattice + "-surface";
+        std::string script = fmt::format(
+            "set encoding utf8\nset terminal svg size {},{} dynamic enhanced font 'sans,11' background '#ffffff'\n"
+            "set output '{}.svg'\nset multiplot layout {},{} title '{}: free-surface profiles, ε_ρ solid, ε_{{∇P}} dashed'\n"
+            "set grid\nset xtics 1\nset xlabel 'layer n (0 = top)'\nset key bottom right font ',9'\nset yrange [-1:0.5]\n",
+            420 * columns, 340 * rows, name, rows, columns, lattice);
+        int block = 0;
+        for (const auto& kernel : kernels) {
+            std::string plot;
+            int colour = 0;
+            for (const auto& c : results.surface) {
+                if (c.lattice != lattice || c.kernel_label != kernel) continue;
+                std::string id = fmt::format("s{}", block++);
+                script += "$" + id + " << EOD\n";
+                for (const auto& l : c.profile.layers) script += fmt::format("{} {:.10g} {:.10g}\n", l.n, l.eps_rho, l.eps_gradp);
+                script += "EOD\n";
+                const char* rgb = colours[colour++ % 6];
+                plot += fmt::format("{}${} using 1:2 with linespoints lw 2 dt 1 lc rgb '{}' title '{} (rho)' noenhanced, "
+                                    "${} using 1:3 with linespoints lw 2 dt 2 lc rgb '{}' title '{} (gradP)' noenhanced",
+                                    plot.empty() ? "" : ", ", id, rgb, c.form, id, rgb, c.form);
+            }
+            script += fmt::format("set title '{} (k = {:.4f})' noenhanced\nplot {}\nunset key\n", kernel,
+                                  [&] {
+                                      for (const auto& c : results.surface)
+                                          if (c.lattice == lattice && c.kernel_label == kernel) return c.k;
+                                      return 0.0;
+                                  }(),
+                                  plot);
         }
+        script += "unset multiplot\n";
+        run_gnuplot(folder, name, script, gnuplot);
         written.push_back(folder.filename().string() + "/" + name + ".svg");
     }
     return written;

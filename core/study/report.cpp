@@ -202,6 +202,32 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
     }
     s += verdicts_markdown(study, results);
 
+    if (!results.surface.empty()) {
+        s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
+             "P = 0 there), by lattice sums over the half-space (method.md section 6). Each cell: eps_rho / eps_gradP.\n\n";
+        std::size_t columns = 0;
+        for (const auto& c : results.surface) columns = std::max(columns, c.profile.layers.size());
+        std::string current;
+        for (const auto& c : results.surface) {
+            if (c.lattice != current) {
+                current = c.lattice;
+                s += fmt::format("### {} (a_p = {} = {:.6f}, layer spacing {:.4f} d)\n\n| kernel | form | k |", c.lattice,
+                                 c.ap_name, c.a_p, c.profile.spacing);
+                for (std::size_t n = 0; n < columns; ++n) s += fmt::format(" n = {} |", n);
+                s += " bulk |\n|---|---|---|";
+                for (std::size_t n = 0; n <= columns; ++n) s += "---|";
+                s += "\n";
+            }
+            s += fmt::format("| {} | {} | {:.4f} |", c.kernel_label, c.form, c.k);
+            for (std::size_t n = 0; n < columns; ++n)
+                s += n < c.profile.layers.size() ? fmt::format(" {:+.4f} / {:+.4f} |", c.profile.layers[n].eps_rho,
+                                                               c.profile.layers[n].eps_gradp)
+                                                 : std::string(" |");
+            s += fmt::format(" {:+.4f} / {:+.4f} |\n", c.profile.bulk.eps_rho, c.profile.bulk.eps_gradp);
+        }
+        s += "\n";
+    }
+
     if (!figures.empty()) {
         s += "## Figures\n\neps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= epsilon shaded "
              "(as the paper's Figs. 4 to 6).\n\n";

@@ -1,6 +1,7 @@
 #include "study/study.hpp"
 
 #include "analysis/results_json.hpp"
+#include "analysis/surface_profile.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
@@ -88,7 +89,7 @@ Study read_study(const fs::path& file)
     study.document = read_json_file(file);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots"});
+                      "compare_with", "plots", "surface"});
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
@@ -173,6 +174,31 @@ Study read_study(const fs::path& file)
         study.compare_with = reference;
     }
     if (auto p = root.find("plots")) study.plots = p->boolean();
+    if (auto node = root.find("surface")) {
+        node->expect_keys({"k", "layers", "forms", "volume_coefficient"});
+        StudySurface surface;
+        if (auto k = node->find("k")) {
+            if (k->is_string()) {
+                if (k->string() != "best") k->error("expected a number or \"best\"");
+            } else {
+                surface.k = k->number_in(1e-3, 100);
+            }
+        }
+        if (auto layers = node->find("layers")) surface.layers = static_cast<int>(layers->integer_in(1, 1000));
+        if (auto forms = node->find("forms")) {
+            surface.forms = string_list(*forms);
+            for (std::size_t i = 0; i < surface.forms.size(); ++i) {
+                try {
+                    parse_gradient_form(surface.forms[i]);
+                } catch (const Error& e) {
+                    (*forms)[i].error(e.what());
+                }
+            }
+        }
+        if (auto ap = node->find("volume_coefficient"))
+            surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
+        study.surface = surface;
+    }
     return study;
 }
 

@@ -32,6 +32,14 @@ struct StudyMode {
     bool continues(const std::string& kernel) const;
 };
 
+// The optional free-surface section: a profile per lattice, kernel and form.
+struct StudySurface {
+    std::optional<double> k;           // empty: each kernel's best k (condition 22, first mode)
+    int layers = 6;
+    std::vector<std::string> forms = {"sum"};
+    std::string volume_coefficient;    // empty: the study's first
+};
+
 struct Study {
     std::string file;
     nlohmann::json document; // echoed into results.json
@@ -46,6 +54,7 @@ struct Study {
     std::vector<StudyMode> modes;
     std::optional<std::filesystem::path> compare_with; // a reference table (share/reference)
     bool plots = true;
+    std::optional<StudySurface> surface;
 };
 
 Study read_study(const std::filesystem::path& file);

@@ -192,6 +192,38 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                 }
             }
     }
+    if (study.surface) {
+        const auto& surface = *study.surface;
+        const std::string ap_name = surface.volume_coefficient.empty() ? study.volume_coefficients[0] : surface.volume_coefficient;
+        for (const auto& lattice : lattices) {
+            double a_p;
+            try {
+                a_p = lattice.volume_coefficient(ap_name);
+            } catch (const Error& e) {
+                throw Error(e.code(), study.file + ": /surface/volume_coefficient: " + e.what());
+            }
+            for (const auto& kernel : kernels) {
+                double k = 0;
+                if (surface.k) {
+                    k = *surface.k;
+                } else { // the best k of condition (22) in the first mode, for this a_p
+                    HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, study.k_max,
+                                             mode_for(study.modes[0], kernel, study));
+                    k = evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon).best_k;
+                }
+                for (const auto& form : surface.forms) {
+                    SurfaceCase c{lattice.name, kernel.label(), form, ap_name, a_p, k, {}};
+                    try {
+                        c.profile = surface_profile(kernel, lattice, 0, a_p, lattice.gravity, k, surface.layers,
+                                                    parse_gradient_form(form));
+                    } catch (const Error& e) {
+                        throw Error(e.code(), study.file + ": /surface: " + e.what());
+                    }
+                    results.surface.push_back(std::move(c));
+                }
+            }
+        }
+    }
     if (study.compare_with) compare(study, results);
     return results;
 }
@@ -233,8 +265,19 @@ nlohmann::json study_results_json(const Study& study, const StudyResults& result
                               {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
                               {"status", r.status},
                               {"note", r.note}});
+    nlohmann::json surface = nlohmann::json::array();
+    for (const auto& c : results.surface) {
+        nlohmann::json layers = nlohmann::json::array();
+        for (const auto& l : c.profile.layers)
+            layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
+                              {"neighbours", l.neighbours}});
+        surface.push_back({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
+                           {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k},
+                           {"spacing", c.profile.spacing}, {"layers", layers},
+                           {"bulk", {{"eps_rho", c.profile.bulk.eps_rho}, {"eps_gradp", c.profile.bulk.eps_gradp}}}});
+    }
     return {{"sphkern_version", SPHKERN_VERSION}, {"study", study.document}, {"study_file", study.file},
-            {"cases", cases}, {"comparison", comparison}};
+            {"cases", cases}, {"comparison", comparison}, {"surface", surface}};
 }
 
 } // namespace sphkern

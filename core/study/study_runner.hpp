@@ -5,6 +5,7 @@
 
 #include "analysis/acceptance.hpp"
 #include "analysis/roots.hpp"
+#include "analysis/surface_profile.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "study/study.hpp"
 
@@ -57,9 +58,20 @@ struct ComparisonRow {
     std::string note;
 };
 
+struct SurfaceCase {
+    std::string lattice;
+    std::string kernel_label;
+    std::string form;
+    std::string ap_name;
+    double a_p = 0;
+    double k = 0;
+    SurfaceProfile profile;
+};
+
 struct StudyResults {
     std::vector<StudyCase> cases;
     std::vector<ComparisonRow> comparison;
+    std::vector<SurfaceCase> surface;
     double tolerance = 1e-4;
     nlohmann::json reference; // the whole reference table, if any
 };

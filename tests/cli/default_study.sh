@@ -17,7 +17,9 @@ r = json.load(open('$work/out/results.json'))
 assert r['sphkern_version'] and r['study']['name'] == 'potapov2021'
 assert len(r['cases']) == 8 * 3 * 2, len(r['cases'])
 assert sum(c['status'] == 'reproduced' for c in r['comparison']) == 20
+assert len(r['surface']) == 8 * 3 and all(len(s['layers']) >= 4 for s in r['surface'])
 "
+grep -q '## Free-surface profiles' "$work/out/report.md"
 "$sphkern" run lattices-3d --no-plots -o "$work/out3d" >/dev/null
 python3 -c "
 import json

@@ -84,6 +84,21 @@ TEST_CASE("surface profiles equal a half-space brute-force sum, every form, 2D a
             }
 }
 
+TEST_CASE("every shipped lattice has a surface profile along its default gravity that ends in the bulk")
+{
+    for (const auto& name : shipped_lattice_names()) {
+        auto lattice = load_lattice(name);
+        Kernel kernel = shipped_kernel("wendland_c2");
+        double a_p = lattice.volume_coefficient("voronoi");
+        auto profile = surface_profile(kernel, lattice, 0, a_p, lattice.gravity, 1.2, 2, GradientForm::difference);
+        auto bulk = HydrostaticErrors(kernel, lattice, 0, a_p, lattice.gravity, 1.2).at(1.2);
+        CAPTURE(name);
+        CHECK(profile.layers.back().eps_rho == doctest::Approx(bulk.eps_rho).epsilon(1e-12));
+        CHECK(profile.layers.back().eps_gradp == doctest::Approx(bulk.eps_gradp).epsilon(1e-12));
+        CHECK(profile.layers.front().neighbours < bulk.neighbours);
+    }
+}
+
 TEST_CASE("a gravity direction not normal to a lattice plane is refused")
 {
     auto lattice = load_lattice("triangular");
