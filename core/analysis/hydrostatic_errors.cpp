@@ -35,9 +35,7 @@ HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattic
                                      const Eigen::Vector3d& gravity, double k_max, const EvaluationMode& mode)
     : kernel_(kernel), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.normalized()), mode_(mode)
 {
-    if (!kernel.supports(dim_))
-        fail_input("kernel " + kernel.name() + " is defined in " + kernel.plugin().dimensions_text() +
-                   "D only, not on the " + std::to_string(dim_) + "D lattice " + lattice.name);
+    kernel.require_dimension(lattice.dimension, lattice.name);
     double reach = kernel.support() * k_max;
     if (mode.shell_radii)
         for (double r : *mode.shell_radii) reach = std::max(reach, r + 1e-6);

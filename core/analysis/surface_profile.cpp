@@ -60,9 +60,7 @@ struct Neighbour {
 SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
                                const Eigen::Vector3d& gravity, double k, int min_layers, GradientForm form)
 {
-    if (!kernel.supports(lattice.dimension))
-        fail_input("kernel " + kernel.name() + " is defined in " + kernel.plugin().dimensions_text() +
-                   "D only, not on the " + std::to_string(lattice.dimension) + "D lattice " + lattice.name);
+    kernel.require_dimension(lattice.dimension, lattice.name);
     if (!std::isfinite(k) || k <= 0 || k > 100) fail_input("k must be in (0, 100]");
     if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
     const Eigen::Vector3d e = gravity.normalized();

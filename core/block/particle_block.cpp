@@ -2,6 +2,8 @@
 
 #include "support/error.hpp"
 
+#include <sphkern/kernel_plugin.h> // SPHKERN_VECTOR_CLONES
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -158,9 +160,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
 {
     const int dim = lattice.dimension;
     auto started = Clock::now();
-    if (!kernel.supports(dim))
-        fail_input("kernel " + kernel.name() + " is defined in " + kernel.plugin().dimensions_text() +
-                   "D only, not on the " + std::to_string(dim) + "D lattice " + lattice.name);
+    kernel.require_dimension(lattice.dimension, lattice.name);
     if (!std::isfinite(options.k) || options.k <= 0 || options.k > 100) fail_input("k must be in (0, 100]");
     if (!std::isfinite(options.a_p) || options.a_p <= 0) fail_input("a_p must be positive");
     long double total = lattice.sites();

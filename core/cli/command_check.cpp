@@ -47,7 +47,7 @@ Action add_check_command(CLI::App& app)
             std::string verdict = result["verdict"];
             failed |= verdict == "fail" || (options->strict && verdict == "warn");
             if (!options->json) {
-                fmt::print("{} ({}): {}\n", kernel.label(), kernel.plugin().file.string(), verdict);
+                fmt::print("{} ({}): {}\n", kernel.label(), kernel.definition().source, verdict);
                 for (const auto& c : result["checks"])
                     fmt::print("  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
                                c["status"].get<std::string>(), c["detail"].get<std::string>());

@@ -25,7 +25,7 @@ Action add_kernels_command(CLI::App& app)
                 list.push_back({{"name", p->name}, {"title", p->title}, {"support", p->support},
                                 {"dimensions", p->dimensions}, {"parameters", parameters},
                                 {"breakpoints", p->breakpoints}, {"separate_derivative", p->separate_derivative},
-                                {"reference", p->reference}, {"file", p->file.string()}});
+                                {"reference", p->reference}, {"file", p->source}});
             }
             print_json(list);
             return 0;
@@ -35,7 +35,7 @@ Action add_kernels_command(CLI::App& app)
             std::string params;
             for (const auto& q : p->parameters) params += (params.empty() ? "" : ",") + q.name;
             fmt::print("{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
-                       params.empty() ? "-" : params, p->reference, "", p->file.string());
+                       params.empty() ? "-" : params, p->reference, "", p->source);
         }
         return 0;
     };

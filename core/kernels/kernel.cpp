@@ -8,11 +8,11 @@
 
 namespace sphkern {
 
-Kernel::Kernel(std::shared_ptr<const KernelPlugin> plugin, const std::map<std::string, double>& values)
-    : plugin_(std::move(plugin)), d_(plugin_->descriptor)
+Kernel::Kernel(std::shared_ptr<const KernelDefinition> definition, const std::map<std::string, double>& values)
+    : definition_(std::move(definition)), f_(definition_->functions.get())
 {
     std::vector<std::string> names;
-    for (const auto& p : plugin_->parameters) {
+    for (const auto& p : definition_->parameters) {
         names.push_back(p.name);
         values_.push_back(p.default_value);
     }
@@ -20,19 +20,26 @@ Kernel::Kernel(std::shared_ptr<const KernelPlugin> plugin, const std::map<std::s
         std::size_t i = 0;
         while (i < names.size() && names[i] != name) ++i;
         if (i == names.size()) {
-            std::string message = "kernel " + plugin_->name + " has no parameter \"" + name + "\"";
+            std::string message = "kernel " + definition_->name + " has no parameter \"" + name + "\"";
             if (auto s = closest_match(name, names)) message += " (did you mean \"" + *s + "\"?)";
             fail_input(message + (names.empty() ? "; it has no parameters" : ""));
         }
-        const auto& p = plugin_->parameters[i];
+        const auto& p = definition_->parameters[i];
         if (!std::isfinite(value) || value < p.min_value || value > p.max_value) {
             std::ostringstream s;
-            s << "kernel " << plugin_->name << ": parameter " << name << " = " << value
+            s << "kernel " << definition_->name << ": parameter " << name << " = " << value
               << " is out of range, expected a value in [" << p.min_value << ", " << p.max_value << "]";
             fail_input(s.str());
         }
         values_[i] = value;
     }
+}
+
+void Kernel::require_dimension(int dim, const std::string& lattice_name) const
+{
+    if (!supports(dim))
+        fail_input("kernel " + name() + " is defined in " + definition_->dimensions_text() + "D only, not on the " +
+                   std::to_string(dim) + "D lattice " + lattice_name);
 }
 
 std::string Kernel::label() const
@@ -41,7 +48,7 @@ std::string Kernel::label() const
     std::ostringstream s;
     s << name() << "(";
     for (std::size_t i = 0; i < values_.size(); ++i)
-        s << (i ? ", " : "") << plugin_->parameters[i].name << "=" << values_[i];
+        s << (i ? ", " : "") << definition_->parameters[i].name << "=" << values_[i];
     s << ")";
     return s.str();
 }

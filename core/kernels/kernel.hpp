@@ -1,8 +1,8 @@
-// A kernel ready to evaluate: a plugin plus values for its parameters. Evaluates the
-// plugin's formula as written; truncation at the support R is the caller's choice.
+// A kernel ready to evaluate: a definition plus values for its parameters. Evaluates
+// the formula as written; truncation at the support R is the caller's choice.
 #pragma once
 
-#include "kernels/kernel_plugin.hpp"
+#include "kernels/kernel_definition.hpp"
 
 #include <map>
 #include <memory>
@@ -15,24 +15,28 @@ class Kernel {
 public:
     // `values` overrides parameter defaults by name; unknown names and values out of
     // the declared range throw Error(input).
-    explicit Kernel(std::shared_ptr<const KernelPlugin> plugin, const std::map<std::string, double>& values = {});
+    explicit Kernel(std::shared_ptr<const KernelDefinition> definition,
+                    const std::map<std::string, double>& values = {});
 
-    const KernelPlugin& plugin() const { return *plugin_; }
-    const std::string& name() const { return plugin_->name; }
-    double support() const { return plugin_->support; }
-    bool supports(int dim) const { return plugin_->supports(dim); }
+    const KernelDefinition& definition() const { return *definition_; }
+    const std::shared_ptr<const KernelDefinition>& shared_definition() const { return definition_; }
+    const std::string& name() const { return definition_->name; }
+    double support() const { return definition_->support; }
+    bool supports(int dim) const { return definition_->supports(dim); }
+    // Throws Error(input) unless the kernel is defined in `dim` dimensions.
+    void require_dimension(int dim, const std::string& lattice_name) const;
     const std::vector<double>& parameter_values() const { return values_; }
 
     // h^D W(q) and h^(D+1) dW/dr (q), the plugin's formulas for any q >= 0.
-    double w(double q, int dim, double k) const { return d_->w(q, dim, k, values_.data()); }
-    double dw(double q, int dim, double k) const { return d_->dw(q, dim, k, values_.data()); }
+    double w(double q, int dim, double k) const { return f_->w(q, dim, k, values_.data()); }
+    double dw(double q, int dim, double k) const { return f_->dw(q, dim, k, values_.data()); }
     void w_batch(const double* q, double* out, std::size_t n, int dim, double k) const
     {
-        d_->w_batch(q, out, n, dim, k, values_.data());
+        f_->w_batch(q, out, n, dim, k, values_.data());
     }
     void dw_batch(const double* q, double* out, std::size_t n, int dim, double k) const
     {
-        d_->dw_batch(q, out, n, dim, k, values_.data());
+        f_->dw_batch(q, out, n, dim, k, values_.data());
     }
 
     // Truncated at R: zero for q > R.
@@ -43,8 +47,8 @@ public:
     std::string label() const;
 
 private:
-    std::shared_ptr<const KernelPlugin> plugin_;
-    const sphkern_kernel_descriptor* d_;
+    std::shared_ptr<const KernelDefinition> definition_;
+    const KernelFunctions* f_;
     std::vector<double> values_;
 };
 

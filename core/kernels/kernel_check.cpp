@@ -40,7 +40,7 @@ struct Checks {
 std::vector<double> piece_edges(const Kernel& kernel)
 {
     std::vector<double> edges = {0.0};
-    for (double b : kernel.plugin().breakpoints) edges.push_back(b);
+    for (double b : kernel.definition().breakpoints) edges.push_back(b);
     edges.push_back(kernel.support());
     return edges;
 }
@@ -66,7 +66,7 @@ nlohmann::json check_kernel(const Kernel& kernel)
     const double R = kernel.support();
     Checks checks;
     nlohmann::json normalization = nlohmann::json::object(), second = nlohmann::json::object();
-    for (int dim : kernel.plugin().dimensions) {
+    for (int dim : kernel.definition().dimensions) {
         const std::string D = std::to_string(dim);
 
         // Finiteness on a grid past R and at several k.
@@ -117,7 +117,7 @@ nlohmann::json check_kernel(const Kernel& kernel)
             }
         }
         double relative = mismatch / std::max(scale, 1e-300);
-        if (kernel.plugin().separate_derivative)
+        if (kernel.definition().separate_derivative)
             checks.add(dim, "derivative", 0,
                        "declared a separate derivative: differs from dW/dr by up to " + format(relative, 3) +
                            " (relative, at q = " + format(worst_q, 4) + ", k = 1); reported, not checked");
@@ -161,7 +161,7 @@ nlohmann::json check_kernel(const Kernel& kernel)
     }
     static const char* verdicts[] = {"ok", "warn", "fail"};
     return {{"kernel", kernel.name()},
-            {"file", kernel.plugin().file.string()},
+            {"file", kernel.definition().source},
             {"verdict", verdicts[checks.worst]},
             {"normalization", normalization},
             {"second_moment", second},
@@ -172,7 +172,7 @@ nlohmann::json check_kernel_isolated(const Kernel& kernel, double timeout_second
 {
     auto result = run_isolated([&] { return check_kernel(kernel).dump(); }, timeout_seconds);
     if (auto* failure = std::get_if<IsolatedFailure>(&result))
-        throw Error(ExitCode::plugin, kernel.plugin().file.string() + ": kernel " + kernel.name() + " " +
+        throw Error(ExitCode::plugin, kernel.definition().source + ": kernel " + kernel.name() + " " +
                                           failure->reason + " during the check");
     return nlohmann::json::parse(std::get<std::string>(result));
 }

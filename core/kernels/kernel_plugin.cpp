@@ -53,6 +53,27 @@ const sphkern_kernel_descriptor* call_entry(const boost::dll::shared_library& li
     return descriptor;
 }
 
+// The four functions of a plugin: its descriptor's pointers, and the library they live in.
+class PluginFunctions final : public KernelFunctions {
+public:
+    PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const sphkern_kernel_descriptor* d)
+        : library_(std::move(library)), d_(d) {}
+    double w(double q, int dim, double k, const double* p) const override { return d_->w(q, dim, k, p); }
+    double dw(double q, int dim, double k, const double* p) const override { return d_->dw(q, dim, k, p); }
+    void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
+    {
+        d_->w_batch(q, out, n, dim, k, p);
+    }
+    void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
+    {
+        d_->dw_batch(q, out, n, dim, k, p);
+    }
+
+private:
+    std::shared_ptr<boost::dll::shared_library> library_; // keeps d_ and its functions mapped
+    const sphkern_kernel_descriptor* d_;
+};
+
 } // namespace
 
 double plugin_probe_timeout()
@@ -60,20 +81,6 @@ double plugin_probe_timeout()
     const char* text = std::getenv("SPHKERN_PLUGIN_TIMEOUT");
     double seconds = text ? std::strtod(text, nullptr) : 0;
     return seconds > 0 && seconds < 3600 ? seconds : 10.0;
-}
-
-bool KernelPlugin::supports(int dim) const
-{
-    for (int d : dimensions)
-        if (d == dim) return true;
-    return false;
-}
-
-std::string KernelPlugin::dimensions_text() const
-{
-    std::string s;
-    for (int d : dimensions) s += (s.empty() ? "" : ",") + std::to_string(d);
-    return s;
 }
 
 std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
@@ -130,7 +137,7 @@ std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
     return {};
 }
 
-std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::path& file)
+std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
 {
     const std::string name = file.string();
     std::error_code ec;
@@ -154,11 +161,10 @@ std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::pa
     if (const auto& message = std::get<std::string>(verdict); !message.empty())
         throw Error(ExitCode::plugin, message);
 
-    auto plugin = std::make_shared<KernelPlugin>();
-    plugin->file = std::filesystem::absolute(file);
-    plugin->library = open_library(file);
-    const auto* d = call_entry(*plugin->library, name);
-    plugin->descriptor = d;
+    auto library = open_library(file);
+    const auto* d = call_entry(*library, name);
+    auto plugin = std::make_shared<KernelDefinition>();
+    plugin->source = std::filesystem::absolute(file).lexically_normal().string();
     plugin->name = d->name;
     plugin->title = d->title;
     plugin->reference = d->reference;
@@ -171,6 +177,8 @@ std::shared_ptr<const KernelPlugin> load_kernel_plugin(const std::filesystem::pa
     }
     plugin->breakpoints.assign(d->breakpoints, d->breakpoints + d->breakpoint_count);
     plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;
+    plugin->truncations = {d->support};
+    plugin->functions = std::make_shared<PluginFunctions>(std::move(library), d);
     return plugin;
 }
 

@@ -39,12 +39,12 @@ std::vector<fs::path> kernel_plugin_folders()
     return folders;
 }
 
-void KernelRegistry::add(std::shared_ptr<const KernelPlugin> plugin)
+void KernelRegistry::add(std::shared_ptr<const KernelDefinition> plugin)
 {
     for (const auto& p : plugins_) {
         if (p->name != plugin->name) continue;
-        throw Error(ExitCode::plugin, "two plugins are named \"" + plugin->name + "\": " + p->file.string() + " and " +
-                                          plugin->file.string());
+        throw Error(ExitCode::plugin, "two plugins are named \"" + plugin->name + "\": " + p->source + " and " +
+                                          plugin->source);
     }
     plugins_.push_back(std::move(plugin));
 }
@@ -83,13 +83,13 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
     return registry;
 }
 
-std::shared_ptr<const KernelPlugin> KernelRegistry::find(const std::string& spec)
+std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& spec)
 {
     if (looks_like_path(spec, ".so")) {
         std::error_code ec;
-        auto canonical = fs::weakly_canonical(spec, ec);
+        auto canonical = fs::absolute(spec).lexically_normal().string();
         for (const auto& p : plugins_)
-            if (p->file == canonical) return p;
+            if (p->source == canonical) return p;
         auto plugin = load_kernel_plugin(spec);
         add(plugin);
         return plugin;

@@ -24,14 +24,16 @@ public:
     // Loads only the given files (as `check --plugin` does).
     static KernelRegistry from_files(const std::vector<std::filesystem::path>& files);
 
-    const std::vector<std::shared_ptr<const KernelPlugin>>& plugins() const { return plugins_; }
+    // The kernels found in the plugin folders and files, in discovery order.
+    const std::vector<std::shared_ptr<const KernelDefinition>>& plugins() const { return plugins_; }
 
-    // A kernel by name, or by plugin file path (a spec containing '/' or ending in .so).
-    std::shared_ptr<const KernelPlugin> find(const std::string& spec);
+    // A kernel by name, by plugin file path (a spec containing '/' or ending in .so),
+    // by expression file (ending in .json), or a blend "A+B" of two such kernels.
+    std::shared_ptr<const KernelDefinition> find(const std::string& spec);
 
 private:
-    void add(std::shared_ptr<const KernelPlugin> plugin);
-    std::vector<std::shared_ptr<const KernelPlugin>> plugins_;
+    void add(std::shared_ptr<const KernelDefinition> plugin);
+    std::vector<std::shared_ptr<const KernelDefinition>> plugins_;
 };
 
 bool looks_like_path(const std::string& spec, const std::string& extension);

@@ -69,15 +69,16 @@ double Lattice::volume_coefficient(const std::string& spec) const
     fail_input(message + "; expected one of " + list + " or a positive number");
 }
 
-Lattice read_lattice(const fs::path& file)
+Lattice read_lattice(const fs::path& file) { return parse_lattice(read_json_file(file), file.string()); }
+
+Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
 {
-    auto document = read_json_file(file);
-    JsonNode root(document, file.string());
+    JsonNode root(document, file);
     root.expect_object();
     root.expect_keys({"$schema", "name", "title", "dimension", "basis", "motif", "volume_coefficients", "gravity"});
 
     Lattice lattice;
-    lattice.file = file.string();
+    lattice.file = file;
     auto name_node = root.at("name");
     lattice.name = name_node.string();
     if (lattice.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
@@ -144,7 +145,7 @@ Lattice read_lattice(const fs::path& file)
                 if (c.name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
             double v = value_node.number();
             if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
-            lattice.volume_coefficients.push_back({key, v, file.string()});
+            lattice.volume_coefficients.push_back({key, v, file});
         }
     }
     return lattice;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -34,8 +35,11 @@ struct Lattice {
     double volume_coefficient(const std::string& name_or_number) const;
 };
 
-// Reads and validates a lattice file (see share/docs/lattice-format.md).
+// Reads and validates a lattice file (the format is in the README).
 Lattice read_lattice(const std::filesystem::path& file);
+
+// Validates a parsed lattice document; `file` names it in errors.
+Lattice parse_lattice(const nlohmann::json& document, const std::string& file);
 
 // A shipped lattice by name, or a lattice file by path (a spec with '/' or ending in .json).
 Lattice load_lattice(const std::string& spec);

@@ -82,11 +82,13 @@ StudyMode read_mode(const JsonNode& node)
 
 } // namespace
 
-Study read_study(const fs::path& file)
+Study read_study(const fs::path& file) { return parse_study(read_json_file(file), file); }
+
+Study parse_study(nlohmann::json document, const fs::path& file)
 {
     Study study;
     study.file = file.string();
-    study.document = read_json_file(file);
+    study.document = std::move(document);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
                       "compare_with", "plots", "surface"});

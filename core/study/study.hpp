@@ -59,6 +59,9 @@ struct Study {
 
 Study read_study(const std::filesystem::path& file);
 
+// Validates a parsed study document; `file` names it in errors and anchors relative paths.
+Study parse_study(nlohmann::json document, const std::filesystem::path& file);
+
 // Parses a shell radius: a number or "sqrt(N)".
 std::optional<double> parse_radius(const nlohmann::json& value);
 

@@ -146,10 +146,11 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     }
     for (std::size_t i = 0; i < kernels.size(); ++i)
         for (const auto& l : lattices)
-            if (!kernels[i].supports(l.dimension))
-                fail_input(study.file + ": " + study.kernels[i].json_path + ": kernel " + kernels[i].name() +
-                           " is defined in " + kernels[i].plugin().dimensions_text() + "D only, not on the " +
-                           std::to_string(l.dimension) + "D lattice " + l.name);
+            try {
+                kernels[i].require_dimension(l.dimension, l.name);
+            } catch (const Error& e) {
+                throw Error(e.code(), study.file + ": " + study.kernels[i].json_path + ": " + e.what());
+            }
 
     StudyResults results;
     Progress progress("study " + study.name,

@@ -88,7 +88,14 @@ nlohmann::json read_json_file(const fs::path& file)
     if (!in) fail_input(name + ": cannot be read (permission denied?)");
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    std::string text = buffer.str();
+    return parse_json_text(buffer.str(), name);
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& name)
+{
+    if (text.size() > max_json_bytes)
+        fail_input(name + ": " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                   std::to_string(max_json_bytes) + " for a JSON input");
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail_input(name + ": file is empty, expected JSON");
     if (nesting_depth(text) > max_json_depth)
         fail_input(name + ": JSON nested deeper than " + std::to_string(max_json_depth) + " levels");

@@ -17,6 +17,9 @@ namespace sphkern {
 // that are not UTF-8, each with one line naming the file.
 nlohmann::json read_json_file(const std::filesystem::path& file);
 
+// The same checks on text already in memory; `name` stands for the file in errors.
+nlohmann::json parse_json_text(const std::string& text, const std::string& name);
+
 inline constexpr std::size_t max_json_bytes = 16u << 20;
 inline constexpr int max_json_depth = 64;
 

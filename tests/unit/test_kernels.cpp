@@ -99,7 +99,7 @@ TEST_CASE("spot values of every kernel against its formula")
     };
     for (const auto& [name, formula] : w) {
         Kernel kernel = shipped_kernel(name);
-        for (int dim : kernel.plugin().dimensions)
+        for (int dim : kernel.definition().dimensions)
             for (double q : {0.0, 0.3, 0.7, 1.0, 1.4, 1.9, 2.5, 2.95})
                 CHECK_MESSAGE(kernel.w(q, dim, 1.0) == doctest::Approx(formula(q, dim)).epsilon(1e-13),
                               name << " D=" << dim << " q=" << q);
