@@ -57,10 +57,14 @@ std::vector<double> HydrostaticErrors::breakpoints(double k_min, double k_max) c
 {
     std::vector<double> ks;
     if (mode_.continue_past_support) return ks;
-    for (const auto& t : terms_) {
-        double k = t.radius / kernel_.support();
-        if (k > k_min && k < k_max) ks.push_back(k);
-    }
+    // Where a shell crosses a support: R, or the support of each part of a blend.
+    for (double cut : kernel_.definition().truncations)
+        for (const auto& t : terms_) {
+            double k = t.radius / cut;
+            if (k > k_min && k < k_max) ks.push_back(k);
+        }
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     return ks;
 }
 

@@ -59,5 +59,6 @@ Action add_roots_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
 Action add_surface_command(CLI::App& app);
 Action add_block_command(CLI::App& app);
+Action add_design_command(CLI::App& app);
 
 } // namespace sphkern::cli

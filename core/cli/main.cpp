@@ -38,6 +38,7 @@ int main(int argc, char** argv)
     add(cli::add_roots_command);
     add(cli::add_surface_command);
     add(cli::add_block_command);
+    add(cli::add_design_command);
 
     try {
         app.parse(argc, argv);

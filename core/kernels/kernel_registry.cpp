@@ -1,5 +1,6 @@
 #include "kernels/kernel_registry.hpp"
 
+#include "kernels/kernel_blend.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
@@ -85,6 +86,13 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
 
 std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& spec)
 {
+    if (auto plus = spec.find('+'); plus != std::string::npos && plus > 0 && plus + 1 < spec.size()) {
+        for (const auto& b : blends_)
+            if (b.first == spec) return b.second;
+        auto blend = make_blend(Kernel(find(spec.substr(0, plus))), Kernel(find(spec.substr(plus + 1))));
+        blends_.emplace_back(spec, blend);
+        return blend;
+    }
     if (looks_like_path(spec, ".so")) {
         std::error_code ec;
         auto canonical = fs::absolute(spec).lexically_normal().string();

@@ -34,6 +34,7 @@ public:
 private:
     void add(std::shared_ptr<const KernelDefinition> plugin);
     std::vector<std::shared_ptr<const KernelDefinition>> plugins_;
+    std::vector<std::pair<std::string, std::shared_ptr<const KernelDefinition>>> blends_;
 };
 
 bool looks_like_path(const std::string& spec, const std::string& extension);
