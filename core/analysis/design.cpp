@@ -155,7 +155,8 @@ std::vector<std::pair<double, double>> solve(const Kernel& kernel, const DesignP
 {
     auto found = blend ? solve_blend(kernel, p, p.a_p) : solve_by_newton(kernel, p, p.a_p);
     std::vector<std::pair<double, double>> kept;
-    for (const auto& [k, value] : found) {
+    for (const auto& solution : found) {
+        const double k = solution.first, value = solution.second;
         if (k < p.k_min || k > p.k_max || value < p.parameter_min || value > p.parameter_max) continue;
         bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const auto& s) {
             return std::abs(s.first - k) < 1e-7 && std::abs(s.second - value) < 1e-7 * std::max(1.0, std::abs(value));

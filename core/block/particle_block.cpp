@@ -58,7 +58,15 @@ std::vector<Eigen::Vector3i> make_stencil(const Lattice& lattice, double reach, 
     extent.setZero();
     Eigen::Matrix3d inverse = lattice.basis.inverse();
     int range[3] = {0, 0, 0};
-    for (int i = 0; i < lattice.dimension; ++i) range[i] = static_cast<int>(std::ceil(inverse.row(i).norm() * reach)) + 1;
+    double cells = 1;
+    for (int i = 0; i < lattice.dimension; ++i) {
+        const double r = std::ceil(inverse.row(i).norm() * reach) + 1;
+        cells *= 2 * r + 1;
+        range[i] = static_cast<int>(std::min(r, 1e6));
+    }
+    if (cells > 1e6)
+        fail_input("the block's cells are too skewed for a support of " + std::to_string(reach) +
+                   " d: the neighbour stencil would search " + std::to_string(cells) + " cells");
     const double reach2 = reach * reach * (1 + 1e-12);
     // Offsets into one neighbour row of cells follow each other: that row stays in cache.
     for (int c = -range[2]; c <= range[2]; ++c)

@@ -9,11 +9,39 @@ namespace sphkern {
 
 double lattice_point_bound(double r_max, int dimension) { return std::pow(2.0 * r_max + 1.0, dimension); }
 
+namespace {
+
+// Pairwise Gauss reduction: the same lattice spanned by shorter, more orthogonal
+// vectors, so that the box searched around a point stays small however skewed the
+// given basis is. Returns the reduced basis and the unimodular M with reduced = basis M.
+std::pair<Eigen::Matrix3d, Eigen::Matrix3d> reduce_basis(Eigen::Matrix3d basis, int dimension)
+{
+    Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
+    for (int sweep = 0; sweep < 200; ++sweep) {
+        bool changed = false;
+        for (int i = 0; i < dimension; ++i)
+            for (int j = 0; j < dimension; ++j) {
+                if (i == j) continue;
+                double mu = std::round(basis.col(i).dot(basis.col(j)) / basis.col(j).squaredNorm());
+                if (mu == 0 || !std::isfinite(mu)) continue;
+                basis.col(i) -= mu * basis.col(j);
+                m.col(i) -= mu * m.col(j);
+                changed = true;
+            }
+        if (!changed) break;
+    }
+    return {basis, m};
+}
+
+} // namespace
+
 void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
                             int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit)
 {
-    // |n_i| <= |row_i(basis^-1)| r_max + 1 bounds the box that can hold points within r_max.
-    Eigen::Matrix3d inverse = basis.inverse();
+    // |n_i| <= |row_i(reduced^-1)| r_max + 1 bounds the box that can hold points within r_max.
+    const auto [reduced, change] = reduce_basis(basis, dimension);
+    const Eigen::Matrix3d to_reduced = change.inverse(); // fractional coordinates in the reduced basis
+    Eigen::Matrix3d inverse = reduced.inverse();
     long long extent[3] = {0, 0, 0};
     double box = 1;
     for (int i = 0; i < dimension; ++i) {
@@ -32,12 +60,13 @@ void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const s
     const double r2 = r_max * r_max * (1 + 1e-12);
     const Eigen::Vector3d& origin = motif[static_cast<std::size_t>(site)];
     for (const auto& m : motif) {
-        Eigen::Vector3d offset = m - origin;
+        Eigen::Vector3d offset = to_reduced * (m - origin);
+        for (int i = 0; i < dimension; ++i) offset[i] -= std::round(offset[i]); // nearest image of the site
         for (long long a = -extent[0]; a <= extent[0]; ++a)
             for (long long b = -extent[1]; b <= extent[1]; ++b)
                 for (long long c = -extent[2]; c <= extent[2]; ++c) {
                     Eigen::Vector3d f(double(a) + offset.x(), double(b) + offset.y(), double(c) + offset.z());
-                    Eigen::Vector3d x = basis * f;
+                    Eigen::Vector3d x = reduced * f;
                     double d2 = x.squaredNorm();
                     if (d2 > r2 || d2 < 1e-18) continue;
                     visit(x);

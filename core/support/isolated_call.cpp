@@ -41,6 +41,8 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
     }
     if (pid == 0) {
         ::close(fds[0]);
+        // The plugin's faults must kill this child, whatever handlers the parent installed.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP}) ::signal(sig, SIG_DFL);
         std::string out;
         char status = 'o';
         try {

@@ -13,14 +13,14 @@ using namespace sphkern;
 using sphkern::test::shipped_kernel;
 using sphkern::test::shipped_kernels;
 
-TEST_CASE("the eleven shipped kernels are discovered")
+TEST_CASE("the eleven shipped kernels and the designed family are discovered")
 {
     std::vector<std::string> names;
     for (const auto& p : shipped_kernels().plugins()) names.push_back(p->name);
     std::sort(names.begin(), names.end());
     CHECK(names == std::vector<std::string>{"composite", "cubic_bspline", "desbrun_spiky", "johnson_quadratic",
                                             "liu_quartic", "morris_quintic", "muller_poly6", "super_gaussian",
-                                            "wendland_c2", "wendland_c4", "wendland_c6"});
+                                            "wendland_c2", "wendland_c2_shape", "wendland_c4", "wendland_c6"});
 }
 
 TEST_CASE("conformance: normalisation, derivative consistency, finiteness for every plugin")
