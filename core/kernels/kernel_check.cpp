@@ -117,7 +117,9 @@ nlohmann::json check_kernel(const Kernel& kernel)
             }
         }
         double relative = mismatch / std::max(scale, 1e-300);
-        if (kernel.definition().separate_derivative)
+        if (!kernel.definition().derivative_note.empty())
+            checks.add(dim, "derivative", 0, kernel.definition().derivative_note);
+        else if (kernel.definition().separate_derivative)
             checks.add(dim, "derivative", 0,
                        "declared a separate derivative: differs from dW/dr by up to " + format(relative, 3) +
                            " (relative, at q = " + format(worst_q, 4) + ", k = 1); reported, not checked");

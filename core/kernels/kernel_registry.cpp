@@ -1,5 +1,6 @@
 #include "kernels/kernel_registry.hpp"
 
+#include "kernels/expression_kernel.hpp"
 #include "kernels/kernel_blend.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
@@ -13,6 +14,11 @@
 
 namespace sphkern {
 namespace fs = std::filesystem;
+
+std::shared_ptr<const KernelDefinition> load_kernel_file(const fs::path& file)
+{
+    return file.extension() == ".json" ? load_expression_kernel(file) : load_kernel_plugin(file);
+}
 
 bool looks_like_path(const std::string& spec, const std::string& extension)
 {
@@ -53,7 +59,7 @@ void KernelRegistry::add(std::shared_ptr<const KernelDefinition> plugin)
 KernelRegistry KernelRegistry::from_files(const std::vector<fs::path>& files)
 {
     KernelRegistry registry;
-    for (const auto& f : files) registry.add(load_kernel_plugin(f));
+    for (const auto& f : files) registry.add(load_kernel_file(f));
     return registry;
 }
 
@@ -65,21 +71,22 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
     for (const auto& folder : kernel_plugin_folders()) {
         std::vector<fs::path> files;
         for (const auto& entry : fs::directory_iterator(folder, ec))
-            if (entry.path().extension() == ".so" && !entry.is_directory(ec)) files.push_back(entry.path());
+            if ((entry.path().extension() == ".so" || entry.path().extension() == ".json") && !entry.is_directory(ec))
+                files.push_back(entry.path());
         std::sort(files.begin(), files.end());
         for (const auto& file : files) {
             try {
-                registry.add(load_kernel_plugin(file));
+                registry.add(load_kernel_file(file));
                 seen.push_back(fs::weakly_canonical(file, ec));
             } catch (const Error& e) {
-                if (e.code() != ExitCode::plugin || std::string(e.what()).rfind("two plugins", 0) == 0) throw;
+                if (std::string(e.what()).rfind("two plugins", 0) == 0) throw;
                 spdlog::warn("skipping {}", e.what());
             }
         }
     }
     for (const auto& file : explicit_files) {
         if (std::find(seen.begin(), seen.end(), fs::weakly_canonical(file, ec)) != seen.end()) continue;
-        registry.add(load_kernel_plugin(file));
+        registry.add(load_kernel_file(file));
     }
     return registry;
 }
@@ -92,6 +99,14 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& 
         auto blend = make_blend(Kernel(find(spec.substr(0, plus))), Kernel(find(spec.substr(plus + 1))));
         blends_.emplace_back(spec, blend);
         return blend;
+    }
+    if (spec.ends_with(".json")) {
+        auto canonical = fs::absolute(spec).lexically_normal().string();
+        for (const auto& p : plugins_)
+            if (p->source == canonical) return p;
+        auto kernel = load_expression_kernel(spec);
+        add(kernel);
+        return kernel;
     }
     if (looks_like_path(spec, ".so")) {
         std::error_code ec;

@@ -1,0 +1,233 @@
+#include "kernels/expression_kernel.hpp"
+
+#include "support/error.hpp"
+#include "support/json_input.hpp"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <muParser.h>
+
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <unordered_map>
+
+namespace sphkern {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+struct Expressions {
+    std::string w, dw; // dw empty: numerical derivative
+    std::vector<std::string> parameter_names;
+    std::vector<double> breakpoints;
+    double support = 0;
+};
+
+// A muparser instance per thread (muparser is not thread-safe), bound to its own variables.
+struct Parsers {
+    mu::Parser w, dw;
+    double q = 0, k = 1;
+    std::vector<double> params;
+
+    explicit Parsers(const Expressions& e) : params(e.parameter_names.size())
+    {
+        for (mu::Parser* p : {&w, &dw}) {
+            p->DefineVar("q", &q);
+            p->DefineVar("k", &k);
+            for (std::size_t i = 0; i < params.size(); ++i) p->DefineVar(e.parameter_names[i], &params[i]);
+        }
+        w.SetExpr(e.w);
+        if (!e.dw.empty()) dw.SetExpr(e.dw);
+    }
+};
+
+class ExpressionFunctions final : public KernelFunctions {
+public:
+    explicit ExpressionFunctions(Expressions e) : e_(std::move(e)), id_(next_id_++) {}
+
+    double shape(double q, double k, const double* params) const
+    {
+        Parsers& p = parsers();
+        p.q = q;
+        p.k = k;
+        for (std::size_t i = 0; i < p.params.size(); ++i) p.params[i] = params[i];
+        return p.w.Eval();
+    }
+    double shape_derivative(double q, double k, const double* params) const
+    {
+        if (e_.dw.empty()) { // central difference, one-sided at q = 0
+            const double h = 1e-6 * std::max(1.0, q);
+            return q < h ? (shape(q + h, k, params) - shape(q, k, params)) / h
+                         : (shape(q + h, k, params) - shape(q - h, k, params)) / (2 * h);
+        }
+        Parsers& p = parsers();
+        p.q = q;
+        p.k = k;
+        for (std::size_t i = 0; i < p.params.size(); ++i) p.params[i] = params[i];
+        return p.dw.Eval();
+    }
+
+    // 1 / integral of f over D-space (f cut at R), for these parameter values.
+    double sigma(int dim, const double* params) const
+    {
+        std::vector<double> key(params, params + e_.parameter_names.size());
+        key.push_back(dim);
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = sigma_.find(key);
+        if (it != sigma_.end()) return it->second;
+        std::vector<double> edges = {0.0};
+        for (double b : e_.breakpoints) edges.push_back(b);
+        edges.push_back(e_.support);
+        double integral = 0;
+        for (std::size_t i = 0; i + 1 < edges.size(); ++i)
+            integral += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                [&](double q) { return shape(q, 1.0, params) * std::pow(q, dim - 1); }, edges[i], edges[i + 1], 15,
+                1e-15);
+        const double area = dim == 1 ? 2.0 : dim == 2 ? 2 * pi : 4 * pi;
+        double value = 1.0 / (area * integral);
+        sigma_.emplace(key, value);
+        return value;
+    }
+
+    double w(double q, int dim, double k, const double* p) const override { return sigma(dim, p) * shape(q, k, p); }
+    double dw(double q, int dim, double k, const double* p) const override
+    {
+        return sigma(dim, p) * shape_derivative(q, k, p);
+    }
+    void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
+    {
+        const double s = sigma(dim, p);
+        for (std::size_t i = 0; i < n; ++i) out[i] = s * shape(q[i], k, p);
+    }
+    void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
+    {
+        const double s = sigma(dim, p);
+        for (std::size_t i = 0; i < n; ++i) out[i] = s * shape_derivative(q[i], k, p);
+    }
+
+private:
+    Parsers& parsers() const
+    {
+        thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Parsers>> cache;
+        auto& slot = cache[id_];
+        if (!slot) slot = std::make_unique<Parsers>(e_);
+        return *slot;
+    }
+
+    Expressions e_;
+    std::uint64_t id_;
+    static inline std::atomic<std::uint64_t> next_id_{1};
+    mutable std::mutex mutex_;
+    mutable std::map<std::vector<double>, double> sigma_;
+};
+
+std::string identifier(const JsonNode& node)
+{
+    std::string s = node.string();
+    if (s.size() > 64 || s.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+        node.error("expected a name of up to 64 characters of [a-z0-9_]");
+    return s;
+}
+
+// Checks an expression's syntax and variables now, so that errors name their JSON path.
+void check_expression(const JsonNode& node, const std::string& text, const std::vector<std::string>& names)
+{
+    try {
+        mu::Parser parser;
+        double q = 0.5, k = 1;
+        std::vector<double> values(names.size(), 0.0);
+        parser.DefineVar("q", &q);
+        parser.DefineVar("k", &k);
+        for (std::size_t i = 0; i < names.size(); ++i) parser.DefineVar(names[i], &values[i]);
+        parser.SetExpr(text);
+        parser.Eval();
+    } catch (const mu::Parser::exception_type& e) {
+        node.error("not a valid expression of q, k and the parameters: " + e.GetMsg());
+    }
+}
+
+} // namespace
+
+std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesystem::path& file)
+{
+    auto document = read_json_file(file);
+    JsonNode root(document, file.string());
+    root.expect_keys({"$schema", "name", "title", "reference", "support", "dimensions", "parameters", "breakpoints",
+                      "w", "dw"});
+    auto kernel = std::make_shared<KernelDefinition>();
+    Expressions e;
+    kernel->source = std::filesystem::absolute(file).lexically_normal().string();
+    kernel->name = identifier(root.at("name"));
+    kernel->title = root.find("title") ? root.at("title").string() : kernel->name;
+    kernel->reference = root.find("reference") ? root.at("reference").value().get<std::string>() : "";
+    kernel->support = e.support = root.at("support").number_in(1e-3, 100);
+    auto dims = root.at("dimensions");
+    dims.expect_array(1, 3);
+    for (std::size_t i = 0; i < dims.size(); ++i) {
+        int d = static_cast<int>(dims[i].integer_in(1, 3));
+        if (kernel->supports(d)) dims[i].error("dimension " + std::to_string(d) + " listed twice");
+        kernel->dimensions.push_back(d);
+    }
+    std::sort(kernel->dimensions.begin(), kernel->dimensions.end());
+    if (auto params = root.find("parameters")) {
+        params->expect_array(0, 16);
+        for (std::size_t i = 0; i < params->size(); ++i) {
+            auto p = (*params)[i];
+            p.expect_keys({"name", "description", "default", "min", "max"});
+            KernelParameter parameter{identifier(p.at("name")),
+                                      p.find("description") ? p.at("description").value().get<std::string>() : "",
+                                      p.at("default").number(), p.at("min").number(), p.at("max").number()};
+            if (parameter.name == "q" || parameter.name == "k") p.at("name").error("q and k are taken");
+            if (!(parameter.min_value <= parameter.default_value && parameter.default_value <= parameter.max_value))
+                p.error("expected min <= default <= max");
+            kernel->parameters.push_back(parameter);
+            e.parameter_names.push_back(parameter.name);
+        }
+    }
+    if (auto breaks = root.find("breakpoints")) {
+        breaks->expect_array(0, 64);
+        for (std::size_t i = 0; i < breaks->size(); ++i) {
+            double b = (*breaks)[i].number();
+            if (b <= 0 || b >= kernel->support || (i > 0 && b <= kernel->breakpoints.back()))
+                (*breaks)[i].error("breakpoints must increase strictly inside (0, support)");
+            kernel->breakpoints.push_back(b);
+        }
+    }
+    e.breakpoints = kernel->breakpoints;
+    e.w = root.at("w").string();
+    check_expression(root.at("w"), e.w, e.parameter_names);
+    if (auto dw = root.find("dw")) {
+        e.dw = dw->string();
+        check_expression(*dw, e.dw, e.parameter_names);
+    } else {
+        kernel->derivative_note = "no \"dw\" expression: dW/dr is a central difference of W (step 1e-6 q)";
+    }
+    kernel->truncations = {kernel->support};
+    auto functions = std::make_shared<ExpressionFunctions>(e);
+
+    // Finite values and a usable normalisation with the default parameters.
+    std::vector<double> defaults;
+    for (const auto& p : kernel->parameters) defaults.push_back(p.default_value);
+    for (int dim : kernel->dimensions) {
+        double s = functions->sigma(dim, defaults.data());
+        if (!std::isfinite(s) || s <= 0)
+            root.at("w").error("the integral of w over " + std::to_string(dim) +
+                               "D space is not a positive finite number, so it cannot be normalised");
+        for (int i = 0; i <= 60; ++i) {
+            double q = 1.5 * kernel->support * i / 60;
+            if (!std::isfinite(functions->w(q, dim, 1.0, defaults.data())) ||
+                !std::isfinite(functions->dw(q, dim, 1.0, defaults.data()))) {
+                std::ostringstream at;
+                at << "non-finite value at q = " << q << " (default parameters)";
+                root.at("w").error(at.str());
+            }
+        }
+    }
+    kernel->functions = functions;
+    return kernel;
+}
+
+} // namespace sphkern
