@@ -59,7 +59,17 @@ std::optional<NewtonPoint> newton(const Kernel& kernel, const DesignProblem& p, 
         if (f.norm() < 1e-14) return NewtonPoint{x, jacobian};
         Eigen::Vector2d step = jacobian.colPivHouseholderQr().solve(-f);
         if (!step.allFinite()) return std::nullopt;
-        x += step;
+        // Backtracking: halve the step until the residual shrinks (errors jump at breakpoints).
+        double factor = 1;
+        Eigen::Vector2d next = x + step;
+        for (int halving = 0; halving < 30; ++halving, factor *= 0.5) {
+            next = x + factor * step;
+            if (next[0] > 0) {
+                Eigen::Vector2d g = residual(next);
+                if (g.allFinite() && g.norm() < f.norm()) break;
+            }
+        }
+        x = next;
         if (x[0] <= 0) return std::nullopt;
     }
     return residual(x).norm() < verified ? std::optional(NewtonPoint{x, jacobian}) : std::nullopt;
@@ -122,7 +132,7 @@ std::vector<std::pair<double, double>> solve_by_newton(const Kernel& kernel, con
     // Along a grid of parameter values, the roots in k of each error and the other error
     // there; a sign change of the other error along one branch of roots brackets a
     // solution, which Newton's method then refines in (k, parameter).
-    const int steps = 40;
+    const int steps = 80;
     std::vector<RootScan> scans(steps + 1);
     for (int i = 0; i <= steps; ++i) {
         double value = p.parameter_min + (p.parameter_max - p.parameter_min) * i / steps;

@@ -158,6 +158,37 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         run_gnuplot(folder, name, script, gnuplot);
         written.push_back(folder.filename().string() + "/" + name + ".svg");
     }
+    // Parameter sweeps: heat maps of both errors over (k, parameter) with both zero contours.
+    for (const auto& c : results.sweeps) {
+        std::string name = c.lattice + "-" + c.kernel + "-" + c.parameter + "-map";
+        std::string grid_rho = "$rho << EOD\n", grid_gradp = "$gradp << EOD\n";
+        for (std::size_t i = 0; i < c.values.size(); ++i) {
+            for (std::size_t j = 0; j < c.ks.size(); ++j) {
+                grid_rho += fmt::format("{:.8f} {:.10g} {:.10g}\n", c.ks[j], c.values[i], c.rho[i][j]);
+                grid_gradp += fmt::format("{:.8f} {:.10g} {:.10g}\n", c.ks[j], c.values[i], c.gradp[i][j]);
+            }
+            grid_rho += "\n";
+            grid_gradp += "\n";
+        }
+        std::string script = fmt::format(
+            "set encoding utf8\nset terminal svg size 1200,520 dynamic enhanced font 'sans,11' background '#ffffff'\n"
+            "set output '{}.svg'\n{}EOD\n{}EOD\n"
+            // The zero contours of both errors, as lines to draw over each map.
+            "set contour base\nset cntrparam levels discrete 0\nunset surface\nset table $rho0\nsplot $rho\n"
+            "unset table\nset table $gradp0\nsplot $gradp\nunset table\nunset contour\nset surface\n"
+            "set multiplot layout 1,2 title '{} on {} (a_p = {}): black ε_ρ = 0, white ε_{{∇P}} = 0' noenhanced\n"
+            "set view map\nset xlabel 'k'\nset ylabel '{}' noenhanced\nset cbrange [-0.05:0.05]\n"
+            "set palette defined (-0.05 '#2166ac', 0 '#f7f7f7', 0.05 '#b2182b')\nunset key\n"
+            "set xrange [{}:{}]\nset yrange [{}:{}]\n"
+            "set title 'ε_ρ'\nplot $rho using 1:2:3 with image, $rho0 using 1:2 with lines lw 2 lc rgb 'black', "
+            "$gradp0 using 1:2 with lines lw 2 lc rgb 'white'\n"
+            "set title 'ε_{{∇P}}'\nplot $gradp using 1:2:3 with image, $rho0 using 1:2 with lines lw 2 lc rgb 'black', "
+            "$gradp0 using 1:2 with lines lw 2 lc rgb 'white'\nunset multiplot\n",
+            name, grid_rho, grid_gradp, c.kernel, c.lattice, c.ap_name, c.parameter, c.ks.front(), c.ks.back(),
+            c.values.front(), c.values.back());
+        run_gnuplot(folder, name, script, gnuplot);
+        written.push_back(folder.filename().string() + "/" + name + ".svg");
+    }
     return written;
 }
 

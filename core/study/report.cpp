@@ -228,6 +228,26 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
         s += "\n";
     }
 
+    if (!results.sweeps.empty()) {
+        s += "## Kernel design: parameter sweeps\n\nFor each swept parameter, the (k, parameter) where eps_rho and "
+             "eps_gradP vanish together (sphkern design), with the designed kernel's condition (22) intervals; "
+             "the maps in the figures show both errors over (k, parameter) with both zero contours.\n\n"
+             "| lattice | kernel | a_p | k | parameter | cond(J) | dk, dparameter for a_p + 1% | W >= 0 | k where (22) holds |\n"
+             "|---|---|---|---|---|---|---|---|---|\n";
+        for (const auto& c : results.sweeps) {
+            if (c.design.solutions.empty())
+                s += fmt::format("| {} | {} | {} | - | - | | | | {} |\n", c.lattice, c.kernel, c.ap_name, c.design.note);
+            for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
+                const auto& d = c.design.solutions[i];
+                s += fmt::format("| {} | {} | {} | {:.6f} | {} = {:.6f} | {:.3g} | {:+.2e}, {:+.2e} | {} | {} |\n",
+                                 c.lattice, c.kernel, c.ap_name, d.k, c.parameter, d.parameter, d.jacobian_condition,
+                                 d.k_shift, d.parameter_shift, d.non_negative ? "yes" : "no",
+                                 intervals_text(c.designed_acceptance[i]));
+            }
+        }
+        s += "\n";
+    }
+
     if (!figures.empty()) {
         s += "## Figures\n\neps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= epsilon shaded "
              "(as the paper's Figs. 4 to 6).\n\n";

@@ -91,7 +91,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     study.document = std::move(document);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots", "surface"});
+                      "compare_with", "plots", "surface", "sweeps"});
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
@@ -176,6 +176,30 @@ Study parse_study(nlohmann::json document, const fs::path& file)
         study.compare_with = reference;
     }
     if (auto p = root.find("plots")) study.plots = p->boolean();
+    if (auto sweeps = root.find("sweeps")) {
+        sweeps->expect_array(1, 20);
+        for (std::size_t i = 0; i < sweeps->size(); ++i) {
+            auto node = (*sweeps)[i];
+            node.expect_keys({"kernel", "set", "parameter", "range", "samples"});
+            StudySweep sweep;
+            sweep.json_path = node.path();
+            sweep.kernel = node.at("kernel").string();
+            if (sweep.kernel.find('/') != std::string::npos && fs::path(sweep.kernel).is_relative())
+                sweep.kernel = (file.parent_path() / sweep.kernel).string();
+            if (auto set = node.find("set")) {
+                set->expect_object();
+                for (const auto& [name, unused] : set->value().items()) sweep.parameters[name] = set->at(name).number();
+            }
+            sweep.parameter = node.at("parameter").string();
+            auto range = node.at("range");
+            range.expect_array(2, 2);
+            sweep.min = range[0].number();
+            sweep.max = range[1].number();
+            if (!(sweep.min < sweep.max)) range.error("expected [min, max] with min < max");
+            if (auto n = node.find("samples")) sweep.samples = static_cast<int>(n->integer_in(3, 1000));
+            study.sweeps.push_back(sweep);
+        }
+    }
     if (auto node = root.find("surface")) {
         node->expect_keys({"k", "layers", "forms", "volume_coefficient"});
         StudySurface surface;

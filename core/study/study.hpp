@@ -40,6 +40,17 @@ struct StudySurface {
     std::string volume_coefficient;    // empty: the study's first
 };
 
+// An optional parameter sweep: maps of both errors over (k, parameter) and the
+// (k, parameter) where both vanish.
+struct StudySweep {
+    std::string kernel; // name, plugin or expression file, or a blend A+B
+    std::map<std::string, double> parameters; // other parameter values
+    std::string parameter;
+    double min = 0, max = 1;
+    int samples = 41;
+    std::string json_path;
+};
+
 struct Study {
     std::string file;
     nlohmann::json document; // echoed into results.json
@@ -55,6 +66,7 @@ struct Study {
     std::optional<std::filesystem::path> compare_with; // a reference table (share/reference)
     bool plots = true;
     std::optional<StudySurface> surface;
+    std::vector<StudySweep> sweeps;
 };
 
 Study read_study(const std::filesystem::path& file);

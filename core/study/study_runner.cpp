@@ -225,6 +225,55 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
             }
         }
     }
+    for (const auto& sweep : study.sweeps) {
+        std::optional<Kernel> kernel;
+        try {
+            kernel.emplace(registry.find(sweep.kernel), sweep.parameters);
+        } catch (const Error& e) {
+            throw Error(e.code(), study.file + ": " + sweep.json_path + ": " + e.what());
+        }
+        for (const auto& lattice : lattices) {
+            if (!kernel->supports(lattice.dimension)) continue;
+            SweepCase c;
+            c.lattice = lattice.name;
+            c.kernel = kernel->name();
+            c.parameter = sweep.parameter;
+            c.ap_name = study.volume_coefficients[0];
+            c.a_p = lattice.volume_coefficient(c.ap_name);
+            DesignProblem problem{&lattice, 0, c.a_p, lattice.gravity, study.k_min, study.k_max,
+                                  sweep.parameter, sweep.min, sweep.max};
+            try {
+                c.design = design_kernel(*kernel, problem);
+            } catch (const Error& e) {
+                throw Error(e.code(), study.file + ": " + sweep.json_path + ": " + e.what());
+            }
+            const int k_samples = std::min(study.samples, 201);
+            for (int j = 0; j < k_samples; ++j) c.ks.push_back(study.k_min + (study.k_max - study.k_min) * j / (k_samples - 1));
+            for (int i = 0; i < sweep.samples; ++i) {
+                double value = sweep.min + (sweep.max - sweep.min) * i / (sweep.samples - 1);
+                auto values = sweep.parameters;
+                values[sweep.parameter] = value;
+                Kernel at(kernel->shared_definition(), values);
+                HydrostaticErrors errors(at, lattice, 0, c.a_p, lattice.gravity, study.k_max);
+                c.values.push_back(value);
+                c.rho.emplace_back();
+                c.gradp.emplace_back();
+                for (double k : c.ks) {
+                    auto v = errors.at(k);
+                    c.rho.back().push_back(v.eps_rho);
+                    c.gradp.back().push_back(v.eps_gradp);
+                }
+            }
+            for (const auto& s : c.design.solutions) {
+                auto values = sweep.parameters;
+                values[sweep.parameter] = s.parameter;
+                Kernel designed(kernel->shared_definition(), values);
+                HydrostaticErrors errors(designed, lattice, 0, c.a_p, lattice.gravity, study.k_max);
+                c.designed_acceptance.push_back(evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon));
+            }
+            results.sweeps.push_back(std::move(c));
+        }
+    }
     if (study.compare_with) compare(study, results);
     return results;
 }
@@ -277,8 +326,22 @@ nlohmann::json study_results_json(const Study& study, const StudyResults& result
                            {"spacing", c.profile.spacing}, {"layers", layers},
                            {"bulk", {{"eps_rho", c.profile.bulk.eps_rho}, {"eps_gradp", c.profile.bulk.eps_gradp}}}});
     }
+    nlohmann::json sweeps = nlohmann::json::array();
+    for (const auto& c : results.sweeps) {
+        nlohmann::json solutions = nlohmann::json::array();
+        for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
+            const auto& s = c.design.solutions[i];
+            solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
+                                 {"eps_gradp", s.values.eps_gradp}, {"jacobian_condition", s.jacobian_condition},
+                                 {"non_negative", s.non_negative},
+                                 {"acceptance", acceptance_json(c.designed_acceptance[i], study.epsilon)}});
+        }
+        sweeps.push_back({{"lattice", c.lattice}, {"kernel", c.kernel}, {"parameter", c.parameter},
+                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
+                          {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
+    }
     return {{"sphkern_version", SPHKERN_VERSION}, {"study", study.document}, {"study_file", study.file},
-            {"cases", cases}, {"comparison", comparison}, {"surface", surface}};
+            {"cases", cases}, {"comparison", comparison}, {"surface", surface}, {"sweeps", sweeps}};
 }
 
 } // namespace sphkern

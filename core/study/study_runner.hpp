@@ -4,6 +4,7 @@
 #pragma once
 
 #include "analysis/acceptance.hpp"
+#include "analysis/design.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/surface_profile.hpp"
 #include "kernels/kernel_registry.hpp"
@@ -68,10 +69,23 @@ struct SurfaceCase {
     SurfaceProfile profile;
 };
 
+struct SweepCase {
+    std::string lattice;
+    std::string kernel;
+    std::string parameter;
+    std::string ap_name;
+    double a_p = 0;
+    std::vector<double> ks, values;                 // the grid
+    std::vector<std::vector<double>> rho, gradp;    // [value index][k index]
+    DesignResult design;
+    std::vector<Acceptance> designed_acceptance;    // condition (22) of each designed kernel
+};
+
 struct StudyResults {
     std::vector<StudyCase> cases;
     std::vector<ComparisonRow> comparison;
     std::vector<SurfaceCase> surface;
+    std::vector<SweepCase> sweeps;
     double tolerance = 1e-4;
     nlohmann::json reference; // the whole reference table, if any
 };

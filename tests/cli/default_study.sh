@@ -26,4 +26,12 @@ import json
 r = json.load(open('$work/out3d/results.json'))
 assert len(r['cases']) == 10 * 5 * 3, len(r['cases'])
 "
+"$sphkern" run design --no-plots -o "$work/design" >/dev/null
+python3 -c "
+import json
+r = json.load(open('$work/design/results.json'))
+found = {(s['lattice'], s['kernel']): len(s['solutions']) for s in r['sweeps']}
+assert all(found[(l, k)] > 0 for l in ('triangular', 'fcc') for k in ('cubic_bspline+desbrun_spiky', 'wendland_c2_shape')), found
+assert all(abs(x['eps_rho']) < 1e-9 and abs(x['eps_gradp']) < 1e-9 for s in r['sweeps'] for x in s['solutions'])
+"
 echo "1 passed, 0 failed"
