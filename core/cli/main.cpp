@@ -1,6 +1,7 @@
 // sphkern: accuracy of SPH smoothing kernels on regular particle lattices.
 #include "cli/command.hpp"
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -54,6 +55,7 @@ int main(int argc, char** argv)
     }
     spdlog::set_level(spdlog::level::from_str(log_level));
 
+    install_interrupt_handlers();
     try {
         for (auto& [command, action] : commands)
             if (command->parsed()) return action();

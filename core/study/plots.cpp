@@ -1,6 +1,7 @@
 #include "study/plots.hpp"
 
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <fmt/format.h>
 
@@ -50,6 +51,7 @@ std::string datablock(const std::string& name, const StudyCase& c, bool rho)
 // script names its output relatively.
 void run_gnuplot(const fs::path& folder, const std::string& name, const std::string& script, const fs::path& gnuplot)
 {
+    throw_if_interrupted();
     fs::path script_file = folder / (name + ".gp");
     std::ofstream(script_file) << script;
     std::string command = "cd '" + folder.string() + "' && '" + gnuplot.string() + "' '" + name + ".gp' 2>&1";

@@ -4,6 +4,7 @@
 #include "lattices/lattice.hpp"
 #include "support/error.hpp"
 #include "support/json_input.hpp"
+#include "support/interruption.hpp"
 #include "support/progress.hpp"
 
 #include <algorithm>
@@ -190,6 +191,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                     if (!c.automatic) c.explanations = explain(errors, automatic, c.scan, automatic_scan);
                     results.cases.push_back(std::move(c));
                     progress.step(kernel.name() + " on " + lattice.name);
+                    throw_if_interrupted();
                 }
             }
     }
@@ -221,6 +223,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                         throw Error(e.code(), study.file + ": /surface: " + e.what());
                     }
                     results.surface.push_back(std::move(c));
+                    throw_if_interrupted();
                 }
             }
         }
@@ -272,6 +275,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                 c.designed_acceptance.push_back(evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon));
             }
             results.sweeps.push_back(std::move(c));
+            throw_if_interrupted();
         }
     }
     if (study.compare_with) compare(study, results);

@@ -14,6 +14,7 @@ enum class ExitCode : int {
     input = 3,        // a bad input file, value or name (lattice, study, a_p, k, ...)
     plugin = 4,       // a plugin that cannot be loaded, validated or run
     output = 5,       // results could not be written, or the output exists
+    interrupted = 130, // SIGINT or SIGTERM arrived; nothing was written
 };
 
 class Error : public std::runtime_error {

@@ -1,6 +1,7 @@
 #include "support/output_folder.hpp"
 
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <cerrno>
 #include <cstdlib>
@@ -45,6 +46,7 @@ void OutputFolder::write(const std::string& name, const std::string& content)
 
 void OutputFolder::commit()
 {
+    throw_if_interrupted();
     std::error_code ec;
     fs::path old;
     if (fs::exists(target_, ec)) {

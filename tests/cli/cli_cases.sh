@@ -3,7 +3,7 @@
 # error line matching a pattern, and never a crash.
 # Usage: cli_cases.sh SPHKERN BROKEN_PLUGIN_DIR DATA_DIR
 set -u
-sphkern=$1 broken=$2
+sphkern=$1 broken=$(realpath "$2")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SPHKERN_PLUGIN_TIMEOUT=2
@@ -133,6 +133,31 @@ expect 0 '^$' -- check cubic_bspline
 expect 1 '^$' -- check super_gaussian --strict
 expect 0 '^$' -- check super_gaussian
 
+# Expression kernels.
+kernel() { printf '%s' "$2" >"$work/$1.json"; }
+kernel x_syntax '{"name": "x", "support": 2, "dimensions": [2], "w": "q <= 1 ? (1 - q"}'
+expect 3 'x_syntax.json: /w: not a valid expression' -- check --plugin "$work/x_syntax.json"
+kernel x_var '{"name": "x", "support": 2, "dimensions": [2], "w": "1 - q * beta"}'
+expect 3 'x_var.json: /w: not a valid expression.*beta' -- eps "$work/x_var.json" triangular --k 1
+kernel x_zero '{"name": "x", "support": 2, "dimensions": [2], "w": "0"}'
+expect 3 'x_zero.json: /w: the integral of w over 2D space is not a positive finite number' -- eps "$work/x_zero.json" triangular --k 1
+kernel x_inf '{"name": "x", "support": 2, "dimensions": [2], "w": "1 / (1 - q)"}'
+expect 3 'x_inf.json: /w: ' -- eps "$work/x_inf.json" triangular --k 1
+kernel x_missing '{"name": "x", "support": 2, "dimensions": [2]}'
+expect 3 'x_missing.json: /: missing required key "w"' -- eps "$work/x_missing.json" triangular --k 1
+kernel x_dim '{"name": "x", "support": 2, "dimensions": [4], "w": "1"}'
+expect 3 'x_dim.json: /dimensions/0: value 4 is out of range' -- eps "$work/x_dim.json" triangular --k 1
+kernel x_param '{"name": "x", "support": 2, "dimensions": [2], "parameters": [{"name": "a", "default": 5, "min": 0, "max": 1}], "w": "1 - a*q"}'
+expect 3 'x_param.json: /parameters/0: expected min <= default <= max' -- eps "$work/x_param.json" triangular --k 1
+kernel x_key '{"name": "x", "support": 2, "dimensions": [2], "w": "1", "derivative": "0"}'
+expect 3 'x_key.json: /: unknown key "derivative"' -- eps "$work/x_key.json" triangular --k 1
+kernel x_ok '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'
+expect 0 '^$' -- check --plugin "$work/x_ok.json"
+expect 3 'x_ok has no parameter "beta"' -- design "$work/x_ok.json" triangular --param beta
+kernel x_1d '{"name": "x_1d", "support": 1, "dimensions": [1], "w": "q < 1 ? 1 - q : 0"}'
+expect 3 'share no dimension' -- eps "composite+$work/x_1d.json" triangular --k 1
+expect 3 'parameter range \[5, 1\] is not allowed' -- design cubic_bspline+wendland_c2 triangular --param alpha --range 5 1
+
 # Studies.
 study() { printf '%s' "$2" >"$work/$1.json"; }
 study s_kernels '{"name": "s", "kernels": [], "lattices": ["fcc"]}'
@@ -153,15 +178,38 @@ study s_shell '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangu
 expect 3 's_shell.json: /modes/0/shells/2/1: expected a shell radius' -- run "$work/s_shell.json" -o "$work/out8"
 study s_nor '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "modes": [{"name": "p", "shells": {"3": [1]}}]}'
 expect 3 's_nor.json: /modes/0/shells: no shell list for kernel cubic_bspline with support R = 2' -- run "$work/s_nor.json" -o "$work/out9"
+study s_plugin '{"name": "s", "kernels": ["'"$broken"'/crash_in_w.so"], "lattices": ["fcc"]}'
+expect 4 'crash_in_w.so: plugin crashed with signal 11' -- run "$work/s_plugin.json" -o "$work/out11"
+study s_surface '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "surface": {"forms": ["up"]}}'
+expect 3 's_surface.json: /surface/forms/0: gradient form "up" is unknown' -- run "$work/s_surface.json" -o "$work/out12"
+study s_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "cubic_bspline", "parameter": "beta", "range": [0, 1]}]}'
+expect 3 's_sweep.json: /sweeps/0: kernel cubic_bspline has no parameter "beta"' -- run "$work/s_sweep.json" -o "$work/out13"
+study s_range '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "a+b", "parameter": "alpha", "range": [1, 0]}]}'
+expect 3 's_range.json: /sweeps/0/range: expected \[min, max\] with min < max' -- run "$work/s_range.json" -o "$work/out14"
 study s_ok '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false}'
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10"
 expect 5 'out10: already exists; use --force' -- run "$work/s_ok.json" -o "$work/out10"
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
 # A failed run leaves no output folder behind, partial or not.
-[[ -z $(ls -A "$work" | grep -E '^out[1-9]$|partial') ]] && passed=$((passed + 1)) || {
+[[ -z $(ls -A "$work" | grep -E '^out([1-9]|1[1-4])$|partial') ]] && passed=$((passed + 1)) || {
     echo "FAIL: a failed run left output behind: $(ls -A "$work")"
     failed=$((failed + 1))
 }
+
+# An interrupted run leaves nothing behind: no output folder, no partial folder.
+study s_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 100000}, "plots": false}'
+"$sphkern" run "$work/s_long.json" -o "$work/out_long" >/dev/null 2>"$work/interrupt.err" &
+pid=$!
+sleep 0.5
+kill -INT $pid
+wait $pid
+status=$?
+if [[ $status -eq 130 ]] && grep -q 'interrupted (SIGINT)' "$work/interrupt.err" && [[ -z $(ls -A "$work" | grep -E 'out_long|partial') ]]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: interrupted run: exit $status, $(cat "$work/interrupt.err"), left: $(ls -A "$work" | grep -E 'out_long|partial')"
+    failed=$((failed + 1))
+fi
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
