@@ -34,8 +34,10 @@ Eigen::Vector3d read_vector(const JsonNode& node, int dimension, double limit)
 // The smallest distance between two lattice points, in the file's units.
 double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif)
 {
+    // A primitive vector of the reduced basis bounds the distance: search no further.
+    const Eigen::Matrix3d reduced = reduce_basis(basis, dimension).first;
     double shortest = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < dimension; ++i) shortest = std::min(shortest, basis.col(i).norm());
+    for (int i = 0; i < dimension; ++i) shortest = std::min(shortest, reduced.col(i).norm());
     double nearest = shortest; // a primitive vector is itself a lattice translation
     for (int site = 0; site < static_cast<int>(motif.size()); ++site)
         for_each_lattice_point(basis / shortest, dimension, motif, site, 1.0,

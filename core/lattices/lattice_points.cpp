@@ -9,8 +9,6 @@ namespace sphkern {
 
 double lattice_point_bound(double r_max, int dimension) { return std::pow(2.0 * r_max + 1.0, dimension); }
 
-namespace {
-
 // Pairwise Gauss reduction: the same lattice spanned by shorter, more orthogonal
 // vectors, so that the box searched around a point stays small however skewed the
 // given basis is. Returns the reduced basis and the unimodular M with reduced = basis M.
@@ -32,8 +30,6 @@ std::pair<Eigen::Matrix3d, Eigen::Matrix3d> reduce_basis(Eigen::Matrix3d basis, 
     }
     return {basis, m};
 }
-
-} // namespace
 
 void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
                             int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit)

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace sphkern {
@@ -17,6 +18,10 @@ inline constexpr std::size_t max_lattice_points = 5'000'000;
 // Throws Error(input) before enumerating if the request exceeds the limit.
 void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
                             int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit);
+
+// Pairwise Gauss reduction: the same lattice spanned by shorter, more orthogonal
+// vectors. Returns the reduced basis and the unimodular M with reduced = basis M.
+std::pair<Eigen::Matrix3d, Eigen::Matrix3d> reduce_basis(Eigen::Matrix3d basis, int dimension);
 
 // An upper bound on the number of points within r_max of a site when the nearest
 // neighbour distance is 1: disjoint balls of radius 1/2 fit in a ball of r_max + 1/2.

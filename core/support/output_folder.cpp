@@ -26,6 +26,9 @@ OutputFolder::OutputFolder(fs::path target, bool overwrite) : target_(std::move(
     if (!::mkdtemp(pattern.data()))
         throw Error(ExitCode::output, parent.string() + ": cannot create a folder there: " + std::strerror(errno));
     staging_ = pattern;
+    // mkdtemp makes it private; results are ordinary files (the umask still applies to them).
+    fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                  fs::perms::others_read | fs::perms::others_exec, ec);
 }
 
 OutputFolder::~OutputFolder()
