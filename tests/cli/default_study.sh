@@ -34,4 +34,17 @@ found = {(s['lattice'], s['kernel']): len(s['solutions']) for s in r['sweeps']}
 assert all(found[(l, k)] > 0 for l in ('triangular', 'fcc') for k in ('cubic_bspline+desbrun_spiky', 'wendland_c2_shape')), found
 assert all(abs(x['eps_rho']) < 1e-9 and abs(x['eps_gradp']) < 1e-9 for s in r['sweeps'] for x in s['solutions'])
 "
+# Each designed blend, confirmed by sphkern eps at that point.
+for lattice in triangular fcc; do
+    "$sphkern" design cubic_bspline+desbrun_spiky $lattice --param alpha --json >"$work/d.json"
+    python3 -c "
+import json
+d = json.load(open('$work/d.json'))
+assert d['solutions'], d
+for s in d['solutions']: print(repr(s['k']), repr(s['parameter']))
+" | while read -r k alpha; do
+        "$sphkern" eps cubic_bspline+desbrun_spiky $lattice --k "$k" --set alpha="$alpha" --json |
+            python3 -c "import json,sys; e = json.load(sys.stdin); assert abs(e['eps_rho']) < 1e-9 and abs(e['eps_gradp']) < 1e-9, e"
+    done
+done
 echo "1 passed, 0 failed"
