@@ -40,8 +40,8 @@ double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension, c
     for (int i = 0; i < dimension; ++i) shortest = std::min(shortest, reduced.col(i).norm());
     double nearest = shortest; // a primitive vector is itself a lattice translation
     for (int site = 0; site < static_cast<int>(motif.size()); ++site)
-        for_each_lattice_point(basis / shortest, dimension, motif, site, 1.0,
-                               [&](const Eigen::Vector3d& x) { nearest = std::min(nearest, x.norm() * shortest); });
+        for_each_lattice_point(basis, dimension, motif, site, shortest,
+                               [&](const Eigen::Vector3d& x) { nearest = std::min(nearest, x.norm()); });
     return nearest;
 }
 
@@ -97,9 +97,13 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
         lattice.basis.col(i) = read_vector(basis_node[static_cast<std::size_t>(i)], dim, max_coordinate);
     double lengths = 1;
     for (int i = 0; i < dim; ++i) lengths *= lattice.basis.col(i).norm();
-    if (lengths == 0 || std::abs(lattice.basis.determinant()) < 1e-9 * lengths)
-        basis_node.error(dim == 2 ? "degenerate basis: the vectors are collinear or zero, expected two independent vectors"
-                                  : "degenerate basis: the vectors are coplanar or zero, expected three independent vectors");
+    // Nearly degenerate bases are refused too: their reduced vectors would be known only
+    // to about 1e-16 / ratio, not to the shell tolerance.
+    if (lengths == 0 || std::abs(lattice.basis.determinant()) < 1e-6 * lengths)
+        basis_node.error(dim == 2 ? "degenerate basis: the vectors are collinear or zero (cell area below 1e-6 of the "
+                                    "product of their lengths), expected two independent vectors"
+                                  : "degenerate basis: the vectors are coplanar or zero (cell volume below 1e-6 of the "
+                                    "product of their lengths), expected three independent vectors");
 
     auto motif_node = root.at("motif");
     motif_node.expect_array(1, 1000);
@@ -123,6 +127,9 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
     if (!(d > 1e-6 * lattice.basis.colwise().norm().maxCoeff()))
         basis_node.error("absurd geometry: the nearest-neighbour distance is below 1e-6 of the cell size");
     lattice.basis /= d;
+    // Once more in the scaled units, with the very arithmetic the shells use, so that the
+    // first shell is at 1 to rounding even for a badly conditioned basis.
+    lattice.basis /= nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
     if (dim == 2) lattice.basis.col(2) = Eigen::Vector3d::UnitZ();
 
     lattice.gravity = dim == 2 ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, -1);
