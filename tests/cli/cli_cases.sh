@@ -88,6 +88,9 @@ for f in "$3"/fuzz-slow-*.json; do
     fi
 done
 
+# The shell fuzzer's crash: a nearly degenerate basis whose first shell came out 3e-9 below d.
+expect 3 'fuzz-crash-8081568.json: /basis: degenerate basis: the vectors are coplanar' -- shells "$3/fuzz-crash-8081568.json" --radius 4.28
+
 # Command-line values.
 expect 2 'error: ' -- shells fcc
 expect 2 'error: ' -- frobnicate
