@@ -35,6 +35,18 @@ nlohmann::json acceptance_json(const Acceptance& a, double epsilon)
             {"best_max_error", a.best_error}};
 }
 
+nlohmann::json surface_json(const SurfaceProfile& profile)
+{
+    nlohmann::json layers = nlohmann::json::array();
+    for (const auto& l : profile.layers)
+        layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
+                          {"neighbours", l.neighbours}});
+    return {{"spacing", profile.spacing},
+            {"layers", layers},
+            {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
+                      {"neighbours", profile.bulk.neighbours}}}};
+}
+
 void check_k_interval(double k_min, double k_max, const std::string& what)
 {
     if (!std::isfinite(k_min) || !std::isfinite(k_max) || k_min <= 0 || k_max > 100 || k_min >= k_max) {

@@ -1,7 +1,7 @@
 // `sphkern surface`: the error profile below a free surface, layer by layer.
 #include "cli/command.hpp"
 
-#include "analysis/surface_profile.hpp"
+#include "analysis/results_json.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -10,18 +10,6 @@
 #include <memory>
 
 namespace sphkern::cli {
-
-nlohmann::json surface_json(const SurfaceProfile& profile)
-{
-    nlohmann::json layers = nlohmann::json::array();
-    for (const auto& l : profile.layers)
-        layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
-                          {"neighbours", l.neighbours}});
-    return {{"spacing", profile.spacing},
-            {"layers", layers},
-            {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
-                      {"neighbours", profile.bulk.neighbours}}}};
-}
 
 Action add_surface_command(CLI::App& app)
 {

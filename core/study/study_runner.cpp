@@ -321,14 +321,10 @@ nlohmann::json study_results_json(const Study& study, const StudyResults& result
                               {"note", r.note}});
     nlohmann::json surface = nlohmann::json::array();
     for (const auto& c : results.surface) {
-        nlohmann::json layers = nlohmann::json::array();
-        for (const auto& l : c.profile.layers)
-            layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
-                              {"neighbours", l.neighbours}});
-        surface.push_back({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
-                           {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k},
-                           {"spacing", c.profile.spacing}, {"layers", layers},
-                           {"bulk", {{"eps_rho", c.profile.bulk.eps_rho}, {"eps_gradp", c.profile.bulk.eps_gradp}}}});
+        auto entry = surface_json(c.profile);
+        entry.update({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
+                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k}});
+        surface.push_back(entry);
     }
     nlohmann::json sweeps = nlohmann::json::array();
     for (const auto& c : results.sweeps) {

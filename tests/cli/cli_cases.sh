@@ -124,6 +124,13 @@ expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 8,8,8 --periodic --vtk "
     failed=$((failed + 1))
 }
 
+expect 3 'the number of layers must be in \[1, 10000\]' -- surface cubic_bspline fcc --k 1.2 --layers 0
+expect 3 'lattice fcc has sites 0 to 0, not 5' -- eps cubic_bspline fcc --k 1 --site 5
+expect 2 '--epsilon must be in \(0, 1\)' -- roots cubic_bspline fcc --epsilon 2
+expect 2 'error: --threads' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --threads -1
+expect 2 'error: --timeout' -- check cubic_bspline --timeout 0
+expect 3 'kernel cubic_bspline has no parameter "beta"' -- design cubic_bspline fcc --param beta
+
 # Plugins named on the command line.
 expect 4 'wrong_abi.so: invalid kernel descriptor: ABI version 999' -- kernels --plugin "$broken/wrong_abi.so"
 expect 4 'crash_in_w.so: plugin crashed with signal 11' -- kernels --plugin "$broken/crash_in_w.so"

@@ -22,6 +22,18 @@ std::string example(const std::string& name)
     return std::string(SPHKERN_SOURCE_DIR) + "/share/examples/expression-kernels/" + name + ".json";
 }
 
+DesignProblem problem_on(const Lattice& lattice, const std::string& parameter, double min, double max)
+{
+    DesignProblem problem;
+    problem.lattice = &lattice;
+    problem.a_p = lattice.volume_coefficient("voronoi");
+    problem.gravity = lattice.gravity;
+    problem.parameter = parameter;
+    problem.parameter_min = min;
+    problem.parameter_max = max;
+    return problem;
+}
+
 } // namespace
 
 TEST_CASE("a blend's errors are linear in alpha and its kernel is the weighted sum of the parts")
@@ -56,13 +68,7 @@ TEST_CASE("design: blends whose two errors vanish at one k, triangular and fcc, 
     for (const char* lattice_name : {"triangular", "fcc"}) {
         auto lattice = load_lattice(lattice_name);
         Kernel blend(shipped_kernels().find("cubic_bspline+desbrun_spiky"));
-        DesignProblem problem;
-        problem.lattice = &lattice;
-        problem.a_p = lattice.volume_coefficient("voronoi");
-        problem.gravity = lattice.gravity;
-        problem.parameter = "alpha";
-        problem.parameter_min = -1;
-        problem.parameter_max = 2;
+        auto problem = problem_on(lattice, "alpha", -1, 2);
         auto result = design_kernel(blend, problem);
         CAPTURE(lattice_name);
         REQUIRE(!result.solutions.empty());
@@ -83,13 +89,7 @@ TEST_CASE("design: the wendland_c2_shape family (not a blend) by bracketing and 
     for (const char* lattice_name : {"triangular", "fcc"}) {
         auto lattice = load_lattice(lattice_name);
         Kernel family = shipped_kernel("wendland_c2_shape");
-        DesignProblem problem;
-        problem.lattice = &lattice;
-        problem.a_p = lattice.volume_coefficient("voronoi");
-        problem.gravity = lattice.gravity;
-        problem.parameter = "beta";
-        problem.parameter_min = -1;
-        problem.parameter_max = 10;
+        auto problem = problem_on(lattice, "beta", -1, 10);
         auto result = design_kernel(family, problem);
         CAPTURE(lattice_name);
         REQUIRE(!result.solutions.empty());
@@ -103,13 +103,7 @@ TEST_CASE("design: the wendland_c2_shape family (not a blend) by bracketing and 
     }
     // A range without a solution says so.
     auto lattice = load_lattice("triangular");
-    DesignProblem none;
-    none.lattice = &lattice;
-    none.a_p = lattice.volume_coefficient("voronoi");
-    none.gravity = lattice.gravity;
-    none.parameter = "beta";
-    none.parameter_min = 5;
-    none.parameter_max = 10;
+    auto none = problem_on(lattice, "beta", 5, 10);
     auto result = design_kernel(shipped_kernel("wendland_c2_shape"), none);
     CHECK(result.solutions.empty());
     CHECK(result.note.find("no (k, beta)") != std::string::npos);
