@@ -1,6 +1,9 @@
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "support/error.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
@@ -90,6 +93,6 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
                                    : parse_direction(options.gravity, lattice.dimension, "--gravity");
 }
 
-void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+void print_json(const nlohmann::json& document) { fmt::print(results_file(), "{}\n", document.dump(2)); }
 
 } // namespace sphkern::cli

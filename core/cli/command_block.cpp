@@ -1,5 +1,6 @@
 // `sphkern block`: direct SPH sums over a finite block of particles.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "block/particle_block.hpp"
 #include "support/atomic_file.hpp"
@@ -117,14 +118,14 @@ Action add_block_command(CLI::App& app)
                         {"pair_interactions_per_second", rate}, {"layers", layers}});
             return 0;
         }
-        fmt::print("{} on {}: {} particles, {} pair interactions per pass, {} threads\n", kernel.label(), lattice.name,
+        fmt::print(results_file(), "{} on {}: {} particles, {} pair interactions per pass, {} threads\n", kernel.label(), lattice.name,
                    result.positions.size(), result.pair_interactions, result.threads);
-        fmt::print("setup {:.4f} s, density {:.4f} s, gradient {:.4f} s: {:.3g} pair interactions per second\n",
+        fmt::print(results_file(), "setup {:.4f} s, density {:.4f} s, gradient {:.4f} s: {:.3g} pair interactions per second\n",
                    result.timings.setup, result.timings.density, result.timings.gradient, rate);
-        fmt::print("{:>5} {:>9} {:>14} {:>14} {:>14} {:>14}\n", "layer", "particles", "eps_rho min", "eps_rho max",
+        fmt::print(results_file(), "{:>5} {:>9} {:>14} {:>14} {:>14} {:>14}\n", "layer", "particles", "eps_rho min", "eps_rho max",
                    "eps_gradP min", "eps_gradP max");
         for (const auto& l : result.layers())
-            fmt::print("{:>5} {:>9} {:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles, l.rho_min, l.rho_max,
+            fmt::print(results_file(), "{:>5} {:>9} {:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles, l.rho_min, l.rho_max,
                        l.gradp_min, l.gradp_max);
         return 0;
     };

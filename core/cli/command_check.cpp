@@ -1,5 +1,6 @@
 // `sphkern check`: the kernel author's check-up, run in a child process.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "kernels/kernel_check.hpp"
 #include "support/error.hpp"
@@ -47,9 +48,9 @@ Action add_check_command(CLI::App& app)
             std::string verdict = result["verdict"];
             failed |= verdict == "fail" || (options->strict && verdict == "warn");
             if (!options->json) {
-                fmt::print("{} ({}): {}\n", kernel.label(), kernel.definition().source, verdict);
+                fmt::print(results_file(), "{} ({}): {}\n", kernel.label(), kernel.definition().source, verdict);
                 for (const auto& c : result["checks"])
-                    fmt::print("  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
+                    fmt::print(results_file(), "  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
                                c["status"].get<std::string>(), c["detail"].get<std::string>());
             }
             results.push_back(std::move(result));

@@ -1,5 +1,6 @@
 // `sphkern design`: the (k, parameter) where both bulk errors vanish together.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "analysis/design.hpp"
 #include "analysis/results_json.hpp"
@@ -78,15 +79,15 @@ Action add_design_command(CLI::App& app)
                         {"note", result.note}});
             return 0;
         }
-        fmt::print("{} on {}, a_p = {:.10g}: both errors zero for {} in [{}, {}], k in [{}, {}]\n", kernel.name(),
+        fmt::print(results_file(), "{} on {}, a_p = {:.10g}: both errors zero for {} in [{}, {}], k in [{}, {}]\n", kernel.name(),
                    lattice.name, problem.a_p, problem.parameter, problem.parameter_min, problem.parameter_max,
                    problem.k_min, problem.k_max);
-        if (result.solutions.empty()) fmt::print("{}\n", result.note);
+        if (result.solutions.empty()) fmt::print(results_file(), "{}\n", result.note);
         else
-            fmt::print("{:>14} {:>16} {:>10} {:>10} {:>9} {:>11} {:>11} {:>8}\n", "k", problem.parameter, "eps_rho",
+            fmt::print(results_file(), "{:>14} {:>16} {:>10} {:>10} {:>9} {:>11} {:>11} {:>8}\n", "k", problem.parameter, "eps_rho",
                        "eps_gradP", "cond(J)", "dk(a_p+1%)", "dpar", "W >= 0");
         for (const auto& s : result.solutions)
-            fmt::print("{:>14.10f} {:>16.10f} {:>10.1e} {:>10.1e} {:>9.3g} {:>+11.2e} {:>+11.2e} {:>8}\n", s.k, s.parameter,
+            fmt::print(results_file(), "{:>14.10f} {:>16.10f} {:>10.1e} {:>10.1e} {:>9.3g} {:>+11.2e} {:>+11.2e} {:>8}\n", s.k, s.parameter,
                        s.values.eps_rho, s.values.eps_gradp, s.jacobian_condition, s.k_shift, s.parameter_shift,
                        s.non_negative ? "yes" : "no");
         return 0;

@@ -1,5 +1,6 @@
 // `sphkern eps`: both bulk errors of one kernel on one lattice at one k.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "support/error.hpp"
 
@@ -43,8 +44,8 @@ Action add_eps_command(CLI::App& app)
                         {"neighbours", v.neighbours}, {"support_radius", kernel.support() * options->k}});
             return 0;
         }
-        fmt::print("{} on {} at k = {}, a_p = {:.10g}\n", kernel.label(), lattice.name, options->k, a_p);
-        fmt::print("  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
+        fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}\n", kernel.label(), lattice.name, options->k, a_p);
+        fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
                    v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, kernel.support() * options->k);
         return 0;
     };

@@ -1,5 +1,6 @@
 // `sphkern kernels`: the kernels sphkern can find, with their metadata.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include <fmt/format.h>
 
@@ -30,11 +31,11 @@ Action add_kernels_command(CLI::App& app)
             print_json(list);
             return 0;
         }
-        fmt::print("{:<20} {:>4} {:<6} {:<12} {}\n", "name", "R", "dims", "parameters", "reference / file");
+        fmt::print(results_file(), "{:<20} {:>4} {:<6} {:<12} {}\n", "name", "R", "dims", "parameters", "reference / file");
         for (const auto& p : registry.plugins()) {
             std::string params;
             for (const auto& q : p->parameters) params += (params.empty() ? "" : ",") + q.name;
-            fmt::print("{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
+            fmt::print(results_file(), "{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
                        params.empty() ? "-" : params, p->reference, "", p->source);
         }
         return 0;

@@ -1,5 +1,6 @@
 // `sphkern lattices`: the shipped lattices, their volume coefficients and gravity.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include <fmt/format.h>
 
@@ -31,13 +32,13 @@ Action add_lattices_command(CLI::App& app)
             print_json(list);
             return 0;
         }
-        fmt::print("{:<12} {:>3} {:>5}  {:<44} {}\n", "name", "D", "sites", "a_p variants", "gravity");
+        fmt::print(results_file(), "{:<12} {:>3} {:>5}  {:<44} {}\n", "name", "D", "sites", "a_p variants", "gravity");
         for (const auto& l : list) {
             std::string coefficients, gravity;
             for (const auto& [name, value] : l["volume_coefficients"].items())
                 coefficients += fmt::format("{}{}={:.6g}", coefficients.empty() ? "" : " ", name, value.get<double>());
             for (double g : l["gravity"]) gravity += fmt::format("{}{:.4g}", gravity.empty() ? "" : ",", g);
-            fmt::print("{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(), l["dimension"].get<int>(),
+            fmt::print(results_file(), "{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(), l["dimension"].get<int>(),
                        l["sites"].get<int>(), coefficients, gravity);
         }
         return 0;

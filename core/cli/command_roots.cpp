@@ -1,5 +1,6 @@
 // `sphkern roots`: the k where eps_rho or eps_gradP vanish, the jumps, condition (22).
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "analysis/acceptance.hpp"
 #include "analysis/roots.hpp"
@@ -41,19 +42,19 @@ void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& l
         else print_json(document);
         return;
     }
-    fmt::print("{} on {}, a_p = {:.10g}, k in [{}, {}]\n", kernel.label(), lattice.name, a_p, options.k_min,
+    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]\n", kernel.label(), lattice.name, a_p, options.k_min,
                options.k_max);
-    fmt::print("{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
+    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
     for (const auto& r : scan.roots)
-        fmt::print("{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k, r.values.eps_rho,
+        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k, r.values.eps_rho,
                    r.values.eps_gradp, r.values.neighbours, r.support_radius);
-    if (scan.roots.empty()) fmt::print("(no root in the interval)\n");
+    if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
     for (const auto& j : scan.jumps)
-        fmt::print("jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind, j.left,
+        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind, j.left,
                    j.right);
-    fmt::print("condition (22), epsilon = {}: {}", options.epsilon, acceptance.passes() ? "passes for k in" : "fails");
-    for (const auto& i : acceptance.intervals) fmt::print(" [{:.6f}, {:.6f}]", i.from, i.to);
-    fmt::print("; best k = {:.6f} with max |eps| = {:.3g}\n", acceptance.best_k, acceptance.best_error);
+    fmt::print(results_file(), "condition (22), epsilon = {}: {}", options.epsilon, acceptance.passes() ? "passes for k in" : "fails");
+    for (const auto& i : acceptance.intervals) fmt::print(results_file(), " [{:.6f}, {:.6f}]", i.from, i.to);
+    fmt::print(results_file(), "; best k = {:.6f} with max |eps| = {:.3g}\n", acceptance.best_k, acceptance.best_error);
 }
 
 } // namespace

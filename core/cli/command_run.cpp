@@ -1,5 +1,6 @@
 // `sphkern run`: a study (default: the paper's) into a results folder, complete or not at all.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "study/plots.hpp"
 #include "study/report.hpp"
@@ -71,7 +72,7 @@ Action add_run_command(CLI::App& app)
         output.commit();
 
         std::string summary = replication_markdown(results);
-        std::cout << (summary.empty() ? verdicts_markdown(study, results) : summary) << std::flush;
+        fmt::print(results_file(), "{}", summary.empty() ? verdicts_markdown(study, results) : summary);
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         spdlog::info("{} cases in {:.3f} s; report, results.json, curves.csv{} in {}", results.cases.size(), seconds,
                      figures.empty() ? "" : " and figures", target.string());

@@ -1,5 +1,6 @@
 // `sphkern shells`: the neighbour shells of a lattice site.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "lattices/shells.hpp"
 
@@ -44,11 +45,11 @@ Action add_shells_command(CLI::App& app)
                         {"shells", list}});
             return 0;
         }
-        fmt::print("{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total", "sum (e.r^)^2");
+        fmt::print(results_file(), "{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total", "sum (e.r^)^2");
         int total = 0;
         for (const auto& s : shells) {
             total += s.count;
-            fmt::print("{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s.radius, s.radius * s.radius, s.count, total,
+            fmt::print(results_file(), "{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s.radius, s.radius * s.radius, s.count, total,
                        s.directional_moment(e));
         }
         return 0;

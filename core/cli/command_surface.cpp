@@ -1,5 +1,6 @@
 // `sphkern surface`: the error profile below a free surface, layer by layer.
 #include "cli/command.hpp"
+#include "support/results_output.hpp"
 
 #include "analysis/results_json.hpp"
 #include "support/error.hpp"
@@ -52,12 +53,12 @@ Action add_surface_command(CLI::App& app)
             print_json(document);
             return 0;
         }
-        fmt::print("{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(), lattice.name,
+        fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(), lattice.name,
                    options->k, a_p, gradient_form_name(form), profile.spacing);
-        fmt::print("{:>5} {:>10} {:>6} {:>14} {:>14}\n", "layer", "depth/d", "N", "eps_rho", "eps_gradP");
+        fmt::print(results_file(), "{:>5} {:>10} {:>6} {:>14} {:>14}\n", "layer", "depth/d", "N", "eps_rho", "eps_gradP");
         for (const auto& l : profile.layers)
-            fmt::print("{:>5} {:>10.5f} {:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth, l.neighbours, l.eps_rho, l.eps_gradp);
-        fmt::print("{:>5} {:>10} {:>6} {:>14.8f} {:>14.8f}\n", "bulk", "", profile.bulk.neighbours, profile.bulk.eps_rho,
+            fmt::print(results_file(), "{:>5} {:>10.5f} {:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth, l.neighbours, l.eps_rho, l.eps_gradp);
+        fmt::print(results_file(), "{:>5} {:>10} {:>6} {:>14.8f} {:>14.8f}\n", "bulk", "", profile.bulk.neighbours, profile.bulk.eps_rho,
                    profile.bulk.eps_gradp);
         return 0;
     };

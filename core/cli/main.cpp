@@ -2,13 +2,51 @@
 #include "cli/command.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
+#include "support/results_output.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <fmt/format.h>
+
+#include <cstdio>
 #include <iostream>
+#include <system_error>
 
 using namespace sphkern;
+
+namespace {
+
+// An error is one line, whatever a file name or a JSON key holds: control characters escaped.
+std::string one_line(const std::string& message)
+{
+    std::string line;
+    for (unsigned char c : message) {
+        if (c == '\n') line += "\\n";
+        else if (c == '\r') line += "\\r";
+        else if (c == '\t') line += "\\t";
+        else if (c < 0x20 || c == 0x7f) line += fmt::format("\\x{:02x}", c);
+        else line += static_cast<char>(c);
+    }
+    return line;
+}
+
+int fail(const std::string& message, ExitCode code)
+{
+    std::fflush(results_file());
+    std::cerr << "sphkern: error: " << one_line(message) << std::endl;
+    return static_cast<int>(code);
+}
+
+// Results are complete only if they reached their file: a full disk is an output error.
+int finish(int status)
+{
+    if (std::fflush(results_file()) != 0 || std::ferror(results_file()))
+        return fail("cannot write the results to standard output", ExitCode::output);
+    return status;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -50,24 +88,23 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "sphkern: error: " << e.what() << " (see sphkern --help)" << std::endl;
-        return static_cast<int>(ExitCode::usage);
+        return fail(std::string(e.what()) + " (see sphkern --help)", ExitCode::usage);
     }
     spdlog::set_level(spdlog::level::from_str(log_level));
 
     install_interrupt_handlers();
+    separate_results_from_stdout();
     try {
         for (auto& [command, action] : commands)
-            if (command->parsed()) return action();
+            if (command->parsed()) return finish(action());
     } catch (const Error& e) {
-        std::cerr << "sphkern: error: " << e.what() << std::endl;
-        return static_cast<int>(e.code());
+        return fail(e.what(), e.code());
     } catch (const std::bad_alloc&) {
-        std::cerr << "sphkern: error: out of memory" << std::endl;
-        return static_cast<int>(ExitCode::input);
+        return fail("out of memory", ExitCode::input);
+    } catch (const std::system_error& e) {
+        return fail(std::string("the system refused: ") + e.what(), ExitCode::input);
     } catch (const std::exception& e) {
-        std::cerr << "sphkern: error: " << e.what() << std::endl;
-        return static_cast<int>(ExitCode::input);
+        return fail(e.what(), ExitCode::input);
     }
     return 0;
 }

@@ -1,17 +1,22 @@
 #include "kernels/kernel_plugin.hpp"
 
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 #include "support/isolated_call.hpp"
+#include "support/results_output.hpp"
 
 #include <boost/dll/shared_library.hpp>
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace sphkern {
 
 namespace {
+
+constexpr std::uintmax_t max_plugin_bytes = 256u << 20;
 
 bool valid_identifier(const char* s)
 {
@@ -140,10 +145,15 @@ std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
 std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
 {
     const std::string name = file.string();
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) throw Error(ExitCode::plugin, name + ": no such plugin file");
-    if (std::filesystem::is_directory(file, ec))
-        throw Error(ExitCode::plugin, name + ": is a folder, expected a plugin file");
+    struct stat st {};
+    if (::stat(file.c_str(), &st) != 0) throw Error(ExitCode::plugin, name + ": no such plugin file");
+    if (S_ISDIR(st.st_mode)) throw Error(ExitCode::plugin, name + ": is a folder, expected a plugin file");
+    // A device or a pipe would be read without end by the loader.
+    if (!S_ISREG(st.st_mode))
+        throw Error(ExitCode::plugin, name + ": is not a regular file (a device or pipe?), expected a shared library");
+    if (static_cast<std::uintmax_t>(st.st_size) > max_plugin_bytes)
+        throw Error(ExitCode::plugin, name + ": file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+                                          std::to_string(max_plugin_bytes) + " for a plugin");
 
     auto verdict = run_isolated(
         [&]() -> std::string {
@@ -163,6 +173,9 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
 
     auto library = open_library(file);
     const auto* d = call_entry(*library, name);
+    // The library's constructors ran in this process: take the signals and stdout back.
+    install_interrupt_handlers();
+    check_results_output();
     auto plugin = std::make_shared<KernelDefinition>();
     plugin->source = std::filesystem::absolute(file).lexically_normal().string();
     plugin->name = d->name;

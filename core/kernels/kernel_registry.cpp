@@ -4,6 +4,7 @@
 #include "kernels/kernel_blend.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
+#include "support/interruption.hpp"
 #include "support/json_input.hpp"
 
 #include <spdlog/spdlog.h>
@@ -75,6 +76,7 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
                 files.push_back(entry.path());
         std::sort(files.begin(), files.end());
         for (const auto& file : files) {
+            throw_if_interrupted();
             try {
                 registry.add(load_kernel_file(file));
                 seen.push_back(fs::weakly_canonical(file, ec));
@@ -93,13 +95,42 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
 
 std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& spec)
 {
-    if (auto plus = spec.find('+'); plus != std::string::npos && plus > 0 && plus + 1 < spec.size()) {
+    // "A+B+C" is A blended with the blend B+C; a file that exists under that name is a file.
+    std::error_code ec;
+    if (spec.find('+') != std::string::npos && !fs::exists(spec, ec)) {
         for (const auto& b : blends_)
             if (b.first == spec) return b.second;
-        auto blend = make_blend(Kernel(find(spec.substr(0, plus))), Kernel(find(spec.substr(plus + 1))));
-        blends_.emplace_back(spec, blend);
+        std::vector<std::string> parts;
+        std::size_t from = 0;
+        for (std::size_t plus; (plus = spec.find('+', from)) != std::string::npos; from = plus + 1)
+            parts.push_back(spec.substr(from, plus - from));
+        parts.push_back(spec.substr(from));
+        if (parts.size() > max_blend_terms)
+            fail_input("kernel \"" + spec.substr(0, 60) + (spec.size() > 60 ? "...\"" : "\"") + ": a blend of " +
+                       std::to_string(parts.size()) + " kernels, more than the limit of " +
+                       std::to_string(max_blend_terms));
+        for (const auto& part : parts)
+            if (part.empty()) fail_input("kernel \"" + spec + "\": expected A+B with a kernel on each side of '+'");
+        // Built from the right without recursion: the last two first.
+        std::shared_ptr<const KernelDefinition> blend = find_single(parts.back());
+        std::string suffix = parts.back();
+        for (std::size_t i = parts.size() - 1; i-- > 0;) {
+            suffix = parts[i] + "+" + suffix;
+            auto cached = std::find_if(blends_.begin(), blends_.end(), [&](const auto& b) { return b.first == suffix; });
+            if (cached != blends_.end()) {
+                blend = cached->second;
+                continue;
+            }
+            blend = make_blend(Kernel(find_single(parts[i])), Kernel(blend));
+            blends_.emplace_back(suffix, blend);
+        }
         return blend;
     }
+    return find_single(spec);
+}
+
+std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::string& spec)
+{
     if (spec.ends_with(".json")) {
         auto canonical = fs::absolute(spec).lexically_normal().string();
         for (const auto& p : plugins_)

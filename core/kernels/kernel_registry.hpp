@@ -28,10 +28,14 @@ public:
     const std::vector<std::shared_ptr<const KernelDefinition>>& plugins() const { return plugins_; }
 
     // A kernel by name, by plugin file path (a spec containing '/' or ending in .so),
-    // by expression file (ending in .json), or a blend "A+B" of two such kernels.
+    // by expression file (ending in .json), or a blend "A+B" of such kernels (at most
+    // max_blend_terms; a path that exists as a file is never taken for a blend).
     std::shared_ptr<const KernelDefinition> find(const std::string& spec);
 
+    static constexpr std::size_t max_blend_terms = 16;
+
 private:
+    std::shared_ptr<const KernelDefinition> find_single(const std::string& spec);
     void add(std::shared_ptr<const KernelDefinition> plugin);
     std::vector<std::shared_ptr<const KernelDefinition>> plugins_;
     std::vector<std::pair<std::string, std::shared_ptr<const KernelDefinition>>> blends_;

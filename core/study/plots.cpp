@@ -1,6 +1,7 @@
 #include "study/plots.hpp"
 
 #include "support/error.hpp"
+#include "support/child_process.hpp"
 #include "support/interruption.hpp"
 
 #include <fmt/format.h>
@@ -11,7 +12,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/wait.h>
+#include <unistd.h>
 
 namespace sphkern {
 namespace fs = std::filesystem;
@@ -24,12 +25,16 @@ fs::path find_gnuplot()
     std::error_code ec;
     while (std::getline(list, folder, ':')) {
         fs::path candidate = fs::path(folder) / "gnuplot";
-        if (!folder.empty() && fs::is_regular_file(candidate, ec)) return candidate;
+        // Absolute folders only: gnuplot runs from the staging folder, where "." means something else.
+        if (fs::path(folder).is_absolute() && fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
+            return candidate;
     }
     return {};
 }
 
 namespace {
+
+constexpr double gnuplot_timeout_seconds = 120;
 
 const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
@@ -47,21 +52,26 @@ std::string datablock(const std::string& name, const StudyCase& c, bool rho)
     return s + "EOD\n";
 }
 
-// Keeps the script beside the figure and runs gnuplot inside the folder, so that the
-// script names its output relatively.
+// Keeps the script beside the figure and runs gnuplot inside the folder (no shell: an
+// argument vector), so that the script names its output relatively.
 void run_gnuplot(const fs::path& folder, const std::string& name, const std::string& script, const fs::path& gnuplot)
 {
     throw_if_interrupted();
     fs::path script_file = folder / (name + ".gp");
-    std::ofstream(script_file) << script;
-    std::string command = "cd '" + folder.string() + "' && '" + gnuplot.string() + "' '" + name + ".gp' 2>&1";
-    std::string output;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) throw Error(ExitCode::output, "cannot run gnuplot for " + script_file.string());
-    char buffer[512];
-    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    if (::pclose(pipe) != 0)
-        throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + ": " + output.substr(0, output.find('\n')));
+    {
+        std::ofstream out(script_file);
+        out << script;
+        if (!out) throw Error(ExitCode::output, script_file.string() + ": cannot write (disk full?)");
+    }
+    auto run = run_program({gnuplot.string(), name + ".gp"}, folder, gnuplot_timeout_seconds);
+    if (run.timed_out)
+        throw Error(ExitCode::output, fmt::format("gnuplot did not finish {} within {} s", script_file.string(),
+                                                  gnuplot_timeout_seconds));
+    if (run.exit_status != 0) {
+        std::string reason = run.signal ? fmt::format("killed by signal {}", run.signal)
+                                        : run.output.substr(0, run.output.find('\n'));
+        throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + ": " + reason);
+    }
 }
 
 } // namespace

@@ -4,6 +4,11 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstring>
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 namespace sphkern {
 
@@ -11,11 +16,70 @@ namespace {
 
 std::atomic<int> received{0};
 
+// Registered staging paths, fixed-size so that the handler needs no allocation.
+constexpr int slots = 8;
+constexpr std::size_t path_bytes = 4096;
+char staged[slots][path_bytes];
+std::atomic<bool> used[slots];
+
+struct linux_dirent64 {
+    ino64_t d_ino;
+    off64_t d_off;
+    unsigned short d_reclen;
+    unsigned char d_type;
+    char d_name[];
+};
+
+// Removes the contents of the directory `dir` (an open descriptor), depth-first,
+// with openat, getdents64 and unlinkat only: all async-signal-safe.
+void remove_contents(int dir, int depth)
+{
+    if (depth > 16) return;
+    alignas(8) char buffer[4096];
+    for (;;) {
+        long n = ::syscall(SYS_getdents64, dir, buffer, sizeof buffer);
+        if (n <= 0) return;
+        bool removed_any = false;
+        for (long at = 0; at < n;) {
+            auto* entry = reinterpret_cast<linux_dirent64*>(buffer + at);
+            at += entry->d_reclen;
+            const char* name = entry->d_name;
+            if (std::strcmp(name, ".") == 0 || std::strcmp(name, "..") == 0) continue;
+            if (::unlinkat(dir, name, 0) == 0) {
+                removed_any = true;
+                continue;
+            }
+            int sub = ::openat(dir, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+            if (sub < 0) continue;
+            remove_contents(sub, depth + 1);
+            ::close(sub);
+            if (::unlinkat(dir, name, AT_REMOVEDIR) == 0) removed_any = true;
+        }
+        if (removed_any) ::lseek(dir, 0, SEEK_SET); // entries moved: read the folder again
+    }
+}
+
+void remove_staged_paths()
+{
+    for (int i = 0; i < slots; ++i) {
+        if (!used[i].load()) continue;
+        if (::unlink(staged[i]) == 0) continue;
+        int dir = ::open(staged[i], O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (dir < 0) continue;
+        remove_contents(dir, 0);
+        ::close(dir);
+        ::rmdir(staged[i]);
+    }
+}
+
 extern "C" void on_signal(int sig)
 {
-    if (received.exchange(sig) != 0) { // a second signal: stop at once
-        std::signal(sig, SIG_DFL);
-        std::raise(sig);
+    if (received.exchange(sig) != 0) { // a second signal: clean up and stop at once
+        remove_staged_paths();
+        struct sigaction plain {};
+        plain.sa_handler = SIG_DFL;
+        ::sigaction(sig, &plain, nullptr);
+        ::raise(sig);
     }
 }
 
@@ -23,15 +87,40 @@ extern "C" void on_signal(int sig)
 
 void install_interrupt_handlers()
 {
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0; // no SA_RESTART: a blocking wait returns EINTR and checks the flag
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &action, nullptr);
 }
+
+bool interrupted() { return received.load() != 0; }
 
 void throw_if_interrupted()
 {
-    if (int sig = received.load(); sig != 0)
-        throw Error(ExitCode::interrupted, sig == SIGINT ? "interrupted (SIGINT): nothing was written"
-                                                         : "terminated (SIGTERM): nothing was written");
+    int sig = received.load();
+    if (sig == 0) return;
+    const char* name = sig == SIGINT ? "interrupted (SIGINT)" : sig == SIGTERM ? "terminated (SIGTERM)" : "hung up (SIGHUP)";
+    throw Error(ExitCode::interrupted, std::string(name) + ": nothing was written");
+}
+
+void register_staging_path(const std::filesystem::path& path)
+{
+    const std::string text = std::filesystem::absolute(path).string();
+    if (text.size() >= path_bytes) return;
+    for (int i = 0; i < slots; ++i) {
+        if (used[i].load()) continue;
+        std::memcpy(staged[i], text.c_str(), text.size() + 1);
+        used[i].store(true);
+        return;
+    }
+}
+
+void unregister_staging_path(const std::filesystem::path& path)
+{
+    const std::string text = std::filesystem::absolute(path).string();
+    for (int i = 0; i < slots; ++i)
+        if (used[i].load() && text == staged[i]) used[i].store(false);
 }
 
 } // namespace sphkern

@@ -1,5 +1,8 @@
 #include "support/isolated_call.hpp"
 
+#include "support/interruption.hpp"
+
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -41,6 +44,8 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
     }
     if (pid == 0) {
         ::close(fds[0]);
+        ::setpgid(0, 0); // the terminal's Ctrl-C goes to sphkern, which stops the child
+        for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, SIG_DFL);
         // The plugin's faults must kill this child, whatever handlers the parent installed.
         for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP}) ::signal(sig, SIG_DFL);
         std::string out;
@@ -69,13 +74,16 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
             timed_out = true;
             break;
         }
-        pollfd p{fds[0], POLLIN, 0};
-        int ready = ::poll(&p, 1, static_cast<int>(left.count()));
-        if (ready < 0 && errno == EINTR) continue;
-        if (ready == 0) {
-            timed_out = true;
-            break;
+        if (interrupted()) { // the child may ignore SIGINT: stop it ourselves
+            ::close(fds[0]);
+            ::kill(pid, SIGKILL);
+            while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+            }
+            throw_if_interrupted();
         }
+        pollfd p{fds[0], POLLIN, 0};
+        int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 200)));
+        if (ready <= 0) continue; // EINTR, or a slice of the wait: look at the flag and the deadline again
         ssize_t n = ::read(fds[0], buffer, sizeof buffer);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) break;

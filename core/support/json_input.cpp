@@ -1,8 +1,15 @@
 #include "support/json_input.hpp"
 
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <set>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -73,22 +80,57 @@ std::optional<std::string> closest_match(std::string_view word, const std::vecto
     return best;
 }
 
-nlohmann::json read_json_file(const fs::path& file)
+std::string read_input_file(const fs::path& file, std::size_t limit, const std::string& what)
 {
     const std::string name = file.string();
-    std::error_code ec;
-    auto status = fs::status(file, ec);
-    if (ec || !fs::exists(status)) fail_input(name + ": no such file");
-    if (fs::is_directory(status)) fail_input(name + ": is a folder, expected a JSON file");
-    auto size = fs::file_size(file, ec);
-    if (!ec && size > max_json_bytes)
-        fail_input(name + ": file is " + std::to_string(size) + " bytes, more than the limit of " +
-                   std::to_string(max_json_bytes) + " for a JSON input");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) fail_input(name + ": cannot be read (permission denied?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parse_json_text(buffer.str(), name);
+    // O_NONBLOCK: opening a FIFO without a writer must not hang; cleared again for reading.
+    int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        if (errno == ENOENT || errno == ENOTDIR) fail_input(name + ": no such file");
+        fail_input(name + ": cannot be read (" + std::strerror(errno) + ")");
+    }
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) fail_input(name + ": cannot be read (" + std::strerror(errno) + ")");
+    if (S_ISDIR(st.st_mode)) fail_input(name + ": is a folder, expected " + what);
+    if (S_ISREG(st.st_mode) && static_cast<std::uintmax_t>(st.st_size) > limit)
+        fail_input(name + ": file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+                   std::to_string(limit) + " for " + what);
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    // Read at most limit + 1 bytes whatever the file is (a device or a pipe has no size).
+    std::string text;
+    char buffer[65536];
+    for (;;) {
+        throw_if_interrupted();
+        ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) fail_input(name + ": cannot be read (" + std::strerror(errno) + ")");
+        if (n == 0) break;
+        text.append(buffer, static_cast<std::size_t>(n));
+        if (text.size() > limit)
+            fail_input(name + ": more than the limit of " + std::to_string(limit) + " bytes for " + what +
+                       " (not a regular file?)");
+    }
+    return text;
+}
+
+nlohmann::json read_json_file(const fs::path& file)
+{
+    return parse_json_text(read_input_file(file, max_json_bytes, "a JSON input"), file.string());
+}
+
+std::string escape_json_pointer(std::string_view token)
+{
+    std::string escaped;
+    for (char c : token) {
+        if (c == '~') escaped += "~0";
+        else if (c == '/') escaped += "~1";
+        else escaped += c;
+    }
+    return escaped;
 }
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& name)
@@ -99,8 +141,48 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& name)
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail_input(name + ": file is empty, expected JSON");
     if (nesting_depth(text) > max_json_depth)
         fail_input(name + ": JSON nested deeper than " + std::to_string(max_json_depth) + " levels");
+    // Refuses a key given twice in one object (nlohmann would keep the last silently).
+    struct Frame {
+        bool object;
+        std::set<std::string> keys;
+        std::string key;
+        std::size_t index = 0;
+    };
+    std::vector<Frame> stack;
+    auto path = [&] {
+        std::string p;
+        for (std::size_t i = 0; i + 1 < stack.size(); ++i)
+            p += "/" + (stack[i].object ? escape_json_pointer(stack[i].key) : std::to_string(stack[i].index));
+        return p.empty() ? std::string("/") : p;
+    };
+    auto element_done = [&] {
+        if (!stack.empty() && !stack.back().object) ++stack.back().index;
+    };
+    using Event = nlohmann::json::parse_event_t;
+    auto callback = [&](int, Event event, nlohmann::json& parsed) {
+        switch (event) {
+        case Event::object_start: stack.push_back({true, {}, {}}); break;
+        case Event::array_start: stack.push_back({false, {}, {}}); break;
+        case Event::object_end:
+        case Event::array_end:
+            stack.pop_back();
+            element_done();
+            break;
+        case Event::key: {
+            auto key = parsed.get<std::string>();
+            stack.back().key = key;
+            if (!stack.back().keys.insert(key).second) {
+                stack.back().key.clear();
+                fail_input(name + ": " + path() + ": duplicate key \"" + key + "\" (each key may appear once)");
+            }
+            break;
+        }
+        case Event::value: element_done(); break;
+        }
+        return true;
+    };
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::json::parse(text, callback);
     } catch (const nlohmann::json::exception& e) {
         fail_input(name + ": not valid JSON: " + strip_exception_prefix(e.what()));
     }
@@ -135,7 +217,7 @@ std::optional<JsonNode> JsonNode::find(std::string_view key) const
     expect_object();
     auto it = value_->find(key);
     if (it == value_->end()) return std::nullopt;
-    return JsonNode(*it, file_, path_ + "/" + std::string(key));
+    return JsonNode(*it, file_, path_ + "/" + escape_json_pointer(key));
 }
 
 JsonNode JsonNode::operator[](std::size_t index) const
@@ -198,6 +280,12 @@ long long JsonNode::integer_in(long long lo, long long hi) const
         error("value " + value_->dump() + " is out of range, expected an integer in [" + std::to_string(lo) + ", " +
               std::to_string(hi) + "]");
     return v;
+}
+
+std::string JsonNode::text() const
+{
+    if (!value_->is_string()) error("expected a string, got " + json_type_name(*value_));
+    return value_->get<std::string>();
 }
 
 std::string JsonNode::string() const

@@ -17,7 +17,14 @@ namespace sphkern {
 // that are not UTF-8, each with one line naming the file.
 nlohmann::json read_json_file(const std::filesystem::path& file);
 
-// The same checks on text already in memory; `name` stands for the file in errors.
+// Reads a whole input file of any type (a pipe, a device) but never more than `limit`
+// bytes: refuses missing paths and folders; `what` names the expected content in errors.
+std::string read_input_file(const std::filesystem::path& file, std::size_t limit, const std::string& what);
+
+// "~" and "/" escaped as JSON Pointer (RFC 6901) tokens need.
+std::string escape_json_pointer(std::string_view token);
+
+// The same checks on text already in memory (and no key twice in one object); `name` stands for the file in errors.
 nlohmann::json parse_json_text(const std::string& text, const std::string& name);
 
 inline constexpr std::size_t max_json_bytes = 16u << 20;
@@ -49,6 +56,7 @@ public:
     double number_in(double lo, double hi) const;
     long long integer_in(long long lo, long long hi) const;
     std::string string() const;            // non-empty string
+    std::string text() const;              // any string, empty too
     bool boolean() const;
     bool is_string() const { return value_->is_string(); }
     bool is_number() const { return value_->is_number(); }

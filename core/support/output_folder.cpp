@@ -4,38 +4,106 @@
 #include "support/interruption.hpp"
 
 #include <cerrno>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace sphkern {
 namespace fs = std::filesystem;
 
-OutputFolder::OutputFolder(fs::path target, bool overwrite) : target_(std::move(target)), overwrite_(overwrite)
+namespace {
+
+bool lexists(const fs::path& path)
+{
+    struct stat st {};
+    return ::lstat(path.c_str(), &st) == 0;
+}
+
+// renameat2 with a flag; if the file system cannot do it, says so with ENOSYS/EINVAL in errno.
+int rename_with(const fs::path& from, const fs::path& to, unsigned flags)
+{
+    return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), flags);
+}
+
+// ".<name>.partial-<pid>-XXXXXX": the pid lets a later run recognise a dead run's leftovers.
+std::string staging_prefix(const fs::path& target) { return "." + target.filename().string() + ".partial-"; }
+
+// Removes staging folders of runs that died without cleaning up (SIGKILL, power loss):
+// only ours (marker inside, our naming), and only if their process is gone.
+void remove_stale_staging(const fs::path& target)
 {
     std::error_code ec;
+    const std::string prefix = staging_prefix(target);
+    for (const auto& entry : fs::directory_iterator(target.parent_path(), ec)) {
+        std::string name = entry.path().filename().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+        if (pid <= 0 || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        if (!written_by_sphkern(entry.path())) continue;
+        fs::remove_all(entry.path(), ec);
+    }
+}
+
+} // namespace
+
+bool written_by_sphkern(const fs::path& folder)
+{
+    struct stat st {};
+    if (::lstat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) return false;
+    return ::lstat((folder / OutputFolder::marker_name).c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(overwrite)
+{
+    std::error_code ec;
+    target_ = fs::absolute(target, ec).lexically_normal();
     if (target_.filename().empty()) target_ = target_.parent_path();
-    if (fs::exists(target_, ec) && !overwrite_)
-        throw Error(ExitCode::output, target_.string() + ": already exists; use --force to replace it");
-    if (fs::exists(target_, ec) && !fs::is_directory(target_, ec))
-        throw Error(ExitCode::output, target_.string() + ": exists and is not a folder");
-    fs::path parent = fs::absolute(target_).parent_path();
-    fs::create_directories(parent, ec);
-    if (ec) throw Error(ExitCode::output, parent.string() + ": cannot create the folder: " + ec.message());
-    std::string pattern = (parent / ("." + target_.filename().string() + ".partial-XXXXXX")).string();
-    if (!::mkdtemp(pattern.data()))
-        throw Error(ExitCode::output, parent.string() + ": cannot create a folder there: " + std::strerror(errno));
+    if (ec || target_.filename().empty() || target_.filename() == "..")
+        throw Error(ExitCode::output, target.string() + ": not a usable name for a results folder");
+    if (lexists(target_)) {
+        if (!overwrite_) throw Error(ExitCode::output, target_.string() + ": already exists; use --force to replace it");
+        if (!written_by_sphkern(target_))
+            throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
+                                              marker_name + " inside); refusing to replace it");
+    }
+    // Make the missing parents one by one, remembering them so that a failed run removes them.
+    std::vector<fs::path> missing;
+    for (fs::path p = target_.parent_path(); !p.empty() && !lexists(p); p = p.parent_path()) {
+        missing.insert(missing.begin(), p);
+        if (p == p.parent_path()) break;
+    }
+    for (const auto& p : missing) {
+        if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST)
+            throw Error(ExitCode::output, p.string() + ": cannot create the folder: " + std::strerror(errno));
+        created_parents_.push_back(p);
+    }
+    remove_stale_staging(target_);
+    std::string pattern = (target_.parent_path() / (staging_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
+    if (!::mkdtemp(pattern.data())) {
+        int error = errno;
+        for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str());
+        throw Error(ExitCode::output, target_.parent_path().string() + ": cannot create a folder there: " + std::strerror(error));
+    }
     staging_ = pattern;
+    register_staging_path(staging_);
     // mkdtemp makes it private; results are ordinary files (the umask still applies to them).
     fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                   fs::perms::others_read | fs::perms::others_exec, ec);
+    write(marker_name, "This folder was written by sphkern; `sphkern run --force` may replace it.\n");
 }
 
 OutputFolder::~OutputFolder()
 {
+    unregister_staging_path(staging_);
     if (committed_) return;
     std::error_code ec;
     fs::remove_all(staging_, ec);
+    for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str()); // only if empty
 }
 
 void OutputFolder::write(const std::string& name, const std::string& content)
@@ -50,20 +118,30 @@ void OutputFolder::write(const std::string& name, const std::string& content)
 void OutputFolder::commit()
 {
     throw_if_interrupted();
-    std::error_code ec;
-    fs::path old;
-    if (fs::exists(target_, ec)) {
-        old = staging_.string() + ".old";
-        fs::rename(target_, old, ec);
-        if (ec) throw Error(ExitCode::output, target_.string() + ": cannot replace: " + ec.message());
+    if (rename_with(staging_, target_, RENAME_NOREPLACE) == 0) {
+        committed_ = true;
+        return;
     }
-    fs::rename(staging_, target_, ec);
-    if (ec) {
-        if (!old.empty()) fs::rename(old, target_, ec);
-        throw Error(ExitCode::output, target_.string() + ": cannot move the results into place: " + ec.message());
+    int error = errno;
+    if (error == EINVAL && !lexists(target_) && std::rename(staging_.c_str(), target_.c_str()) == 0) {
+        committed_ = true; // a file system without renameat2 flags: a plain rename, checked just before
+        return;
     }
+    if (error == EEXIST && !overwrite_)
+        throw Error(ExitCode::output, target_.string() + ": already exists (it appeared while this run worked); "
+                                                         "use --force to replace it");
+    if (error != EEXIST && error != ENOTEMPTY)
+        throw Error(ExitCode::output, target_.string() + ": cannot move the results into place: " + std::strerror(error));
+    // --force: exchange with the existing folder only if it is still one sphkern wrote,
+    // then remove the old one, which now sits at the staging path.
+    if (!written_by_sphkern(target_))
+        throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
+                                          marker_name + " inside); refusing to replace it");
+    if (rename_with(staging_, target_, RENAME_EXCHANGE) != 0)
+        throw Error(ExitCode::output, target_.string() + ": cannot replace: " + std::strerror(errno));
     committed_ = true;
-    if (!old.empty()) fs::remove_all(old, ec);
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
 }
 
 } // namespace sphkern

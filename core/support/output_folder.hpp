@@ -1,30 +1,42 @@
-// An output folder that appears complete or not at all: files are written into a
-// temporary sibling folder, which is renamed into place on commit.
+// An output folder that appears complete or not at all, and never destroys what
+// sphkern did not write: files go into a staging sibling (marked as sphkern's), which
+// is renamed into place without replacing anything, or, with overwrite, exchanged only
+// with a folder that carries the same marker.
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace sphkern {
 
 class OutputFolder {
 public:
-    // Throws Error(output) if `target` exists and `overwrite` is false, or if the
-    // temporary folder cannot be made.
-    OutputFolder(std::filesystem::path target, bool overwrite);
-    ~OutputFolder(); // removes the temporary folder unless committed
+    // The file inside every folder sphkern writes; --force replaces only such folders.
+    static constexpr const char* marker_name = ".sphkern-output";
+
+    // Throws Error(output) if `target` exists and `overwrite` is false, if it exists and
+    // is not a folder sphkern wrote, or if the staging folder cannot be made.
+    OutputFolder(const std::filesystem::path& target, bool overwrite);
+    ~OutputFolder(); // removes the staging folder and the parents it created, unless committed
 
     OutputFolder(const OutputFolder&) = delete;
     OutputFolder& operator=(const OutputFolder&) = delete;
 
+    const std::filesystem::path& target() const { return target_; }
     const std::filesystem::path& staging() const { return staging_; }
     void write(const std::string& name, const std::string& content);
-    void commit(); // replaces `target` with the staged folder
+    void commit(); // moves the staged folder into place
 
 private:
     std::filesystem::path target_;
     std::filesystem::path staging_;
+    std::vector<std::filesystem::path> created_parents_; // outermost first
     bool overwrite_;
     bool committed_ = false;
 };
+
+// True if `folder` is a real folder (not a link) holding sphkern's marker file.
+bool written_by_sphkern(const std::filesystem::path& folder);
 
 } // namespace sphkern
