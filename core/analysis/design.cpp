@@ -1,6 +1,7 @@
 #include "analysis/design.hpp"
 
 #include "analysis/roots.hpp"
+#include "support/interruption.hpp"
 #include "support/error.hpp"
 
 #include <Eigen/SVD>
@@ -51,6 +52,7 @@ std::optional<NewtonPoint> newton(const Kernel& kernel, const DesignProblem& p, 
     const double scale = std::max(1.0, std::abs(p.parameter_max - p.parameter_min));
     Eigen::Matrix2d jacobian;
     for (int iteration = 0; iteration < 40; ++iteration) {
+        throw_if_interrupted();
         Eigen::Vector2d f = residual(x);
         if (!f.allFinite()) return std::nullopt;
         const double hk = 1e-7 * x[0], hp = 1e-7 * scale;
@@ -88,6 +90,7 @@ std::vector<double> piecewise_roots(const std::function<double(double, double)>&
         int n = std::max(8, static_cast<int>(std::ceil(samples * (b - a) / span)));
         double k0 = a, g0 = g(a);
         for (int i = 1; i <= n; ++i) {
+            throw_if_interrupted();
             double k1 = a + (b - a) * i / n, g1 = g(k1);
             if (std::isfinite(g0) && std::isfinite(g1) && g0 != 0 && std::signbit(g0) != std::signbit(g1)) {
                 std::uintmax_t iterations = 200;

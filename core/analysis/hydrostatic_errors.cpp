@@ -1,6 +1,9 @@
 #include "analysis/hydrostatic_errors.hpp"
 
+#include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,9 +36,10 @@ std::vector<Shell> select_shells(const std::vector<Shell>& all, const std::vecto
 
 HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
                                      const Eigen::Vector3d& gravity, double k_max, const EvaluationMode& mode)
-    : kernel_(kernel), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.normalized()), mode_(mode)
+    : kernel_(kernel), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.stableNormalized()), mode_(mode)
 {
     kernel.require_dimension(lattice.dimension, lattice.name);
+    require_usable_kernel(kernel, dim_, k_max);
     double reach = kernel.support() * k_max;
     if (mode.shell_radii)
         for (double r : *mode.shell_radii) reach = std::max(reach, r + 1e-6);
@@ -80,15 +84,31 @@ ErrorValues HydrostaticErrors::at_piece(double k, std::size_t active) const
         gradient += (t.radius * kernel_.dw(q, dim_, k)) * moment_along_gravity_[s];
     }
     gradient *= -a_p_ / (kd * k);
+    if (!std::isfinite(density) || !gradient.allFinite()) fail_non_finite(k, active);
     ErrorValues v;
     v.eps_rho = a_p_ * density / kd - 1.0;
     double along = gradient.dot(gravity_);
     v.eps_gradp = along - 1.0;
     v.lateral = (gradient - along * gravity_).norm();
+    if (!std::isfinite(v.eps_rho) || !std::isfinite(v.eps_gradp) || !std::isfinite(v.lateral))
+        fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the errors "
+                               "are not finite numbers (expected k of order 1)", k));
     double reach = kernel_.support() * k;
     for (const auto& s : all_shells_)
         if (s.radius <= reach) v.neighbours += s.count;
     return v;
+}
+
+void HydrostaticErrors::fail_non_finite(double k, std::size_t active) const
+{
+    if (!std::isfinite(kernel_.w(0.0, dim_, k))) fail_non_finite_kernel(kernel_, "W", 0.0, dim_, k);
+    for (std::size_t s = 0; s < active; ++s) {
+        double q = terms_[s].radius / k;
+        if (!std::isfinite(kernel_.w(q, dim_, k))) fail_non_finite_kernel(kernel_, "W", q, dim_, k);
+        if (!std::isfinite(kernel_.dw(q, dim_, k))) fail_non_finite_kernel(kernel_, "dW/dr", q, dim_, k);
+    }
+    fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the sums "
+                           "overflow (expected k of order 1)", k));
 }
 
 std::pair<double, double> HydrostaticErrors::shell_contribution(const Shell& shell, double k) const

@@ -54,6 +54,8 @@ public:
     std::pair<double, double> shell_contribution(const Shell& shell, double k) const;
 
 private:
+    [[noreturn]] void fail_non_finite(double k, std::size_t active) const;
+
     Kernel kernel_;
     int dim_;
     double a_p_;

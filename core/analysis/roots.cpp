@@ -1,5 +1,7 @@
 #include "analysis/roots.hpp"
 
+#include "support/interruption.hpp"
+
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <algorithm>
@@ -22,6 +24,7 @@ void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t
     auto f = [&](double k) { return pick(errors.at_piece(k, active), rho); };
     double k0 = a, f0 = f(a);
     for (int i = 1; i <= samples; ++i) {
+        throw_if_interrupted();
         double k1 = i == samples ? b : a + (b - a) * i / samples;
         double f1 = f(k1);
         if (f0 == 0.0 && k0 == a) {

@@ -1,6 +1,7 @@
 #include "analysis/surface_profile.hpp"
 
 #include "lattices/lattice_points.hpp"
+#include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
 
 #include <algorithm>
@@ -63,8 +64,9 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
     kernel.require_dimension(lattice.dimension, lattice.name);
     if (!std::isfinite(k) || k <= 0 || k > 100) fail_input("k must be in (0, 100]");
     if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
-    const Eigen::Vector3d e = gravity.normalized();
+    const Eigen::Vector3d e = gravity.stableNormalized();
     const int dim = lattice.dimension;
+    require_usable_kernel(kernel, dim, k);
     const double reach = kernel.support() * k;
     const double spacing = layer_spacing(lattice, site, e);
 
@@ -119,6 +121,14 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
 
     for (int n = 0; n < reported; ++n)
         profile.layers.push_back({n, n * spacing, layer_density(n), gradient(n, false), counts[static_cast<std::size_t>(n)]});
+    for (const auto& l : profile.layers)
+        if (!std::isfinite(l.eps_rho) || !std::isfinite(l.eps_gradp)) {
+            for (const auto& j : neighbours) {
+                if (!std::isfinite(kernel.w(j.r / k, dim, k))) fail_non_finite_kernel(kernel, "W", j.r / k, dim, k);
+                if (!std::isfinite(kernel.dw(j.r / k, dim, k))) fail_non_finite_kernel(kernel, "dW/dr", j.r / k, dim, k);
+            }
+            fail_input("k = " + std::to_string(k) + " gives non-finite surface errors (expected k of order 1)");
+        }
     profile.bulk = {-1, INFINITY, layer_density(computed - 1), gradient(computed - 1, true),
                     static_cast<int>(neighbours.size())};
     return profile;

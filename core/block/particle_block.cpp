@@ -1,6 +1,10 @@
 #include "block/particle_block.hpp"
 
+#include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
+#include "support/parallel_for.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <sphkern/kernel_plugin.h> // SPHKERN_VECTOR_CLONES
 
@@ -81,22 +85,6 @@ std::vector<Eigen::Vector3i> make_stencil(const Lattice& lattice, double reach, 
                 extent = extent.cwiseMax(Eigen::Vector3i(std::abs(a), std::abs(b), std::abs(c)));
             }
     return offsets;
-}
-
-template <class Work>
-void parallel_for(std::size_t n, int threads, const Work& work)
-{
-    if (threads <= 1) {
-        work(0, std::size_t{0}, n);
-        return;
-    }
-    std::vector<std::thread> pool;
-    std::size_t chunk = (n + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
-    for (int t = 0; t < threads; ++t) {
-        std::size_t begin = std::min(n, chunk * static_cast<std::size_t>(t)), end = std::min(n, begin + chunk);
-        pool.emplace_back([&work, t, begin, end] { work(t, begin, end); });
-    }
-    for (auto& th : pool) th.join();
 }
 
 // A contiguous run of particles i = first_i + p and their neighbours j = first_j + p
@@ -185,6 +173,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
           << " (about " << max_block_particles * 100 / (1 << 20) << " MiB of memory)";
         fail_input(s.str());
     }
+    require_usable_kernel(kernel, dim, options.k);
     const double reach = kernel.support() * options.k;
     Eigen::Vector3i extent;
     const auto stencil = make_stencil(lattice, reach, extent);
@@ -281,12 +270,14 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
     auto t0 = Clock::now();
     const double self = kernel.w(0, dim, k);
-    parallel_for(rows, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
+    spdlog::debug("evaluating a block of {} particles on {} threads", count, result.threads);
+    ParallelFor density_pass;
+    density_pass.run(rows, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
         const std::size_t n = static_cast<std::size_t>(n1);
         std::vector<double> q(n), r2(n), w(n), sum(n);
         std::vector<Run> runs;
         std::size_t found = 0;
-        for (std::size_t row = begin; row < end; ++row)
+        for (std::size_t row = begin; row < end && density_pass.keep_going(); ++row)
             for (int s = 0; s < sites; ++s) {
                 std::fill(sum.begin(), sum.end(), self);
                 for_each_run(row, s, runs, [&](const Run& run) {
@@ -312,11 +303,12 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     const double* rho = form == GradientForm::monaghan ? density.data() : depth.data(); // unused unless Monaghan
     result.eps_gradp.resize(count);
     t0 = Clock::now();
-    parallel_for(rows, result.threads, [&](int, std::size_t begin, std::size_t end) {
+    ParallelFor gradient_pass;
+    gradient_pass.run(rows, result.threads, [&](int, std::size_t begin, std::size_t end) {
         const std::size_t n = static_cast<std::size_t>(n1);
         std::vector<double> q(n), r2(n), height(n), dw(n), sum(n);
         std::vector<Run> runs;
-        for (std::size_t row = begin; row < end; ++row)
+        for (std::size_t row = begin; row < end && gradient_pass.keep_going(); ++row)
             for (int s = 0; s < sites; ++s) {
                 std::fill(sum.begin(), sum.end(), 0.0);
                 for_each_run(row, s, runs, [&](const Run& run) {
@@ -337,6 +329,11 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
             }
     });
     result.timings.gradient = seconds_since(t0);
+    for (std::size_t i = 0; i < count; ++i)
+        if (!std::isfinite(result.eps_rho[i]) || !std::isfinite(result.eps_gradp[i]))
+            throw Error(kernel_fault_code(kernel), "kernel " + kernel.label() + " gives a non-finite error at particle " +
+                                                       std::to_string(i) + " of the block (k = " + std::to_string(options.k) +
+                                                       "); no result is given");
     return result;
 }
 

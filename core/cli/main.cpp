@@ -96,7 +96,10 @@ int main(int argc, char** argv)
     separate_results_from_stdout();
     try {
         for (auto& [command, action] : commands)
-            if (command->parsed()) return finish(action());
+            if (command->parsed()) {
+                spdlog::debug("running {}", command->get_name()); // tests wait for this line before signalling
+                return finish(action());
+            }
     } catch (const Error& e) {
         return fail(e.what(), e.code());
     } catch (const std::bad_alloc&) {

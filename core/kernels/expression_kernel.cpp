@@ -160,9 +160,10 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     auto kernel = std::make_shared<KernelDefinition>();
     Expressions e;
     kernel->source = std::filesystem::absolute(file).lexically_normal().string();
+    kernel->from_expression = true;
     kernel->name = identifier(root.at("name"));
     kernel->title = root.find("title") ? root.at("title").string() : kernel->name;
-    kernel->reference = root.find("reference") ? root.at("reference").value().get<std::string>() : "";
+    kernel->reference = root.find("reference") ? root.at("reference").text() : "";
     kernel->support = e.support = root.at("support").number_in(1e-3, 100);
     auto dims = root.at("dimensions");
     dims.expect_array(1, 3);
@@ -178,7 +179,7 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
             auto p = (*params)[i];
             p.expect_keys({"name", "description", "default", "min", "max"});
             KernelParameter parameter{identifier(p.at("name")),
-                                      p.find("description") ? p.at("description").value().get<std::string>() : "",
+                                      p.find("description") ? p.at("description").text() : "",
                                       p.at("default").number(), p.at("min").number(), p.at("max").number()};
             if (parameter.name == "q" || parameter.name == "k") p.at("name").error("q and k are taken");
             if (!(parameter.min_value <= parameter.default_value && parameter.default_value <= parameter.max_value))

@@ -37,6 +37,7 @@ struct KernelDefinition {
     std::vector<KernelParameter> parameters;
     std::vector<double> breakpoints;   // interior q where the definition changes
     bool separate_derivative = false;  // dW/dr is its own formula
+    bool from_expression = false;      // an expression file (its faults are input errors, not plugin errors)
     std::string derivative_note;       // how dW/dr is obtained when it is not a formula
     // q at which the kernel (or a part of it) is cut to zero: {R}, or each part's R for a blend.
     std::vector<double> truncations;

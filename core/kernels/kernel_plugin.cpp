@@ -5,6 +5,8 @@
 #include "support/isolated_call.hpp"
 #include "support/results_output.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <boost/dll/shared_library.hpp>
 
 #include <cmath>
@@ -155,6 +157,7 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
         throw Error(ExitCode::plugin, name + ": file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
                                           std::to_string(max_plugin_bytes) + " for a plugin");
 
+    spdlog::debug("probing {}", name);
     auto verdict = run_isolated(
         [&]() -> std::string {
             try {

@@ -135,8 +135,8 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
     lattice.gravity = dim == 2 ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, -1);
     if (auto g = root.find("gravity")) {
         Eigen::Vector3d v = read_vector(*g, dim, max_coordinate);
-        if (v.norm() < 1e-12) g->error("gravity has zero length, expected a non-zero direction vector");
-        lattice.gravity = v.normalized();
+        if (v.cwiseAbs().maxCoeff() == 0) g->error("gravity has zero length, expected a non-zero direction vector");
+        lattice.gravity = v.stableNormalized();
     }
 
     lattice.volume_coefficients = {
@@ -202,8 +202,8 @@ Eigen::Vector3d parse_direction(const std::string& text, int dimension, const st
         fail_input(what + " \"" + text + "\": expected " + std::to_string(dimension) + " comma-separated components");
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
     for (int i = 0; i < dimension; ++i) v[i] = parts[static_cast<std::size_t>(i)];
-    if (v.norm() < 1e-12) fail_input(what + " \"" + text + "\" has zero length, expected a direction");
-    return v.normalized();
+    if (v.cwiseAbs().maxCoeff() == 0) fail_input(what + " \"" + text + "\" has zero length, expected a direction");
+    return v.stableNormalized();
 }
 
 } // namespace sphkern

@@ -1,6 +1,7 @@
 #include "lattices/lattice_points.hpp"
 
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -58,7 +59,8 @@ void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const s
     for (const auto& m : motif) {
         Eigen::Vector3d offset = to_reduced * (m - origin);
         for (int i = 0; i < dimension; ++i) offset[i] -= std::round(offset[i]); // nearest image of the site
-        for (long long a = -extent[0]; a <= extent[0]; ++a)
+        for (long long a = -extent[0]; a <= extent[0]; ++a) {
+            throw_if_interrupted();
             for (long long b = -extent[1]; b <= extent[1]; ++b)
                 for (long long c = -extent[2]; c <= extent[2]; ++c) {
                     Eigen::Vector3d f(double(a) + offset.x(), double(b) + offset.y(), double(c) + offset.z());
@@ -67,6 +69,7 @@ void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const s
                     if (d2 > r2 || d2 < 1e-18) continue;
                     visit(x);
                 }
+        }
     }
 }
 

@@ -6,6 +6,8 @@
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <regex>
@@ -83,6 +85,36 @@ StudyMode read_mode(const JsonNode& node)
 } // namespace
 
 Study read_study(const fs::path& file) { return parse_study(read_json_file(file), file); }
+
+namespace {
+
+// Each field has its own limit, but their product is the work: bounded as a whole,
+// before any of it is done (a curve point costs about 200 bytes of results).
+void check_study_budget(const Study& study, const JsonNode& root)
+{
+    auto refuse = [&](const std::string& what, double amount, double limit) {
+        root.error(fmt::format("the study asks for {} = {:.4g}, more than the limit of {:.4g}; make it smaller", what,
+                               amount, limit));
+    };
+    const double cases = double(study.kernels.size()) * double(study.lattices.size()) *
+                         double(study.volume_coefficients.size()) * double(study.modes.size());
+    if (cases * study.samples > max_study_curve_points)
+        refuse("kernels x lattices x volume_coefficients x modes x k samples", cases * study.samples,
+               max_study_curve_points);
+    double sweep_points = 0;
+    for (const auto& s : study.sweeps)
+        sweep_points += double(study.lattices.size()) * s.samples * std::min(study.samples, 201);
+    if (sweep_points > max_study_sweep_points)
+        refuse("lattices x sweep samples x k samples, over all sweeps", sweep_points, max_study_sweep_points);
+    if (study.surface) {
+        double layers = double(study.kernels.size()) * double(study.lattices.size()) *
+                        double(study.surface->forms.size()) * study.surface->layers;
+        if (layers > max_study_surface_layers)
+            refuse("kernels x lattices x surface forms x layers", layers, max_study_surface_layers);
+    }
+}
+
+} // namespace
 
 Study parse_study(nlohmann::json document, const fs::path& file)
 {
@@ -225,6 +257,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
             surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
         study.surface = surface;
     }
+    check_study_budget(study, root);
     return study;
 }
 

@@ -51,6 +51,11 @@ struct StudySweep {
     std::string json_path;
 };
 
+// A study's total work, bounded before it starts (see check in parse_study).
+inline constexpr double max_study_curve_points = 2e6;
+inline constexpr double max_study_sweep_points = 2e6;
+inline constexpr double max_study_surface_layers = 1e6;
+
 struct Study {
     std::string file;
     nlohmann::json document; // echoed into results.json

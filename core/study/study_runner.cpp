@@ -92,7 +92,11 @@ void compare(const Study& study, StudyResults& results)
         });
         if (match == results.cases.end())
             row.error("the study has no case " + c.kernel + " / " + lattice + " / " + ap + " / mode " + mode);
-        if (row.value().value("no_root", false)) {
+        row.expect_keys({"kernel", "k", "eps_rho", "eps_gradp", "printed_eps_gradp", "no_root", "erratum",
+                         "erratum_eps_gradp", "erratum_eps_rho"});
+        for (const char* key : {"printed_eps_gradp", "erratum", "erratum_eps_gradp", "erratum_eps_rho"})
+            if (auto v = row.find(key)) v->string();
+        if (auto no_root = row.find("no_root"); no_root && no_root->boolean()) {
             c.function = "none";
             c.status = match->scan.roots.empty() ? "reproduced" : "differs";
             c.note = match->scan.roots.empty() ? "no root in the interval" : "sphkern finds roots in the interval";
@@ -100,7 +104,9 @@ void compare(const Study& study, StudyResults& results)
             continue;
         }
         double k = row.at("k").number();
-        const auto& gradp_value = row.value().at("eps_gradp");
+        for (const char* key : {"eps_rho", "eps_gradp"}) // a number, or null where the paper prints none
+            if (auto v = row.at(key); !v.value().is_null()) v.number();
+        const auto& gradp_value = row.at("eps_gradp").value();
         c.function = gradp_value.is_number() && gradp_value.get<double>() == 0 ? "gradp" : "rho";
         for (const auto& r : match->scan.roots)
             if (r.function == c.function && (!c.computed || std::abs(r.k - k) < std::abs(c.computed->k - k)))
@@ -112,7 +118,7 @@ void compare(const Study& study, StudyResults& results)
         } else {
             bool within = std::abs(c.computed->k - k) <= results.tolerance;
             for (const char* key : {"eps_rho", "eps_gradp"}) {
-                const auto& v = row.value().at(key);
+                const auto& v = row.at(key).value();
                 if (!v.is_number() || row.find(std::string("erratum_") + key)) continue;
                 double computed = std::string(key) == "eps_rho" ? c.computed->values.eps_rho : c.computed->values.eps_gradp;
                 within = within && std::abs(computed - v.get<double>()) <= results.tolerance;
@@ -145,6 +151,17 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
             throw Error(e.code(), study.file + ": /lattices/" + std::to_string(i) + ": " + e.what());
         }
     }
+    // One name, one table: two lattices or kernels that print alike would be merged.
+    for (std::size_t i = 0; i < lattices.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (lattices[i].name == lattices[j].name)
+                fail_input(study.file + ": /lattices/" + std::to_string(i) + ": lattice name \"" + lattices[i].name +
+                           "\" is already used by /lattices/" + std::to_string(j) + "; give each lattice its own name");
+    for (std::size_t i = 0; i < kernels.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (kernels[i].label() == kernels[j].label())
+                fail_input(study.file + ": " + study.kernels[i].json_path + ": kernel \"" + kernels[i].label() +
+                           "\" is listed twice (also at " + study.kernels[j].json_path + ")");
     for (std::size_t i = 0; i < kernels.size(); ++i)
         for (const auto& l : lattices)
             try {
@@ -183,6 +200,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                     HydrostaticErrors errors(kernel, lattice, 0, aps[a], lattice.gravity, study.k_max,
                                              mode_for(mode, kernel, study));
                     for (int i = 0; i < study.samples; ++i) {
+                        if (i % 64 == 0) throw_if_interrupted();
                         double k = study.k_min + (study.k_max - study.k_min) * i / (study.samples - 1);
                         c.curve.emplace_back(k, errors.at(k));
                     }
@@ -253,6 +271,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
             const int k_samples = std::min(study.samples, 201);
             for (int j = 0; j < k_samples; ++j) c.ks.push_back(study.k_min + (study.k_max - study.k_min) * j / (k_samples - 1));
             for (int i = 0; i < sweep.samples; ++i) {
+                throw_if_interrupted();
                 double value = sweep.min + (sweep.max - sweep.min) * i / (sweep.samples - 1);
                 auto values = sweep.parameters;
                 values[sweep.parameter] = value;

@@ -3,6 +3,8 @@
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -58,6 +60,7 @@ ProgramResult run_program(const std::vector<std::string>& argv, const std::files
         ::_exit(127);
     }
     ::close(fds[1]);
+    spdlog::debug("started {} (pid {}) in {}", argv[0], pid, where);
     ProgramResult result;
     auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
     char buffer[4096];

@@ -3,6 +3,8 @@
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -31,7 +33,13 @@ int rename_with(const fs::path& from, const fs::path& to, unsigned flags)
 }
 
 // ".<name>.partial-<pid>-XXXXXX": the pid lets a later run recognise a dead run's leftovers.
-std::string staging_prefix(const fs::path& target) { return "." + target.filename().string() + ".partial-"; }
+std::string staging_prefix(const fs::path& target)
+{
+    std::string prefix = ".";
+    prefix += target.filename().string();
+    prefix += ".partial-";
+    return prefix;
+}
 
 // Removes staging folders of runs that died without cleaning up (SIGKILL, power loss):
 // only ours (marker inside, our naming), and only if their process is gone.
@@ -91,6 +99,7 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
     }
     staging_ = pattern;
     register_staging_path(staging_);
+    spdlog::debug("staging results in {}", staging_.string());
     // mkdtemp makes it private; results are ordinary files (the umask still applies to them).
     fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                   fs::perms::others_read | fs::perms::others_exec, ec);

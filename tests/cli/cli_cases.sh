@@ -3,7 +3,7 @@
 # error line matching a pattern, and never a crash.
 # Usage: cli_cases.sh SPHKERN BROKEN_PLUGIN_DIR DATA_DIR
 set -u
-sphkern=$1 broken=$(realpath "$2")
+sphkern=$(realpath "$1") broken=$(realpath "$2")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SPHKERN_PLUGIN_TIMEOUT=2
@@ -206,20 +206,184 @@ expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
     failed=$((failed + 1))
 }
 
-# An interrupted run leaves nothing behind: no output folder, no partial folder.
-study s_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 100000}, "plots": false}'
-"$sphkern" run "$work/s_long.json" -o "$work/out_long" >/dev/null 2>"$work/interrupt.err" &
-pid=$!
-sleep 0.5
-kill -INT $pid
-wait $pid
+check() { # check DESCRIPTION CONDITION...: one catalogue case decided by a shell test
+    local what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else
+        echo "FAIL: $what"
+        failed=$((failed + 1))
+    fi
+}
+
+# Starts sphkern in the background with debug logs, waits (up to 20 s) for a line of its
+# log matching READY, then sends the signals. Sets $status and $err.
+signal_when() { # signal_when READY "SIG [SIG...]" -- ARGS...
+    local ready=$1 signals=$2
+    shift 3
+    "$sphkern" --log-level debug "$@" >"$work/signal.out" 2>"$work/signal.err" &
+    local pid=$! i
+    for ((i = 0; i < 400; i++)); do
+        grep -qE -- "$ready" "$work/signal.err" && break
+        kill -0 $pid 2>/dev/null || break
+        sleep 0.05
+    done
+    for sig in $signals; do kill -s "$sig" $pid; done
+    local start=$(date +%s%N)
+    wait $pid
+    status=$?
+    elapsed=$((($(date +%s%N) - start) / 1000000))
+    err=$(grep -v 'debug:' "$work/signal.err")
+}
+leftovers() { ls -A "$work" | grep -E "^\.?$1(\.partial|$)" || true; }
+
+# Every command stops at a signal with exit 130 (within a second, here 2 s on a loaded
+# machine) and leaves nothing: no output folder, no staging folder.
+study s_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 40000}, "plots": false}'
+for sig in INT TERM HUP; do
+    signal_when 'staging results in' $sig -- run "$work/s_long.json" -o "$work/out_long"
+    check "run stopped by SIG$sig: exit $status in $elapsed ms, $err, left: $(leftovers out_long)" \
+        test $status -eq 130 -a $elapsed -lt 2000 -a -z "$(leftovers out_long)"
+done
+check "interrupt message" grep -q 'hung up (SIGHUP): nothing was written' <<<"$err"
+# A second signal ends the process at once, and still removes the staging folder.
+signal_when 'staging results in' "INT INT" -- run "$work/s_long.json" -o "$work/out_long"
+check "second SIGINT: exit $status, left: $(leftovers out_long)" test $status -eq 130 -a -z "$(leftovers out_long)"
+signal_when 'evaluating a block' TERM -- block cubic_bspline fcc --k 1.2 --size 160,160,160 --csv "$work/block.csv"
+check "block stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130 -a $elapsed -lt 2000
+check "block stopped writes no csv" test -z "$(leftovers block.csv)"
+signal_when 'running design' INT -- design wendland_c2_shape fcc --param beta --kmin 0.5 --kmax 8
+check "design stopped by SIGINT: exit $status in $elapsed ms, $err" test $status -eq 130 -a $elapsed -lt 2000
+# A plugin that ignores SIGINT and hangs in its probe: sphkern stops the probe itself.
+SPHKERN_PLUGIN_TIMEOUT=60 signal_when 'probing .*hangs_ignoring_sigint' INT -- kernels --plugin "$broken/hangs_ignoring_sigint.so"
+check "hanging plugin probe interrupted: exit $status in $elapsed ms, $err" test $status -eq 130 -a $elapsed -lt 2000
+# A plugin that ignores the signals once loaded: the handlers are taken back after loading.
+signal_when 'evaluating a block' INT -- block noisy fcc --k 1.2 --size 160,160,160 --plugin "$broken/prints_and_ignores_signals.so"
+check "plugin ignoring SIGINT still interruptible: exit $status in $elapsed ms, $err" test $status -eq 130 -a $elapsed -lt 2000
+# An interrupt while gnuplot runs is an interrupt (130), and gnuplot is stopped too.
+mkdir -p "$work/fakebin"
+printf '#!/bin/sh\necho $$ >"%s/fake-gnuplot.pid"\nsleep 30\n' "$work" >"$work/fakebin/gnuplot"
+chmod +x "$work/fakebin/gnuplot"
+study s_plot '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "k": {"samples": 11}}'
+PATH="$work/fakebin:$PATH" signal_when 'started .*gnuplot' INT -- run "$work/s_plot.json" -o "$work/out_plot"
+check "interrupt during gnuplot: exit $status, $err" test $status -eq 130 -a -z "$(leftovers out_plot)"
+check "fake gnuplot stopped" bash -c "! kill -0 \$(cat '$work/fake-gnuplot.pid') 2>/dev/null"
+
+# No shell: quotes and shell syntax in the output path or the working folder are only names.
+mkdir -p "$work/it's here"
+(cd "$work/it's here" && "$sphkern" run "$work/s_plot.json" -o "x';touch PWNED;'" >/dev/null 2>"$work/quote.err")
+check "quote in paths: $(cat "$work/quote.err")" test -f "$work/it's here/x';touch PWNED;'/plots/fcc-default.svg"
+check "no command injected" test ! -e "$work/it's here/PWNED" -a ! -e PWNED
+
+# --force replaces only a folder sphkern wrote.
+mkdir -p "$work/project" && echo keep >"$work/project/thesis.tex"
+expect 5 'project: exists and is not a results folder sphkern wrote' -- run "$work/s_ok.json" -o "$work/project" --force
+check "a user's folder survives --force" test -f "$work/project/thesis.tex"
+ln -s "$work/out10" "$work/link-to-results"
+expect 5 'link-to-results: exists and is not a results folder sphkern wrote' -- run "$work/s_ok.json" -o "$work/link-to-results" --force
+check "--force on a link keeps the link" test -L "$work/link-to-results"
+# Concurrent runs into one folder: exactly one wins, the others say the folder exists.
+for i in 1 2 3 4; do "$sphkern" run "$work/s_ok.json" -o "$work/out_race" >/dev/null 2>"$work/race$i.err" & done
+codes=""
+for job in $(jobs -p); do wait "$job"; codes+="$? "; done
+check "concurrent runs: exit codes $codes" test "$(tr ' ' '\n' <<<"$codes" | grep -c '^0$')" -eq 1 -a \
+    "$(tr ' ' '\n' <<<"$codes" | grep -c '^5$')" -eq 3
+check "concurrent losers say why" grep -q 'out_race: already exists' "$work"/race*.err
+# A dead run's staging folder (its pid is gone) is removed by the next run; a look-alike
+# that sphkern did not write (no marker) is left alone.
+mkdir -p "$work/.out_stale.partial-999999999-abcdef" "$work/.out_stale.partial-999999998-foreign"
+touch "$work/.out_stale.partial-999999999-abcdef/.sphkern-output"
+expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out_stale"
+check "stale staging removed" test ! -e "$work/.out_stale.partial-999999999-abcdef"
+check "foreign look-alike kept" test -d "$work/.out_stale.partial-999999998-foreign"
+# A failed run removes the parent folders it created, and only those.
+study s_late '{"name": "s", "kernels": ["no_such_kernel"], "lattices": ["fcc"], "plots": false}'
+expect 3 'unknown kernel "no_such_kernel"' -- run "$work/s_late.json" -o "$work/new1/new2/out"
+check "created parents removed" test ! -e "$work/new1"
+
+# Single files are written only over regular files.
+echo original >"$work/target.txt" && ln -s "$work/target.txt" "$work/link.csv"
+expect 5 'link.csv: is not a regular file' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --csv "$work/link.csv"
+check "a link's target is untouched" test "$(cat "$work/target.txt")" = original -a -L "$work/link.csv"
+mkfifo "$work/pipe.vtk"
+expect 5 'pipe.vtk: is not a regular file' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --vtk "$work/pipe.vtk"
+check "a pipe stays a pipe" test -p "$work/pipe.vtk"
+expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --csv "$work/target.txt"
+check "a regular file is replaced, no partial left" test "$(head -c 8 "$work/target.txt")" != original -a -z "$(ls -A "$work" | grep target.txt.partial)"
+
+# Budgets before work.
+expect 3 'a blend of 8000 kernels, more than the limit of 16' -- eps "$(python3 -c "print('+'.join(['cubic_bspline'] * 8000))")" fcc --k 1
+study s_deep '{"name": "s", "kernels": ["'"$(python3 -c "print('+'.join(['cubic_bspline'] * 8000))")"'"], "lattices": ["fcc"], "plots": false}'
+expect 3 'a blend of 8000 kernels, more than the limit of 16' -- run "$work/s_deep.json" -o "$work/out_deep"
+check "no partial after a refused blend" test -z "$(leftovers out_deep)"
+expect 0 '^$' -- eps cubic_bspline+wendland_c2+liu_quartic fcc --k 1
+ln -s /dev/zero "$work/zero.json"
+expect 3 'zero.json: more than the limit of 16777216 bytes' -- shells "$work/zero.json" --radius 2
+mkfifo "$work/fifo.json"
+expect 3 'fifo.json: file is empty' -- shells "$work/fifo.json" --radius 2
+mkdir -p "$work/plugin-folder" && ln -s /dev/zero "$work/plugin-folder/zero.so" && ln -s /dev/zero "$work/plugin-folder/zero.json"
+start=$(date +%s%N)
+SPHKERN_PLUGIN_PATH="$work/plugin-folder" "$sphkern" kernels >/dev/null 2>"$work/zero.err"
+status=$? elapsed=$((($(date +%s%N) - start) / 1000000))
+check "devices in a plugin folder skipped at once: exit $status, $elapsed ms" test $status -eq 0 -a $elapsed -lt 2000
+check "device plugin named" grep -q 'zero.so: is not a regular file' "$work/zero.err"
+study s_budget '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 100000}}'
+expect 3 's_budget.json: /: the study asks for kernels x lattices x volume_coefficients x modes x k samples = 4.8e\+06, more than the limit of 2e\+06' -- \
+    run "$work/s_budget.json" -o "$work/out_budget" --no-plots
+study s_budget_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc", "bcc", "sc", "hcp", "hex_prism", "triangular"], "sweeps": [{"kernel": "wendland_c2_shape", "parameter": "beta", "range": [0.5, 3], "samples": 1000}, {"kernel": "wendland_c2_shape", "parameter": "beta", "range": [0.5, 3], "samples": 1000}]}'
+expect 3 'lattices x sweep samples x k samples, over all sweeps = 2.412e\+06' -- run "$work/s_budget_sweep.json" -o "$work/out_budget"
+(ulimit -v 600000; "$sphkern" block cubic_bspline fcc --k 1.2 --size 8,8,8 --threads 1000 >/dev/null 2>"$work/threads.err")
 status=$?
-if [[ $status -eq 130 ]] && grep -q 'interrupted (SIGINT)' "$work/interrupt.err" && [[ -z $(ls -A "$work" | grep -E 'out_long|partial') ]]; then
-    passed=$((passed + 1))
-else
-    echo "FAIL: interrupted run: exit $status, $(cat "$work/interrupt.err"), left: $(ls -A "$work" | grep -E 'out_long|partial')"
-    failed=$((failed + 1))
-fi
+check "threads refused by the system: exit $status, $(cat "$work/threads.err")" test $status -eq 3
+check "threads message" grep -qE '^sphkern: error: cannot start 1000 threads .*use fewer threads$' "$work/threads.err"
+
+# Numbers: nothing non-finite, nothing from a kernel outside its valid parameters.
+expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- eps nan_band fcc --k 1.4184397163120568 --plugin "$broken/nan_band.so"
+expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- roots nan_band fcc --kmin 1.40 --kmax 1.45 --plugin "$broken/nan_band.so"
+expect 0 '^$' -- eps sign_flip fcc --k 1.2 --plugin "$broken/sign_flip.so"
+expect 4 'kernel sign_flip\(p=3\) .*: its 3D normalisation is -1 at k = 1.2, expected a finite positive integral' -- \
+    eps sign_flip fcc --k 1.2 --set p=3 --plugin "$broken/sign_flip.so"
+expect 4 'its 3D normalisation is -1' -- block sign_flip fcc --k 1.2 --size 4,4,4 --set p=3 --plugin "$broken/sign_flip.so"
+expect 3 'k = 1e-300 is outside what this kernel and lattice can be evaluated at' -- eps cubic_bspline fcc --k 1e-300
+expect 3 'k = 1e-300 is outside' -- eps cubic_bspline fcc --k 1e-300 --json
+huge=$("$sphkern" eps cubic_bspline fcc --k 1.2 --gravity 1e200,1e200,0 --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["eps_gradp"])')
+unit=$("$sphkern" eps cubic_bspline fcc --k 1.2 --gravity 1,1,0 --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["eps_gradp"])')
+check "gravity 1e200,1e200,0 gives the value of 1,1,0: $huge vs $unit" test "$huge" = "$unit"
+tiny=$("$sphkern" eps cubic_bspline fcc --k 1.2 --gravity 1e-300,1e-300,0 --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["eps_gradp"])')
+check "gravity 1e-300,1e-300,0 gives the value of 1,1,0: $tiny vs $unit" test "$tiny" = "$unit"
+
+# JSON: duplicate keys, escaped pointers, every access with file and path.
+lattice dupkey '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]], "basis": [[1, 0], [0, 2]]}'
+expect 3 'dupkey.json: /: duplicate key "basis"' -- shells "$work/dupkey.json" --radius 2
+lattice dupdeep '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]], "volume_coefficients": {"a": 1, "a": 2}}'
+expect 3 'dupdeep.json: /volume_coefficients: duplicate key "a"' -- shells "$work/dupdeep.json" --radius 2
+study s_dupdeep '{"name": "s", "kernels": [{"kernel": "wendland_c2_shape", "set": {"beta": 1}}, {"kernel": "cubic_bspline", "set": {"x": 1, "x": 2}}], "lattices": ["fcc"]}'
+expect 3 's_dupdeep.json: /kernels/1/set: duplicate key "x"' -- run "$work/s_dupdeep.json" -o "$work/out_dup"
+lattice slash '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]], "volume_coefficients": {"my/ap~1": "big"}}'
+expect 3 'slash.json: /volume_coefficients/my~1ap~01: expected a name' -- shells "$work/slash.json" --radius 2
+cat >"$work/x_ref.json" <<'JSON'
+{"name": "x_ref", "support": 2, "dimensions": [3], "reference": 42,
+ "w": "q < 1 ? 1 - 1.5*q^2 + 0.75*q^3 : (q < 2 ? 0.25*(2-q)^3 : 0)"}
+JSON
+expect 3 'x_ref.json: /reference: expected a string, got a number' -- check --plugin "$work/x_ref.json"
+printf '{"source": "s", "lattice": "fcc", "volume_coefficient": "voronoi", "mode": "default", "rows": [{"kernel": "cubic_bspline", "k": 1.0, "eps_rho": 0}]}' >"$work/ref_missing.json"
+study s_ref '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "compare_with": "ref_missing.json", "plots": false}'
+expect 3 'ref_missing.json: /rows/0: missing required key "eps_gradp"' -- run "$work/s_ref.json" -o "$work/out_ref"
+printf '{"source": "s", "lattice": "fcc", "volume_coefficient": "voronoi", "mode": "default", "rows": [{"kernel": "cubic_bspline", "no_root": 1}]}' >"$work/ref_type.json"
+study s_ref2 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "compare_with": "ref_type.json", "plots": false}'
+expect 3 'ref_type.json: /rows/0/no_root: expected true or false, got a number' -- run "$work/s_ref2.json" -o "$work/out_ref"
+study s_samename '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc", "'"$work"'/fcc-copy.json"], "plots": false}'
+sed 's/"title": *"[^"]*"/"title": "a copy"/' "$("$sphkern" lattices --json | python3 -c 'import json,sys; print([l["file"] for l in json.load(sys.stdin) if l["name"] == "fcc"][0])')" >"$work/fcc-copy.json"
+expect 3 's_samename.json: /lattices/1: lattice name "fcc" is already used by /lattices/0' -- run "$work/s_samename.json" -o "$work/out_same"
+study s_twice '{"name": "s", "kernels": ["cubic_bspline", "liu_quartic", "cubic_bspline"], "lattices": ["fcc"], "plots": false}'
+expect 3 's_twice.json: /kernels/2: kernel "cubic_bspline" is listed twice \(also at /kernels/0\)' -- run "$work/s_twice.json" -o "$work/out_twice"
+# A newline in a file name stays on the one error line.
+expect 3 'no\\nline.json: no such file' -- shells "$work/no
+line.json" --radius 2
+
+# stdout is sphkern's alone: a plugin's printf goes to stderr.
+"$sphkern" eps noisy fcc --k 1.2 --json --plugin "$broken/prints_and_ignores_signals.so" >"$work/noisy.json" 2>"$work/noisy.err"
+check "plugin output kept out of --json" python3 -c "import json; json.load(open('$work/noisy.json'))"
+check "plugin output on stderr" grep -q 'hello from a plugin' "$work/noisy.err"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

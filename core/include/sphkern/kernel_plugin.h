@@ -16,6 +16,20 @@
  * its formula past the support R, a piecewise kernel returns its own zero branch.
  * The host truncates at R. The derivative is its own function: the host never
  * assumes it is the derivative of w (it may depend on k).
+ *
+ * Contract with the host:
+ *   - Threads: w, dw, w_batch and dw_batch are called concurrently from several
+ *     threads, with different or equal arguments. They must be reentrant: no writable
+ *     global or static state, no locale or errno games.
+ *   - Memory: `q` and `out` of a batch call never alias; `params` is read-only. The
+ *     descriptor and every string and array it points to must stay valid and unchanged
+ *     as long as the library is loaded (static storage).
+ *   - Output: stdout belongs to the host; a plugin must not write to it (sphkern points
+ *     descriptor 1 at stderr, so stray output only clutters the log).
+ *   - Signals: a plugin must not install signal handlers; the host takes SIGINT,
+ *     SIGTERM and SIGHUP back after loading a library.
+ *   - The entry function is first called in a child process (a probe with a time
+ *     bound), then in the host; it must have no side effect but returning the pointer.
  */
 #ifndef SPHKERN_KERNEL_PLUGIN_H
 #define SPHKERN_KERNEL_PLUGIN_H

@@ -1,0 +1,21 @@
+// A kernel may be valid at its default parameters and not at others (a sign flip, a
+// pole), or non-finite on a narrow band of q that a probe misses. These checks run
+// where a kernel is used, so that no wrong number is printed as a result.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "support/error.hpp"
+
+namespace sphkern {
+
+// Plugins' faults are plugin errors (4); an expression file's are input errors (3).
+ExitCode kernel_fault_code(const Kernel& kernel);
+
+// Throws unless the kernel's integral over D-space at these parameters and k is finite
+// and positive.
+void require_usable_kernel(const Kernel& kernel, int dim, double k);
+
+// Names the kernel, its parameters, q and k: `what` is "W" or "dW/dr".
+[[noreturn]] void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, int dim, double k);
+
+} // namespace sphkern

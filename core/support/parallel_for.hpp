@@ -1,0 +1,68 @@
+// Splits [0, n) into one contiguous chunk per thread. A worker's exception is carried
+// to the caller (the first one wins, the other workers stop at their next check), a
+// thread the system refuses to create is an error rather than an abort, and an
+// interrupt stops every worker at its next item.
+#pragma once
+
+#include "support/error.hpp"
+#include "support/interruption.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace sphkern {
+
+// Calls work(thread, begin, end) on each chunk; `work` should call keep_going() between
+// items and return when it is false.
+class ParallelFor {
+public:
+    bool keep_going() const { return !failed_.load(std::memory_order_relaxed) && !interrupted(); }
+
+    template <class Work>
+    void run(std::size_t n, int threads, const Work& work)
+    {
+        threads = std::max(1, threads);
+        std::size_t chunk = (n + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads);
+        auto guarded = [&](int t) {
+            std::size_t begin = std::min(n, chunk * static_cast<std::size_t>(t)), end = std::min(n, begin + chunk);
+            try {
+                work(t, begin, end);
+            } catch (...) {
+                std::lock_guard lock(mutex_);
+                if (!first_error_) first_error_ = std::current_exception();
+                failed_ = true;
+            }
+        };
+        std::vector<std::thread> pool;
+        std::string refused;
+        for (int t = 1; t < threads; ++t) {
+            try {
+                pool.emplace_back(guarded, t);
+            } catch (const std::system_error& e) {
+                refused = e.what();
+                failed_ = true; // the workers already running stop at their next item
+                break;
+            }
+        }
+        if (refused.empty()) guarded(0);
+        for (auto& th : pool) th.join();
+        if (!refused.empty())
+            throw Error(ExitCode::input, "cannot start " + std::to_string(threads) + " threads (" + refused +
+                                             "); use fewer threads");
+        if (first_error_) std::rethrow_exception(first_error_);
+        throw_if_interrupted();
+    }
+
+private:
+    std::atomic<bool> failed_{false};
+    std::mutex mutex_;
+    std::exception_ptr first_error_;
+};
+
+} // namespace sphkern

@@ -1,0 +1,25 @@
+/* A kernel that is NaN on the narrow band 0.701 < q < 0.709 only: the loader's probe
+ * grid (q = 0.05 i) misses it, a lattice sum at k = 1/0.705 on fcc does not. */
+#include <math.h>
+#include <sphkern/kernel_plugin.h>
+
+static double w(double q, int dim, double k, const double* p)
+{
+    (void)dim; (void)k; (void)p;
+    if (q > 0.701 && q < 0.709) return NAN;
+    return q < 1.0 ? 0.75 * (1.0 - q * q) : 0.0;
+}
+
+static double dw(double q, int dim, double k, const double* p)
+{
+    (void)dim; (void)k; (void)p;
+    return q < 1.0 ? -1.5 * q : 0.0;
+}
+
+SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
+SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+
+static const sphkern_kernel_descriptor descriptor = {
+    SPHKERN_KERNEL_ABI_VERSION, "nan_band", "broken", "", 1.0, SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL, w, dw, w_batch, dw_batch};
+
+SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

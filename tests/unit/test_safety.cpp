@@ -1,0 +1,109 @@
+// The safety rules of the support layer: JSON duplicates and pointers, the parallel
+// executor's error handling, output folders that never replace what sphkern did not write.
+#include "support/error.hpp"
+#include "support/json_input.hpp"
+#include "support/output_folder.hpp"
+#include "support/parallel_for.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+using namespace sphkern;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string error_of(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+fs::path fresh_folder(const std::string& name)
+{
+    fs::path p = fs::temp_directory_path() / ("sphkern-test-" + std::to_string(::getpid()) + "-" + name);
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+} // namespace
+
+TEST_CASE("a duplicate key is refused with the JSON Pointer of its object, through arrays and escapes")
+{
+    CHECK(error_of([] { parse_json_text(R"({"a": [{"b": 1}, {"b": 1, "b": 2}]})", "f.json"); }) ==
+          "f.json: /a/1: duplicate key \"b\" (each key may appear once)");
+    CHECK(error_of([] { parse_json_text(R"({"x/y": {"~": [[1], {"k": 0, "k": 0}]}})", "f.json"); }) ==
+          "f.json: /x~1y/~0/1: duplicate key \"k\" (each key may appear once)");
+    // The same key in different objects is fine.
+    CHECK(parse_json_text(R"({"a": {"k": 1}, "b": {"k": 2}, "c": [{"k": 3}, {"k": 4}]})", "f.json")["c"][1]["k"] == 4);
+    CHECK(escape_json_pointer("a/b~c") == "a~1b~0c");
+}
+
+TEST_CASE("the parallel executor carries a worker's exception and runs every item once")
+{
+    std::vector<int> seen(1000, 0);
+    ParallelFor ok;
+    ok.run(seen.size(), 3, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end && ok.keep_going(); ++i) ++seen[i];
+    });
+    CHECK(std::count(seen.begin(), seen.end(), 1) == 1000);
+
+    ParallelFor failing;
+    CHECK_THROWS_WITH_AS(failing.run(100, 4,
+                                     [&](int thread, std::size_t, std::size_t) {
+                                         if (thread == 2) throw std::runtime_error("worker 2 failed");
+                                     }),
+                         "worker 2 failed", std::runtime_error);
+}
+
+TEST_CASE("an output folder is committed without replacing anything, and --force replaces only its own kind")
+{
+    fs::path base = fresh_folder("output");
+    fs::path target = base / "a" / "b" / "results";
+    {
+        OutputFolder out(target, false);
+        out.write("x.txt", "1\n");
+        // Someone creates the target meanwhile: it is not replaced.
+        fs::create_directories(target);
+        std::ofstream(target / "mine.txt") << "user data\n";
+        CHECK(error_of([&] { out.commit(); }).find("already exists (it appeared while this run worked)") !=
+              std::string::npos);
+    }
+    CHECK(fs::exists(target / "mine.txt"));
+    CHECK(error_of([&] { OutputFolder out(target, true); }).find("is not a results folder sphkern wrote") !=
+          std::string::npos);
+    fs::remove_all(target);
+    {
+        OutputFolder out(target, false);
+        out.write("x.txt", "1\n");
+        out.commit();
+    }
+    CHECK(written_by_sphkern(target));
+    {
+        OutputFolder out(target, true);
+        out.write("y.txt", "2\n");
+        out.commit();
+    }
+    CHECK(fs::exists(target / "y.txt"));
+    CHECK(!fs::exists(target / "x.txt"));
+    // Nothing but the results folder is left: no staging folder, no old copy.
+    std::size_t entries = 0;
+    for (const auto& e : fs::directory_iterator(target.parent_path())) entries += e.path() != target;
+    CHECK(entries == 0);
+
+    // A failed run removes the parents it created, and not those that were there.
+    fs::path deep = base / "new1" / "new2" / "results";
+    { OutputFolder abandoned(deep, false); }
+    CHECK(!fs::exists(base / "new1"));
+    CHECK(fs::exists(base));
+    fs::remove_all(base);
+}
