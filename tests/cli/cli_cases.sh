@@ -227,7 +227,7 @@ signal_when() { # signal_when READY "SIG [SIG...]" -- ARGS...
         kill -0 $pid 2>/dev/null || break
         sleep 0.05
     done
-    for sig in $signals; do kill -s "$sig" $pid; done
+    for sig in $signals; do kill -s "$sig" $pid 2>/dev/null; done
     local start=$(date +%s%N)
     wait $pid
     status=$?
