@@ -94,27 +94,35 @@ struct Run {
     Eigen::Vector3d shift;
 };
 
-// q = r / h, r^2 and (unless `height` is null) height = e . (x_j - x_i) along a run. Plain pointers and no
-// branch, so that the compiler vectorises it.
-SPHKERN_VECTOR_CLONES void run_distances(const double* __restrict x, const double* __restrict y, const double* __restrict z, const Run& run,
-                   double inv_k, const Eigen::Vector3d& e, double* __restrict q, double* __restrict r2,
-                   double* __restrict height)
+// q = r / h, r^2 and, for the gradient, height = e . (x_j - x_i) and 1 / r along a run.
+// Plain pointers and no branch, so that the compiler vectorises it.
+SPHKERN_VECTOR_CLONES void run_distances(const double* __restrict x, const double* __restrict y, const double* __restrict z,
+                                         const Run& run, double inv_k, double* __restrict q, double* __restrict r2)
 {
-    const double ex = e.x(), ey = e.y(), ez = e.z(), sx = run.shift.x(), sy = run.shift.y(), sz = run.shift.z();
+    const double sx = run.shift.x(), sy = run.shift.y(), sz = run.shift.z();
     const double *xi = x + run.first_i, *yi = y + run.first_i, *zi = z + run.first_i;
     const double *xj = x + run.first_j, *yj = y + run.first_j, *zj = z + run.first_j;
-    if (!height) { // the density needs no height
-        for (std::size_t p = 0; p < run.length; ++p) {
-            const double dx = xj[p] + sx - xi[p], dy = yj[p] + sy - yi[p], dz = zj[p] + sz - zi[p];
-            r2[p] = dx * dx + dy * dy + dz * dz;
-            q[p] = std::sqrt(r2[p]) * inv_k;
-        }
-        return;
-    }
     for (std::size_t p = 0; p < run.length; ++p) {
         const double dx = xj[p] + sx - xi[p], dy = yj[p] + sy - yi[p], dz = zj[p] + sz - zi[p];
         r2[p] = dx * dx + dy * dy + dz * dz;
         q[p] = std::sqrt(r2[p]) * inv_k;
+    }
+}
+
+SPHKERN_VECTOR_CLONES void run_distances_heights(const double* __restrict x, const double* __restrict y,
+                                                 const double* __restrict z, const Run& run, double inv_k,
+                                                 const Eigen::Vector3d& e, double* __restrict q, double* __restrict r2,
+                                                 double* __restrict height, double* __restrict inv_r)
+{
+    const double ex = e.x(), ey = e.y(), ez = e.z(), sx = run.shift.x(), sy = run.shift.y(), sz = run.shift.z();
+    const double *xi = x + run.first_i, *yi = y + run.first_i, *zi = z + run.first_i;
+    const double *xj = x + run.first_j, *yj = y + run.first_j, *zj = z + run.first_j;
+    for (std::size_t p = 0; p < run.length; ++p) {
+        const double dx = xj[p] + sx - xi[p], dy = yj[p] + sy - yi[p], dz = zj[p] + sz - zi[p];
+        r2[p] = dx * dx + dy * dy + dz * dz;
+        const double r = std::sqrt(r2[p]);
+        q[p] = r * inv_k;
+        inv_r[p] = 1.0 / r;
         height[p] = ex * dx + ey * dy + ez * dz;
     }
 }
@@ -137,7 +145,7 @@ SPHKERN_VECTOR_CLONES void run_density(const double* __restrict w, const double*
 template <GradientForm form>
 SPHKERN_VECTOR_CLONES void run_gradient(const double* __restrict depth_i, const double* __restrict depth_j, const double* __restrict rho_i,
                   const double* __restrict rho_j, const double* __restrict dw, const double* __restrict height,
-                  const double* __restrict q, const double* __restrict r2, double reach2, double k, std::size_t length,
+                  const double* __restrict inv_r, const double* __restrict r2, double reach2, std::size_t length,
                   double* __restrict sum)
 {
     for (std::size_t p = 0; p < length; ++p) {
@@ -145,7 +153,7 @@ SPHKERN_VECTOR_CLONES void run_gradient(const double* __restrict depth_i, const 
         if constexpr (form == GradientForm::sum) weight = depth_i[p] + depth_j[p];
         else if constexpr (form == GradientForm::difference) weight = depth_j[p] - depth_i[p];
         else weight = rho_i[p] * (depth_i[p] / (rho_i[p] * rho_i[p]) + depth_j[p] / (rho_j[p] * rho_j[p]));
-        const double term = weight * dw[p] * -height[p] / (q[p] * k);
+        const double term = weight * dw[p] * -height[p] * inv_r[p];
         sum[p] += r2[p] <= reach2 ? term : 0.0;
     }
 }
@@ -196,26 +204,41 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3), count = static_cast<std::size_t>(total);
     // Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
     // so that a row of cells is a contiguous run for every site.
-    result.positions.resize(count);
-    std::vector<double> x(count), y(count), z(count);
-    for (int s = 0; s < sites; ++s)
-        for (std::size_t c = 0; c < cells; ++c) {
-            const long long cc = static_cast<long long>(c);
-            const Eigen::Vector3d index(double(cc % n1), double((cc / n1) % n2), double(cc / (n1 * n2)));
-            const std::size_t i = static_cast<std::size_t>(s) * cells + c;
-            result.positions[i] = lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)]);
-            x[i] = result.positions[i].x();
-            y[i] = result.positions[i].y();
-            z[i] = result.positions[i].z();
-        }
-    std::vector<double> depth(count);
+    // Every per-particle array is first touched by the thread that fills it.
+    result.x = HugeArray<double>(count);
+    result.y = HugeArray<double>(count);
+    result.z = HugeArray<double>(count);
+    result.layer = HugeArray<int>(count);
+    result.eps_rho = HugeArray<double>(count);
+    result.eps_gradp = HugeArray<double>(count);
+    HugeArray<double> depth(count);
+    double* x = result.x.data();
+    double* y = result.y.data();
+    double* z = result.z.data();
+    // The highest particle sits in the top cell layer: the maximum height over the motif.
     double top = -INFINITY;
-    for (const auto& p : result.positions) top = std::max(top, -result.gravity.dot(p));
-    result.layer.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        depth[i] = top + result.gravity.dot(result.positions[i]);
-        result.layer[i] = static_cast<int>(std::lround(depth[i] / result.spacing));
-    }
+    for (const auto& m : lattice.motif)
+        for (long long corner : {0LL, size[dim - 1] - 1}) {
+            Eigen::Vector3d index = Eigen::Vector3d::Zero();
+            index[dim - 1] = static_cast<double>(corner);
+            top = std::max(top, -result.gravity.dot(lattice.basis * (index + m)));
+        }
+    ParallelFor fill;
+    fill.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::size_t s = i / cells;
+            const long long cc = static_cast<long long>(i - s * cells);
+            const Eigen::Vector3d index(double(cc % n1), double((cc / n1) % n2), double(cc / (n1 * n2)));
+            const Eigen::Vector3d p = lattice.basis * (index + lattice.motif[s]);
+            x[i] = p.x();
+            y[i] = p.y();
+            z[i] = p.z();
+            depth[i] = top + result.gravity.dot(p);
+            result.layer[i] = static_cast<int>(std::lround(depth[i] / result.spacing));
+            result.eps_rho[i] = 0; // touched here, in this thread, rather than in the sweep
+            result.eps_gradp[i] = 0;
+        }
+    });
     result.timings.setup = seconds_since(started);
 
     const double reach2 = reach * reach * (1 + 1e-12);
@@ -265,70 +288,71 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
             }
     };
 
-    // Density pass.
-    result.eps_rho.resize(count);
-    std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
-    auto t0 = Clock::now();
-    const double self = kernel.w(0, dim, k);
-    spdlog::debug("evaluating a block of {} particles on {} threads", count, result.threads);
-    ParallelFor density_pass;
-    density_pass.run(rows, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        const std::size_t n = static_cast<std::size_t>(n1);
-        std::vector<double> q(n), r2(n), w(n), sum(n);
-        std::vector<Run> runs;
-        std::size_t found = 0;
-        for (std::size_t row = begin; row < end && density_pass.keep_going(); ++row)
-            for (int s = 0; s < sites; ++s) {
-                std::fill(sum.begin(), sum.end(), self);
-                for_each_run(row, s, runs, [&](const Run& run) {
-                    run_distances(x.data(), y.data(), z.data(), run, inv_k, result.gravity, q.data(), r2.data(), nullptr);
-                    kernel.w_batch(q.data(), w.data(), run.length, dim, k);
-                    run_density(w.data(), r2.data(), reach2, run.length, sum.data() + run.offset, found);
-                });
-                const std::size_t first = static_cast<std::size_t>(s) * cells + row * n;
-                for (std::size_t p = 0; p < n; ++p) result.eps_rho[first + p] = options.a_p * sum[p] / kd - 1;
-            }
-        pairs[static_cast<std::size_t>(thread)] = found;
-    });
-    result.timings.density = seconds_since(t0);
-    for (auto p : pairs) result.pair_interactions += p;
-
-    // Gradient pass.
+    // The sums. Sum and difference forms need no densities: one sweep computes each pair's
+    // distance once and both sums from it. Monaghan's form needs every density first.
     const GradientForm form = options.form;
-    std::vector<double> density;
-    if (form == GradientForm::monaghan) {
-        density.resize(count);
-        for (std::size_t i = 0; i < count; ++i) density[i] = 1 + result.eps_rho[i];
+    result.timings.fused = form != GradientForm::monaghan;
+    std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
+    const double self = kernel.w(0, dim, k);
+    auto sweep = [&](bool with_density, bool with_gradient, const double* rho) {
+        ParallelFor pass;
+        pass.run(rows, result.threads, [&](int thread, std::size_t begin, std::size_t end) {
+            const std::size_t n = static_cast<std::size_t>(n1);
+            std::vector<double> q(n), r2(n), height(n), inv_r(n), w(n), dw(n), rho_sum(n), gradient_sum(n);
+            std::vector<Run> runs;
+            std::size_t found = 0;
+            for (std::size_t row = begin; row < end && pass.keep_going(); ++row)
+                for (int s = 0; s < sites; ++s) {
+                    std::fill(rho_sum.begin(), rho_sum.end(), self);
+                    std::fill(gradient_sum.begin(), gradient_sum.end(), 0.0);
+                    for_each_run(row, s, runs, [&](const Run& run) {
+                        if (with_gradient)
+                            run_distances_heights(x, y, z, run, inv_k, result.gravity, q.data(), r2.data(), height.data(),
+                                                  inv_r.data());
+                        else
+                            run_distances(x, y, z, run, inv_k, q.data(), r2.data());
+                        if (with_density) {
+                            kernel.w_batch(q.data(), w.data(), run.length, dim, k);
+                            run_density(w.data(), r2.data(), reach2, run.length, rho_sum.data() + run.offset, found);
+                        }
+                        if (!with_gradient) return;
+                        kernel.dw_batch(q.data(), dw.data(), run.length, dim, k);
+                        auto call = [&](auto f) {
+                            run_gradient<decltype(f)::value>(depth.data() + run.first_i, depth.data() + run.first_j,
+                                                             rho + run.first_i, rho + run.first_j, dw.data(), height.data(),
+                                                             inv_r.data(), r2.data(), reach2, run.length,
+                                                             gradient_sum.data() + run.offset);
+                        };
+                        if (form == GradientForm::sum) call(std::integral_constant<GradientForm, GradientForm::sum>{});
+                        else if (form == GradientForm::difference)
+                            call(std::integral_constant<GradientForm, GradientForm::difference>{});
+                        else call(std::integral_constant<GradientForm, GradientForm::monaghan>{});
+                    });
+                    const std::size_t first = static_cast<std::size_t>(s) * cells + row * n;
+                    if (with_density)
+                        for (std::size_t p = 0; p < n; ++p) result.eps_rho[first + p] = options.a_p * rho_sum[p] / kd - 1;
+                    if (with_gradient)
+                        for (std::size_t p = 0; p < n; ++p)
+                            result.eps_gradp[first + p] = options.a_p * gradient_sum[p] / kd1 - 1;
+                }
+            if (with_density) pairs[static_cast<std::size_t>(thread)] = found;
+        });
+    };
+    spdlog::debug("evaluating a block of {} particles on {} threads", count, result.threads);
+    auto t0 = Clock::now();
+    if (result.timings.fused) {
+        sweep(true, true, depth.data()); // rho is unused by these forms
+    } else {
+        sweep(true, false, nullptr);
+        HugeArray<double> density(count);
+        ParallelFor fill_density;
+        fill_density.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) density[i] = 1 + result.eps_rho[i];
+        });
+        sweep(false, true, density.data());
     }
-    const double* rho = form == GradientForm::monaghan ? density.data() : depth.data(); // unused unless Monaghan
-    result.eps_gradp.resize(count);
-    t0 = Clock::now();
-    ParallelFor gradient_pass;
-    gradient_pass.run(rows, result.threads, [&](int, std::size_t begin, std::size_t end) {
-        const std::size_t n = static_cast<std::size_t>(n1);
-        std::vector<double> q(n), r2(n), height(n), dw(n), sum(n);
-        std::vector<Run> runs;
-        for (std::size_t row = begin; row < end && gradient_pass.keep_going(); ++row)
-            for (int s = 0; s < sites; ++s) {
-                std::fill(sum.begin(), sum.end(), 0.0);
-                for_each_run(row, s, runs, [&](const Run& run) {
-                    run_distances(x.data(), y.data(), z.data(), run, inv_k, result.gravity, q.data(), r2.data(), height.data());
-                    kernel.dw_batch(q.data(), dw.data(), run.length, dim, k);
-                    auto call = [&](auto f) {
-                        run_gradient<decltype(f)::value>(depth.data() + run.first_i, depth.data() + run.first_j,
-                                                         rho + run.first_i, rho + run.first_j, dw.data(), height.data(),
-                                                         q.data(), r2.data(), reach2, k, run.length, sum.data() + run.offset);
-                    };
-                    if (form == GradientForm::sum) call(std::integral_constant<GradientForm, GradientForm::sum>{});
-                    else if (form == GradientForm::difference)
-                        call(std::integral_constant<GradientForm, GradientForm::difference>{});
-                    else call(std::integral_constant<GradientForm, GradientForm::monaghan>{});
-                });
-                const std::size_t first = static_cast<std::size_t>(s) * cells + row * n;
-                for (std::size_t p = 0; p < n; ++p) result.eps_gradp[first + p] = options.a_p * sum[p] / kd1 - 1;
-            }
-    });
-    result.timings.gradient = seconds_since(t0);
+    result.timings.evaluation = seconds_since(t0);
+    for (auto p : pairs) result.pair_interactions += p;
     for (std::size_t i = 0; i < count; ++i)
         if (!std::isfinite(result.eps_rho[i]) || !std::isfinite(result.eps_gradp[i]))
             throw Error(kernel_fault_code(kernel), "kernel " + kernel.label() + " gives a non-finite error at particle " +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "analysis/surface_profile.hpp"
+#include "block/huge_array.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 
@@ -26,7 +27,9 @@ struct BlockOptions {
 };
 
 struct BlockTimings {
-    double setup = 0, density = 0, gradient = 0; // seconds
+    double setup = 0;      // positions, depths and layers, in seconds
+    double evaluation = 0; // both sums: one fused sweep (sum, difference) or two passes (monaghan)
+    bool fused = false;
 };
 
 struct LayerRange {
@@ -37,15 +40,16 @@ struct LayerRange {
 
 struct BlockResult {
     int dimension = 0;
-    std::vector<Eigen::Vector3d> positions;
-    std::vector<int> layer;         // 0 on top
-    std::vector<double> eps_rho;    // per particle
-    std::vector<double> eps_gradp;  // per particle, along gravity
+    HugeArray<double> x, y, z;      // positions, site-major (see evaluate_block)
+    HugeArray<int> layer;           // 0 on top
+    HugeArray<double> eps_rho;      // per particle
+    HugeArray<double> eps_gradp;    // per particle, along gravity
     Eigen::Vector3d gravity;        // normal to the top face, pointing down
     double spacing = 0;             // between layers
-    std::size_t pair_interactions = 0; // per pass
+    std::size_t pair_interactions = 0; // per sum (the density and the gradient each see this many)
     int threads = 1;
     BlockTimings timings;
+    std::size_t particles() const { return x.size(); }
     std::vector<LayerRange> layers() const;
 };
 
