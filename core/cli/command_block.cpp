@@ -4,12 +4,12 @@
 
 #include "block/particle_block.hpp"
 #include "support/atomic_file.hpp"
+#include "support/chunked_writer.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include <iterator>
 #include <memory>
 #include <sstream>
 
@@ -35,28 +35,6 @@ std::array<long long, 3> parse_size(const std::string& text, int dimension)
                                          std::to_string(dimension) + " sizes");
     return cells;
 }
-
-// Large outputs are formatted into a buffer and written in chunks, not line by line.
-class ChunkedWriter {
-public:
-    explicit ChunkedWriter(std::ostream& out) : out_(out) {}
-    ~ChunkedWriter() { flush(); }
-    template <class... Args>
-    void print(fmt::format_string<Args...> format, Args&&... args)
-    {
-        fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
-        if (buffer_.size() > (1u << 20)) flush();
-    }
-    void flush()
-    {
-        out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-        buffer_.clear();
-    }
-
-private:
-    std::ostream& out_;
-    fmt::memory_buffer buffer_;
-};
 
 void write_vtk(std::ostream& out, const BlockResult& r)
 {

@@ -5,6 +5,7 @@
 #include "study/plots.hpp"
 #include "study/report.hpp"
 #include "study/study_runner.hpp"
+#include "support/chunked_writer.hpp"
 #include "support/install_paths.hpp"
 #include "support/output_folder.hpp"
 
@@ -19,14 +20,14 @@ namespace sphkern::cli {
 
 namespace {
 
-std::string curves_csv(const StudyResults& results)
+void write_curves_csv(std::ostream& out, const StudyResults& results)
 {
-    std::string s = "lattice,mode,kernel,volume_coefficient,a_p,k,eps_rho,eps_gradp,lateral,neighbours\n";
+    ChunkedWriter w(out);
+    w.text("lattice,mode,kernel,volume_coefficient,a_p,k,eps_rho,eps_gradp,lateral,neighbours\n");
     for (const auto& c : results.cases)
         for (const auto& [k, v] : c.curve)
-            s += fmt::format("{},{},\"{}\",{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", c.lattice, c.mode,
-                             c.kernel_label, c.ap_name, c.a_p, k, v.eps_rho, v.eps_gradp, v.lateral, v.neighbours);
-    return s;
+            w.print("{},{},\"{}\",{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", c.lattice, c.mode, c.kernel_label,
+                    c.ap_name, c.a_p, k, v.eps_rho, v.eps_gradp, v.lateral, v.neighbours);
 }
 
 } // namespace
@@ -66,8 +67,8 @@ Action add_run_command(CLI::App& app)
             if (gnuplot.empty()) spdlog::warn("gnuplot not found on PATH: figures skipped");
             else figures = draw_study_plots(study, results, output.staging() / "plots", gnuplot);
         }
-        output.write("results.json", study_results_json(study, results).dump(1) + "\n");
-        output.write("curves.csv", curves_csv(results));
+        output.write("results.json", [&](std::ostream& out) { write_study_results_json(out, study, results); });
+        output.write("curves.csv", [&](std::ostream& out) { write_curves_csv(out, results); });
         output.write("report.md", report_markdown(study, results, figures));
         output.commit();
 

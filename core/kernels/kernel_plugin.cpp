@@ -1,5 +1,6 @@
 #include "kernels/kernel_plugin.hpp"
 
+#include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 #include "support/isolated_call.hpp"
@@ -144,7 +145,7 @@ std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
     return {};
 }
 
-std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
+std::string probe_kernel_plugin(const std::filesystem::path& file)
 {
     const std::string name = file.string();
     struct stat st {};
@@ -156,14 +157,17 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     if (static_cast<std::uintmax_t>(st.st_size) > max_plugin_bytes)
         throw Error(ExitCode::plugin, name + ": file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
                                           std::to_string(max_plugin_bytes) + " for a plugin");
+    auto& cache = PluginProbeCache::instance();
+    if (auto known = cache.passed(file)) return *known;
 
     spdlog::debug("probing {}", name);
     auto verdict = run_isolated(
         [&]() -> std::string {
             try {
                 auto library = open_library(file);
-                auto reason = validate_kernel_descriptor(call_entry(*library, name));
-                return reason.empty() ? "" : name + ": invalid kernel descriptor: " + reason;
+                const auto* d = call_entry(*library, name);
+                auto reason = validate_kernel_descriptor(d);
+                return reason.empty() ? std::string("+") + d->name : name + ": invalid kernel descriptor: " + reason;
             } catch (const Error& e) {
                 return e.what(); // already names the file
             }
@@ -171,9 +175,16 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
         plugin_probe_timeout());
     if (auto* failure = std::get_if<IsolatedFailure>(&verdict))
         throw Error(ExitCode::plugin, name + ": plugin " + failure->reason);
-    if (const auto& message = std::get<std::string>(verdict); !message.empty())
-        throw Error(ExitCode::plugin, message);
+    const auto& answer = std::get<std::string>(verdict);
+    if (answer.empty() || answer[0] != '+') throw Error(ExitCode::plugin, answer);
+    cache.record(file, answer.substr(1));
+    return answer.substr(1);
+}
 
+std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
+{
+    const std::string name = file.string();
+    const std::string kernel_name = probe_kernel_plugin(file);
     auto library = open_library(file);
     const auto* d = call_entry(*library, name);
     // The library's constructors ran in this process: take the signals and stdout back.
@@ -182,6 +193,8 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     auto plugin = std::make_shared<KernelDefinition>();
     plugin->source = std::filesystem::absolute(file).lexically_normal().string();
     plugin->name = d->name;
+    if (plugin->name != kernel_name) // the file changed between the probe and now
+        throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");
     plugin->title = d->title;
     plugin->reference = d->reference;
     plugin->support = d->support;

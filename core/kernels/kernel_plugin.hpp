@@ -17,6 +17,10 @@ namespace sphkern {
 // plugin's functions at probe points, so run it where a crash cannot hurt.
 std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* descriptor);
 
+// Validates a plugin file in a child process (unless the probe cache knows the unchanged
+// file) and returns its kernel name. Throws Error(plugin) naming the file and the reason.
+std::string probe_kernel_plugin(const std::filesystem::path& file);
+
 // Loads and validates a plugin file; the validation (which runs plugin code) happens
 // in a child process first. Throws Error(plugin) naming the file and the reason.
 std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file);

@@ -2,16 +2,19 @@
 
 #include "kernels/expression_kernel.hpp"
 #include "kernels/kernel_blend.hpp"
+#include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/interruption.hpp"
 #include "support/json_input.hpp"
+#include "support/parallel_for.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
+#include <thread>
 
 namespace sphkern {
 namespace fs = std::filesystem;
@@ -47,50 +50,113 @@ std::vector<fs::path> kernel_plugin_folders()
     return folders;
 }
 
+namespace {
+
+[[noreturn]] void fail_duplicate(const std::string& name, const std::string& a, const std::string& b)
+{
+    throw Error(ExitCode::plugin, "two plugins are named \"" + name + "\": " + a + " and " + b);
+}
+
+} // namespace
+
 void KernelRegistry::add(std::shared_ptr<const KernelDefinition> plugin)
 {
-    for (const auto& p : plugins_) {
-        if (p->name != plugin->name) continue;
-        throw Error(ExitCode::plugin, "two plugins are named \"" + plugin->name + "\": " + p->source + " and " +
-                                          plugin->source);
-    }
-    plugins_.push_back(std::move(plugin));
+    for (const auto& p : explicit_)
+        if (p->name == plugin->name) fail_duplicate(plugin->name, p->source, plugin->source);
+    explicit_.push_back(std::move(plugin));
 }
 
 KernelRegistry KernelRegistry::from_files(const std::vector<fs::path>& files)
 {
     KernelRegistry registry;
     for (const auto& f : files) registry.add(load_kernel_file(f));
+    PluginProbeCache::instance().save();
     return registry;
 }
 
 KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_files)
 {
     KernelRegistry registry;
-    std::vector<fs::path> seen;
+    std::vector<fs::path> named;
     std::error_code ec;
+    for (const auto& file : explicit_files) named.push_back(fs::weakly_canonical(file, ec));
     for (const auto& folder : kernel_plugin_folders()) {
         std::vector<fs::path> files;
         for (const auto& entry : fs::directory_iterator(folder, ec))
             if ((entry.path().extension() == ".so" || entry.path().extension() == ".json") && !entry.is_directory(ec))
                 files.push_back(entry.path());
         std::sort(files.begin(), files.end());
-        for (const auto& file : files) {
-            throw_if_interrupted();
+        for (const auto& file : files)
+            if (std::find(named.begin(), named.end(), fs::weakly_canonical(file, ec)) == named.end())
+                registry.candidates_.push_back({file, std::nullopt, nullptr, false});
+    }
+    for (const auto& file : explicit_files) registry.add(load_kernel_file(file));
+    PluginProbeCache::instance().save();
+    return registry;
+}
+
+// The kernel names of every folder file: expression files are read, plugins come from
+// the probe cache, and the rest are probed, several at a time.
+void KernelRegistry::learn_names()
+{
+    std::vector<Candidate*> unknown;
+    for (auto& c : candidates_) {
+        if (c.name || c.broken) continue;
+        if (c.file.extension() == ".json") {
+            load(c);
+            continue;
+        }
+        if (auto name = PluginProbeCache::instance().passed(c.file)) c.name = *name;
+        else unknown.push_back(&c);
+    }
+    if (unknown.empty()) return;
+    std::vector<std::string> failures(unknown.size());
+    ParallelFor probes;
+    const int threads = static_cast<int>(std::min<std::size_t>(unknown.size(), 2 * std::max(1u, std::thread::hardware_concurrency())));
+    probes.run(unknown.size(), threads, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end && probes.keep_going(); ++i) {
             try {
-                registry.add(load_kernel_file(file));
-                seen.push_back(fs::weakly_canonical(file, ec));
+                unknown[i]->name = probe_kernel_plugin(unknown[i]->file);
             } catch (const Error& e) {
-                if (std::string(e.what()).rfind("two plugins", 0) == 0) throw;
-                spdlog::warn("skipping {}", e.what());
+                if (e.code() == ExitCode::interrupted) throw;
+                failures[i] = e.what();
             }
         }
+    });
+    for (std::size_t i = 0; i < unknown.size(); ++i)
+        if (!failures[i].empty()) {
+            unknown[i]->broken = true;
+            spdlog::warn("skipping {}", failures[i]);
+        }
+    PluginProbeCache::instance().save();
+}
+
+std::shared_ptr<const KernelDefinition> KernelRegistry::load(Candidate& c)
+{
+    if (c.loaded || c.broken) return c.loaded;
+    throw_if_interrupted();
+    try {
+        c.loaded = load_kernel_file(c.file);
+        c.name = c.loaded->name;
+    } catch (const Error& e) {
+        if (e.code() == ExitCode::interrupted) throw;
+        c.broken = true;
+        spdlog::warn("skipping {}", e.what());
     }
-    for (const auto& file : explicit_files) {
-        if (std::find(seen.begin(), seen.end(), fs::weakly_canonical(file, ec)) != seen.end()) continue;
-        registry.add(load_kernel_file(file));
-    }
-    return registry;
+    return c.loaded;
+}
+
+const std::vector<std::shared_ptr<const KernelDefinition>>& KernelRegistry::plugins()
+{
+    learn_names();
+    all_.clear();
+    for (auto& c : candidates_)
+        if (auto p = load(c)) all_.push_back(p);
+    for (const auto& p : explicit_) all_.push_back(p);
+    for (std::size_t i = 0; i < all_.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (all_[i]->name == all_[j]->name) fail_duplicate(all_[i]->name, all_[j]->source, all_[i]->source);
+    return all_;
 }
 
 std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& spec)
@@ -133,7 +199,7 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::s
 {
     if (spec.ends_with(".json")) {
         auto canonical = fs::absolute(spec).lexically_normal().string();
-        for (const auto& p : plugins_)
+        for (const auto& p : explicit_)
             if (p->source == canonical) return p;
         auto kernel = load_expression_kernel(spec);
         add(kernel);
@@ -142,17 +208,32 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::s
     if (looks_like_path(spec, ".so")) {
         std::error_code ec;
         auto canonical = fs::absolute(spec).lexically_normal().string();
-        for (const auto& p : plugins_)
+        for (const auto& p : explicit_)
             if (p->source == canonical) return p;
         auto plugin = load_kernel_plugin(spec);
+        PluginProbeCache::instance().save();
         add(plugin);
         return plugin;
     }
+    // A name: the explicit files first, then the folders' files, whose names the cache knows
+    // (or probes learn); two files with the name are an error, whichever is asked for.
+    learn_names();
     std::vector<std::string> names;
-    for (const auto& p : plugins_) {
-        if (p->name == spec) return p;
+    std::shared_ptr<const KernelDefinition> found;
+    std::string found_source;
+    for (const auto& p : explicit_) {
         names.push_back(p->name);
+        if (p->name == spec) found = p, found_source = p->source;
     }
+    for (auto& c : candidates_) {
+        if (!c.name) continue;
+        names.push_back(*c.name);
+        if (*c.name != spec) continue;
+        if (found) fail_duplicate(spec, found_source, fs::absolute(c.file).lexically_normal().string());
+        found = load(c);
+        found_source = fs::absolute(c.file).lexically_normal().string();
+    }
+    if (found) return found;
     std::string message = "unknown kernel \"" + spec + "\"";
     if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
     std::string list;

@@ -2,6 +2,7 @@
 
 #include "analysis/results_json.hpp"
 #include "lattices/lattice.hpp"
+#include "support/chunked_writer.hpp"
 #include "support/error.hpp"
 #include "support/json_input.hpp"
 #include "support/interruption.hpp"
@@ -301,19 +302,19 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     return results;
 }
 
-nlohmann::json study_results_json(const Study& study, const StudyResults& results)
+// Streamed: every part but the curves is a small JSON value; the curves, most of the
+// document, are written number by number without building a JSON tree for them.
+void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results)
 {
-    nlohmann::json cases = nlohmann::json::array();
-    for (const auto& c : results.cases) {
-        nlohmann::json curve = nlohmann::json::object(
-            {{"k", nlohmann::json::array()}, {"eps_rho", nlohmann::json::array()},
-             {"eps_gradp", nlohmann::json::array()}, {"neighbours", nlohmann::json::array()}});
-        for (const auto& [k, v] : c.curve) {
-            curve["k"].push_back(k);
-            curve["eps_rho"].push_back(v.eps_rho);
-            curve["eps_gradp"].push_back(v.eps_gradp);
-            curve["neighbours"].push_back(v.neighbours);
-        }
+    ChunkedWriter w(out);
+    auto number = [&](double v) {
+        if (std::isfinite(v)) w.print("{}", v);
+        else w.text("null");
+    };
+    w.print("{{\n \"sphkern_version\": {},\n \"study_file\": {},\n \"study\": {},\n \"cases\": [",
+            nlohmann::json(SPHKERN_VERSION).dump(), nlohmann::json(study.file).dump(), study.document.dump());
+    for (std::size_t i = 0; i < results.cases.size(); ++i) {
+        const auto& c = results.cases[i];
         nlohmann::json explanations = nlohmann::json::array();
         for (const auto& e : c.explanations) {
             nlohmann::json diffs = nlohmann::json::array();
@@ -326,10 +327,28 @@ nlohmann::json study_results_json(const Study& study, const StudyResults& result
                                     {"differences", diffs}});
         }
         auto scan = root_scan_json(c.scan);
-        cases.push_back({{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
-                         {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
-                         {"jumps", scan["jumps"]}, {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
-                         {"explanations", explanations}, {"curve", curve}});
+        std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
+                                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
+                                          {"jumps", scan["jumps"]},
+                                          {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
+                                          {"explanations", explanations}}
+                               .dump();
+        head.pop_back(); // the closing brace: the curve follows
+        w.text(i ? ",\n  " : "\n  ");
+        w.text(head);
+        const char* fields[] = {"k", "eps_rho", "eps_gradp", "neighbours"};
+        w.text(", \"curve\": {");
+        for (int f = 0; f < 4; ++f) {
+            w.print("{}\"{}\": [", f ? ", " : "", fields[f]);
+            for (std::size_t j = 0; j < c.curve.size(); ++j) {
+                if (j) w.text(",");
+                const auto& [k, v] = c.curve[j];
+                if (f == 3) w.print("{}", v.neighbours);
+                else number(f == 0 ? k : f == 1 ? v.eps_rho : v.eps_gradp);
+            }
+            w.text("]");
+        }
+        w.text("}}");
     }
     nlohmann::json comparison = nlohmann::json::array();
     for (const auto& r : results.comparison)
@@ -359,8 +378,8 @@ nlohmann::json study_results_json(const Study& study, const StudyResults& result
                           {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
                           {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
     }
-    return {{"sphkern_version", SPHKERN_VERSION}, {"study", study.document}, {"study_file", study.file},
-            {"cases", cases}, {"comparison", comparison}, {"surface", surface}, {"sweeps", sweeps}};
+    w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {}\n}}\n", comparison.dump(1),
+            surface.dump(1), sweeps.dump(1));
 }
 
 } // namespace sphkern

@@ -10,6 +10,7 @@
 #include "kernels/kernel_registry.hpp"
 #include "study/study.hpp"
 
+#include <ostream>
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -92,6 +93,7 @@ struct StudyResults {
 
 StudyResults run_study(const Study& study, KernelRegistry& registry);
 
-nlohmann::json study_results_json(const Study& study, const StudyResults& results);
+// results.json, streamed.
+void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results);
 
 } // namespace sphkern

@@ -117,9 +117,15 @@ OutputFolder::~OutputFolder()
 
 void OutputFolder::write(const std::string& name, const std::string& content)
 {
+    write(name, [&](std::ostream& out) { out << content; });
+}
+
+void OutputFolder::write(const std::string& name, const std::function<void(std::ostream&)>& writer)
+{
+    throw_if_interrupted();
     fs::path file = staging_ / name;
     std::ofstream out(file, std::ios::binary);
-    out << content;
+    writer(out);
     out.close();
     if (!out) throw Error(ExitCode::output, file.string() + ": cannot write (disk full?)");
 }

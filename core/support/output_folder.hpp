@@ -5,6 +5,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,7 @@ public:
     const std::filesystem::path& target() const { return target_; }
     const std::filesystem::path& staging() const { return staging_; }
     void write(const std::string& name, const std::string& content);
+    void write(const std::string& name, const std::function<void(std::ostream&)>& writer); // streamed
     void commit(); // moves the staged folder into place
 
 private:

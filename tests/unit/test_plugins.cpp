@@ -46,17 +46,22 @@ TEST_CASE("broken plugins: one line naming the file and the reason")
     ::unsetenv("SPHKERN_PLUGIN_TIMEOUT");
 }
 
-TEST_CASE("two plugins with one name are refused, naming both files")
+TEST_CASE("two plugins with one name are refused, naming both files, when the name is used or all are listed")
 {
-    try {
-        KernelRegistry::discover({broken("duplicate_name")});
-        FAIL("duplicate accepted");
-    } catch (const Error& e) {
-        std::string message = e.what();
-        CHECK(e.code() == ExitCode::plugin);
-        CHECK(message.find("two plugins are named \"cubic_bspline\"") != std::string::npos);
-        CHECK(message.find("cubic_bspline.so") != std::string::npos);
-        CHECK(message.find("duplicate_name.so") != std::string::npos);
+    auto registry = KernelRegistry::discover({broken("duplicate_name")});
+    CHECK(registry.find("liu_quartic")->name == "liu_quartic"); // other names still resolve
+    for (int listing = 0; listing < 2; ++listing) {
+        try {
+            if (listing) registry.plugins();
+            else registry.find("cubic_bspline");
+            FAIL("duplicate accepted");
+        } catch (const Error& e) {
+            std::string message = e.what();
+            CHECK(e.code() == ExitCode::plugin);
+            CHECK(message.find("two plugins are named \"cubic_bspline\"") != std::string::npos);
+            CHECK(message.find("cubic_bspline.so") != std::string::npos);
+            CHECK(message.find("duplicate_name.so") != std::string::npos);
+        }
     }
 }
 

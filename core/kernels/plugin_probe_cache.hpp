@@ -1,0 +1,46 @@
+// Remembers which plugin files passed the probe, so that a command does not fork a
+// child for every plugin every time. An entry holds the file's size, modification time,
+// inode and device: a changed file is probed again. The cache lives in
+// $XDG_CACHE_HOME/sphkern (or ~/.cache/sphkern); a missing, unreadable or corrupt
+// cache is ignored, and a cache that cannot be written is not an error.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+
+namespace sphkern {
+
+class PluginProbeCache {
+public:
+    // The process's cache, read on first use.
+    static PluginProbeCache& instance();
+
+    // The kernel name of `file` if it passed the probe and has not changed since.
+    std::optional<std::string> passed(const std::filesystem::path& file);
+    void record(const std::filesystem::path& file, const std::string& kernel_name);
+    void save(); // writes the file if something was recorded
+
+    // Where the cache is kept (empty if neither XDG_CACHE_HOME nor HOME is set).
+    static std::filesystem::path location();
+
+private:
+    PluginProbeCache();
+    struct Entry {
+        long long size = 0, mtime_ns = 0;
+        unsigned long long inode = 0, device = 0;
+        std::string name;
+        bool operator==(const Entry& o) const
+        {
+            return size == o.size && mtime_ns == o.mtime_ns && inode == o.inode && device == o.device;
+        }
+    };
+    static std::optional<Entry> describe(const std::filesystem::path& file);
+    std::mutex mutex_;
+    std::map<std::string, Entry> entries_;
+    bool changed_ = false;
+};
+
+} // namespace sphkern
