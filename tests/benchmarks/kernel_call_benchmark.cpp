@@ -1,11 +1,13 @@
 // The cost of calling a kernel through the plugin interface: the shipped cubic_bspline
 // plugin's batch and scalar functions against the same source compiled into this
-// program, where the compiler can inline it.
+// program, where the compiler can inline it. And the ceiling of the block engine's
+// fused sweep: its per-pair arithmetic on a run of pairs that stays in L1.
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -72,8 +74,58 @@ void plugin_scalar(benchmark::State& state)
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * run_length));
 }
 
+// One run of the fused sweep on data in L1 (distance, one sqrt and one division, the
+// plugin's W and W', both sums): the most pairs per second one core can do, with no
+// neighbour search and no memory traffic. BENCHMARKS.md divides the block engine's rate by it.
+SPHKERN_VECTOR_CLONES void pair_arithmetic(const double* __restrict dx, const double* __restrict dy,
+                                           const double* __restrict dz, double inv_k, double* __restrict q,
+                                           double* __restrict height, double* __restrict inv_r, std::size_t n)
+{
+    for (std::size_t p = 0; p < n; ++p) {
+        const double r = std::sqrt(dx[p] * dx[p] + dy[p] * dy[p] + dz[p] * dz[p]);
+        q[p] = r * inv_k;
+        inv_r[p] = 1.0 / r;
+        height[p] = -dz[p];
+    }
+}
+
+SPHKERN_VECTOR_CLONES void pair_sums(const double* __restrict w, const double* __restrict dw,
+                                     const double* __restrict height, const double* __restrict inv_r,
+                                     const double* __restrict depth, double* __restrict rho, double* __restrict grad,
+                                     std::size_t n)
+{
+    for (std::size_t p = 0; p < n; ++p) {
+        const bool inside = inv_r[p] >= 1.0 / 2.4;
+        rho[p] += inside ? w[p] : 0.0;
+        grad[p] += inside ? depth[p] * dw[p] * -height[p] * inv_r[p] : 0.0;
+    }
+}
+
+void fused_pair_ceiling(benchmark::State& state)
+{
+    const auto& kernel = plugin_kernel();
+    std::vector<double> dx(run_length), dy(run_length), dz(run_length), q(run_length), height(run_length),
+        inv_r(run_length), w(run_length), dw(run_length), depth(run_length, 1.0), rho(run_length), grad(run_length);
+    for (std::size_t i = 0; i < run_length; ++i) {
+        dx[i] = 0.5 + 1.5 * static_cast<double>(i) / run_length;
+        dy[i] = 0.3;
+        dz[i] = -0.2;
+    }
+    for (auto _ : state) {
+        pair_arithmetic(dx.data(), dy.data(), dz.data(), 1 / 1.2, q.data(), height.data(), inv_r.data(), run_length);
+        kernel.w_batch(q.data(), w.data(), run_length, 3, 1.2);
+        kernel.dw_batch(q.data(), dw.data(), run_length, 3, 1.2);
+        pair_sums(w.data(), dw.data(), height.data(), inv_r.data(), depth.data(), rho.data(), grad.data(), run_length);
+        benchmark::DoNotOptimize(rho.data());
+        benchmark::DoNotOptimize(grad.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * run_length));
+}
+
 } // namespace
 
+BENCHMARK(fused_pair_ceiling);
 BENCHMARK(inline_batch);
 BENCHMARK(plugin_batch);
 BENCHMARK(plugin_scalar);

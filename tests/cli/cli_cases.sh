@@ -380,6 +380,26 @@ expect 3 's_twice.json: /kernels/2: kernel "cubic_bspline" is listed twice \(als
 expect 3 'no\\nline.json: no such file' -- shells "$work/no
 line.json" --radius 2
 
+# The plugin probe cache: a file is probed once, again when it changes; a corrupt cache
+# is ignored and rewritten; a cache path that is not a regular file is left alone.
+export XDG_CACHE_HOME="$work/cache"
+cp "$broken/sign_flip.so" "$work/copy.so"
+probes() { "$sphkern" --log-level debug "$@" 2>&1 >/dev/null | grep -c 'debug: probing' || true; }
+check "cold cache probes every folder plugin" test "$(probes eps cubic_bspline fcc --k 1.2)" -ge 12
+check "warm cache probes nothing" test "$(probes eps cubic_bspline fcc --k 1.2)" -eq 0
+check "a new plugin file is probed" test "$(probes eps sign_flip fcc --k 1.2 --plugin "$work/copy.so")" -eq 1
+check "and then not again" test "$(probes eps sign_flip fcc --k 1.2 --plugin "$work/copy.so")" -eq 0
+cp "$broken/nan_band.so" "$work/copy.so"
+check "a changed plugin file is probed again" test "$(probes eps nan_band fcc --k 1.2 --plugin "$work/copy.so")" -eq 1
+expect 4 'kernel nan_band .*: W is not finite' -- eps nan_band fcc --k 1.4184397163120568 --plugin "$work/copy.so"
+printf '{"format": "sphkern' >"$work/cache/sphkern/plugin-probes.json"
+expect 0 '^$' -- eps cubic_bspline fcc --k 1.2
+check "a corrupt cache is rewritten" python3 -c "import json; json.load(open('$work/cache/sphkern/plugin-probes.json'))"
+rm "$work/cache/sphkern/plugin-probes.json" && ln -s /dev/null "$work/cache/sphkern/plugin-probes.json"
+expect 0 '^$' -- eps cubic_bspline fcc --k 1.2
+check "a cache path that is a link is not written through" test -L "$work/cache/sphkern/plugin-probes.json" -a -c /dev/null
+unset XDG_CACHE_HOME
+
 # stdout is sphkern's alone: a plugin's printf goes to stderr.
 "$sphkern" eps noisy fcc --k 1.2 --json --plugin "$broken/prints_and_ignores_signals.so" >"$work/noisy.json" 2>"$work/noisy.err"
 check "plugin output kept out of --json" python3 -c "import json; json.load(open('$work/noisy.json'))"
