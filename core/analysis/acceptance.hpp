@@ -1,9 +1,13 @@
-// The paper's acceptance condition (22): the k where both |eps_rho| and |eps_gradP|
-// are at most epsilon, and the best k for a kernel on a lattice.
+// The paper's acceptance condition (22): the k where |eps_rho| and the gradient error
+// are at most epsilon, and the best k for a kernel on a lattice. The gradient error is
+// |eps_gradP| along gravity (the paper's condition), or, for "every direction", the
+// largest |eigenvalue| of the gradient-error tensor; the lateral error may be added.
+// With several sites, the condition must hold at every one of them.
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
 
+#include <string>
 #include <vector>
 
 namespace sphkern {
@@ -14,11 +18,29 @@ struct KInterval {
 
 struct Acceptance {
     std::vector<KInterval> intervals; // where condition (22) holds
-    double best_k = 0;                // k minimising max(|eps_rho|, |eps_gradP|)
+    double best_k = 0;                // k minimising the largest error
     double best_error = 0;            // that minimum
     bool passes() const { return !intervals.empty(); }
 };
 
+enum class Direction { gravity, every };
+
+struct AcceptanceRule {
+    double epsilon = 0.01;
+    Direction direction = Direction::gravity;
+    bool lateral = false; // the lateral error counts too (along gravity, or its maximum over directions)
+};
+
+std::string direction_name(Direction direction); // "gravity" or "every direction"
+
+// The largest error the rule looks at, for one site at k.
+double acceptance_error(const HydrostaticErrors& site, double k, const AcceptanceRule& rule);
+
+// Condition (22) over every site in `sites` at once.
+Acceptance evaluate_acceptance(const std::vector<const HydrostaticErrors*>& sites, double k_min, double k_max,
+                               const AcceptanceRule& rule, int samples = 400);
+
+// One site, along gravity, no lateral error: the paper's condition.
 Acceptance evaluate_acceptance(const HydrostaticErrors& errors, double k_min, double k_max, double epsilon,
                                int samples = 400);
 

@@ -51,7 +51,7 @@ HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattic
 std::size_t HydrostaticErrors::active_terms(double k) const
 {
     if (mode_.continue_past_support) return terms_.size();
-    double reach = kernel_.support() * k;
+    double reach = kernel_.support() * k * (1 + support_edge);
     std::size_t n = 0;
     while (n < terms_.size() && terms_[n].radius <= reach) ++n;
     return n;
@@ -93,10 +93,39 @@ ErrorValues HydrostaticErrors::at_piece(double k, std::size_t active) const
     if (!std::isfinite(v.eps_rho) || !std::isfinite(v.eps_gradp) || !std::isfinite(v.lateral))
         fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the errors "
                                "are not finite numbers (expected k of order 1)", k));
-    double reach = kernel_.support() * k;
+    double reach = kernel_.support() * k * (1 + support_edge);
     for (const auto& s : all_shells_)
         if (s.radius <= reach) v.neighbours += s.count;
     return v;
+}
+
+GradientTensor HydrostaticErrors::tensor(double k) const
+{
+    const std::size_t active = active_terms(k);
+    const double scale = a_p_ / (std::pow(k, dim_) * k);
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    for (std::size_t s = 0; s < active; ++s) {
+        const Shell& t = terms_[s];
+        const double dw = kernel_.dw(t.radius / k, dim_, k);
+        sum += (t.radius * dw) * t.moment;
+        first += dw * t.first;
+    }
+    GradientTensor g;
+    g.tensor.setZero();
+    g.tensor.topLeftCorner(dim_, dim_) = -scale * sum.topLeftCorner(dim_, dim_) - Eigen::MatrixXd::Identity(dim_, dim_);
+    g.first_moment = scale * first;
+    if (!g.tensor.allFinite() || !g.first_moment.allFinite()) fail_non_finite(k, active);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(g.tensor.topLeftCorner(dim_, dim_).eval());
+    for (int i = 0; i < dim_; ++i) g.eigenvalues.push_back(solver.eigenvalues()[i]);
+    return g;
+}
+
+double GradientTensor::max_abs_eigenvalue() const
+{
+    double m = 0;
+    for (double e : eigenvalues) m = std::max(m, std::abs(e));
+    return m;
 }
 
 void HydrostaticErrors::fail_non_finite(double k, std::size_t active) const

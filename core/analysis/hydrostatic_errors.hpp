@@ -28,6 +28,19 @@ struct ErrorValues {
     int neighbours = 0; // N_H: lattice points within the support radius, excluding the particle
 };
 
+// The gradient-error tensor E = -a_p sum_j r_j W'(r_j) r_hat r_hat^T - I of a site
+// (D x D, in the top-left corner): along a unit direction e, eps_gradP(e) = e^T E e and
+// the lateral error is |(I - e e^T) E e|. Its eigenvalues bound eps_gradP over every
+// direction. The first moment m1 = a_p sum_j W'(r_j) r_hat_j (r_hat_j from the particle
+// towards neighbour j, times d^(D+1)) is zero where the site is a centre of inversion;
+// elsewhere the sum form of the gradient carries an error 2 P_i m1 that grows with depth.
+struct GradientTensor {
+    Eigen::Matrix3d tensor;
+    std::vector<double> eigenvalues; // ascending, D of them
+    Eigen::Vector3d first_moment;
+    double max_abs_eigenvalue() const;
+};
+
 class HydrostaticErrors {
 public:
     HydrostaticErrors(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
@@ -39,6 +52,9 @@ public:
     // continuation of one piece, used to bracket roots and to measure jumps.
     ErrorValues at_piece(double k, std::size_t active) const;
     std::size_t active_terms(double k) const;
+
+    // The gradient-error tensor and the first moment at k (method of the README, "every direction").
+    GradientTensor tensor(double k) const;
 
     // k in (k_min, k_max) where a summed shell enters the support (r = R k d).
     std::vector<double> breakpoints(double k_min, double k_max) const;

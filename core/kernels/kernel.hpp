@@ -11,6 +11,10 @@
 
 namespace sphkern {
 
+// A neighbour exactly on the support edge is inside: q <= R (1 + support_edge), so that
+// rounding (a shell at 3.0000000000000004 d) cannot drop it.
+inline constexpr double support_edge = 1e-12;
+
 class Kernel {
 public:
     // `values` overrides parameter defaults by name; unknown names and values out of
@@ -39,9 +43,10 @@ public:
         f_->dw_batch(q, out, n, dim, k, values_.data());
     }
 
-    // Truncated at R: zero for q > R.
-    double w_truncated(double q, int dim, double k) const { return q > support() ? 0.0 : w(q, dim, k); }
-    double dw_truncated(double q, int dim, double k) const { return q > support() ? 0.0 : dw(q, dim, k); }
+    // Truncated at R: zero for q > R (1 + support_edge).
+    bool inside(double q) const { return q <= support() * (1 + support_edge); }
+    double w_truncated(double q, int dim, double k) const { return inside(q) ? w(q, dim, k) : 0.0; }
+    double dw_truncated(double q, int dim, double k) const { return inside(q) ? dw(q, dim, k) : 0.0; }
 
     // "name" or "name(a=0.3)" for reports.
     std::string label() const;

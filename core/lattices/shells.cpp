@@ -45,6 +45,7 @@ std::vector<Shell> lattice_shells(const Lattice& lattice, int site, double r_max
         Eigen::Vector3d u = points[i] / r;
         shells.back().count += 1;
         shells.back().moment += u * u.transpose();
+        shells.back().first += u;
     }
     return shells;
 }

@@ -75,14 +75,15 @@ PY
 # Before and after: the same commands through BASELINE and through this build, one after
 # the other in this run (warm probe caches for both; the baseline has none).
 if [[ -n $baseline ]]; then
-    compare() { # compare NAME ARGS...: one hyperfine run of both executables
+    compare() { # compare NAME ARGS...: one hyperfine run of both executables; OUT is a folder of each's own
         local name=$1
         shift
-        hyperfine -N -w 3 -r 15 --export-json "$work/vs-$name.json" -n before "$baseline $*" -n after "$sphkern $*" >&2
+        hyperfine -N -w 3 -r 15 --export-json "$work/vs-$name.json" -n before "$baseline ${*//OUT/$work/before-$name}" \
+            -n after "$sphkern ${*//OUT/$work/after-$name}" >&2
     }
     compare roots roots cubic_bspline fcc
-    compare study run --no-plots --force -o "$work/vs-study"
-    compare study3d run lattices-3d --no-plots --force -o "$work/vs-study3d"
+    compare study run --no-plots --force -o OUT
+    compare study3d run lattices-3d --no-plots --force -o OUT
     compare block block cubic_bspline fcc --k 1.2 --size 100,100,100 --periodic
     compare kernels kernels
     # The first command after a plugin changes (an empty cache): every plugin is probed, in parallel.
