@@ -182,6 +182,14 @@ std::vector<std::pair<double, double>> solve(const Kernel& kernel, const DesignP
 
 } // namespace
 
+std::pair<double, double> default_parameter_range(const Kernel& kernel, const std::string& parameter)
+{
+    if (parameter == "alpha" && kernel.name().find('+') != std::string::npos) return {-1, 2};
+    for (const auto& p : kernel.definition().parameters)
+        if (p.name == parameter) return {p.min_value, p.max_value};
+    return {0, 1}; // an unknown parameter: design_kernel names the known ones
+}
+
 DesignResult design_kernel(const Kernel& kernel, const DesignProblem& p)
 {
     const auto& params = kernel.definition().parameters;

@@ -20,6 +20,9 @@ struct DesignProblem {
     double parameter_min = 0, parameter_max = 1;
 };
 
+// The parameter range when none is given: [-1, 2] for a blend's alpha, else the declared range.
+std::pair<double, double> default_parameter_range(const Kernel& kernel, const std::string& parameter);
+
 struct DesignSolution {
     double k = 0;
     double parameter = 0;

@@ -56,4 +56,76 @@ void check_k_interval(double k_min, double k_max, const std::string& what)
     }
 }
 
+nlohmann::json kernel_json(const KernelDefinition& p)
+{
+    nlohmann::json parameters = nlohmann::json::array();
+    for (const auto& q : p.parameters)
+        parameters.push_back({{"name", q.name}, {"description", q.description}, {"default", q.default_value},
+                              {"min", q.min_value}, {"max", q.max_value}});
+    return {{"name", p.name}, {"title", p.title}, {"support", p.support}, {"dimensions", p.dimensions},
+            {"parameters", parameters}, {"breakpoints", p.breakpoints}, {"separate_derivative", p.separate_derivative},
+            {"reference", p.reference}, {"file", p.source}};
+}
+
+nlohmann::json lattice_json(const Lattice& l)
+{
+    nlohmann::json coefficients = nlohmann::json::object();
+    for (const auto& c : l.volume_coefficients) coefficients[c.name] = c.value;
+    std::vector<double> gravity(l.gravity.data(), l.gravity.data() + l.dimension);
+    return {{"name", l.name},   {"title", l.title},
+            {"dimension", l.dimension}, {"sites", l.sites()},
+            {"volume_coefficients", coefficients}, {"gravity", gravity}, {"file", l.file}};
+}
+
+nlohmann::json shells_json(const Lattice& lattice, int site, double radius, const Eigen::Vector3d& e)
+{
+    auto shells = lattice_shells(lattice, site, radius);
+    nlohmann::json list = nlohmann::json::array();
+    int total = 0;
+    for (const auto& s : shells) {
+        total += s.count;
+        list.push_back({{"radius", s.radius}, {"radius_squared", s.radius * s.radius}, {"count", s.count},
+                        {"cumulative", total}, {"gravity_moment", s.directional_moment(e)}});
+    }
+    return {{"lattice", lattice.name}, {"site", site}, {"radius", radius}, {"shells", list}};
+}
+
+nlohmann::json roots_json(const Kernel& kernel, const Lattice& lattice, double a_p, double k_min, double k_max,
+                          const RootScan& scan, const Acceptance& acceptance, double epsilon)
+{
+    auto document = root_scan_json(scan);
+    document["kernel"] = kernel.label();
+    document["lattice"] = lattice.name;
+    document["a_p"] = a_p;
+    document["k_range"] = {k_min, k_max};
+    document["acceptance"] = acceptance_json(acceptance, epsilon);
+    return document;
+}
+
+nlohmann::json surface_document(const Kernel& kernel, const Lattice& lattice, double k, double a_p, GradientForm form,
+                                const SurfaceProfile& profile)
+{
+    auto document = surface_json(profile);
+    document["kernel"] = kernel.label();
+    document["lattice"] = lattice.name;
+    document["k"] = k;
+    document["a_p"] = a_p;
+    document["form"] = gradient_form_name(form);
+    return document;
+}
+
+nlohmann::json design_json(const Kernel& kernel, const DesignProblem& problem, const DesignResult& result)
+{
+    nlohmann::json solutions = nlohmann::json::array();
+    for (const auto& s : result.solutions)
+        solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
+                             {"eps_gradp", s.values.eps_gradp}, {"neighbours", s.values.neighbours},
+                             {"jacobian_condition", s.jacobian_condition},
+                             {"ap_plus_1_percent", {{"k_shift", s.k_shift}, {"parameter_shift", s.parameter_shift}}},
+                             {"non_negative", s.non_negative}, {"method", s.method}});
+    return {{"kernel", kernel.name()}, {"lattice", problem.lattice->name}, {"a_p", problem.a_p},
+            {"parameter", problem.parameter}, {"range", {problem.parameter_min, problem.parameter_max}},
+            {"k_range", {problem.k_min, problem.k_max}}, {"solutions", solutions}, {"note", result.note}};
+}
+
 } // namespace sphkern

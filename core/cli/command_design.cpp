@@ -1,5 +1,6 @@
 // `sphkern design`: the (k, parameter) where both bulk errors vanish together.
 #include "cli/command.hpp"
+#include "analysis/results_json.hpp"
 #include "support/results_output.hpp"
 
 #include "analysis/design.hpp"
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 namespace sphkern::cli {
 
@@ -51,32 +53,12 @@ Action add_design_command(CLI::App& app)
         problem.k_min = options->k_min;
         problem.k_max = options->k_max;
         problem.parameter = options->parameter;
-        if (options->range.size() == 2) {
-            problem.parameter_min = options->range[0];
-            problem.parameter_max = options->range[1];
-        } else if (options->parameter == "alpha" && kernel.name().find('+') != std::string::npos) {
-            problem.parameter_min = -1;
-            problem.parameter_max = 2;
-        } else {
-            for (const auto& p : kernel.definition().parameters)
-                if (p.name == options->parameter) {
-                    problem.parameter_min = p.min_value;
-                    problem.parameter_max = p.max_value;
-                }
-        }
+        std::tie(problem.parameter_min, problem.parameter_max) =
+            options->range.size() == 2 ? std::pair(options->range[0], options->range[1])
+                                       : default_parameter_range(kernel, options->parameter);
         auto result = design_kernel(kernel, problem);
         if (options->json) {
-            nlohmann::json solutions = nlohmann::json::array();
-            for (const auto& s : result.solutions)
-                solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
-                                     {"eps_gradp", s.values.eps_gradp}, {"neighbours", s.values.neighbours},
-                                     {"jacobian_condition", s.jacobian_condition},
-                                     {"ap_plus_1_percent", {{"k_shift", s.k_shift}, {"parameter_shift", s.parameter_shift}}},
-                                     {"non_negative", s.non_negative}, {"method", s.method}});
-            print_json({{"kernel", kernel.name()}, {"lattice", lattice.name}, {"a_p", problem.a_p},
-                        {"parameter", problem.parameter}, {"range", {problem.parameter_min, problem.parameter_max}},
-                        {"k_range", {problem.k_min, problem.k_max}}, {"solutions", solutions},
-                        {"note", result.note}});
+            print_json(design_json(kernel, problem, result));
             return 0;
         }
         fmt::print(results_file(), "{} on {}, a_p = {:.10g}: both errors zero for {} in [{}, {}], k in [{}, {}]\n", kernel.name(),

@@ -1,5 +1,6 @@
 // `sphkern kernels`: the kernels sphkern can find, with their metadata.
 #include "cli/command.hpp"
+#include "analysis/results_json.hpp"
 #include "support/results_output.hpp"
 
 #include <fmt/format.h>
@@ -18,16 +19,7 @@ Action add_kernels_command(CLI::App& app)
         auto registry = discover_kernels(*options);
         if (options->json) {
             nlohmann::json list = nlohmann::json::array();
-            for (const auto& p : registry.plugins()) {
-                nlohmann::json parameters = nlohmann::json::array();
-                for (const auto& q : p->parameters)
-                    parameters.push_back({{"name", q.name}, {"description", q.description},
-                                          {"default", q.default_value}, {"min", q.min_value}, {"max", q.max_value}});
-                list.push_back({{"name", p->name}, {"title", p->title}, {"support", p->support},
-                                {"dimensions", p->dimensions}, {"parameters", parameters},
-                                {"breakpoints", p->breakpoints}, {"separate_derivative", p->separate_derivative},
-                                {"reference", p->reference}, {"file", p->source}});
-            }
+            for (const auto& p : registry.plugins()) list.push_back(kernel_json(*p));
             print_json(list);
             return 0;
         }

@@ -1,5 +1,6 @@
 // `sphkern lattices`: the shipped lattices, their volume coefficients and gravity.
 #include "cli/command.hpp"
+#include "analysis/results_json.hpp"
 #include "support/results_output.hpp"
 
 #include <fmt/format.h>
@@ -7,16 +8,6 @@
 #include <memory>
 
 namespace sphkern::cli {
-
-nlohmann::json lattice_summary(const Lattice& l)
-{
-    nlohmann::json coefficients = nlohmann::json::object();
-    for (const auto& c : l.volume_coefficients) coefficients[c.name] = c.value;
-    std::vector<double> gravity(l.gravity.data(), l.gravity.data() + l.dimension);
-    return {{"name", l.name},   {"title", l.title},
-            {"dimension", l.dimension}, {"sites", l.sites()},
-            {"volume_coefficients", coefficients}, {"gravity", gravity}, {"file", l.file}};
-}
 
 Action add_lattices_command(CLI::App& app)
 {
@@ -27,7 +18,7 @@ Action add_lattices_command(CLI::App& app)
     return [options] {
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         nlohmann::json list = nlohmann::json::array();
-        for (const auto& name : shipped_lattice_names()) list.push_back(lattice_summary(load_lattice(name)));
+        for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
         if (options->json) {
             print_json(list);
             return 0;

@@ -32,12 +32,7 @@ void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& l
     auto scan = find_roots(errors, options.k_min, options.k_max);
     auto acceptance = evaluate_acceptance(errors, options.k_min, options.k_max, options.epsilon);
     if (options.json) {
-        auto document = root_scan_json(scan);
-        document["kernel"] = kernel.label();
-        document["lattice"] = lattice.name;
-        document["a_p"] = a_p;
-        document["k_range"] = {options.k_min, options.k_max};
-        document["acceptance"] = acceptance_json(acceptance, options.epsilon);
+        auto document = roots_json(kernel, lattice, a_p, options.k_min, options.k_max, scan, acceptance, options.epsilon);
         if (collected) collected->push_back(document);
         else print_json(document);
         return;

@@ -1,5 +1,6 @@
 // `sphkern shells`: the neighbour shells of a lattice site.
 #include "cli/command.hpp"
+#include "analysis/results_json.hpp"
 #include "support/results_output.hpp"
 
 #include "lattices/shells.hpp"
@@ -32,19 +33,11 @@ Action add_shells_command(CLI::App& app)
         Eigen::Vector3d e = options->gravity.empty()
                                 ? lattice.gravity
                                 : parse_direction(options->gravity, lattice.dimension, "--gravity");
-        auto shells = lattice_shells(lattice, options->site, options->radius);
         if (options->json) {
-            nlohmann::json list = nlohmann::json::array();
-            int total = 0;
-            for (const auto& s : shells) {
-                total += s.count;
-                list.push_back({{"radius", s.radius}, {"radius_squared", s.radius * s.radius}, {"count", s.count},
-                                {"cumulative", total}, {"gravity_moment", s.directional_moment(e)}});
-            }
-            print_json({{"lattice", lattice.name}, {"site", options->site}, {"radius", options->radius},
-                        {"shells", list}});
+            print_json(shells_json(lattice, options->site, options->radius, e));
             return 0;
         }
+        auto shells = lattice_shells(lattice, options->site, options->radius);
         fmt::print(results_file(), "{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total", "sum (e.r^)^2");
         int total = 0;
         for (const auto& s : shells) {

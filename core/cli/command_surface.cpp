@@ -44,13 +44,7 @@ Action add_surface_command(CLI::App& app)
         auto profile = surface_profile(kernel, lattice, options->evaluation.site, a_p,
                                        gravity_of(lattice, options->evaluation), options->k, options->layers, form);
         if (options->json) {
-            auto document = surface_json(profile);
-            document["kernel"] = kernel.label();
-            document["lattice"] = lattice.name;
-            document["k"] = options->k;
-            document["a_p"] = a_p;
-            document["form"] = gradient_form_name(form);
-            print_json(document);
+            print_json(surface_document(kernel, lattice, options->k, a_p, form, profile));
             return 0;
         }
         fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(), lattice.name,
