@@ -17,20 +17,6 @@ using namespace sphkern;
 
 namespace {
 
-// An error is one line, whatever a file name or a JSON key holds: control characters escaped.
-std::string one_line(const std::string& message)
-{
-    std::string line;
-    for (unsigned char c : message) {
-        if (c == '\n') line += "\\n";
-        else if (c == '\r') line += "\\r";
-        else if (c == '\t') line += "\\t";
-        else if (c < 0x20 || c == 0x7f) line += fmt::format("\\x{:02x}", c);
-        else line += static_cast<char>(c);
-    }
-    return line;
-}
-
 int fail(const std::string& message, ExitCode code)
 {
     std::fflush(results_file());

@@ -32,8 +32,7 @@ bool looks_like_path(const std::string& spec, const std::string& extension)
 
 std::vector<fs::path> kernel_plugin_folders()
 {
-    std::vector<fs::path> candidates = {executable_folder() / "plugins",
-                                        executable_folder().parent_path() / "lib" / "sphkern" / "plugins"};
+    std::vector<fs::path> candidates = shipped_plugin_folders();
     if (const char* env = std::getenv("SPHKERN_PLUGIN_PATH")) {
         std::stringstream list(env);
         std::string folder;

@@ -28,4 +28,19 @@ private:
 
 [[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
 
+// An error is one line, whatever a file name or a JSON key holds: control characters escaped.
+inline std::string one_line(const std::string& message)
+{
+    static const char hex[] = "0123456789abcdef";
+    std::string line;
+    for (unsigned char c : message) {
+        if (c == '\n') line += "\\n";
+        else if (c == '\r') line += "\\r";
+        else if (c == '\t') line += "\\t";
+        else if (c < 0x20 || c == 0x7f) line += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+        else line += static_cast<char>(c);
+    }
+    return line;
+}
+
 } // namespace sphkern

@@ -1,0 +1,309 @@
+// `import sphkern`: the core library for Python. Every function returns what the
+// command line's --json prints (as Python objects), or numpy arrays where the input is
+// an array; bad input raises ValueError and a broken plugin RuntimeError, with the
+// command line's one-line message.
+#include "analysis/acceptance.hpp"
+#include "analysis/design.hpp"
+#include "analysis/hydrostatic_errors.hpp"
+#include "analysis/results_json.hpp"
+#include "analysis/roots.hpp"
+#include "analysis/surface_profile.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "lattices/lattice.hpp"
+#include "support/error.hpp"
+#include "support/install_paths.hpp"
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <dlfcn.h>
+
+#include <cmath>
+#include <mutex>
+
+namespace py = pybind11;
+using namespace sphkern;
+
+#ifndef SPHKERN_PYTHON_TO_PREFIX
+#define SPHKERN_PYTHON_TO_PREFIX "../../.."
+#endif
+
+namespace {
+
+std::mutex registry_mutex; // kernels are resolved lazily: one resolution at a time
+
+KernelRegistry& registry()
+{
+    static KernelRegistry r = KernelRegistry::discover({});
+    return r;
+}
+
+py::object to_python(const nlohmann::json& document)
+{
+    return py::module_::import("json").attr("loads")(document.dump());
+}
+
+std::map<std::string, double> parameters_of(const py::object& params)
+{
+    std::map<std::string, double> values;
+    if (params.is_none()) return values;
+    if (!py::isinstance<py::dict>(params)) fail_input("params: expected a dict of parameter names to numbers");
+    for (const auto& [name, value] : params.cast<py::dict>()) {
+        auto key = py::str(name).cast<std::string>();
+        try {
+            values[key] = value.cast<double>();
+        } catch (const py::cast_error&) {
+            fail_input("params: \"" + key + "\" must be a number");
+        }
+    }
+    return values;
+}
+
+Kernel kernel_of(const std::string& spec, const py::object& params)
+{
+    auto values = parameters_of(params);
+    std::lock_guard lock(registry_mutex);
+    return Kernel(registry().find(spec), values);
+}
+
+double ap_of(const Lattice& lattice, const py::object& a_p)
+{
+    if (py::isinstance<py::str>(a_p)) return lattice.volume_coefficient(a_p.cast<std::string>());
+    double v;
+    try {
+        v = a_p.cast<double>();
+    } catch (const py::cast_error&) {
+        fail_input("a_p: expected a name the lattice offers or a positive number");
+    }
+    return lattice.volume_coefficient(fmt::format("{}", v)); // the command line's checks
+}
+
+Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
+{
+    if (gravity.is_none()) return lattice.gravity;
+    std::string text;
+    try {
+        for (const auto& c : gravity.cast<std::vector<double>>()) text += (text.empty() ? "" : ",") + fmt::format("{}", c);
+    } catch (const py::cast_error&) {
+        fail_input("gravity: expected a sequence of " + std::to_string(lattice.dimension) + " numbers");
+    }
+    return parse_direction(text, lattice.dimension, "gravity");
+}
+
+void check_k(double k, const char* what)
+{
+    if (!std::isfinite(k) || k <= 0 || k > 100)
+        throw Error(ExitCode::usage, fmt::format("{} = {} is not allowed, expected a number in (0, 100]", what, k));
+}
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const DoubleArray& k,
+             const py::object& a_p, const py::object& gravity, int site, const py::object& params)
+{
+    auto lattice = load_lattice(lattice_spec);
+    auto kernel = kernel_of(kernel_spec, params);
+    const double ap = ap_of(lattice, a_p);
+    const auto g = gravity_of(lattice, gravity);
+    const std::size_t n = static_cast<std::size_t>(k.size());
+    const double* ks = k.data();
+    if (n == 0) fail_input("k: an empty array");
+    double k_max = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        check_k(ks[i], "k");
+        k_max = std::max(k_max, ks[i]);
+    }
+    std::vector<py::ssize_t> shape(k.shape(), k.shape() + k.ndim());
+    py::array_t<double> rho(shape), gradp(shape), lateral(shape);
+    py::array_t<long long> nh(shape);
+    double *r = rho.mutable_data(), *gp = gradp.mutable_data(), *l = lateral.mutable_data();
+    long long* h = nh.mutable_data();
+    {
+        py::gil_scoped_release unlocked; // one C++ loop over the whole array
+        HydrostaticErrors errors(kernel, lattice, site, ap, g, k_max);
+        for (std::size_t i = 0; i < n; ++i) {
+            auto v = errors.at(ks[i]);
+            r[i] = v.eps_rho;
+            gp[i] = v.eps_gradp;
+            l[i] = v.lateral;
+            h[i] = v.neighbours;
+        }
+    }
+    py::dict out;
+    out["eps_rho"] = rho;
+    out["eps_gradp"] = gradp;
+    out["eps_lateral"] = lateral;
+    out["nh"] = nh;
+    return out;
+}
+
+// A kernel's functions, vectorised over q.
+class KernelHandle {
+public:
+    explicit KernelHandle(Kernel kernel) : kernel_(std::move(kernel)) {}
+    std::string name() const { return kernel_.name(); }
+    double support() const { return kernel_.support(); }
+    py::object info() const { return to_python(kernel_json(kernel_.definition())); }
+    py::array_t<double> w(const DoubleArray& q, int dim, double k) const { return apply(q, dim, k, false); }
+    py::array_t<double> dw(const DoubleArray& q, int dim, double k) const { return apply(q, dim, k, true); }
+
+private:
+    py::array_t<double> apply(const DoubleArray& q, int dim, double k, bool derivative) const
+    {
+        check_k(k, "k");
+        kernel_.require_dimension(dim, std::to_string(dim) + "D space");
+        std::vector<py::ssize_t> shape(q.shape(), q.shape() + q.ndim());
+        py::array_t<double> out(shape);
+        const std::size_t n = static_cast<std::size_t>(q.size());
+        for (std::size_t i = 0; i < n; ++i)
+            if (!std::isfinite(q.data()[i]) || q.data()[i] < 0) fail_input(fmt::format("q = {} is not allowed, expected q >= 0", q.data()[i]));
+        {
+            py::gil_scoped_release unlocked;
+            if (derivative) kernel_.dw_batch(q.data(), out.mutable_data(), n, dim, k);
+            else kernel_.w_batch(q.data(), out.mutable_data(), n, dim, k);
+        }
+        return out;
+    }
+    Kernel kernel_;
+};
+
+// The module's own folder: its build tree's plugins are beside it, an installed one's under its prefix.
+std::filesystem::path module_folder()
+{
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&module_folder), &info) == 0 || !info.dli_fname) return {};
+    return std::filesystem::absolute(info.dli_fname).parent_path();
+}
+
+} // namespace
+
+PYBIND11_MODULE(sphkern, m)
+{
+    m.doc() = "sphkern: accuracy of SPH smoothing kernels on regular particle lattices";
+    m.attr("__version__") = SPHKERN_VERSION;
+    const auto folder = module_folder();
+    set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
+
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const Error& e) {
+            const std::string message = one_line(e.what());
+            if (e.code() == ExitCode::plugin) PyErr_SetString(PyExc_RuntimeError, message.c_str());
+            else if (e.code() == ExitCode::interrupted) PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
+            else PyErr_SetString(PyExc_ValueError, message.c_str());
+        }
+    });
+
+    m.def("kernels", [] {
+        std::lock_guard lock(registry_mutex);
+        nlohmann::json list = nlohmann::json::array();
+        for (const auto& p : registry().plugins()) list.push_back(kernel_json(*p));
+        return to_python(list);
+    }, "Every kernel, as `sphkern kernels --json` lists them.");
+    m.def("lattices", [] {
+        nlohmann::json list = nlohmann::json::array();
+        for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
+        return to_python(list);
+    }, "The shipped lattices, as `sphkern lattices --json` lists them.");
+    m.def("load_plugin", [](const std::string& path) {
+        std::lock_guard lock(registry_mutex);
+        return to_python(kernel_json(*registry().find(path)));
+    }, py::arg("path"), "Loads a plugin library or an expression kernel file, probed as the command line probes it.");
+    m.def("load_lattice", [](const std::string& path) { return to_python(lattice_json(read_lattice(path))); },
+          py::arg("path"), "Reads and validates a lattice file.");
+    m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
+          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
+          "eps_rho, eps_gradp, eps_lateral and nh (numpy arrays shaped like k) of a kernel on a lattice.");
+    m.def("roots",
+          [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
+             const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
+             bool details) {
+              check_k_interval(kmin, kmax, "kmin/kmax");
+              if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) fail_input("epsilon must be in (0, 1)");
+              auto lattice = load_lattice(lattice_spec);
+              auto kernel = kernel_of(kernel_spec, params);
+              const double ap = ap_of(lattice, a_p);
+              const auto g = gravity_of(lattice, gravity);
+              nlohmann::json document;
+              {
+                  py::gil_scoped_release unlocked;
+                  HydrostaticErrors errors(kernel, lattice, site, ap, g, kmax);
+                  document = roots_json(kernel, lattice, ap, kmin, kmax, find_roots(errors, kmin, kmax),
+                                        evaluate_acceptance(errors, kmin, kmax, epsilon), epsilon);
+              }
+              return to_python(details ? document : document["roots"]);
+          },
+          py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
+          py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+          py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("details") = false,
+          "The roots in k of eps_rho and eps_gradp (a list of dicts); details=True gives the whole document of "
+          "`sphkern roots --json`: roots, jumps and the condition (22) intervals.");
+    m.def("shells",
+          [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
+              auto lattice = load_lattice(lattice_spec);
+              return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
+          },
+          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
+          "Neighbour shells of a site, as `sphkern shells --json`.");
+    m.def("surface",
+          [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
+             int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
+              check_k(k, "k");
+              auto lattice = load_lattice(lattice_spec);
+              auto kernel = kernel_of(kernel_spec, params);
+              const double ap = ap_of(lattice, a_p);
+              const auto f = parse_gradient_form(form);
+              auto profile = surface_profile(kernel, lattice, site, ap, gravity_of(lattice, gravity), k, layers, f);
+              return to_python(surface_document(kernel, lattice, k, ap, f, profile));
+          },
+          py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
+          py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.");
+    m.def("design",
+          [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
+             const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
+             int site, const py::object& params) {
+              check_k_interval(kmin, kmax, "kmin/kmax");
+              auto lattice = load_lattice(lattice_spec);
+              auto kernel = kernel_of(kernel_spec, params);
+              DesignProblem problem;
+              problem.lattice = &lattice;
+              problem.site = site;
+              problem.a_p = ap_of(lattice, a_p);
+              problem.gravity = gravity_of(lattice, gravity);
+              problem.k_min = kmin;
+              problem.k_max = kmax;
+              problem.parameter = param;
+              if (range.is_none()) {
+                  std::tie(problem.parameter_min, problem.parameter_max) = default_parameter_range(kernel, param);
+              } else {
+                  auto r = range.cast<std::vector<double>>();
+                  if (r.size() != 2) fail_input("range: expected two numbers [min, max]");
+                  problem.parameter_min = r[0];
+                  problem.parameter_max = r[1];
+              }
+              DesignResult result;
+              {
+                  py::gil_scoped_release unlocked;
+                  result = design_kernel(kernel, problem);
+              }
+              return to_python(design_json(kernel, problem, result));
+          },
+          py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
+          py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
+          py::arg("site") = 0, py::arg("params") = py::none(),
+          "Every (k, parameter) where both errors vanish, as `sphkern design --json`.");
+
+    py::class_<KernelHandle>(m, "Kernel", "A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q.")
+        .def_property_readonly("name", &KernelHandle::name)
+        .def_property_readonly("support", &KernelHandle::support)
+        .def_property_readonly("info", &KernelHandle::info)
+        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0)
+        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0);
+    m.def("kernel", [](const std::string& spec, const py::object& params) { return KernelHandle(kernel_of(spec, params)); },
+          py::arg("name"), py::arg("params") = py::none(), "A kernel by name, plugin file or blend A+B.");
+}

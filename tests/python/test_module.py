@@ -1,0 +1,181 @@
+"""The Python module against the command line: the same values (to 1e-13), the same
+errors (as ValueError or RuntimeError with the command line's one-line message), and
+arrays of any shape. Run by ctest with PYTHONPATH=<build>/python and SPHKERN_CLI set."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import sphkern
+
+CLI = os.environ["SPHKERN_CLI"]
+BROKEN = os.environ["SPHKERN_BROKEN_PLUGINS"]
+KERNELS = ["cubic_bspline", "wendland_c4", "liu_quartic", "super_gaussian"]
+LATTICES = [entry["name"] for entry in sphkern.lattices()]
+
+
+def cli_json(*args):
+    done = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True, check=True)
+    return json.loads(done.stdout)
+
+
+def cli_error(*args):
+    done = subprocess.run([CLI, *args], capture_output=True, text=True)
+    assert done.returncode != 0
+    line = done.stderr.strip()
+    assert line.startswith("sphkern: error: ")
+    return done.returncode, line[len("sphkern: error: "):]
+
+
+def close(a, b):
+    """Equal numbers to 1e-13 (relative to 1 + |b|) inside any JSON-like structure."""
+    if isinstance(b, dict):
+        assert a.keys() == b.keys()
+        for key in b:
+            close(a[key], b[key])
+    elif isinstance(b, list):
+        assert len(a) == len(b)
+        for x, y in zip(a, b):
+            close(x, y)
+    elif isinstance(b, float) or isinstance(a, float):
+        assert abs(a - b) <= 1e-13 * (1 + abs(b)), (a, b)
+    else:
+        assert a == b
+
+
+def test_every_shipped_lattice_and_four_kernels_match_the_command_line():
+    assert len(LATTICES) == 7
+    compared = 0
+    for lattice in LATTICES:
+        for kernel in KERNELS:
+            ks = np.array([0.8, 1.0, 1.2])
+            got = sphkern.eps(kernel, lattice, ks)
+            for i, k in enumerate(ks):
+                want = cli_json("eps", kernel, lattice, "--k", repr(float(k)))
+                close(float(got["eps_rho"][i]), want["eps_rho"])
+                close(float(got["eps_gradp"][i]), want["eps_gradp"])
+                close(float(got["eps_lateral"][i]), want["lateral"])
+                assert int(got["nh"][i]) == want["neighbours"]
+                compared += 1
+    assert compared == 7 * 4 * 3
+
+
+def test_options_mirror_the_command_line():
+    got = sphkern.eps("wendland_c2_shape", "hcp", 1.1, a_p="ball", gravity=[1, 0, 0], site=1, params={"beta": 1.5})
+    want = cli_json("eps", "wendland_c2_shape", "hcp", "--k", "1.1", "--ap", "ball", "--gravity", "1,0,0", "--site", "1",
+                    "--set", "beta=1.5")
+    close(float(got["eps_rho"]), want["eps_rho"])
+    close(float(got["eps_gradp"]), want["eps_gradp"])
+    got = sphkern.eps("cubic_bspline", "triangular", 1.0, a_p=0.9)
+    close(float(got["eps_rho"]), cli_json("eps", "cubic_bspline", "triangular", "--k", "1", "--ap", "0.9")["eps_rho"])
+
+
+def test_documents_equal_the_command_lines():
+    close(sphkern.kernels(), cli_json("kernels"))
+    close(sphkern.lattices(), cli_json("lattices"))
+    close(sphkern.roots("cubic_bspline", "triangular", details=True), cli_json("roots", "cubic_bspline", "triangular"))
+    close(sphkern.roots("morris_quintic", "fcc", kmin=0.8, kmax=1.3),
+          cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")["roots"])
+    close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
+    close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
+          cli_json("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "monaghan", "--layers", "6"))
+    close(sphkern.design("cubic_bspline+desbrun_spiky", "triangular", "alpha"),
+          cli_json("design", "cubic_bspline+desbrun_spiky", "triangular", "--param", "alpha"))
+
+
+def test_kernel_functions_are_vectorised_and_equal_the_plugin():
+    kernel = sphkern.kernel("cubic_bspline")
+    q = np.linspace(0, 2.5, 11).reshape(11, 1)
+    w = kernel.w(q, 3)
+    assert w.shape == (11, 1)
+    sigma = 3 / (2 * np.pi)
+    qq = q[:, 0]
+    expected = sigma * np.where(qq <= 1, 2 / 3 - qq**2 + 0.5 * qq**3, np.where(qq <= 2, (2 - qq) ** 3 / 6, 0))
+    assert np.allclose(w[:, 0], expected, rtol=1e-14, atol=1e-16)
+    assert kernel.dw(0.5, 3).shape == ()
+    assert kernel.name == "cubic_bspline" and kernel.support == 2.0 and kernel.info["dimensions"] == [1, 2, 3]
+
+
+def test_a_million_k_values_in_one_call_keep_their_shape():
+    ks = np.linspace(0.75, 1.25, 10**6)
+    got = sphkern.eps("cubic_bspline", "fcc", ks)
+    assert all(got[key].shape == (10**6,) for key in ("eps_rho", "eps_gradp", "eps_lateral", "nh"))
+    # Spot checks against single evaluations.
+    for i in (0, 123457, 10**6 - 1):
+        close(float(got["eps_rho"][i]), float(sphkern.eps("cubic_bspline", "fcc", float(ks[i]))["eps_rho"]))
+    grid = sphkern.eps("cubic_bspline", "fcc", ks.reshape(1000, 1000))
+    assert grid["eps_gradp"].shape == (1000, 1000)
+    assert np.array_equal(grid["eps_gradp"].ravel(), got["eps_gradp"])
+
+
+@pytest.mark.parametrize("call, args", [
+    (lambda: sphkern.eps("cubic", "fcc", 1.0), ("eps", "cubic", "fcc", "--k", "1")),
+    (lambda: sphkern.eps("cubic_bspline", "fccc", 1.0), ("eps", "cubic_bspline", "fccc", "--k", "1")),
+    (lambda: sphkern.eps("composite", "fcc", 1.0), ("eps", "composite", "fcc", "--k", "1")),
+    (lambda: sphkern.eps("cubic_bspline", "fcc", 1.0, a_p="hexagon"), ("eps", "cubic_bspline", "fcc", "--k", "1", "--ap", "hexagon")),
+    (lambda: sphkern.eps("cubic_bspline", "fcc", 1.0, params={"alpha": 1}),
+     ("eps", "cubic_bspline", "fcc", "--k", "1", "--set", "alpha=1")),
+    (lambda: sphkern.eps("cubic_bspline", "fcc", 1.0, gravity=[0, 0, 0]),
+     ("eps", "cubic_bspline", "fcc", "--k", "1", "--gravity", "0,0,0")),
+    (lambda: sphkern.shells("fcc", 1e5), ("shells", "fcc", "--radius", "1e5")),
+    (lambda: sphkern.surface("cubic_bspline", "fcc", 1.2, form="up"),
+     ("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "up")),
+])
+def test_bad_input_raises_value_error_with_the_command_lines_message(call, args):
+    code, message = cli_error(*args)
+    assert code == 3
+    with pytest.raises(ValueError) as raised:
+        call()
+    # The same line, but for the option's name: the module's keyword is "gravity", the command line's "--gravity".
+    assert str(raised.value) == message.replace("--gravity", "gravity")
+
+
+def test_bad_numbers_and_types_raise_instead_of_crashing():
+    for k in (-1.0, 0.0, float("nan"), float("inf"), 1e300):
+        with pytest.raises(ValueError, match="is not allowed"):
+            sphkern.eps("cubic_bspline", "fcc", k)
+    with pytest.raises(ValueError, match="empty array"):
+        sphkern.eps("cubic_bspline", "fcc", np.array([]))
+    with pytest.raises(ValueError, match="params"):
+        sphkern.eps("cubic_bspline", "fcc", 1.0, params=[1, 2])
+    with pytest.raises(ValueError, match="params"):
+        sphkern.eps("wendland_c2_shape", "fcc", 1.0, params={"beta": "big"})
+    with pytest.raises(ValueError, match="gravity"):
+        sphkern.eps("cubic_bspline", "fcc", 1.0, gravity=[0, 1])
+    with pytest.raises(ValueError, match="sites 0 to 0"):
+        sphkern.eps("cubic_bspline", "fcc", 1.0, site=3)
+    with pytest.raises(ValueError, match="q = -1 is not allowed"):
+        sphkern.kernel("cubic_bspline").w(np.array([0.5, -1.0]), 3)
+    with pytest.raises(ValueError, match="not on the 1D lattice"):
+        sphkern.kernel("wendland_c4").w(0.5, 1)
+    with pytest.raises(ValueError, match="no such file"):
+        sphkern.load_lattice("/nonexistent/lattice.json")
+    with pytest.raises(TypeError):
+        sphkern.eps(None, "fcc", 1.0)
+
+
+def test_plugins_are_probed_as_the_command_line_probes_them(tmp_path):
+    with pytest.raises(RuntimeError, match="crash_in_w.so: plugin crashed with signal 11"):
+        sphkern.load_plugin(os.path.join(BROKEN, "crash_in_w.so"))
+    with pytest.raises(RuntimeError, match="W is not finite at q = 0.70"):
+        sphkern.load_plugin(os.path.join(BROKEN, "nan_band.so"))
+        sphkern.eps(os.path.join(BROKEN, "nan_band.so"), "fcc", 1 / 0.705)
+    expression = tmp_path / "x_cubic.json"
+    expression.write_text(json.dumps({
+        "name": "x_cubic", "support": 2, "dimensions": [3],
+        "w": "q < 1 ? 1 - 1.5*q^2 + 0.75*q^3 : (q < 2 ? 0.25*(2-q)^3 : 0)"}))
+    assert sphkern.load_plugin(str(expression))["name"] == "x_cubic"
+    close(float(sphkern.eps(str(expression), "fcc", 1.2)["eps_rho"]),
+          float(sphkern.eps("cubic_bspline", "fcc", 1.2)["eps_rho"]))
+
+
+def test_a_lattice_file_loads_and_is_usable(tmp_path):
+    honeycomb = tmp_path / "honeycomb.json"
+    honeycomb.write_text(json.dumps({"name": "honeycomb", "dimension": 2, "basis": [[1.7320508075688772, 0],
+                                     [0.8660254037844386, 1.5]], "motif": [[0, 0], [0.3333333333333333, 0.3333333333333333]]}))
+    described = sphkern.load_lattice(str(honeycomb))
+    assert described["sites"] == 2 and described["dimension"] == 2
+    close(float(sphkern.eps("cubic_bspline", str(honeycomb), 1.1)["eps_rho"]),
+          cli_json("eps", "cubic_bspline", str(honeycomb), "--k", "1.1")["eps_rho"])
