@@ -23,7 +23,10 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
         throw Error(ExitCode::output, name + ": " + (S_ISDIR(st.st_mode) ? "is a folder, expected a file name"
                                                                           : "is not a regular file (a link, device or pipe); refusing to replace it"));
     if (target.filename().empty()) throw Error(ExitCode::output, name + ": expected a file name");
-    std::string pattern = (target.parent_path() / ("." + target.filename().string() + ".partial-XXXXXX")).string();
+    std::string name_pattern = ".";
+    name_pattern += target.filename().string();
+    name_pattern += ".partial-XXXXXX";
+    std::string pattern = (target.parent_path() / name_pattern).string();
     int fd = ::mkstemp(pattern.data());
     if (fd < 0) throw Error(ExitCode::output, name + ": cannot be written: " + std::strerror(errno));
     const fs::path partial = pattern;

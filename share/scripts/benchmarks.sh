@@ -72,6 +72,11 @@ PY
 /usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" >"$work/pysph-serial.json"
 /usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" --openmp >"$work/pysph-openmp.json"
 
+# The Python module: eps over 10^6 k in one call, against the command line and numpy.
+if [[ -d "$PWD/$build/python" ]]; then
+    PYTHONPATH="$PWD/$build/python" /usr/bin/python3 share/scripts/python_benchmark.py --sphkern "$sphkern" >"$work/python.json"
+fi
+
 # Before and after: the same commands through BASELINE and through this build, one after
 # the other in this run (warm probe caches for both; the baseline has none).
 if [[ -n $baseline ]]; then
@@ -167,6 +172,28 @@ for name, label in (("serial", "serial"), ("openmp", "OpenMP, 2 threads")):
           f"{r['max_relative_density_difference']:.1e} |")
 PY
     echo
+    if [[ -f "$work/python.json" ]]; then
+        echo "## The Python module: eps over 10^6 values of k"
+        echo
+        echo "\`PYTHONPATH=$build/python /usr/bin/python3 share/scripts/python_benchmark.py\`: cubic_bspline on fcc, k from 0.75"
+        echo "to 1.25. The module takes the whole numpy array in one call (the GIL released); the command line takes one"
+        echo "process per k (timed on a sample, its total is that time per call times 10^6); numpy sums W over the explicit"
+        echo "lattice points for every k (vectorised, in chunks)."
+        echo
+        python3 - "$work" <<'PY'
+import json, sys
+r = json.load(open(f"{sys.argv[1]}/python.json"))
+m = r["module_seconds"]
+print("| way | seconds for 10^6 k | relative to the module |\n|---|---:|---:|")
+print(f"| `sphkern.eps(kernel, lattice, ks)` | {m:.3f} | 1 |")
+print(f"| numpy brute force over {r['numpy_lattice_points']} lattice points | {r['numpy_seconds']:.2f} | {r['numpy_seconds'] / m:.0f} |")
+print(f"| `sphkern eps --json`, one process per k ({r['cli_seconds_per_call'] * 1e3:.1f} ms per call, "
+      f"{r['cli_sample']} timed) | {r['cli_seconds_for_all']:.0f} | {r['cli_seconds_for_all'] / m:.2g} |")
+print(f"\nThe module and numpy agree to {r['max_difference_module_numpy']:.1e} in eps_rho over all 10^6 values; the "
+      f"module and the command line to {r['max_difference_module_cli']:.1e} on the sample.")
+PY
+        echo
+    fi
     echo "## The plugin call cost (target: the batch interface within 10% of inline code) and the pair ceiling"
     echo
     echo "\`$build/tests/kernel_call_benchmark --benchmark_repetitions=10\` (Google Benchmark): the cubic_bspline plugin's"
