@@ -36,7 +36,7 @@ std::vector<Shell> select_shells(const std::vector<Shell>& all, const std::vecto
 
 HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
                                      const Eigen::Vector3d& gravity, double k_max, const EvaluationMode& mode)
-    : kernel_(kernel), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.stableNormalized()), mode_(mode)
+    : kernel_(kernel), site_(site), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.stableNormalized()), mode_(mode)
 {
     kernel.require_dimension(lattice.dimension, lattice.name);
     require_usable_kernel(kernel, dim_, k_max);

@@ -62,6 +62,7 @@ public:
     const std::vector<Shell>& terms() const { return terms_; }
     const std::vector<Shell>& lattice_shells_in_reach() const { return all_shells_; }
     const Kernel& kernel() const { return kernel_; }
+    int site() const { return site_; }
     int dimension() const { return dim_; }
     double a_p() const { return a_p_; }
     bool continues_past_support() const { return mode_.continue_past_support; }
@@ -73,6 +74,7 @@ private:
     [[noreturn]] void fail_non_finite(double k, std::size_t active) const;
 
     Kernel kernel_;
+    int site_;
     int dim_;
     double a_p_;
     Eigen::Vector3d gravity_;

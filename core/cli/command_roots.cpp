@@ -4,6 +4,8 @@
 
 #include "analysis/acceptance.hpp"
 #include "analysis/roots.hpp"
+#include "analysis/site_errors.hpp"
+#include "analysis/site_roots.hpp"
 #include "analysis/results_json.hpp"
 #include "support/error.hpp"
 
@@ -19,37 +21,65 @@ namespace {
 struct RootsOptions : CommonOptions {
     std::string kernel, lattice;
     double k_min = 0.75, k_max = 1.25, epsilon = 0.01;
+    bool lateral = false;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
 };
 
-// Roots of one kernel on one lattice: printed, or appended to `collected` as JSON.
+std::string acceptance_text(const Acceptance& a)
+{
+    std::string s = a.passes() ? "passes for k in" : "fails";
+    for (const auto& i : a.intervals) s += fmt::format(" [{:.6f}, {:.6f}]", i.from, i.to);
+    return s + fmt::format("; best k = {:.6f} with max |eps| = {:.3g}", a.best_k, a.best_error);
+}
+
+void print_scan(const RootScan& scan)
+{
+    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
+    for (const auto& r : scan.roots)
+        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k,
+                   r.values.eps_rho, r.values.eps_gradp, r.values.neighbours, r.support_radius);
+    if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
+    for (const auto& j : scan.jumps)
+        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind,
+                   j.left, j.right);
+}
+
+// Roots of one kernel on one lattice, for every site, with condition (22) along gravity
+// and for every direction: printed, or appended to `collected` as JSON.
 void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& lattice, nlohmann::json* collected)
 {
     double a_p = lattice.volume_coefficient(options.evaluation.ap);
-    HydrostaticErrors errors(kernel, lattice, options.evaluation.site, a_p, gravity_of(lattice, options.evaluation),
-                             options.k_max, evaluation_mode(options.evaluation));
-    auto scan = find_roots(errors, options.k_min, options.k_max);
-    auto acceptance = evaluate_acceptance(errors, options.k_min, options.k_max, options.epsilon);
+    check_sites(lattice, {options.evaluation.site}, "--site");
+    auto sites = errors_per_site(kernel, lattice, every_site(lattice), a_p, gravity_of(lattice, options.evaluation),
+                                 options.k_max, evaluation_mode(options.evaluation));
+    std::vector<const HydrostaticErrors*> all;
+    for (const auto& s : sites) all.push_back(s.get());
+    const auto analysis = analyse_roots(all, options.k_min, options.k_max, options.epsilon, options.lateral);
+    const auto& chosen = analysis.sites[static_cast<std::size_t>(options.evaluation.site)];
     if (options.json) {
-        auto document = roots_json(kernel, lattice, a_p, options.k_min, options.k_max, scan, acceptance, options.epsilon);
+        auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
+                                       options.lateral, options.evaluation.site, analysis);
         if (collected) collected->push_back(document);
         else print_json(document);
         return;
     }
-    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]\n", kernel.label(), lattice.name, a_p, options.k_min,
-               options.k_max);
-    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
-    for (const auto& r : scan.roots)
-        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k, r.values.eps_rho,
-                   r.values.eps_gradp, r.values.neighbours, r.support_radius);
-    if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
-    for (const auto& j : scan.jumps)
-        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind, j.left,
-                   j.right);
-    fmt::print(results_file(), "condition (22), epsilon = {}: {}", options.epsilon, acceptance.passes() ? "passes for k in" : "fails");
-    for (const auto& i : acceptance.intervals) fmt::print(results_file(), " [{:.6f}, {:.6f}]", i.from, i.to);
-    fmt::print(results_file(), "; best k = {:.6f} with max |eps| = {:.3g}\n", acceptance.best_k, acceptance.best_error);
+    const std::string lateral = options.lateral ? ", lateral error included" : "";
+    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}\n", kernel.label(), lattice.name, a_p,
+               options.k_min, options.k_max, sites.size() > 1 ? fmt::format(", site {}", options.evaluation.site) : "");
+    print_scan(chosen.scan);
+    fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", options.epsilon, lateral, acceptance_text(chosen.along));
+    fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
+    if (sites.size() == 1) return;
+    for (const auto& s : analysis.sites) {
+        if (s.site == options.evaluation.site) continue;
+        fmt::print(results_file(), "site {}:\n", s.site);
+        print_scan(s.scan);
+        fmt::print(results_file(), "condition (22): {}\n  for every direction: {}\n", acceptance_text(s.along),
+                   acceptance_text(s.every));
+    }
+    fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
+               acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
 }
 
 } // namespace
@@ -63,6 +93,7 @@ Action add_roots_command(CLI::App& app)
     command->add_option("--kmin", options->k_min, "Smallest k")->capture_default_str();
     command->add_option("--kmax", options->k_max, "Largest k")->capture_default_str();
     command->add_option("--epsilon", options->epsilon, "Tolerance of condition (22)")->capture_default_str();
+    command->add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);

@@ -123,7 +123,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     study.document = std::move(document);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots", "surface", "sweeps"});
+                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral"});
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
@@ -187,6 +187,17 @@ Study parse_study(nlohmann::json document, const fs::path& file)
         study.epsilon = e->number();
         if (study.epsilon <= 0 || study.epsilon >= 1) e->error("expected a tolerance in (0, 1)");
     }
+    if (auto sites = root.find("sites")) {
+        if (sites->is_string()) {
+            if (sites->string() != "all") sites->error("expected \"all\" or an array of site indices");
+        } else {
+            const std::size_t n = sites->expect_array(1, 64);
+            std::vector<int> list;
+            for (std::size_t i = 0; i < n; ++i) list.push_back(static_cast<int>((*sites)[i].integer_in(0, 63)));
+            study.sites = list;
+        }
+    }
+    if (auto lateral = root.find("lateral")) study.lateral = lateral->boolean();
     if (auto modes = root.find("modes")) {
         modes->expect_array(1, 20);
         for (std::size_t i = 0; i < modes->size(); ++i) {

@@ -67,6 +67,8 @@ struct Study {
     double k_min = 0.75, k_max = 1.25;
     int samples = 501;
     double epsilon = 0.01;
+    std::optional<std::vector<int>> sites; // "sites": indices into every lattice's motif; absent or "all": every site
+    bool lateral = false;                  // the lateral gradient error counts in condition (22)
     std::vector<StudyMode> modes;
     std::optional<std::filesystem::path> compare_with; // a reference table (share/reference)
     bool plots = true;

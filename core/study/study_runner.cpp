@@ -1,6 +1,7 @@
 #include "study/study_runner.hpp"
 
 #include "analysis/results_json.hpp"
+#include "analysis/site_errors.hpp"
 #include "lattices/lattice.hpp"
 #include "support/chunked_writer.hpp"
 #include "support/error.hpp"
@@ -183,9 +184,17 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                 throw Error(e.code(), study.file + ": /volume_coefficients/" + std::to_string(i) + ": " + e.what());
             }
         }
+        const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
+        try {
+            check_sites(lattice, sites, "sites");
+        } catch (const Error& e) {
+            throw Error(e.code(), study.file + ": /sites: " + e.what());
+        }
+        const AcceptanceRule along{study.epsilon, Direction::gravity, study.lateral};
+        const AcceptanceRule every{study.epsilon, Direction::every, study.lateral};
         for (const auto& kernel : kernels)
             for (std::size_t a = 0; a < aps.size(); ++a) {
-                HydrostaticErrors automatic(kernel, lattice, 0, aps[a], lattice.gravity, study.k_max);
+                HydrostaticErrors automatic(kernel, lattice, sites[0], aps[a], lattice.gravity, study.k_max);
                 RootScan automatic_scan = find_roots(automatic, study.k_min, study.k_max);
                 for (const auto& mode : study.modes) {
                     StudyCase c;
@@ -198,16 +207,25 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                     c.support = kernel.support();
                     c.ap_name = study.volume_coefficients[a];
                     c.a_p = aps[a];
-                    HydrostaticErrors errors(kernel, lattice, 0, aps[a], lattice.gravity, study.k_max,
-                                             mode_for(mode, kernel, study));
+                    c.sites = sites;
+                    auto errors = errors_per_site(kernel, lattice, sites, aps[a], lattice.gravity, study.k_max,
+                                                  mode_for(mode, kernel, study));
                     for (int i = 0; i < study.samples; ++i) {
                         if (i % 64 == 0) throw_if_interrupted();
                         double k = study.k_min + (study.k_max - study.k_min) * i / (study.samples - 1);
-                        c.curve.emplace_back(k, errors.at(k));
+                        c.curve.emplace_back(k, errors[0]->at(k));
                     }
-                    c.scan = c.automatic ? automatic_scan : find_roots(errors, study.k_min, study.k_max);
-                    c.acceptance = evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon);
-                    if (!c.automatic) c.explanations = explain(errors, automatic, c.scan, automatic_scan);
+                    c.scan = c.automatic ? automatic_scan : find_roots(*errors[0], study.k_min, study.k_max);
+                    std::vector<const HydrostaticErrors*> all;
+                    for (const auto& e : errors) all.push_back(e.get());
+                    c.acceptance = evaluate_acceptance(all, study.k_min, study.k_max, along);
+                    c.acceptance_every = evaluate_acceptance(all, study.k_min, study.k_max, every);
+                    if (errors.size() > 1)
+                        for (std::size_t i = 0; i < errors.size(); ++i)
+                            c.per_site.push_back({sites[i], i == 0 ? c.scan : find_roots(*errors[i], study.k_min, study.k_max),
+                                                  evaluate_acceptance({errors[i].get()}, study.k_min, study.k_max, along),
+                                                  evaluate_acceptance({errors[i].get()}, study.k_min, study.k_max, every)});
+                    if (!c.automatic) c.explanations = explain(*errors[0], automatic, c.scan, automatic_scan);
                     results.cases.push_back(std::move(c));
                     progress.step(kernel.name() + " on " + lattice.name);
                     throw_if_interrupted();
@@ -302,6 +320,19 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     return results;
 }
 
+nlohmann::json per_site_json(const StudyCase& c, double epsilon)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& p : c.per_site) {
+        auto entry = root_scan_json(p.scan);
+        entry["site"] = p.site;
+        entry["acceptance"] = acceptance_json(p.along, epsilon);
+        entry["acceptance_every_direction"] = acceptance_json(p.every, epsilon);
+        list.push_back(entry);
+    }
+    return list;
+}
+
 // Streamed: every part but the curves is a small JSON value; the curves, most of the
 // document, are written number by number without building a JSON tree for them.
 void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results)
@@ -330,7 +361,10 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
         std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
                                           {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
                                           {"jumps", scan["jumps"]},
+                                          {"sites", c.sites},
                                           {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
+                                          {"acceptance_every_direction", acceptance_json(c.acceptance_every, study.epsilon)},
+                                          {"per_site", per_site_json(c, study.epsilon)},
                                           {"explanations", explanations}}
                                .dump();
         head.pop_back(); // the closing brace: the curve follows

@@ -46,8 +46,16 @@ struct StudyCase {
     std::string ap_name;
     double a_p = 0;
     std::vector<std::pair<double, ErrorValues>> curve;
-    RootScan scan;
-    Acceptance acceptance;
+    RootScan scan;                      // of the first site studied (the curve's site too)
+    std::vector<int> sites;             // the sites studied
+    Acceptance acceptance;              // condition (22) along gravity, at every site studied at once
+    Acceptance acceptance_every;        // the same for every direction (the gradient-error tensor)
+    struct Site {
+        int site;
+        RootScan scan;
+        Acceptance along, every;
+    };
+    std::vector<Site> per_site;         // each site on its own (lattices with several sites)
     std::vector<RootExplanation> explanations; // non-automatic modes only
 };
 

@@ -43,7 +43,7 @@ inline BruteForce brute_force_errors(const Kernel& kernel, const Lattice& lattic
                 for (int c = (dim == 3 ? -n : 0); c <= (dim == 3 ? n : 0); ++c) {
                     Eigen::Vector3d x = lattice.basis * (Eigen::Vector3d(a, b, c) + site - lattice.motif[0]);
                     double r = x.norm();
-                    if (r < 1e-12 || r / k > R) continue;
+                    if (r < 1e-12 || r / k > R * (1 + 1e-12)) continue; // the support edge is inside
                     density += kernel.w(r / k, dim, k);
                     gradient += std::pow(e.dot(x), 2) / r * kernel.dw(r / k, dim, k);
                 }
