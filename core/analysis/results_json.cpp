@@ -37,14 +37,30 @@ nlohmann::json acceptance_json(const Acceptance& a, double epsilon)
 
 nlohmann::json surface_json(const SurfaceProfile& profile)
 {
+    auto sites_json = [](const std::vector<SiteLayerErrors>& sites) {
+        nlohmann::json list = nlohmann::json::array();
+        for (const auto& v : sites)
+            list.push_back({{"site", v.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp},
+                            {"neighbours", v.neighbours}});
+        return list;
+    };
     nlohmann::json layers = nlohmann::json::array();
     for (const auto& l : profile.layers)
         layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
-                          {"neighbours", l.neighbours}});
+                          {"neighbours", l.neighbours}, {"sites", sites_json(l.sites)}});
+    nlohmann::json terminations = nlohmann::json::array();
+    for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
+        terminations.push_back({{"index", t}, {"name", profile.planes.name(static_cast<int>(t))},
+                                {"sites", profile.planes.types[t].sites}, {"offset", profile.planes.types[t].offset}});
+    nlohmann::json first = nlohmann::json::array();
+    for (const auto& m : profile.first_moments) first.push_back({m.x(), m.y(), m.z()});
     return {{"spacing", profile.spacing},
+            {"termination", profile.termination},
+            {"terminations", terminations},
             {"layers", layers},
             {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
-                      {"neighbours", profile.bulk.neighbours}}}};
+                      {"neighbours", profile.bulk.neighbours}, {"sites", sites_json(profile.bulk.sites)}}},
+            {"first_moments", first}};
 }
 
 void check_k_interval(double k_min, double k_max, const std::string& what)

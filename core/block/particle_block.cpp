@@ -196,7 +196,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     BlockResult result;
     result.dimension = dim;
     result.gravity = block_gravity(lattice);
-    result.spacing = layer_spacing(lattice, 0, result.gravity);
+    result.spacing = surface_planes(lattice, result.gravity).period;
     result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const int sites = lattice.sites();
     const long long size[3] = {options.cells[0], options.cells[1], options.cells[2]};
@@ -223,6 +223,24 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
             index[dim - 1] = static_cast<double>(corner);
             top = std::max(top, -result.gravity.dot(lattice.basis * (index + m)));
         }
+    // The layers are the occupied planes, top first, ranked by depth (several sites may share
+    // one, and planes need not be equally spaced): the plane of (vertical cell, site).
+    const long long vertical = size[dim - 1];
+    std::vector<std::pair<double, std::size_t>> plane_depths; // depth, vertical cell * sites + site
+    for (long long c = 0; c < vertical; ++c)
+        for (int s = 0; s < sites; ++s) {
+            Eigen::Vector3d index = Eigen::Vector3d::Zero();
+            index[dim - 1] = static_cast<double>(c);
+            plane_depths.emplace_back(top + result.gravity.dot(lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)])),
+                                      static_cast<std::size_t>(c * sites + s));
+        }
+    std::sort(plane_depths.begin(), plane_depths.end());
+    std::vector<int> plane_of(plane_depths.size());
+    int rank = 0;
+    for (std::size_t i = 0; i < plane_depths.size(); ++i) {
+        if (i > 0 && plane_depths[i].first - plane_depths[i - 1].first > 1e-9) ++rank;
+        plane_of[plane_depths[i].second] = rank;
+    }
     ParallelFor fill;
     fill.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
@@ -234,7 +252,8 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
             y[i] = p.y();
             z[i] = p.z();
             depth[i] = top + result.gravity.dot(p);
-            result.layer[i] = static_cast<int>(std::lround(depth[i] / result.spacing));
+            const long long vertical_cell = dim == 3 ? cc / (n1 * n2) : (cc / n1) % n2;
+            result.layer[i] = plane_of[static_cast<std::size_t>(vertical_cell) * static_cast<std::size_t>(sites) + s];
             result.eps_rho[i] = 0; // touched here, in this thread, rather than in the sweep
             result.eps_gradp[i] = 0;
         }

@@ -19,6 +19,7 @@ Action add_surface_command(CLI::App& app)
         std::string kernel, lattice, form = "sum";
         double k = 0;
         int layers = 4;
+        int termination = -1;
         std::vector<std::string> sets;
         EvaluationOptions evaluation;
     };
@@ -32,6 +33,8 @@ Action add_surface_command(CLI::App& app)
         ->capture_default_str();
     command->add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
     command->add_option("--site", options->evaluation.site, "Motif site on the top layer")->capture_default_str();
+    command->add_option("--termination", options->termination,
+                        "Which plane type is on top (an index from the listed terminations; default: --site's)");
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
@@ -42,18 +45,41 @@ Action add_surface_command(CLI::App& app)
         auto kernel = make_kernel(registry, options->kernel, options->sets);
         double a_p = lattice.volume_coefficient(options->evaluation.ap);
         auto profile = surface_profile(kernel, lattice, options->evaluation.site, a_p,
-                                       gravity_of(lattice, options->evaluation), options->k, options->layers, form);
+                                       gravity_of(lattice, options->evaluation), options->k, options->layers, form,
+                                       options->termination < 0 ? std::nullopt : std::optional<int>(options->termination));
         if (options->json) {
             print_json(surface_document(kernel, lattice, options->k, a_p, form, profile));
             return 0;
         }
-        fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(), lattice.name,
-                   options->k, a_p, gradient_form_name(form), profile.spacing);
-        fmt::print(results_file(), "{:>5} {:>10} {:>6} {:>14} {:>14}\n", "layer", "depth/d", "N", "eps_rho", "eps_gradP");
+        const bool one_site = lattice.sites() == 1;
+        if (one_site)
+            fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(),
+                       lattice.name, options->k, a_p, gradient_form_name(form), profile.spacing);
+        else {
+            std::string names;
+            for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
+                names += fmt::format("{}{}: {}", t ? ", " : "", t, profile.planes.name(static_cast<int>(t)));
+            fmt::print(results_file(),
+                       "{} on {}, k = {}, a_p = {:.10g}, form {}; the occupied planes repeat every {:.6f} d; "
+                       "terminations {}; on top: {}\n",
+                       kernel.label(), lattice.name, options->k, a_p, gradient_form_name(form), profile.spacing, names,
+                       profile.termination);
+        }
+        fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site",
+                   "N", "eps_rho", "eps_gradP");
         for (const auto& l : profile.layers)
-            fmt::print(results_file(), "{:>5} {:>10.5f} {:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth, l.neighbours, l.eps_rho, l.eps_gradp);
-        fmt::print(results_file(), "{:>5} {:>10} {:>6} {:>14.8f} {:>14.8f}\n", "bulk", "", profile.bulk.neighbours, profile.bulk.eps_rho,
-                   profile.bulk.eps_gradp);
+            for (const auto& v : l.sites)
+                fmt::print(results_file(), "{:>5} {:>10.5f} {}{:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth,
+                           one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
+        for (const auto& v : profile.bulk.sites)
+            fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14.8f} {:>14.8f}\n", "bulk", "",
+                       one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
+        for (std::size_t s = 0; s < profile.first_moments.size(); ++s)
+            if (profile.first_moments[s].norm() > 1e-9)
+                fmt::print(results_file(),
+                           "site {} is not a centre of inversion (first moment {:.3g}): with the sum form its gradient "
+                           "error grows with depth by 2 P_i m1; the bulk row leaves that term out\n",
+                           s, profile.first_moments[s].norm());
         return 0;
     };
 }

@@ -35,6 +35,14 @@ std::pair<Eigen::Matrix3d, Eigen::Matrix3d> reduce_basis(Eigen::Matrix3d basis, 
 void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
                             int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit)
 {
+    for_each_lattice_point_of_site(basis, dimension, motif, site, r_max,
+                                   [&](const Eigen::Vector3d& x, int) { visit(x); });
+}
+
+void for_each_lattice_point_of_site(const Eigen::Matrix3d& basis, int dimension,
+                                    const std::vector<Eigen::Vector3d>& motif, int site, double r_max,
+                                    const std::function<void(const Eigen::Vector3d&, int)>& visit)
+{
     // |n_i| <= |row_i(reduced^-1)| r_max + 1 bounds the box that can hold points within r_max.
     const auto [reduced, change] = reduce_basis(basis, dimension);
     const Eigen::Matrix3d to_reduced = change.inverse(); // fractional coordinates in the reduced basis
@@ -56,8 +64,8 @@ void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const s
     }
     const double r2 = r_max * r_max * (1 + 1e-12);
     const Eigen::Vector3d& origin = motif[static_cast<std::size_t>(site)];
-    for (const auto& m : motif) {
-        Eigen::Vector3d offset = to_reduced * (m - origin);
+    for (std::size_t t = 0; t < motif.size(); ++t) {
+        Eigen::Vector3d offset = to_reduced * (motif[t] - origin);
         for (int i = 0; i < dimension; ++i) offset[i] -= std::round(offset[i]); // nearest image of the site
         for (long long a = -extent[0]; a <= extent[0]; ++a) {
             throw_if_interrupted();
@@ -67,7 +75,7 @@ void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const s
                     Eigen::Vector3d x = reduced * f;
                     double d2 = x.squaredNorm();
                     if (d2 > r2 || d2 < 1e-18) continue;
-                    visit(x);
+                    visit(x, static_cast<int>(t));
                 }
         }
     }

@@ -19,6 +19,11 @@ inline constexpr std::size_t max_lattice_points = 5'000'000;
 void for_each_lattice_point(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif,
                             int site, double r_max, const std::function<void(const Eigen::Vector3d&)>& visit);
 
+// The same, telling which motif site each point belongs to: visit(x, t).
+void for_each_lattice_point_of_site(const Eigen::Matrix3d& basis, int dimension,
+                                    const std::vector<Eigen::Vector3d>& motif, int site, double r_max,
+                                    const std::function<void(const Eigen::Vector3d&, int)>& visit);
+
 // Pairwise Gauss reduction: the same lattice spanned by shorter, more orthogonal
 // vectors. Returns the reduced basis and the unimodular M with reduced = basis M.
 std::pair<Eigen::Matrix3d, Eigen::Matrix3d> reduce_basis(Eigen::Matrix3d basis, int dimension);

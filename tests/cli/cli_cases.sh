@@ -3,7 +3,7 @@
 # error line matching a pattern, and never a crash.
 # Usage: cli_cases.sh SPHKERN BROKEN_PLUGIN_DIR DATA_DIR
 set -u
-sphkern=$(realpath "$1") broken=$(realpath "$2")
+sphkern=$(realpath "$1") broken=$(realpath "$2") data=$(realpath "$3")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SPHKERN_PLUGIN_TIMEOUT=2
@@ -109,7 +109,7 @@ expect 2 '--set x: expected NAME=VALUE' -- eps cubic_bspline fcc --k 1 --set x
 expect 3 'has no parameter "alpha"' -- eps cubic_bspline fcc --k 1 --set alpha=1
 
 # Surface profiles and particle blocks.
-expect 3 'not normal to a family of equally spaced planes' -- surface cubic_bspline triangular --k 1.2 --gravity 1.4142,-1
+expect 3 'not normal to a family of lattice planes' -- surface cubic_bspline triangular --k 1.2 --gravity 1.4142,-1
 expect 3 'gradient form "up" is unknown' -- surface cubic_bspline fcc --k 1.2 --form up
 expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size 0,10,10
 expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size -4,10,10
@@ -379,6 +379,22 @@ expect 3 's_twice.json: /kernels/2: kernel "cubic_bspline" is listed twice \(als
 # A newline in a file name stays on the one error line.
 expect 3 'no\\nline.json: no such file' -- shells "$work/no
 line.json" --radius 2
+
+# Several sites: indices out of range, empty lists, terminations that do not exist.
+honeycomb="$data/lattices/honeycomb.json"
+expect 3 '--site: site 2 does not exist; lattice honeycomb has sites 0 to 1' -- roots cubic_bspline "$honeycomb" --site 2
+expect 3 'site 7 does not exist; lattice honeycomb has sites 0 to 1' -- surface cubic_bspline "$honeycomb" --k 1.2 --site 7
+expect 3 'termination 2 does not exist; lattice honeycomb has 2 plane type\(s\) normal to this gravity, 0 to 1' -- \
+    surface cubic_bspline "$honeycomb" --k 1.2 --termination 2
+study s_sites '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["'"$honeycomb"'"], "sites": [0, 5], "plots": false}'
+expect 3 's_sites.json: /sites: sites: site 5 does not exist; lattice honeycomb has sites 0 to 1' -- run "$work/s_sites.json" -o "$work/out_sites"
+study s_nosites '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sites": [], "plots": false}'
+expect 3 's_nosites.json: /sites: empty array, expected at least 1' -- run "$work/s_nosites.json" -o "$work/out_sites"
+study s_badsites '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sites": "some", "plots": false}'
+expect 3 's_badsites.json: /sites: expected "all" or an array of site indices' -- run "$work/s_badsites.json" -o "$work/out_sites"
+study s_allsites '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic"], "lattices": ["'"$honeycomb"'", "fcc"], "sites": "all", "lateral": true, "plots": false}'
+expect 0 'cases in' -- run "$work/s_allsites.json" -o "$work/out_allsites"
+check "a study reports every site and both verdicts" grep -q 'Each site on its own (along gravity / every direction)' "$work/out_allsites/report.md"
 
 # The plugin probe cache: a file is probed once, again when it changes; a corrupt cache
 # is ignored and rewritten; a cache path that is not a regular file is left alone.

@@ -18,70 +18,154 @@ struct LayerValue {
     double eps_rho, eps_gradp;
 };
 
-// Layer n of a half-space below a free surface normal to e, summed point by point
-// over a large box: densities first (needed by the Monaghan form), then the gradient.
-LayerValue brute_force_layer(const Kernel& kernel, const Lattice& lattice, double k, double a_p,
-                             const Eigen::Vector3d& e, double spacing, int n, GradientForm form)
+const std::string data = SPHKERN_SOURCE_DIR "/tests/data/lattices/";
+
+Lattice test_lattice(const std::string& name)
 {
-    const int dim = lattice.dimension, box = 10;
-    const double R = kernel.support(), kd = std::pow(k, dim);
-    std::vector<Eigen::Vector3d> points;
-    for (int a = -box; a <= box; ++a)
-        for (int b = -box; b <= box; ++b)
-            for (int c = (dim == 3 ? -box : 0); c <= (dim == 3 ? box : 0); ++c)
-                for (const auto& m : lattice.motif)
-                    points.push_back(lattice.basis * (Eigen::Vector3d(a, b, c) + m - lattice.motif[0]));
-    // Density of a particle at depth m * spacing (its neighbours: depth >= 0).
-    auto density = [&](int m) {
-        double sum = 0;
-        for (const auto& x : points) {
-            double r = x.norm();
-            if (r / k <= R && m * spacing + e.dot(x) > -1e-9) sum += kernel.w(r / k, dim, k);
-        }
-        return a_p * sum / kd;
-    };
-    const double depth_i = n * spacing, rho_i = density(n);
-    double gradient = 0;
-    for (const auto& x : points) {
-        double r = x.norm();
-        double depth_j = depth_i + e.dot(x);
-        if (r < 1e-12 || r / k > R || depth_j < -1e-9) continue;
-        double weight = form == GradientForm::sum          ? depth_i + depth_j
-                        : form == GradientForm::difference ? depth_j - depth_i
-                                                           : rho_i * (depth_i / (rho_i * rho_i) +
-                                                                      depth_j / std::pow(density(static_cast<int>(std::lround(depth_j / spacing))), 2));
-        gradient += weight * kernel.dw(r / k, dim, k) * (-e.dot(x)) / r;
-    }
-    return {rho_i - 1, a_p * gradient / (kd * k) - 1};
+    for (const auto& shipped : shipped_lattice_names())
+        if (shipped == name) return load_lattice(name);
+    return load_lattice(data + name + ".json");
 }
+
+// A particle of motif site s at `depth` below a free surface normal to e, summed point by
+// point over a large box: a lattice point x exists if its depth, depth + e . x, is >= 0.
+// Densities first (needed by the Monaghan form), then the gradient.
+struct HalfSpace {
+    const Kernel& kernel;
+    const Lattice& lattice;
+    double k, a_p;
+    Eigen::Vector3d e;
+    static constexpr int box = 10;
+
+    template <class Visit>
+    void neighbours(int s, const Visit& visit) const
+    {
+        const int dim = lattice.dimension;
+        for (int a = -box; a <= box; ++a)
+            for (int b = -box; b <= box; ++b)
+                for (int c = (dim == 3 ? -box : 0); c <= (dim == 3 ? box : 0); ++c)
+                    for (std::size_t t = 0; t < lattice.motif.size(); ++t) {
+                        Eigen::Vector3d x = lattice.basis * (Eigen::Vector3d(a, b, c) + lattice.motif[t] - lattice.motif[s]);
+                        double r = x.norm();
+                        if (r < 1e-12 || r / k > kernel.support() * (1 + 1e-12)) continue;
+                        visit(x, r, static_cast<int>(t));
+                    }
+    }
+    double density(int s, double depth) const
+    {
+        const int dim = lattice.dimension;
+        double sum = kernel.w(0, dim, k);
+        neighbours(s, [&](const Eigen::Vector3d& x, double r, int) {
+            if (depth + e.dot(x) > -1e-9) sum += kernel.w(r / k, dim, k);
+        });
+        return a_p * sum / std::pow(k, dim);
+    }
+    LayerValue at(int s, double depth_i, GradientForm form) const
+    {
+        const int dim = lattice.dimension;
+        const double rho_i = density(s, depth_i);
+        double gradient = 0;
+        neighbours(s, [&](const Eigen::Vector3d& x, double r, int t) {
+            double depth_j = depth_i + e.dot(x);
+            if (depth_j < -1e-9) return;
+            double weight = form == GradientForm::sum          ? depth_i + depth_j
+                            : form == GradientForm::difference ? depth_j - depth_i
+                                                               : rho_i * (depth_i / (rho_i * rho_i) +
+                                                                          depth_j / std::pow(density(t, depth_j), 2));
+            gradient += weight * kernel.dw(r / k, dim, k) * (-e.dot(x)) / r;
+        });
+        return {rho_i - 1, a_p * gradient / (std::pow(k, dim) * k) - 1};
+    }
+    // The depths of the occupied planes below a top plane holding site s, point by point.
+    std::vector<double> plane_depths(int s, double down_to) const
+    {
+        std::vector<double> depths;
+        const int dim = lattice.dimension, n = 2 * box;
+        for (int a = -n; a <= n; ++a)
+            for (int b = -n; b <= n; ++b)
+                for (int c = (dim == 3 ? -n : 0); c <= (dim == 3 ? n : 0); ++c)
+                    for (const auto& m : lattice.motif) {
+                        double d = e.dot(lattice.basis * (Eigen::Vector3d(a, b, c) + m - lattice.motif[s]));
+                        if (d > -1e-9 && d <= down_to) depths.push_back(std::max(d, 0.0));
+                    }
+        std::sort(depths.begin(), depths.end());
+        depths.erase(std::unique(depths.begin(), depths.end(), [](double x, double y) { return y - x <= 1e-9; }),
+                     depths.end());
+        return depths;
+    }
+};
 
 } // namespace
 
-TEST_CASE("surface profiles equal a half-space brute-force sum, every form, 2D and 3D")
+TEST_CASE("surface profiles equal a half-space brute-force sum, every form, every site, 2D and 3D")
 {
-    for (const char* lattice_name : {"triangular", "square", "fcc", "hcp"})
+    struct Case {
+        const char* lattice;
+        Eigen::Vector3d gravity;
+    };
+    const Case cases[] = {{"triangular", {0, -1, 0}}, {"square", {0, -1, 0}},  {"fcc", {0, 0, -1}},
+                          {"hcp", {0, 0, -1}},        {"hcp", {-1, 0, 0}},     {"honeycomb", {0, -1, 0}},
+                          {"honeycomb", {-1, 0, 0}},  {"kagome", {0, -1, 0}},  {"lieb", {0, -1, 0}},
+                          {"skewed_pair", {0, -1, 0}}};
+    int multi_site_planes = 0;
+    for (const auto& c : cases)
         for (const char* kernel_name : {"cubic_bspline", "wendland_c2"})
             for (auto form : {GradientForm::sum, GradientForm::difference, GradientForm::monaghan}) {
-                auto lattice = load_lattice(lattice_name);
+                auto lattice = test_lattice(c.lattice);
                 Kernel kernel = shipped_kernel(kernel_name);
                 double a_p = lattice.volume_coefficient("voronoi"), k = 1.15;
-                auto profile = surface_profile(kernel, lattice, 0, a_p, lattice.gravity, k, 3, form);
-                CAPTURE(lattice_name);
-                CAPTURE(kernel_name);
-                CAPTURE(gradient_form_name(form));
-                for (int n = 0; n < 4; ++n) {
-                    auto expected = brute_force_layer(kernel, lattice, k, a_p, lattice.gravity, profile.spacing, n, form);
-                    CHECK(profile.layers[static_cast<std::size_t>(n)].eps_rho == doctest::Approx(expected.eps_rho).epsilon(1e-12));
-                    CHECK(profile.layers[static_cast<std::size_t>(n)].eps_gradp == doctest::Approx(expected.eps_gradp).epsilon(1e-12));
+                HalfSpace brute{kernel, lattice, k, a_p, c.gravity};
+                auto first = surface_profile(kernel, lattice, 0, a_p, c.gravity, k, 3, form);
+                for (int termination = 0; termination < static_cast<int>(first.planes.types.size()); ++termination) {
+                    auto profile = surface_profile(kernel, lattice, 0, a_p, c.gravity, k, 3, form, termination);
+                    CAPTURE(std::string(c.lattice));
+                    CAPTURE(c.gravity.transpose());
+                    CAPTURE(kernel_name);
+                    CAPTURE(std::string(gradient_form_name(form)));
+                    CAPTURE(termination);
+                    // The occupied planes, as they are.
+                    const int top_site = profile.planes.types[static_cast<std::size_t>(termination)].sites[0];
+                    auto depths = brute.plane_depths(top_site, profile.layers.back().depth + 1e-6);
+                    REQUIRE(depths.size() == profile.layers.size());
+                    for (const auto& layer : profile.layers) {
+                        CHECK(layer.depth == doctest::Approx(depths[static_cast<std::size_t>(layer.n)]).epsilon(1e-12));
+                        multi_site_planes += layer.sites.size() > 1;
+                        for (const auto& v : layer.sites) {
+                            auto expected = brute.at(v.site, layer.depth, form);
+                            CHECK(v.eps_rho == doctest::Approx(expected.eps_rho).epsilon(1e-12));
+                            CHECK(v.eps_gradp == doctest::Approx(expected.eps_gradp).epsilon(1e-12));
+                        }
+                    }
+                    // A site that is a centre of inversion ends in the bulk of method.md section 2;
+                    // Monaghan's form divides by the SPH density there (when every site has the same).
+                    bool equal_densities = true;
+                    for (const auto& b : profile.bulk.sites)
+                        equal_densities &= std::abs(b.eps_rho - profile.bulk.sites[0].eps_rho) < 1e-12;
+                    for (const auto& v : profile.layers.back().sites) {
+                        if (profile.first_moments[static_cast<std::size_t>(v.site)].norm() > 1e-9) continue;
+                        if (form == GradientForm::monaghan && !equal_densities) continue;
+                        auto b = HydrostaticErrors(kernel, lattice, v.site, a_p, c.gravity, k).at(k);
+                        double gradp = form == GradientForm::monaghan ? (1 + b.eps_gradp) / (1 + b.eps_rho) - 1 : b.eps_gradp;
+                        CHECK(v.eps_rho == doctest::Approx(b.eps_rho).epsilon(1e-12));
+                        CHECK(v.eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
+                        CHECK(profile.bulk.sites[static_cast<std::size_t>(v.site)].eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
+                    }
                 }
-                // The deepest layers reported are the bulk of method.md section 2; Monaghan's
-                // form divides by the SPH density there: (1 + eps_gradP) / (1 + eps_rho) - 1.
-                auto b = HydrostaticErrors(kernel, lattice, 0, a_p, lattice.gravity, k).at(k);
-                double gradp = form == GradientForm::monaghan ? (1 + b.eps_gradp) / (1 + b.eps_rho) - 1 : b.eps_gradp;
-                CHECK(profile.layers.back().eps_rho == doctest::Approx(b.eps_rho).epsilon(1e-12));
-                CHECK(profile.layers.back().eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
-                CHECK(profile.bulk.eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
             }
+    CHECK(multi_site_planes > 0); // hcp along a: both sites on every plane
+}
+
+TEST_CASE("honeycomb under gravity -y: the occupied planes are 1 d and 0.5 d apart, not an even 0.5 d")
+{
+    auto lattice = test_lattice("honeycomb");
+    auto profile = surface_profile(shipped_kernel("cubic_bspline"), lattice, 0, lattice.volume_coefficient("voronoi"),
+                                   lattice.gravity, 1.2, 4, GradientForm::sum);
+    REQUIRE(profile.layers.size() >= 4);
+    CHECK(profile.layers[1].depth == doctest::Approx(1.0));
+    CHECK(profile.layers[2].depth == doctest::Approx(1.5));
+    CHECK(profile.layers[3].depth == doctest::Approx(2.5));
+    CHECK(profile.layers[1].sites[0].site == 1);
+    CHECK(profile.planes.types.size() == 2);
 }
 
 TEST_CASE("every shipped lattice has a surface profile along its default gravity that ends in the bulk")
@@ -105,21 +189,22 @@ TEST_CASE("a gravity direction not normal to a lattice plane is refused")
     Kernel kernel = shipped_kernel("cubic_bspline");
     Eigen::Vector3d tilted(std::sqrt(2.0), -1, 0);
     CHECK_THROWS_WITH_AS(surface_profile(kernel, lattice, 0, 1.0, tilted.normalized(), 1.2, 3, GradientForm::sum),
-                         doctest::Contains("not normal to a family of equally spaced planes"), Error);
+                         doctest::Contains("not normal to a family of lattice planes"), Error);
     // Along a lattice row is fine: the planes normal to x.
     CHECK_NOTHROW(surface_profile(kernel, lattice, 0, 1.0, Eigen::Vector3d(-1, 0, 0), 1.2, 3, GradientForm::sum));
 }
 
-TEST_CASE("block: interior particles equal the bulk shell sums, top layers the surface profile")
+TEST_CASE("block: interior particles equal the bulk shell sums, top layers the surface profile, site by site")
 {
     struct Case {
         const char* lattice;
         std::array<long long, 3> cells;
     };
     for (const auto& c : {Case{"triangular", {16, 24, 1}}, Case{"fcc", {8, 8, 20}}, Case{"hcp", {8, 8, 11}},
-                          Case{"bcc", {8, 8, 14}}})
+                          Case{"bcc", {8, 8, 18}}, Case{"honeycomb", {12, 16, 1}}, Case{"kagome", {10, 14, 1}},
+                          Case{"hcp_a", {8, 8, 32}}})
         for (auto form : {GradientForm::sum, GradientForm::difference, GradientForm::monaghan}) {
-            auto lattice = load_lattice(c.lattice);
+            auto lattice = test_lattice(c.lattice);
             Kernel kernel = shipped_kernel("cubic_bspline");
             BlockOptions options;
             options.cells = c.cells;
@@ -128,24 +213,32 @@ TEST_CASE("block: interior particles equal the bulk shell sums, top layers the s
             options.a_p = lattice.volume_coefficient("voronoi");
             options.form = form;
             auto block = evaluate_block(kernel, lattice, options);
-            auto profile = surface_profile(kernel, lattice, 0, options.a_p, block.gravity, options.k, 1, form);
-            auto expected_bulk = HydrostaticErrors(kernel, lattice, 0, options.a_p, block.gravity, options.k).at(options.k);
-            CAPTURE(c.lattice);
-            CAPTURE(gradient_form_name(form));
+            const std::size_t per_site = block.particles() / static_cast<std::size_t>(lattice.sites());
+            // The profile whose termination is the block's top plane.
+            int top_site = -1;
+            for (std::size_t i = 0; i < block.particles() && top_site < 0; ++i)
+                if (block.layer[i] == 0) top_site = static_cast<int>(i / per_site);
+            auto profile = surface_profile(kernel, lattice, top_site, options.a_p, block.gravity, options.k, 1, form);
+            CAPTURE(std::string(c.lattice));
+            CAPTURE(std::string(gradient_form_name(form)));
             const int deepest = *std::max_element(block.layer.begin(), block.layer.end());
             const int settled = static_cast<int>(profile.layers.size());
             int compared_top = 0, compared_bulk = 0;
-            for (std::size_t i = 0; i < block.layer.size(); ++i) {
-                int n = block.layer[i];
+            for (std::size_t i = 0; i < block.particles(); ++i) {
+                const int n = block.layer[i], site = static_cast<int>(i / per_site);
                 if (deepest - n < settled + 2) continue; // near the free bottom
                 if (n < settled) {
-                    const auto& l = profile.layers[static_cast<std::size_t>(n)];
-                    CHECK(std::abs(block.eps_rho[i] - l.eps_rho) <= 1e-12 * (1 + std::abs(l.eps_rho)));
-                    CHECK(std::abs(block.eps_gradp[i] - l.eps_gradp) <= 1e-12 * (1 + std::abs(l.eps_gradp)));
+                    const auto& sites = profile.layers[static_cast<std::size_t>(n)].sites;
+                    auto v = std::find_if(sites.begin(), sites.end(), [&](const SiteLayerErrors& x) { return x.site == site; });
+                    REQUIRE(v != sites.end()); // the block's plane n holds the profile's sites
+                    CHECK(std::abs(block.eps_rho[i] - v->eps_rho) <= 1e-12 * (1 + std::abs(v->eps_rho)));
+                    CHECK(std::abs(block.eps_gradp[i] - v->eps_gradp) <= 1e-12 * (1 + std::abs(v->eps_gradp)));
                     ++compared_top;
                 } else {
-                    CHECK(std::abs(block.eps_rho[i] - expected_bulk.eps_rho) <= 1e-12);
-                    CHECK(std::abs(block.eps_gradp[i] - profile.bulk.eps_gradp) <= 1e-12 * (1 + n));
+                    auto expected = HydrostaticErrors(kernel, lattice, site, options.a_p, block.gravity, options.k).at(options.k);
+                    CHECK(std::abs(block.eps_rho[i] - expected.eps_rho) <= 1e-12);
+                    CHECK(std::abs(block.eps_gradp[i] - profile.bulk.sites[static_cast<std::size_t>(site)].eps_gradp) <=
+                          1e-12 * (1 + n));
                     ++compared_bulk;
                 }
             }
