@@ -19,6 +19,9 @@ nlohmann::json surface_json(const SurfaceProfile& profile); // {"spacing", "laye
 // `surface --json` and `design --json` print; the Python module returns the same.
 nlohmann::json kernel_json(const KernelDefinition& kernel);
 nlohmann::json lattice_json(const Lattice& lattice);
+// A lattice in full, as `lattices NAME|FILE --json` prints it: lattice_json plus every
+// site (fractional and Cartesian, in d) with its shells up to `radius`.
+nlohmann::json lattice_description_json(const Lattice& lattice, double radius);
 nlohmann::json shells_json(const Lattice& lattice, int site, double radius, const Eigen::Vector3d& gravity);
 nlohmann::json roots_json(const Kernel& kernel, const Lattice& lattice, double a_p, double k_min, double k_max,
                           const RootScan& scan, const Acceptance& acceptance, double epsilon);

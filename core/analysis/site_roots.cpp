@@ -18,13 +18,17 @@ RootsAnalysis analyse_roots(const std::vector<const HydrostaticErrors*>& sites, 
 }
 
 nlohmann::json roots_document(const Kernel& kernel, const Lattice& lattice, double a_p, double k_min, double k_max,
-                              double epsilon, bool lateral, int site, const RootsAnalysis& a)
+                              double epsilon, bool lateral, int site, const RootsAnalysis& a, Axis axis,
+                              double window_min, double window_max)
 {
     const auto& chosen = a.sites.at(static_cast<std::size_t>(site));
     auto document = roots_json(kernel, lattice, a_p, k_min, k_max, chosen.scan, chosen.along, epsilon);
     document["site"] = site;
     document["acceptance_every_direction"] = acceptance_json(chosen.every, epsilon);
     document["lateral_in_verdict"] = lateral;
+    document["axis"] = axis_name(axis);
+    document["window"] = {window_min, window_max};
+    document["eta_range"] = {eta_of_k(k_min, a_p, lattice.dimension), eta_of_k(k_max, a_p, lattice.dimension)};
     nlohmann::json list = nlohmann::json::array();
     for (const auto& s : a.sites) {
         auto entry = root_scan_json(s.scan);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "analysis/acceptance.hpp"
+#include "analysis/resolution_axis.hpp"
 #include "analysis/roots.hpp"
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,9 @@ RootsAnalysis analyse_roots(const std::vector<const HydrostaticErrors*>& sites, 
 
 // The document `roots --json` prints: the top level as for one site (`site`), then
 // "acceptance_every_direction", "sites" and "all_sites".
+// `axis` and [window_min, window_max]: the window as it was given (k_min, k_max: in k).
 nlohmann::json roots_document(const Kernel& kernel, const Lattice& lattice, double a_p, double k_min, double k_max,
-                              double epsilon, bool lateral, int site, const RootsAnalysis& analysis);
+                              double epsilon, bool lateral, int site, const RootsAnalysis& analysis, Axis axis,
+                              double window_min, double window_max);
 
 } // namespace sphkern

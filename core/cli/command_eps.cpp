@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 #include "support/results_output.hpp"
 
+#include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
 #include "support/error.hpp"
 
@@ -18,6 +19,7 @@ Action add_eps_command(CLI::App& app)
     struct Options : CommonOptions {
         std::string kernel, lattice;
         double k = 0;
+        std::string axis = "k";
         std::vector<std::string> sets;
         EvaluationOptions evaluation;
     };
@@ -25,6 +27,7 @@ Action add_eps_command(CLI::App& app)
     command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
     command->add_option("lattice", options->lattice, "Lattice name or file")->required();
     command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
+    command->add_option("--axis", options->axis, "The scale of --k: k (h/d) or eta (h/V^(1/D))")->capture_default_str();
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -37,6 +40,13 @@ Action add_eps_command(CLI::App& app)
         auto kernel = make_kernel(registry, options->kernel, options->sets);
         double a_p = lattice.volume_coefficient(options->evaluation.ap);
         check_sites(lattice, {options->evaluation.site}, "--site");
+        const Axis axis = parse_axis(options->axis, "--axis");
+        if (axis == Axis::nh) fail_input("--axis nh names a window, not one value: give --k on the k or eta axis");
+        const double given = options->k;
+        if (axis == Axis::eta) options->k = k_of_eta(given, a_p, lattice.dimension);
+        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
+            fail_input(fmt::format("--k {} on the eta axis is k = {}, expected k in (0, 100]", given, options->k));
+        const double eta = eta_of_k(options->k, a_p, lattice.dimension);
         // Every site: the top-level values describe the one chosen with --site.
         auto sites = errors_per_site(kernel, lattice, every_site(lattice), a_p, gravity_of(lattice, options->evaluation),
                                      options->k, evaluation_mode(options->evaluation));
@@ -48,13 +58,14 @@ Action add_eps_command(CLI::App& app)
             nlohmann::json per_site = nlohmann::json::array();
             for (const auto& r : reports) per_site.push_back(site_report_json(r, lattice.dimension));
             print_json({{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", options->k}, {"a_p", a_p},
-                        {"site", options->evaluation.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp},
+                        {"eta", eta}, {"site", options->evaluation.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp},
                         {"lateral", v.lateral}, {"neighbours", v.neighbours},
                         {"support_radius", kernel.support() * options->k}, {"sites", per_site},
                         {"worst_site", reports[worst].site}});
             return 0;
         }
-        fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}\n", kernel.label(), lattice.name, options->k, a_p);
+        fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", kernel.label(), lattice.name, options->k, a_p,
+                   axis == Axis::eta ? fmt::format(" (eta = {:.10g})", eta) : "");
         fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
                    v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, kernel.support() * options->k);
         if (reports.size() > 1) {

@@ -9,14 +9,55 @@
 
 namespace sphkern::cli {
 
+namespace {
+
+void print_description(const Lattice& lattice, const nlohmann::json& d)
+{
+    fmt::print(results_file(), "{} ({}): {}D, {} site(s), from {}\n", lattice.name, lattice.title, lattice.dimension,
+               lattice.sites(), lattice.file);
+    fmt::print(results_file(), "  nearest-neighbour distance d = 1 ({:.10g} in the file's units)\n",
+               lattice.file_nearest_distance);
+    std::string coefficients;
+    for (const auto& c : lattice.volume_coefficients) coefficients += fmt::format(" {}={:.10g}", c.name, c.value);
+    fmt::print(results_file(), "  a_p:{}\n", coefficients);
+    for (const auto& site : d["site_details"]) {
+        std::string position, shells;
+        for (double v : site["position"]) position += fmt::format("{}{:.6f}", position.empty() ? "" : ", ", v);
+        for (const auto& s : site["shells"])
+            shells += fmt::format("{}{:.4f} ({})", shells.empty() ? "" : ", ", s["radius"].get<double>(), s["count"].get<int>());
+        fmt::print(results_file(), "  site {} at ({}) d: shells up to {} d: {}\n", site["site"].get<int>(), position,
+                   d["shells_radius"].get<double>(), shells);
+    }
+}
+
+} // namespace
+
 Action add_lattices_command(CLI::App& app)
 {
-    auto* command = app.add_subcommand("lattices", "List the shipped lattices");
-    auto options = std::make_shared<CommonOptions>();
+    auto* command = app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
+    struct Options : CommonOptions {
+        std::vector<std::string> lattices;
+        double radius = 3;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("lattice", options->lattices, "Lattice names or files to describe in full");
+    command->add_option("--radius", options->radius, "Shells up to this radius, in d, when describing")
+        ->capture_default_str();
     add_json_option(*command, *options);
     add_plugin_option(*command, *options);
     return [options] {
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
+        if (!options->lattices.empty()) {
+            nlohmann::json list = nlohmann::json::array();
+            for (const auto& spec : options->lattices) {
+                auto lattice = load_lattice(spec);
+                auto d = lattice_description_json(lattice, options->radius);
+                if (options->json) list.push_back(d);
+                else print_description(lattice, d);
+            }
+            if (options->json) print_json(list);
+            return 0;
+        }
         nlohmann::json list = nlohmann::json::array();
         for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
         if (options->json) {
@@ -29,8 +70,8 @@ Action add_lattices_command(CLI::App& app)
             for (const auto& [name, value] : l["volume_coefficients"].items())
                 coefficients += fmt::format("{}{}={:.6g}", coefficients.empty() ? "" : " ", name, value.get<double>());
             for (double g : l["gravity"]) gravity += fmt::format("{}{:.4g}", gravity.empty() ? "" : ",", g);
-            fmt::print(results_file(), "{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(), l["dimension"].get<int>(),
-                       l["sites"].get<int>(), coefficients, gravity);
+            fmt::print(results_file(), "{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(),
+                       l["dimension"].get<int>(), l["sites"].get<int>(), coefficients, gravity);
         }
         return 0;
     };

@@ -3,6 +3,7 @@
 #include "support/results_output.hpp"
 
 #include "analysis/acceptance.hpp"
+#include "analysis/resolution_axis.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 namespace sphkern::cli {
 
@@ -22,6 +24,7 @@ struct RootsOptions : CommonOptions {
     std::string kernel, lattice;
     double k_min = 0.75, k_max = 1.25, epsilon = 0.01;
     bool lateral = false;
+    std::string axis = "k";
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
 };
@@ -47,10 +50,15 @@ void print_scan(const RootScan& scan)
 
 // Roots of one kernel on one lattice, for every site, with condition (22) along gravity
 // and for every direction: printed, or appended to `collected` as JSON.
-void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& lattice, nlohmann::json* collected)
+void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice, nlohmann::json* collected)
 {
     double a_p = lattice.volume_coefficient(options.evaluation.ap);
     check_sites(lattice, {options.evaluation.site}, "--site");
+    // The window in k for this kernel, lattice and a_p, from the axis it was given on.
+    const Axis axis = parse_axis(options.axis, "--axis");
+    const double window_min = options.k_min, window_max = options.k_max;
+    std::tie(options.k_min, options.k_max) = k_window(axis, window_min, window_max, kernel, lattice,
+                                                      options.evaluation.site, a_p, "--kmin/--kmax");
     auto sites = errors_per_site(kernel, lattice, every_site(lattice), a_p, gravity_of(lattice, options.evaluation),
                                  options.k_max, evaluation_mode(options.evaluation));
     std::vector<const HydrostaticErrors*> all;
@@ -59,14 +67,16 @@ void run_one(const RootsOptions& options, const Kernel& kernel, const Lattice& l
     const auto& chosen = analysis.sites[static_cast<std::size_t>(options.evaluation.site)];
     if (options.json) {
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
-                                       options.lateral, options.evaluation.site, analysis);
+                                       options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
         if (collected) collected->push_back(document);
         else print_json(document);
         return;
     }
     const std::string lateral = options.lateral ? ", lateral error included" : "";
-    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}\n", kernel.label(), lattice.name, a_p,
-               options.k_min, options.k_max, sites.size() > 1 ? fmt::format(", site {}", options.evaluation.site) : "");
+    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}{}\n", kernel.label(), lattice.name, a_p,
+               options.k_min, options.k_max,
+               axis == Axis::k ? "" : fmt::format(" ({} in [{}, {}])", axis_name(axis), window_min, window_max),
+               sites.size() > 1 ? fmt::format(", site {}", options.evaluation.site) : "");
     print_scan(chosen.scan);
     fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", options.epsilon, lateral, acceptance_text(chosen.along));
     fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
@@ -94,12 +104,14 @@ Action add_roots_command(CLI::App& app)
     command->add_option("--kmax", options->k_max, "Largest k")->capture_default_str();
     command->add_option("--epsilon", options->epsilon, "Tolerance of condition (22)")->capture_default_str();
     command->add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
+    command->add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), eta (h/V^(1/D)) or nh (neighbours)")
+        ->capture_default_str();
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
+        if (options->axis == "k") check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
         auto registry = discover_kernels(*options);

@@ -127,6 +127,7 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
     if (!(d > 1e-6 * lattice.basis.colwise().norm().maxCoeff()))
         basis_node.error("absurd geometry: the nearest-neighbour distance is below 1e-6 of the cell size");
     lattice.basis /= d;
+    lattice.file_nearest_distance = d;
     // Once more in the scaled units, with the very arithmetic the shells use, so that the
     // first shell is at 1 to rounding even for a badly conditioned basis.
     lattice.basis /= nearest_neighbour_distance(lattice.basis, dim, lattice.motif);

@@ -5,6 +5,7 @@
 #include "analysis/acceptance.hpp"
 #include "analysis/design.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "analysis/resolution_axis.hpp"
 #include "analysis/results_json.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/site_errors.hpp"
@@ -223,29 +224,31 @@ PYBIND11_MODULE(sphkern, m)
     m.def("roots",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
-             bool lateral, bool details) {
-              check_k_interval(kmin, kmax, "kmin/kmax");
+             bool lateral, const std::string& axis_text, bool details) {
+              const Axis axis = parse_axis(axis_text, "axis");
+              if (axis == Axis::k) check_k_interval(kmin, kmax, "kmin/kmax");
               if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) fail_input("epsilon must be in (0, 1)");
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);
               const double ap = ap_of(lattice, a_p);
               const auto g = gravity_of(lattice, gravity);
               check_sites(lattice, {site}, "site");
+              const auto [k_lo, k_hi] = k_window(axis, kmin, kmax, kernel, lattice, site, ap, "kmin/kmax");
               nlohmann::json document;
               {
                   py::gil_scoped_release unlocked;
-                  auto sites = errors_per_site(kernel, lattice, every_site(lattice), ap, g, kmax);
+                  auto sites = errors_per_site(kernel, lattice, every_site(lattice), ap, g, k_hi);
                   std::vector<const HydrostaticErrors*> all;
                   for (const auto& s : sites) all.push_back(s.get());
-                  document = roots_document(kernel, lattice, ap, kmin, kmax, epsilon, lateral, site,
-                                            analyse_roots(all, kmin, kmax, epsilon, lateral));
+                  document = roots_document(kernel, lattice, ap, k_lo, k_hi, epsilon, lateral, site,
+                                            analyse_roots(all, k_lo, k_hi, epsilon, lateral), axis, kmin, kmax);
               }
               return to_python(details ? document : document["roots"]);
           },
           py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
           py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
-          py::arg("details") = false,
+          py::arg("axis") = "k", py::arg("details") = false,
           "The roots in k of eps_rho and eps_gradp (a list of dicts); details=True gives the whole document of "
           "`sphkern roots --json`: roots, jumps and the condition (22) intervals.");
     m.def("shells",

@@ -98,13 +98,18 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         int columns = std::min<int>(3, static_cast<int>(kernels.size()));
         int rows = (static_cast<int>(kernels.size()) + columns - 1) / columns;
         std::string name = key.first + "-" + key.second;
+        double x_min = INFINITY, x_max = -INFINITY; // the windows of the figure's cases, in k
+        for (const auto* c : cases) {
+            x_min = std::min(x_min, c->k_min);
+            x_max = std::max(x_max, c->k_max);
+        }
         std::string script = fmt::format(
             "set encoding utf8\nset terminal svg size {},{} dynamic enhanced font 'sans,11' background '#ffffff'\n"
             "set output '{}'\nset multiplot layout {},{} title '{} on {}, mode {}: ε_ρ solid, "
             "ε_{{∇P}} dashed'\n"
             "set grid\nset xrange [{}:{}]\nset yrange [-0.1:0.1]\nset xlabel 'k'\nset key bottom right font ',9'\n",
             420 * columns, 340 * rows, name + ".svg", rows, columns,
-            study.name, key.first, key.second, study.k_min, study.k_max);
+            study.name, key.first, key.second, x_min, x_max);
         int block = 0;
         for (const auto& kernel : kernels) {
             std::string plot = fmt::format("set title '{}' noenhanced\nplot {} with filledcurves y1=-{} lc rgb '#e8e8e8' notitle",

@@ -90,8 +90,13 @@ std::string replication_markdown(const StudyResults& results)
 
 std::string verdicts_markdown(const Study& study, const StudyResults& results)
 {
-    std::string s = fmt::format("## Condition (22): |eps_rho| <= {} and |eps_gradP| <= {} for some k in [{}, {}]\n\n",
-                                study.epsilon, study.epsilon, study.k_min, study.k_max);
+    std::string s = fmt::format("## Condition (22): |eps_rho| <= {} and |eps_gradP| <= {} for some {} in [{}, {}]\n\n",
+                                study.epsilon, study.epsilon, study.axis, study.k_min, study.k_max);
+    if (study.axis != "k")
+        s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
+                         "its kernel, lattice and a_p.\n\n",
+                         study.axis, study.axis == "eta" ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
+                                                         : "nh = the number of neighbours inside the support");
     s += fmt::format("The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
                      "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
                      "gradient-error tensor in place of |eps_gradP|) is in the column \"every direction\" of the "
@@ -122,8 +127,13 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
     }
     s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
     for (const auto& g : groups) {
-        s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
-                         g[0]->ap_name, g[0]->a_p) +
+        std::string windows;
+        if (study.axis != "k")
+            for (const auto* c : g)
+                windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
+                                       c->k_min, c->k_max);
+        s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
+                         g[0]->ap_name, g[0]->a_p, windows) +
              "| kernel | verdict | k where (22) holds | best k | max(|eps_rho|, |eps_gradP|) at best k | every direction |\n"
              "|---|---|---|---|---|---|\n";
         for (const auto* c : g)
@@ -155,10 +165,10 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
 
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
 {
-    std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: k in [{}, {}], {} samples per curve, epsilon = {}.\n"
+    std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: {} in [{}, {}], {} samples per curve, epsilon = {}.\n"
                                 "Errors are the bulk relative errors of method.md section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
-                                study.title, SPHKERN_VERSION, study.file, study.k_min, study.k_max, study.samples,
+                                study.title, SPHKERN_VERSION, study.file, study.axis, study.k_min, study.k_max, study.samples,
                                 study.epsilon);
     s += "Modes: ";
     for (const auto& m : study.modes) {

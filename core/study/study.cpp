@@ -1,5 +1,7 @@
 #include "study/study.hpp"
 
+#include "analysis/resolution_axis.hpp"
+
 #include "analysis/results_json.hpp"
 #include "analysis/surface_profile.hpp"
 #include "support/error.hpp"
@@ -173,12 +175,22 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     }
 
     if (auto k = root.find("k")) {
-        k->expect_keys({"min", "max", "samples"});
+        k->expect_keys({"min", "max", "samples", "axis"});
         if (auto v = k->find("min")) study.k_min = v->number();
         if (auto v = k->find("max")) study.k_max = v->number();
         if (auto v = k->find("samples")) study.samples = static_cast<int>(v->integer_in(2, 100000));
+        if (auto v = k->find("axis")) {
+            study.axis = v->string();
+            try {
+                parse_axis(study.axis, "axis");
+            } catch (const Error& e) {
+                v->error(e.what());
+            }
+        }
         try {
-            check_k_interval(study.k_min, study.k_max, "k interval");
+            if (study.axis == "k") check_k_interval(study.k_min, study.k_max, "k interval");
+            else if (!(study.k_min > 0 && study.k_min < study.k_max && study.k_max <= 1e5))
+                fail_input("the window on the " + study.axis + " axis needs 0 < min < max");
         } catch (const Error& e) {
             k->error(e.what());
         }

@@ -64,7 +64,8 @@ struct Study {
     std::vector<StudyKernel> kernels;
     std::vector<std::string> lattices;
     std::vector<std::string> volume_coefficients;
-    double k_min = 0.75, k_max = 1.25;
+    double k_min = 0.75, k_max = 1.25; // the window, on `axis`
+    std::string axis = "k";            // k, eta or nh (see analysis/resolution_axis.hpp)
     int samples = 501;
     double epsilon = 0.01;
     std::optional<std::vector<int>> sites; // "sites": indices into every lattice's motif; absent or "all": every site

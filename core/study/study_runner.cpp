@@ -1,6 +1,7 @@
 #include "study/study_runner.hpp"
 
 #include "analysis/results_json.hpp"
+#include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
 #include "lattices/lattice.hpp"
 #include "support/chunked_writer.hpp"
@@ -10,6 +11,7 @@
 #include "support/progress.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 
 namespace sphkern {
@@ -194,8 +196,15 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
         const AcceptanceRule every{study.epsilon, Direction::every, study.lateral};
         for (const auto& kernel : kernels)
             for (std::size_t a = 0; a < aps.size(); ++a) {
-                HydrostaticErrors automatic(kernel, lattice, sites[0], aps[a], lattice.gravity, study.k_max);
-                RootScan automatic_scan = find_roots(automatic, study.k_min, study.k_max);
+                double k_min, k_max;
+                try {
+                    std::tie(k_min, k_max) = k_window(parse_axis(study.axis, "axis"), study.k_min, study.k_max, kernel,
+                                                      lattice, sites[0], aps[a], "window");
+                } catch (const Error& e) {
+                    throw Error(e.code(), study.file + ": /k: " + e.what());
+                }
+                HydrostaticErrors automatic(kernel, lattice, sites[0], aps[a], lattice.gravity, k_max);
+                RootScan automatic_scan = find_roots(automatic, k_min, k_max);
                 for (const auto& mode : study.modes) {
                     StudyCase c;
                     c.lattice = lattice.name;
@@ -207,24 +216,26 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                     c.support = kernel.support();
                     c.ap_name = study.volume_coefficients[a];
                     c.a_p = aps[a];
+                    c.k_min = k_min;
+                    c.k_max = k_max;
                     c.sites = sites;
-                    auto errors = errors_per_site(kernel, lattice, sites, aps[a], lattice.gravity, study.k_max,
+                    auto errors = errors_per_site(kernel, lattice, sites, aps[a], lattice.gravity, k_max,
                                                   mode_for(mode, kernel, study));
                     for (int i = 0; i < study.samples; ++i) {
                         if (i % 64 == 0) throw_if_interrupted();
-                        double k = study.k_min + (study.k_max - study.k_min) * i / (study.samples - 1);
+                        double k = k_min + (k_max - k_min) * i / (study.samples - 1);
                         c.curve.emplace_back(k, errors[0]->at(k));
                     }
-                    c.scan = c.automatic ? automatic_scan : find_roots(*errors[0], study.k_min, study.k_max);
+                    c.scan = c.automatic ? automatic_scan : find_roots(*errors[0], k_min, k_max);
                     std::vector<const HydrostaticErrors*> all;
                     for (const auto& e : errors) all.push_back(e.get());
-                    c.acceptance = evaluate_acceptance(all, study.k_min, study.k_max, along);
-                    c.acceptance_every = evaluate_acceptance(all, study.k_min, study.k_max, every);
+                    c.acceptance = evaluate_acceptance(all, k_min, k_max, along);
+                    c.acceptance_every = evaluate_acceptance(all, k_min, k_max, every);
                     if (errors.size() > 1)
                         for (std::size_t i = 0; i < errors.size(); ++i)
-                            c.per_site.push_back({sites[i], i == 0 ? c.scan : find_roots(*errors[i], study.k_min, study.k_max),
-                                                  evaluate_acceptance({errors[i].get()}, study.k_min, study.k_max, along),
-                                                  evaluate_acceptance({errors[i].get()}, study.k_min, study.k_max, every)});
+                            c.per_site.push_back({sites[i], i == 0 ? c.scan : find_roots(*errors[i], k_min, k_max),
+                                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, along),
+                                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, every)});
                     if (!c.automatic) c.explanations = explain(*errors[0], automatic, c.scan, automatic_scan);
                     results.cases.push_back(std::move(c));
                     progress.step(kernel.name() + " on " + lattice.name);
@@ -246,10 +257,12 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                 double k = 0;
                 if (surface.k) {
                     k = *surface.k;
-                } else { // the best k of condition (22) in the first mode, for this a_p
-                    HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, study.k_max,
+                } else { // the best k of condition (22) in the first mode, for this a_p, in the study's window
+                    auto [k_min, k_max] = k_window(parse_axis(study.axis, "axis"), study.k_min, study.k_max, kernel,
+                                                   lattice, 0, a_p, "window");
+                    HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max,
                                              mode_for(study.modes[0], kernel, study));
-                    k = evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon).best_k;
+                    k = evaluate_acceptance(errors, k_min, k_max, study.epsilon).best_k;
                 }
                 for (const auto& form : surface.forms) {
                     SurfaceCase c{lattice.name, kernel.label(), form, ap_name, a_p, k, {}};
@@ -280,22 +293,24 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
             c.parameter = sweep.parameter;
             c.ap_name = study.volume_coefficients[0];
             c.a_p = lattice.volume_coefficient(c.ap_name);
-            DesignProblem problem{&lattice, 0, c.a_p, lattice.gravity, study.k_min, study.k_max,
-                                  sweep.parameter, sweep.min, sweep.max};
+            // Sweeps keep one k grid per lattice: the window of the sweep's kernel at its declared parameters.
+            auto [k_min, k_max] = k_window(parse_axis(study.axis, "axis"), study.k_min, study.k_max, *kernel, lattice,
+                                           0, c.a_p, "window");
+            DesignProblem problem{&lattice, 0, c.a_p, lattice.gravity, k_min, k_max, sweep.parameter, sweep.min, sweep.max};
             try {
                 c.design = design_kernel(*kernel, problem);
             } catch (const Error& e) {
                 throw Error(e.code(), study.file + ": " + sweep.json_path + ": " + e.what());
             }
             const int k_samples = std::min(study.samples, 201);
-            for (int j = 0; j < k_samples; ++j) c.ks.push_back(study.k_min + (study.k_max - study.k_min) * j / (k_samples - 1));
+            for (int j = 0; j < k_samples; ++j) c.ks.push_back(k_min + (k_max - k_min) * j / (k_samples - 1));
             for (int i = 0; i < sweep.samples; ++i) {
                 throw_if_interrupted();
                 double value = sweep.min + (sweep.max - sweep.min) * i / (sweep.samples - 1);
                 auto values = sweep.parameters;
                 values[sweep.parameter] = value;
                 Kernel at(kernel->shared_definition(), values);
-                HydrostaticErrors errors(at, lattice, 0, c.a_p, lattice.gravity, study.k_max);
+                HydrostaticErrors errors(at, lattice, 0, c.a_p, lattice.gravity, k_max);
                 c.values.push_back(value);
                 c.rho.emplace_back();
                 c.gradp.emplace_back();
@@ -309,8 +324,8 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
                 auto values = sweep.parameters;
                 values[sweep.parameter] = s.parameter;
                 Kernel designed(kernel->shared_definition(), values);
-                HydrostaticErrors errors(designed, lattice, 0, c.a_p, lattice.gravity, study.k_max);
-                c.designed_acceptance.push_back(evaluate_acceptance(errors, study.k_min, study.k_max, study.epsilon));
+                HydrostaticErrors errors(designed, lattice, 0, c.a_p, lattice.gravity, k_max);
+                c.designed_acceptance.push_back(evaluate_acceptance(errors, k_min, k_max, study.epsilon));
             }
             results.sweeps.push_back(std::move(c));
             throw_if_interrupted();

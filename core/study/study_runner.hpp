@@ -45,6 +45,7 @@ struct StudyCase {
     double support = 0;
     std::string ap_name;
     double a_p = 0;
+    double k_min = 0, k_max = 0; // the study's window, in k for this kernel, lattice and a_p
     std::vector<std::pair<double, ErrorValues>> curve;
     RootScan scan;                      // of the first site studied (the curve's site too)
     std::vector<int> sites;             // the sites studied

@@ -396,6 +396,29 @@ study s_allsites '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic"], 
 expect 0 'cases in' -- run "$work/s_allsites.json" -o "$work/out_allsites"
 check "a study reports every site and both verdicts" grep -q 'Each site on its own (along gravity / every direction)' "$work/out_allsites/report.md"
 
+# Resolution axes: eta = k / a_p^(1/D) (sc, a_p = 1: eta = k; fcc: a_p = 1/sqrt(2)); nh windows
+# from fcc's coordination shells 12, 6, 24, 12, 24, 8, 48 at 1, sqrt 2, sqrt 3, 2, sqrt 5, sqrt 6, sqrt 7.
+window() { "$sphkern" roots "$@" --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print("%.12f %.12f" % tuple(d["k_range"]))'; }
+check "eta on sc is k" test "$(window cubic_bspline sc --axis eta --kmin 0.8 --kmax 1.2)" = "0.800000000000 1.200000000000"
+check "eta on fcc" test "$(window cubic_bspline fcc --axis eta --kmin 1 --kmax 1.4)" = \
+    "$(python3 -c 'print("%.12f %.12f" % (2 ** (-1 / 6), 1.4 * 2 ** (-1 / 6)))')"
+check "nh on fcc: 42 to 78 neighbours" test "$(window cubic_bspline fcc --axis nh --kmin 30 --kmax 100 | cut -c1-14)" = \
+    "$(python3 -c 'print("%.12f" % (3 ** 0.5 / 2))')"
+expect 3 '--axis "time" is unknown, expected k, eta or nh' -- roots cubic_bspline fcc --axis time
+expect 3 'no k has between 13 and 17 neighbours inside the support on fcc' -- roots cubic_bspline fcc --axis nh --kmin 13 --kmax 17
+expect 3 '--axis nh names a window, not one value' -- eps cubic_bspline fcc --k 30 --axis nh
+study s_axis '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "k": {"axis": "tau"}, "plots": false}'
+expect 3 's_axis.json: /k/axis: axis "tau" is unknown, expected k, eta or nh' -- run "$work/s_axis.json" -o "$work/out_axis"
+study s_eta '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc", "sc"], "k": {"axis": "eta", "min": 0.9, "max": 1.5, "samples": 51}, "plots": false}'
+expect 0 'cases in' -- run "$work/s_eta.json" -o "$work/out_eta"
+check "a study on the eta axis says so" grep -q 'for some eta in \[0.9, 1.5\]' "$work/out_eta/report.md"
+expect 0 '^$' -- lattices "$honeycomb"
+"$sphkern" lattices "$honeycomb" --json >"$work/honeycomb.json.out"
+check "a user lattice described: two sites with three nearest neighbours each" python3 -c "
+import json; d = json.load(open('$work/honeycomb.json.out'))[0]
+assert d['sites'] == 2 and [s['shells'][0]['count'] for s in d['site_details']] == [3, 3], d"
+expect 3 'nosuch.json: no such file' -- lattices "$work/nosuch.json"
+
 # The plugin probe cache: a file is probed once, again when it changes; a corrupt cache
 # is ignored and rewritten; a cache path that is not a regular file is left alone.
 export XDG_CACHE_HOME="$work/cache"

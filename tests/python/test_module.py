@@ -78,6 +78,8 @@ def test_documents_equal_the_command_lines():
     close(sphkern.roots("cubic_bspline", "triangular", details=True), cli_json("roots", "cubic_bspline", "triangular"))
     close(sphkern.roots("morris_quintic", "fcc", kmin=0.8, kmax=1.3),
           cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")["roots"])
+    close(sphkern.roots("wendland_c4", "hcp", axis="eta", kmin=1.0, kmax=1.6, lateral=True, details=True),
+          cli_json("roots", "wendland_c4", "hcp", "--axis", "eta", "--kmin", "1.0", "--kmax", "1.6", "--lateral"))
     close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
     close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
           cli_json("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "monaghan", "--layers", "6"))
