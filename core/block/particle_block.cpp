@@ -36,8 +36,10 @@ std::vector<LayerRange> BlockResult::layers() const
 {
     std::map<int, LayerRange> by_layer;
     for (std::size_t i = 0; i < layer.size(); ++i) {
-        auto [it, added] = by_layer.emplace(layer[i], LayerRange{layer[i], 0, eps_rho[i], eps_rho[i], eps_gradp[i], eps_gradp[i]});
+        auto [it, added] = by_layer.emplace(layer[i], LayerRange{layer[i], 0, eps_rho[i], eps_rho[i], eps_gradp[i], eps_gradp[i], {}});
         auto& l = it->second;
+        const int site = static_cast<int>(i / (layer.size() / static_cast<std::size_t>(sites)));
+        if (std::find(l.sites.begin(), l.sites.end(), site) == l.sites.end()) l.sites.push_back(site);
         l.particles += 1;
         l.rho_min = std::min(l.rho_min, eps_rho[i]);
         l.rho_max = std::max(l.rho_max, eps_rho[i]);
@@ -199,6 +201,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.spacing = surface_planes(lattice, result.gravity).period;
     result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const int sites = lattice.sites();
+    result.sites = sites;
     const long long size[3] = {options.cells[0], options.cells[1], options.cells[2]};
     const long long n1 = size[0], n2 = size[1], n3 = size[2];
     const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3), count = static_cast<std::size_t>(total);

@@ -36,6 +36,7 @@ struct LayerRange {
     int layer;
     int particles;
     double rho_min, rho_max, gradp_min, gradp_max;
+    std::vector<int> sites; // the motif sites on this plane
 };
 
 struct BlockResult {
@@ -48,6 +49,7 @@ struct BlockResult {
     double spacing = 0;             // between layers
     std::size_t pair_interactions = 0; // per sum (the density and the gradient each see this many)
     int threads = 1;
+    int sites = 1; // particle i belongs to motif site i / (particles / sites)
     BlockTimings timings;
     std::size_t particles() const { return x.size(); }
     std::vector<LayerRange> layers() const;

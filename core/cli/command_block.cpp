@@ -111,9 +111,9 @@ Action add_block_command(CLI::App& app)
         if (options->json) {
             nlohmann::json layers = nlohmann::json::array();
             for (const auto& l : result.layers())
-                layers.push_back({{"layer", l.layer}, {"particles", l.particles}, {"eps_rho_min", l.rho_min},
-                                  {"eps_rho_max", l.rho_max}, {"eps_gradp_min", l.gradp_min},
-                                  {"eps_gradp_max", l.gradp_max}});
+                layers.push_back({{"layer", l.layer}, {"particles", l.particles}, {"sites", l.sites},
+                                  {"eps_rho_min", l.rho_min}, {"eps_rho_max", l.rho_max},
+                                  {"eps_gradp_min", l.gradp_min}, {"eps_gradp_max", l.gradp_max}});
             print_json({{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", block.k}, {"a_p", block.a_p},
                         {"size", block.cells}, {"periodic", block.periodic},
                         {"form", gradient_form_name(block.form)}, {"particles", result.particles()},
@@ -128,11 +128,16 @@ Action add_block_command(CLI::App& app)
         fmt::print(results_file(), "setup {:.4f} s, density and gradient {:.4f} s ({}): {:.3g} pair interactions per second\n",
                    result.timings.setup, result.timings.evaluation, result.timings.fused ? "one fused sweep" : "two passes",
                    rate);
-        fmt::print(results_file(), "{:>5} {:>9} {:>14} {:>14} {:>14} {:>14}\n", "layer", "particles", "eps_rho min", "eps_rho max",
-                   "eps_gradP min", "eps_gradP max");
-        for (const auto& l : result.layers())
-            fmt::print(results_file(), "{:>5} {:>9} {:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles, l.rho_min, l.rho_max,
-                       l.gradp_min, l.gradp_max);
+        const bool several = result.sites > 1;
+        fmt::print(results_file(), "{:>5} {:>9} {}{:>14} {:>14} {:>14} {:>14}\n", "layer", "particles",
+                   several ? fmt::format("{:>8} ", "sites") : "", "eps_rho min", "eps_rho max", "eps_gradP min",
+                   "eps_gradP max");
+        for (const auto& l : result.layers()) {
+            std::string sites;
+            for (int s : l.sites) sites += (sites.empty() ? "" : ",") + std::to_string(s);
+            fmt::print(results_file(), "{:>5} {:>9} {}{:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles,
+                       several ? fmt::format("{:>8} ", sites) : "", l.rho_min, l.rho_max, l.gradp_min, l.gradp_max);
+        }
         return 0;
     };
 }
