@@ -106,7 +106,7 @@ TEST_CASE("surface profiles equal a half-space brute-force sum, every form, ever
     const Case cases[] = {{"triangular", {0, -1, 0}}, {"square", {0, -1, 0}},  {"fcc", {0, 0, -1}},
                           {"hcp", {0, 0, -1}},        {"hcp", {-1, 0, 0}},     {"honeycomb", {0, -1, 0}},
                           {"honeycomb", {-1, 0, 0}},  {"kagome", {0, -1, 0}},  {"lieb", {0, -1, 0}},
-                          {"skewed_pair", {0, -1, 0}}};
+                          {"skewed_pair", {0, -1, 0}}, {"diamond", {0, 0, -1}}};
     int multi_site_planes = 0;
     for (const auto& c : cases)
         for (const char* kernel_name : {"cubic_bspline", "wendland_c2"})
