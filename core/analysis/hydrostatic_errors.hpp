@@ -1,4 +1,4 @@
-// The bulk relative errors of a particle at rest in a hydrostatic field (method.md
+// The bulk relative errors of a particle at rest in a hydrostatic field (share/docs/method.md
 // section 2): eps_rho(k) and eps_gradP(k) as sums over neighbour shells, plus the
 // spurious lateral component of the pressure gradient. O(shells) per k.
 #pragma once

@@ -1,6 +1,6 @@
 // Roots of eps_rho(k) and eps_gradP(k) in a k-interval, found piece by piece between
 // the k where shells enter the support; sign changes across such a k, or across a
-// singularity of the kernel, are jumps, never roots (method.md section 4).
+// singularity of the kernel, are jumps, never roots (share/docs/method.md section 4).
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"

@@ -1,4 +1,4 @@
-// Free-surface layer profiles (method.md section 6): the errors of a particle on
+// Free-surface layer profiles (share/docs/method.md section 6): the errors of a particle on
 // layer n below a free surface normal to gravity, by lattice sums over the half-space.
 #pragma once
 

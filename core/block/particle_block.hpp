@@ -1,5 +1,5 @@
 // A finite block of lattice cells filled with particles: the independent check of the
-// lattice sums by direct SPH summation, and the scalable path (method.md section 7).
+// lattice sums by direct SPH summation, and the scalable path (share/docs/method.md section 7).
 #pragma once
 
 #include "analysis/surface_profile.hpp"

@@ -166,7 +166,7 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
 {
     std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: {} in [{}, {}], {} samples per curve, epsilon = {}.\n"
-                                "Errors are the bulk relative errors of method.md section 2 (a particle on a lattice "
+                                "Errors are the bulk relative errors of share/docs/method.md section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
                                 study.title, SPHKERN_VERSION, study.file, study.axis, study.k_min, study.k_max, study.samples,
                                 study.epsilon);
@@ -238,7 +238,7 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
 
     if (!results.surface.empty()) {
         s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
-             "P = 0 there), by lattice sums over the half-space (method.md section 6). Each cell: eps_rho / eps_gradP.\n\n";
+             "P = 0 there), by lattice sums over the half-space (share/docs/method.md section 6). Each cell: eps_rho / eps_gradP.\n\n";
         std::size_t columns = 0;
         for (const auto& c : results.surface) columns = std::max(columns, c.profile.layers.size());
         std::string current;

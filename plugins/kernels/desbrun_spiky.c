@@ -1,4 +1,4 @@
-/* Spiky kernel of Desbrun & Gascuel (paper eq. 11, with (2-q)^3: see paper-notes errata), R = 2. */
+/* Spiky kernel of Desbrun & Gascuel (paper eq. 11, with (2-q)^3: see share/docs/method.md, errata), R = 2. */
 #include <sphkern/kernel_plugin.h>
 
 #define PI 3.14159265358979323846

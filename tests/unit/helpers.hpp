@@ -30,7 +30,7 @@ struct BruteForce {
 };
 
 // eps_rho and eps_gradP by summing W over every lattice point in a large box,
-// truncating at R (method.md section 2, written out directly).
+// truncating at R (share/docs/method.md section 2, written out directly).
 inline BruteForce brute_force_errors(const Kernel& kernel, const Lattice& lattice, double k, double a_p,
                                      const Eigen::Vector3d& e)
 {

@@ -124,7 +124,7 @@ TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without t
             CHECK(scan.roots.empty());
             continue;
         }
-        if (row.contains("erratum")) continue; // the composite gradient row: see paper-notes
+        if (row.contains("erratum")) continue; // the composite gradient row: see share/docs/method.md, errata
         std::string function = row["eps_gradp"].is_number() && row["eps_gradp"] == 0 ? "gradp" : "rho";
         const Root* best = nullptr;
         for (const auto& r : scan.roots)

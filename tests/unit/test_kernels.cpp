@@ -26,7 +26,7 @@ TEST_CASE("the eleven shipped kernels and the designed family are discovered")
 
 TEST_CASE("conformance: normalisation, derivative consistency, finiteness for every plugin")
 {
-    // The truncated super-Gaussian is documented as normalised only to ~1e-3 (paper-notes errata).
+    // The truncated super-Gaussian is documented as normalised only to ~1e-3 (share/docs/method.md, errata).
     const std::map<int, double> super_gaussian = {{1, 1.0002}, {2, 1.0021}, {3, 1.0033}};
     for (const auto& plugin : shipped_kernels().plugins()) {
         if (!plugin->source.ends_with(".so")) continue;

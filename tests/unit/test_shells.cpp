@@ -1,4 +1,4 @@
-// Shells against known coordination sequences and volume coefficients (method.md section 3).
+// Shells against known coordination sequences and volume coefficients (share/docs/method.md section 3).
 #include "lattices/shells.hpp"
 #include "support/error.hpp"
 
@@ -35,7 +35,7 @@ TEST_CASE("coordination sequences of the shipped lattices")
     CHECK(counts("hex_prism", 2) == std::vector<int>{8, 12});
 }
 
-TEST_CASE("triangular shell radii are those of method.md section 2")
+TEST_CASE("triangular shell radii are those of share/docs/method.md section 2")
 {
     auto shells = lattice_shells(load_lattice("triangular"), 0, 4.0);
     std::vector<double> expected = {1, std::sqrt(3.0), 2, std::sqrt(7.0), 3, 2 * std::sqrt(3.0), std::sqrt(13.0), 4};
@@ -53,7 +53,7 @@ TEST_CASE("directional moments: the trace of sum r^ r^T is the shell count")
         CHECK(s.directional_moment(Eigen::Vector3d(0, 0, 1)) == doctest::Approx(s.count / 3.0).epsilon(1e-12));
 }
 
-TEST_CASE("voronoi volume coefficients of method.md section 3")
+TEST_CASE("voronoi volume coefficients of share/docs/method.md section 3")
 {
     CHECK(load_lattice("triangular").volume_coefficient("voronoi") == doctest::Approx(std::sqrt(3.0) / 2).epsilon(1e-14));
     CHECK(load_lattice("square").volume_coefficient("voronoi") == doctest::Approx(1.0).epsilon(1e-14));

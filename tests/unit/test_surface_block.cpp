@@ -136,7 +136,7 @@ TEST_CASE("surface profiles equal a half-space brute-force sum, every form, ever
                             CHECK(v.eps_gradp == doctest::Approx(expected.eps_gradp).epsilon(1e-12));
                         }
                     }
-                    // A site that is a centre of inversion ends in the bulk of method.md section 2;
+                    // A site that is a centre of inversion ends in the bulk of share/docs/method.md section 2;
                     // Monaghan's form divides by the SPH density there (when every site has the same).
                     bool equal_densities = true;
                     for (const auto& b : profile.bulk.sites)
