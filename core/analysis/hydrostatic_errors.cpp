@@ -116,8 +116,16 @@ GradientTensor HydrostaticErrors::tensor(double k) const
     g.tensor.topLeftCorner(dim_, dim_) = -scale * sum.topLeftCorner(dim_, dim_) - Eigen::MatrixXd::Identity(dim_, dim_);
     g.first_moment = scale * first;
     if (!g.tensor.allFinite() || !g.first_moment.allFinite()) fail_non_finite(k, active);
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(g.tensor.topLeftCorner(dim_, dim_).eval());
-    for (int i = 0; i < dim_; ++i) g.eigenvalues.push_back(solver.eigenvalues()[i]);
+    // Closed-form eigenvalues of the fixed-size block: this runs at every k a verdict samples.
+    if (dim_ == 2) {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
+        solver.computeDirect(g.tensor.topLeftCorner<2, 2>().eval(), Eigen::EigenvaluesOnly);
+        g.eigenvalues = {solver.eigenvalues()[0], solver.eigenvalues()[1]};
+    } else {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(g.tensor, Eigen::EigenvaluesOnly);
+        g.eigenvalues = {solver.eigenvalues()[0], solver.eigenvalues()[1], solver.eigenvalues()[2]};
+    }
     return g;
 }
 
