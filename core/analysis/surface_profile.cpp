@@ -33,8 +33,10 @@ int SurfacePlanes::type_of_site(int site) const
 std::string SurfacePlanes::name(int type) const
 {
     std::string s = types[static_cast<std::size_t>(type)].sites.size() > 1 ? "sites " : "site ";
-    for (std::size_t i = 0; i < types[static_cast<std::size_t>(type)].sites.size(); ++i)
-        s += (i ? "," : "") + std::to_string(types[static_cast<std::size_t>(type)].sites[i]);
+    for (std::size_t i = 0; i < types[static_cast<std::size_t>(type)].sites.size(); ++i) {
+        if (i) s += ',';
+        s += std::to_string(types[static_cast<std::size_t>(type)].sites[i]);
+    }
     return s;
 }
 

@@ -151,8 +151,10 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& name)
     std::vector<Frame> stack;
     auto path = [&] {
         std::string p;
-        for (std::size_t i = 0; i + 1 < stack.size(); ++i)
-            p += "/" + (stack[i].object ? escape_json_pointer(stack[i].key) : std::to_string(stack[i].index));
+        for (std::size_t i = 0; i + 1 < stack.size(); ++i) {
+            p += '/';
+            p += stack[i].object ? escape_json_pointer(stack[i].key) : std::to_string(stack[i].index);
+        }
         return p.empty() ? std::string("/") : p;
     };
     auto element_done = [&] {
