@@ -4,6 +4,15 @@
 
 namespace sphkern {
 
+nlohmann::json site_roots_json(const SiteRoots& s, double epsilon)
+{
+    auto entry = root_scan_json(s.scan);
+    entry["site"] = s.site;
+    entry["acceptance"] = acceptance_json(s.along, epsilon);
+    entry["acceptance_every_direction"] = acceptance_json(s.every, epsilon);
+    return entry;
+}
+
 RootsAnalysis analyse_roots(const std::vector<const HydrostaticErrors*>& sites, double k_min, double k_max,
                             double epsilon, bool lateral)
 {
@@ -30,13 +39,7 @@ nlohmann::json roots_document(const Kernel& kernel, const Lattice& lattice, doub
     document["window"] = {window_min, window_max};
     document["eta_range"] = {eta_of_k(k_min, a_p, lattice.dimension), eta_of_k(k_max, a_p, lattice.dimension)};
     nlohmann::json list = nlohmann::json::array();
-    for (const auto& s : a.sites) {
-        auto entry = root_scan_json(s.scan);
-        entry["site"] = s.site;
-        entry["acceptance"] = acceptance_json(s.along, epsilon);
-        entry["acceptance_every_direction"] = acceptance_json(s.every, epsilon);
-        list.push_back(entry);
-    }
+    for (const auto& s : a.sites) list.push_back(site_roots_json(s, epsilon));
     document["sites"] = list;
     document["all_sites"] = {{"acceptance", acceptance_json(a.all_along, epsilon)},
                              {"acceptance_every_direction", acceptance_json(a.all_every, epsilon)}};

@@ -23,6 +23,9 @@ struct RootsAnalysis {
     Acceptance all_along, all_every;
 };
 
+// {"site", "roots", "jumps", "acceptance", "acceptance_every_direction"}.
+nlohmann::json site_roots_json(const SiteRoots& site, double epsilon);
+
 // `sites`: one HydrostaticErrors per site of the lattice, in site order.
 RootsAnalysis analyse_roots(const std::vector<const HydrostaticErrors*>& sites, double k_min, double k_max,
                             double epsilon, bool lateral);

@@ -338,13 +338,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
 nlohmann::json per_site_json(const StudyCase& c, double epsilon)
 {
     nlohmann::json list = nlohmann::json::array();
-    for (const auto& p : c.per_site) {
-        auto entry = root_scan_json(p.scan);
-        entry["site"] = p.site;
-        entry["acceptance"] = acceptance_json(p.along, epsilon);
-        entry["acceptance_every_direction"] = acceptance_json(p.every, epsilon);
-        list.push_back(entry);
-    }
+    for (const auto& p : c.per_site) list.push_back(site_roots_json(p, epsilon));
     return list;
 }
 

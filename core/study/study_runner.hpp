@@ -6,6 +6,7 @@
 #include "analysis/acceptance.hpp"
 #include "analysis/design.hpp"
 #include "analysis/roots.hpp"
+#include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "study/study.hpp"
@@ -51,12 +52,7 @@ struct StudyCase {
     std::vector<int> sites;             // the sites studied
     Acceptance acceptance;              // condition (22) along gravity, at every site studied at once
     Acceptance acceptance_every;        // the same for every direction (the gradient-error tensor)
-    struct Site {
-        int site;
-        RootScan scan;
-        Acceptance along, every;
-    };
-    std::vector<Site> per_site;         // each site on its own (lattices with several sites)
+    std::vector<SiteRoots> per_site;    // each site on its own (lattices with several sites)
     std::vector<RootExplanation> explanations; // non-automatic modes only
 };
 
