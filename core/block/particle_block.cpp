@@ -6,7 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include <sphkern/kernel_plugin.h> // SPHKERN_VECTOR_CLONES
+#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
 
 #include <algorithm>
 #include <chrono>

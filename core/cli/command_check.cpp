@@ -52,10 +52,14 @@ Action add_check_command(CLI::App& app)
                 for (const auto& c : result["checks"])
                     fmt::print(results_file(), "  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
                                c["status"].get<std::string>(), c["detail"].get<std::string>());
+                for (const auto& c : result["checks"])
+                    if (c.contains("hint"))
+                        fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(),
+                                   c["check"].get<std::string>(), c["hint"].get<std::string>());
             }
             results.push_back(std::move(result));
         }
-        if (options->json) print_json(results.size() == 1 ? results[0] : results);
+        if (options->json) print_json(results); // an array, for one kernel too
         return failed ? static_cast<int>(ExitCode::check_failed) : 0;
     };
 }

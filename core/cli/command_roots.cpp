@@ -68,8 +68,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     if (options.json) {
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
                                        options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
-        if (collected) collected->push_back(document);
-        else print_json(document);
+        collected->push_back(document);
         return;
     }
     const std::string lateral = options.lateral ? ", lateral error included" : "";
@@ -130,9 +129,10 @@ Action add_roots_command(CLI::App& app)
         for (const auto& lattice : lattices)
             for (const auto& kernel : kernels) {
                 if (many && !kernel.supports(lattice.dimension)) continue; // "all": the pairs that exist
-                run_one(*options, kernel, lattice, many ? &all : nullptr);
+                run_one(*options, kernel, lattice, &all);
             }
-        if (many && options->json) print_json(all);
+        // One shape for one pair and for many: an array of documents.
+        if (options->json) print_json(all);
         return 0;
     };
 }

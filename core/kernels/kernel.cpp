@@ -1,5 +1,7 @@
 #include "kernels/kernel.hpp"
 
+#include "kernels/fourier_transform.hpp"
+#include "kernels/second_derivative.hpp"
 #include "support/error.hpp"
 #include "support/json_input.hpp"
 
@@ -40,6 +42,17 @@ void Kernel::require_dimension(int dim, const std::string& lattice_name) const
     if (!supports(dim))
         fail_input("kernel " + name() + " is defined in " + definition_->dimensions_text() + "D only, not on the " +
                    std::to_string(dim) + "D lattice " + lattice_name);
+}
+
+double Kernel::d2w(double q, int dim, double k) const
+{
+    return f_->has_second_derivative() ? f_->d2w(q, dim, k, values_.data()) : numerical_second_derivative(*this, q, dim, k);
+}
+
+double Kernel::fourier(double kh, int dim, double k) const
+{
+    return f_->has_fourier_transform() ? f_->fourier_transform(kh, dim, k, values_.data())
+                                       : fourier_transform_by_quadrature(*this, kh, dim, k);
 }
 
 std::string Kernel::label() const

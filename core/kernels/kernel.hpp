@@ -43,10 +43,21 @@ public:
         f_->dw_batch(q, out, n, dim, k, values_.data());
     }
 
+    // h^(D+2) d2W/dr2 (q): the plugin's formula, else a one- or two-sided finite
+    // difference of dw that never straddles a breakpoint (kernels/second_derivative.cpp).
+    double d2w(double q, int dim, double k) const;
+    bool provides_second_derivative() const { return f_->has_second_derivative(); }
+
+    // The Fourier transform of the truncated kernel at kh = kappa h (1 at kh = 0): the
+    // plugin's formula, else a radial quadrature (kernels/fourier_transform.cpp).
+    double fourier(double kh, int dim, double k) const;
+    bool provides_fourier_transform() const { return f_->has_fourier_transform(); }
+
     // Truncated at R: zero for q > R (1 + support_edge).
     bool inside(double q) const { return q <= support() * (1 + support_edge); }
     double w_truncated(double q, int dim, double k) const { return inside(q) ? w(q, dim, k) : 0.0; }
     double dw_truncated(double q, int dim, double k) const { return inside(q) ? dw(q, dim, k) : 0.0; }
+    double d2w_truncated(double q, int dim, double k) const { return inside(q) ? d2w(q, dim, k) : 0.0; }
 
     // "name" or "name(a=0.3)" for reports.
     std::string label() const;

@@ -1,5 +1,8 @@
 #include "kernels/kernel_check.hpp"
 
+#include "kernels/fourier_transform.hpp"
+#include "kernels/kernel_spectrum.hpp"
+#include "kernels/second_derivative.hpp"
 #include "support/error.hpp"
 #include "support/isolated_call.hpp"
 
@@ -29,10 +32,12 @@ std::string format(double v, int digits = 10)
 struct Checks {
     nlohmann::json items = nlohmann::json::array();
     int worst = 0; // 0 ok, 1 warn, 2 fail
-    void add(int dim, const std::string& name, int status, const std::string& detail)
+    void add(int dim, const std::string& name, int status, const std::string& detail, const std::string& hint = {})
     {
         static const char* names[] = {"ok", "warn", "fail"};
-        items.push_back({{"dimension", dim}, {"check", name}, {"status", names[status]}, {"detail", detail}});
+        nlohmann::json item = {{"dimension", dim}, {"check", name}, {"status", names[status]}, {"detail", detail}};
+        if (status > 0 && !hint.empty()) item["hint"] = hint;
+        items.push_back(std::move(item));
         worst = std::max(worst, status);
     }
 };
@@ -43,6 +48,99 @@ std::vector<double> piece_edges(const Kernel& kernel)
     for (double b : kernel.definition().breakpoints) edges.push_back(b);
     edges.push_back(kernel.support());
     return edges;
+}
+
+// A provided W'' against a sixth-order difference of dW/dr; without one, say how it is made.
+void check_second_derivative(const Kernel& kernel, int dim, const std::vector<double>& edges, Checks& checks)
+{
+    if (!kernel.provides_second_derivative()) {
+        checks.add(dim, "second_derivative", 0,
+                   "not provided: computed from dW/dr by sixth-order finite differences that never straddle a breakpoint");
+        return;
+    }
+    const double R = kernel.support();
+    double mismatch = 0, scale = 0, worst_q = 0;
+    for (int i = 1; i < 400; ++i) {
+        const double q = R * i / 400.0;
+        bool near_edge = false;
+        for (double e : edges) near_edge |= std::abs(q - e) < 0.02;
+        if (near_edge) continue;
+        const double numeric = numerical_second_derivative(kernel, q, dim, check_k), given = kernel.d2w(q, dim, check_k);
+        scale = std::max(scale, std::abs(given));
+        if (std::abs(given - numeric) > mismatch) mismatch = std::abs(given - numeric), worst_q = q;
+    }
+    const double relative = mismatch / std::max(scale, 1e-300);
+    checks.add(dim, "second_derivative", relative <= 1e-6 ? 0 : 2,
+               "provided; largest relative difference from a numerical derivative of dW/dr: " + format(relative, 3) +
+                   " at q = " + format(worst_q, 4),
+               "compare d2w with the derivative of dw near q = " + format(worst_q, 4));
+}
+
+// Where W or dW/dr breaks off a smooth curve: a jump or kink away from the declared
+// breakpoints, and a support larger than the kernel (W = 0 on the last part of [0, R]).
+void check_pieces(const Kernel& kernel, int dim, Checks& checks)
+{
+    const double R = kernel.support();
+    auto edges = piece_edges(kernel);
+    const int n = 4000;
+    const double delta = R / n;
+    auto near_edge = [&](double q, double reach) {
+        for (double e : edges)
+            if (std::abs(q - e) <= reach) return true;
+        return false;
+    };
+    // Second differences of W and of dW/dr on a grid: O(delta^2) and slowly varying on a
+    // smooth piece; at a kink one of the two straddling points has O(delta), at a jump O(1).
+    // A difference far above those three points away on both sides marks a break.
+    std::string found;
+    for (bool derivative : {false, true}) {
+        std::vector<double> f(n + 1), d(n + 1, 0.0);
+        double scale = 0;
+        for (int i = 0; i <= n; ++i) {
+            f[i] = derivative ? kernel.dw(delta * i, dim, check_k) : kernel.w(delta * i, dim, check_k);
+            scale = std::max(scale, std::abs(f[i]));
+        }
+        for (int i = 1; i < n; ++i) d[i] = std::abs(f[i + 1] - 2 * f[i] + f[i - 1]);
+        for (int i = 4; i + 4 <= n && found.empty(); ++i) {
+            const double q = delta * i;
+            if (near_edge(q, 5 * delta) || d[i] <= 1e-9 * scale) continue;
+            if (d[i] > 20 * std::max(d[i - 3], d[i + 3]))
+                found = std::string("W") + (derivative ? "'" : "") + " is not smooth near q = " + format(q, 4) +
+                        (derivative ? " (a kink or jump in dW/dr)" : " (a jump or kink in W)");
+        }
+        if (!found.empty()) break;
+    }
+    checks.add(dim, "breakpoints", found.empty() ? 0 : 1,
+               found.empty() ? "W and dW/dr smooth between the declared breakpoints" : found + ", which is not a declared breakpoint",
+               "declare the breakpoint (or fix the formula): quadratures and derivatives are split at breakpoints only");
+
+    // Exactly zero, not small: W ~ (R - q)^8 is tiny but still the kernel near R.
+    double last = 0;
+    for (int i = n - 1; i >= 0; --i)
+        if (kernel.w(R * i / n, dim, check_k) != 0.0) {
+            last = R * i / n;
+            break;
+        }
+    const bool over = last < R * 0.99;
+    checks.add(dim, "support", over ? 1 : 0,
+               over ? "W is zero from q = " + format(last + delta, 4) + " to the declared support R = " + format(R)
+                    : "W is non-zero up to the declared support R = " + format(R),
+               "declare the support where W ends: R sets the neighbour count N_H, H/d and the k windows");
+}
+
+// A provided Fourier transform against the radial quadrature of W.
+void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
+{
+    double worst = 0, at = 0;
+    for (int i = 0; i <= 200; ++i) {
+        const double kh = 0.25 * i;
+        const double d = std::abs(kernel.fourier(kh, dim, check_k) - fourier_transform_by_quadrature(kernel, kh, dim, check_k));
+        if (d > worst) worst = d, at = kh;
+    }
+    checks.add(dim, "fourier_provided", worst <= 1e-8 ? 0 : 2,
+               "provided transform; largest difference from the quadrature of W: " + format(worst, 3) + " at kh = " +
+                   format(at, 4),
+               "the transform must be that of the normalised W, as a function of kappa h");
 }
 
 } // namespace
@@ -66,6 +164,7 @@ nlohmann::json check_kernel(const Kernel& kernel)
     const double R = kernel.support();
     Checks checks;
     nlohmann::json normalization = nlohmann::json::object(), second = nlohmann::json::object();
+    nlohmann::json fourier = nlohmann::json::object();
     for (int dim : kernel.definition().dimensions) {
         const std::string D = std::to_string(dim);
 
@@ -90,11 +189,34 @@ nlohmann::json check_kernel(const Kernel& kernel)
         checks.add(dim, "normalization", deviation <= normalization_ok ? 0 : deviation <= normalization_warn ? 1 : 2,
                    "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")");
 
-        // First moment (zero for a radial kernel) and second moment (the width).
-        double first = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-            [&](double x) { return x * kernel.w_truncated(std::abs(x), dim, check_k); }, -R, R, 15, 1e-15);
-        checks.add(dim, "first_moment", std::abs(first) <= 1e-12 ? 0 : 2,
-                   "integral of x W(|x|) dx over [-R, R] = " + format(first, 3));
+        // The moment of the gradient: integral of x . grad W over D-space = -D for a
+        // normalised kernel that vanishes at R (by parts); it sees a wrong dW/dr and a
+        // jump at R, which the normalisation alone cannot.
+        double moment = 0;
+        {
+            auto moment_edges = piece_edges(kernel);
+            for (std::size_t i = 0; i + 1 < moment_edges.size(); ++i)
+                moment += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                    [&](double q) { return kernel.dw(q, dim, check_k) * std::pow(q, dim); }, moment_edges[i],
+                    moment_edges[i + 1], 15, 1e-15);
+            moment *= sphere_area(dim);
+        }
+        // A jump of W at R leaves out the surface term of the integration by parts.
+        const double surface = sphere_area(dim) * std::pow(R, dim) * kernel.w(R * (1 - 1e-12), dim, check_k);
+        const double expected = -dim * integral + surface;
+        const bool consistent = std::abs(moment - expected) <= 1e-6 * dim;
+        std::string detail = "integral of x . grad W = " + format(moment) + "; -D times the integral of W = " +
+                             format(-dim * integral);
+        if (std::abs(surface) > 1e-6 * dim)
+            detail += ", plus the surface term the jump of W at R leaves out, " + format(surface, 4);
+        if (kernel.definition().separate_derivative)
+            checks.add(dim, "gradient_moment", 0,
+                       detail + "; a separate derivative: reported, not checked (it is the continuum gradient "
+                                "error times -D)");
+        else
+            checks.add(dim, "gradient_moment", consistent ? (std::abs(surface) > 1e-6 * dim ? 1 : 0) : 2, detail,
+                       consistent ? "W does not vanish at R: the truncated kernel's gradient misses a surface term"
+                                  : "dW/dr is not the derivative of W (a wrong factor or sign?)");
         double width = kernel_integral(kernel, dim, check_k, 2).first;
         second[D] = width;
         checks.add(dim, "second_moment", 0, "integral of q^2 W = " + format(width) + " (in units of h^2)");
@@ -126,7 +248,10 @@ nlohmann::json check_kernel(const Kernel& kernel)
         else
             checks.add(dim, "derivative", relative <= 1e-6 ? 0 : 2,
                        "largest relative difference from a numerical dW/dr: " + format(relative, 3) + " at q = " +
-                           format(worst_q, 4));
+                           format(worst_q, 4),
+                       "compare dw with the derivative of w near q = " + format(worst_q, 4) +
+                           "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE");
+        check_second_derivative(kernel, dim, edges, checks);
 
         // Continuity of W and dW/dr at each breakpoint and at R (where the host truncates).
         double w0 = std::abs(kernel.w(0, dim, check_k)), dw_scale = std::max(scale, 1e-300);
@@ -156,6 +281,18 @@ nlohmann::json check_kernel(const Kernel& kernel)
             }
             if (w < 0 && first_negative < 0) first_negative = q;
         }
+        check_pieces(kernel, dim, checks);
+        auto spectrum = spectrum_summary(kernel, dim, check_k);
+        nlohmann::json entry = {{"min", spectrum.minimum}, {"at", spectrum.at}, {"at_zero", kernel.fourier(0, dim, check_k)},
+                                {"source", spectrum.provided ? "plugin" : "quadrature"}};
+        entry["first_zero"] = spectrum.first_zero ? nlohmann::json(*spectrum.first_zero) : nlohmann::json();
+        fourier[D] = entry;
+        checks.add(dim, "fourier", spectrum.minimum < -1e-9 ? 1 : 0,
+                   "min of the Fourier transform over kh in [0, 50]: " + format(spectrum.minimum, 4) + " at kh = " +
+                       format(spectrum.at, 5) +
+                       (spectrum.first_zero ? ", first zero at kh = " + format(*spectrum.first_zero, 6) : ", no zero"),
+                   "negative W^: with many neighbours SPH pairs particles (Dehnen & Aly 2012); see sphkern stability");
+        if (spectrum.provided) check_provided_transform(kernel, dim, checks);
         checks.add(dim, "negative_lobe", 0,
                    first_negative < 0 ? "W >= 0 on [0, R]"
                                       : "W < 0 from q = " + format(first_negative, 4) + ", minimum " +
@@ -167,6 +304,8 @@ nlohmann::json check_kernel(const Kernel& kernel)
             {"verdict", verdicts[checks.worst]},
             {"normalization", normalization},
             {"second_moment", second},
+            {"fourier", fourier},
+            {"second_derivative", kernel.provides_second_derivative() ? "plugin" : "numerical"},
             {"checks", checks.items}};
 }
 

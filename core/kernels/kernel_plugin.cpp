@@ -8,7 +8,12 @@
 
 #include <spdlog/spdlog.h>
 
+#include <boost/dll/library_info.hpp>
 #include <boost/dll/shared_library.hpp>
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <cstring>
 
 #include <cmath>
 #include <cstdlib>
@@ -51,35 +56,84 @@ std::shared_ptr<boost::dll::shared_library> open_library(const std::filesystem::
     }
 }
 
-const sphkern_kernel_descriptor* call_entry(const boost::dll::shared_library& library, const std::string& file)
+// The dynamic symbols of a library, for hints; empty when it cannot be read.
+std::vector<std::string> exported_symbols(const std::string& file)
 {
-    if (!library.has(SPHKERN_ENTRY_NAME))
-        throw Error(ExitCode::plugin, file + ": not a sphkern kernel plugin (no exported " SPHKERN_ENTRY_NAME ")");
-    auto entry = library.get<const sphkern_kernel_descriptor*()>(SPHKERN_ENTRY_NAME);
-    const sphkern_kernel_descriptor* descriptor = entry();
+    try {
+        return boost::dll::library_info(boost::dll::fs::path(file)).symbols();
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+const void* call_entry(const boost::dll::shared_library& library, const std::string& file)
+{
+    if (!library.has(SPHKERN_ENTRY_NAME)) {
+        std::string hint;
+        for (const auto& symbol : exported_symbols(file))
+            if (symbol.find(SPHKERN_ENTRY_NAME) != std::string::npos && symbol != SPHKERN_ENTRY_NAME) {
+                hint = " (it exports the C++ name " + symbol + ": declare the entry function extern \"C\")";
+                break;
+            }
+        throw Error(ExitCode::plugin, file + ": not a sphkern kernel plugin (no exported " SPHKERN_ENTRY_NAME ")" + hint);
+    }
+    auto entry = library.get<const void*()>(SPHKERN_ENTRY_NAME);
+    const void* descriptor = entry();
     if (!descriptor) throw Error(ExitCode::plugin, file + ": " SPHKERN_ENTRY_NAME " returned no descriptor");
     return descriptor;
 }
 
-// The four functions of a plugin: its descriptor's pointers, and the library they live in.
+// The layout of ABI 1, frozen: plugins built against it keep loading.
+struct DescriptorV1 {
+    uint32_t abi_version;
+    const char* name;
+    const char* title;
+    const char* reference;
+    double support;
+    uint32_t dimensions;
+    uint32_t flags;
+    uint32_t parameter_count;
+    const sphkern_kernel_parameter* parameters;
+    uint32_t breakpoint_count;
+    const double* breakpoints;
+    sphkern_kernel_fn w;
+    sphkern_kernel_fn dw;
+    sphkern_kernel_batch_fn w_batch;
+    sphkern_kernel_batch_fn dw_batch;
+};
+
+constexpr std::size_t required_v2_size = offsetof(sphkern_kernel_descriptor, get_extension);
+
+// The functions of a plugin: its descriptor's pointers, and the library they live in.
 class PluginFunctions final : public KernelFunctions {
 public:
-    PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const sphkern_kernel_descriptor* d)
+    PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const PluginDescriptor& d)
         : library_(std::move(library)), d_(d) {}
-    double w(double q, int dim, double k, const double* p) const override { return d_->w(q, dim, k, p); }
-    double dw(double q, int dim, double k, const double* p) const override { return d_->dw(q, dim, k, p); }
+    double w(double q, int dim, double k, const double* p) const override { return d_.fields.w(q, dim, k, p); }
+    double dw(double q, int dim, double k, const double* p) const override { return d_.fields.dw(q, dim, k, p); }
     void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        d_->w_batch(q, out, n, dim, k, p);
+        d_.fields.w_batch(q, out, n, dim, k, p);
     }
     void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        d_->dw_batch(q, out, n, dim, k, p);
+        d_.fields.dw_batch(q, out, n, dim, k, p);
+    }
+    bool has_second_derivative() const override { return d_.second != nullptr; }
+    double d2w(double q, int dim, double k, const double* p) const override { return d_.second->d2w(q, dim, k, p); }
+    void d2w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
+    {
+        d_.second->d2w_batch(q, out, n, dim, k, p);
+    }
+    bool has_fourier_transform() const override { return d_.fourier != nullptr; }
+    double fourier_transform(double kh, int dim, double k, const double* p) const override
+    {
+        return d_.fourier->transform(kh, dim, k, p);
     }
 
 private:
-    std::shared_ptr<boost::dll::shared_library> library_; // keeps d_ and its functions mapped
-    const sphkern_kernel_descriptor* d_;
+    std::shared_ptr<boost::dll::shared_library> library_; // keeps the descriptor and its functions mapped
+    PluginDescriptor d_;
 };
 
 } // namespace
@@ -91,11 +145,57 @@ double plugin_probe_timeout()
     return seconds > 0 && seconds < 3600 ? seconds : 10.0;
 }
 
-std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
+std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
 {
-    if (d->abi_version != SPHKERN_KERNEL_ABI_VERSION)
-        return "ABI version " + std::to_string(d->abi_version) + ", this sphkern needs version " +
-               std::to_string(SPHKERN_KERNEL_ABI_VERSION) + " (rebuild the plugin against this sphkern)";
+    out = PluginDescriptor{};
+    uint32_t major = 0;
+    std::memcpy(&major, raw, sizeof major);
+    if (major == 1) {
+        DescriptorV1 v1{};
+        std::memcpy(&v1, raw, sizeof v1);
+        out.abi_major = 1;
+        auto& f = out.fields;
+        f.flags = v1.flags;
+        f.name = v1.name;
+        f.title = v1.title;
+        f.reference = v1.reference;
+        f.support = v1.support;
+        f.dimensions = v1.dimensions;
+        f.parameter_count = v1.parameter_count;
+        f.parameters = v1.parameters;
+        f.breakpoint_count = v1.breakpoint_count;
+        f.breakpoints = v1.breakpoints;
+        f.w = v1.w;
+        f.dw = v1.dw;
+        f.w_batch = v1.w_batch;
+        f.dw_batch = v1.dw_batch;
+    } else if (major == SPHKERN_KERNEL_ABI_MAJOR) {
+        const auto* d = static_cast<const sphkern_kernel_descriptor*>(raw);
+        if (d->struct_size < required_v2_size || d->struct_size > 4096)
+            return "struct_size " + std::to_string(d->struct_size) + " is not a descriptor size (expected at least " +
+                   std::to_string(required_v2_size) + "; fill it with SPHKERN_DESCRIPTOR_VERSION)";
+        out.abi_major = major;
+        out.abi_minor = d->abi_minor;
+        // Only the fields the plugin's own header had: a smaller struct leaves the rest zero.
+        std::memcpy(&out.fields, raw, std::min<std::size_t>(d->struct_size, sizeof out.fields));
+    } else {
+        return "ABI version " + std::to_string(major) + ", this sphkern reads versions 1 and " +
+               std::to_string(SPHKERN_KERNEL_ABI_MAJOR) + " (rebuild the plugin against this sphkern)";
+    }
+    const auto* d = &out.fields;
+    if ((d->flags & ~uint32_t{SPHKERN_KERNEL_KNOWN_FLAGS}) != 0)
+        return fmt::format("flags 0x{:x} has bits this sphkern does not define (known: 0x{:x})", d->flags,
+                           SPHKERN_KERNEL_KNOWN_FLAGS);
+    if (d->get_extension) {
+        if (const void* e = d->get_extension(SPHKERN_EXTENSION_SECOND_DERIVATIVE)) {
+            out.second = static_cast<const sphkern_second_derivative*>(e);
+            if (!out.second->d2w || !out.second->d2w_batch) return "the second-derivative extension has a null function";
+        }
+        if (const void* e = d->get_extension(SPHKERN_EXTENSION_FOURIER_TRANSFORM)) {
+            out.fourier = static_cast<const sphkern_fourier_transform*>(e);
+            if (!out.fourier->transform) return "the Fourier-transform extension has a null function";
+        }
+    }
     if (!valid_identifier(d->name)) return "name must be 1 to 64 characters of [a-z0-9_]";
     if (!valid_text(d->title) || !valid_text(d->reference)) return "title and reference must be C strings";
     if (!std::isfinite(d->support) || d->support <= 0 || d->support > 100)
@@ -124,20 +224,24 @@ std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* d)
     std::vector<double> params;
     for (uint32_t i = 0; i < d->parameter_count; ++i) params.push_back(d->parameters[i].default_value);
     const int steps = 60;
-    std::vector<double> qs(steps + 1), batch_w(steps + 1), batch_dw(steps + 1);
+    std::vector<double> qs(steps + 1), batch_w(steps + 1), batch_dw(steps + 1), batch_d2w(steps + 1);
     for (int i = 0; i <= steps; ++i) qs[i] = 1.5 * d->support * i / steps;
+    auto disagree = [](double a, double b) { return std::abs(a - b) > 1e-12 * (1 + std::abs(b)); };
     for (int dim = 1; dim <= 3; ++dim) {
         if (!(d->dimensions & SPHKERN_DIM(dim))) continue;
         for (double k : {0.9, 1.0, 1.1, 1.25}) {
             d->w_batch(qs.data(), batch_w.data(), qs.size(), dim, k, params.data());
             d->dw_batch(qs.data(), batch_dw.data(), qs.size(), dim, k, params.data());
+            if (out.second) out.second->d2w_batch(qs.data(), batch_d2w.data(), qs.size(), dim, k, params.data());
             for (int i = 0; i <= steps; ++i) {
                 double w = d->w(qs[i], dim, k, params.data()), dw = d->dw(qs[i], dim, k, params.data());
+                double d2w = out.second ? out.second->d2w(qs[i], dim, k, params.data()) : 0.0;
+                double transform = out.fourier ? out.fourier->transform(2 * qs[i], dim, k, params.data()) : 0.0;
                 std::ostringstream at;
                 at << " at q = " << qs[i] << ", D = " << dim << ", k = " << k;
-                if (!std::isfinite(w) || !std::isfinite(dw)) return "non-finite value" + at.str();
-                if (std::abs(batch_w[i] - w) > 1e-12 * (1 + std::abs(w)) ||
-                    std::abs(batch_dw[i] - dw) > 1e-12 * (1 + std::abs(dw)))
+                if (!std::isfinite(w) || !std::isfinite(dw) || !std::isfinite(d2w)) return "non-finite value" + at.str();
+                if (!std::isfinite(transform)) return "non-finite Fourier transform at kh = " + std::to_string(2 * qs[i]);
+                if (disagree(batch_w[i], w) || disagree(batch_dw[i], dw) || (out.second && disagree(batch_d2w[i], d2w)))
                     return "batch and scalar functions disagree" + at.str();
             }
         }
@@ -165,9 +269,9 @@ std::string probe_kernel_plugin(const std::filesystem::path& file)
         [&]() -> std::string {
             try {
                 auto library = open_library(file);
-                const auto* d = call_entry(*library, name);
-                auto reason = validate_kernel_descriptor(d);
-                return reason.empty() ? std::string("+") + d->name : name + ": invalid kernel descriptor: " + reason;
+                PluginDescriptor d;
+                auto reason = read_kernel_descriptor(call_entry(*library, name), d);
+                return reason.empty() ? std::string("+") + d.fields.name : name + ": invalid kernel descriptor: " + reason;
             } catch (const Error& e) {
                 return e.what(); // already names the file
             }
@@ -186,7 +290,11 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     const std::string name = file.string();
     const std::string kernel_name = probe_kernel_plugin(file);
     auto library = open_library(file);
-    const auto* d = call_entry(*library, name);
+    PluginDescriptor descriptor;
+    // Validated in the probe; read again because the file could have changed since.
+    if (auto reason = read_kernel_descriptor(call_entry(*library, name), descriptor); !reason.empty())
+        throw Error(ExitCode::plugin, name + ": invalid kernel descriptor: " + reason);
+    const auto* d = &descriptor.fields;
     // The library's constructors ran in this process: take the signals and stdout back.
     install_interrupt_handlers();
     check_results_output();
@@ -207,7 +315,8 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     plugin->breakpoints.assign(d->breakpoints, d->breakpoints + d->breakpoint_count);
     plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;
     plugin->truncations = {d->support};
-    plugin->functions = std::make_shared<PluginFunctions>(std::move(library), d);
+    plugin->abi = fmt::format("{}.{}", descriptor.abi_major, descriptor.abi_minor);
+    plugin->functions = std::make_shared<PluginFunctions>(std::move(library), descriptor);
     return plugin;
 }
 

@@ -13,9 +13,18 @@
 
 namespace sphkern {
 
-// Returns an empty string if the descriptor is usable, else why not. Calls the
-// plugin's functions at probe points, so run it where a crash cannot hurt.
-std::string validate_kernel_descriptor(const sphkern_kernel_descriptor* descriptor);
+// A descriptor of ABI 1 or 2 in the ABI 2 form, with the extensions it provides.
+struct PluginDescriptor {
+    uint32_t abi_major = 0, abi_minor = 0;
+    sphkern_kernel_descriptor fields{};
+    const sphkern_second_derivative* second = nullptr;
+    const sphkern_fourier_transform* fourier = nullptr;
+};
+
+// Reads what a plugin's entry function returned into `out`; returns an empty string if
+// the descriptor is usable, else why not. Calls the plugin's functions at probe points,
+// so run it where a crash cannot hurt.
+std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out);
 
 // Validates a plugin file in a child process (unless the probe cache knows the unchanged
 // file) and returns its kernel name. Throws Error(plugin) naming the file and the reason.

@@ -1,6 +1,7 @@
 /* Composite kernel (paper eq. 13a, 13b), R = 1, 2D only. Its derivative (13b) is a
  * separate formula that depends on k and is singular at k = 63/74. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -23,9 +24,17 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "composite", "Composite kernel (Potapov & Reshetnikova)",
-    "Potapov & Reshetnikova, Computer Research and Modeling 13(5) (2021), eq. 13a, 13b",
-    1.0, SPHKERN_DIM(2), SPHKERN_KERNEL_SEPARATE_DERIVATIVE, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "composite",
+    .title = "Composite kernel (Potapov & Reshetnikova)",
+    .reference = "Potapov & Reshetnikova, Computer Research and Modeling 13(5) (2021), eq. 13a, 13b",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(2),
+    .flags = SPHKERN_KERNEL_SEPARATE_DERIVATIVE,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

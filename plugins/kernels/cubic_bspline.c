@@ -1,5 +1,6 @@
 /* Cubic B-spline (Monaghan & Lattanzio; paper eq. 8), R = 2. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -28,9 +29,18 @@ SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 static const double breakpoints[] = {1.0};
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "cubic_bspline", "Cubic B-spline",
-    "Monaghan & Lattanzio, Astron. Astrophys. 149 (1985) 135; Potapov & Reshetnikova (2021) eq. 8",
-    2.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 1u, breakpoints,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "cubic_bspline",
+    .title = "Cubic B-spline",
+    .reference = "Monaghan & Lattanzio, Astron. Astrophys. 149 (1985) 135; Potapov & Reshetnikova (2021) eq. 8",
+    .support = 2.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .breakpoint_count = 1u,
+    .breakpoints = breakpoints,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,5 +1,6 @@
 /* Spiky kernel of Desbrun & Gascuel (paper eq. 11, with (2-q)^3: see share/docs/method.md, errata), R = 2. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -21,9 +22,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "desbrun_spiky", "Spiky kernel (Desbrun)",
-    "Desbrun & Gascuel, Computer Animation and Simulation '96, 61; Potapov & Reshetnikova (2021) eq. 11",
-    2.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "desbrun_spiky",
+    .title = "Spiky kernel (Desbrun)",
+    .reference = "Desbrun & Gascuel, Computer Animation and Simulation '96, 61; Potapov & Reshetnikova (2021) eq. 11",
+    .support = 2.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

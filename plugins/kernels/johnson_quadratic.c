@@ -1,5 +1,6 @@
 /* Quadratic kernel of Johnson et al. (paper eq. 10), R = 2. One formula: continues past R. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -21,9 +22,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "johnson_quadratic", "Quadratic kernel (Johnson)",
-    "Johnson, Stryk & Beissel, Comput. Methods Appl. Mech. Eng. 139 (1996) 347; Potapov & Reshetnikova (2021) eq. 10",
-    2.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "johnson_quadratic",
+    .title = "Quadratic kernel (Johnson)",
+    .reference = "Johnson, Stryk & Beissel, Comput. Methods Appl. Mech. Eng. 139 (1996) 347; Potapov & Reshetnikova (2021) eq. 10",
+    .support = 2.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,5 +1,6 @@
 /* Morris quintic spline (paper eq. 7), R = 3, with the exact sigma_3 = 1/(120 pi). */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -28,9 +29,18 @@ SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 static const double breakpoints[] = {1.0, 2.0};
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "morris_quintic", "Quintic spline (Morris)",
-    "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214; Potapov & Reshetnikova (2021) eq. 7",
-    3.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 2u, breakpoints,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "morris_quintic",
+    .title = "Quintic spline (Morris)",
+    .reference = "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214; Potapov & Reshetnikova (2021) eq. 7",
+    .support = 3.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .breakpoint_count = 2u,
+    .breakpoints = breakpoints,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

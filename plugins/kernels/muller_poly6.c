@@ -1,5 +1,6 @@
 /* Poly6 kernel of Mueller et al. (paper eq. 12), R = 1. One formula: continues past R. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -23,9 +24,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "muller_poly6", "Poly6 kernel (Mueller)",
-    "Mueller, Charypar & Gross, SCA 2003, 154; Potapov & Reshetnikova (2021) eq. 12",
-    1.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "muller_poly6",
+    .title = "Poly6 kernel (Mueller)",
+    .reference = "Mueller, Charypar & Gross, SCA 2003, 154; Potapov & Reshetnikova (2021) eq. 12",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -2,6 +2,7 @@
  * One formula for all q: it continues past R, where the host truncates it. */
 #include <math.h>
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -28,9 +29,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "super_gaussian", "Super-Gaussian (truncated at R = 3)",
-    "Monaghan, Rep. Prog. Phys. 68 (2005) 1703; Potapov & Reshetnikova (2021) eq. 6",
-    3.0, SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "super_gaussian",
+    .title = "Super-Gaussian (truncated at R = 3)",
+    .reference = "Monaghan, Rep. Prog. Phys. 68 (2005) 1703; Potapov & Reshetnikova (2021) eq. 6",
+    .support = 3.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -5,6 +5,7 @@
  * sigma_D(beta) = 1 / (S_D (I_{D-1} + 2 I_D + beta I_{D+1})), with
  * I_n = integral_0^2 q^n (1 - q/2)^4 dq = 2^(n+1) n! 4! / (n+5)!. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -45,9 +46,18 @@ static const sphkern_kernel_parameter parameters[] = {
     {"beta", "weight of q^2 in the polynomial factor; 0 is Wendland C2", 0.0, -1.0, 10.0}};
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "wendland_c2_shape", "Wendland C2 family (1 - q/2)^4 (1 + 2q + beta q^2)",
-    "Wendland, Adv. Comput. Math. 4 (1995) 389 (beta = 0); the family is sphkern's",
-    2.0, SPHKERN_DIM(2) | SPHKERN_DIM(3), 0u, 1u, parameters, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "wendland_c2_shape",
+    .title = "Wendland C2 family (1 - q/2)^4 (1 + 2q + beta q^2)",
+    .reference = "Wendland, Adv. Comput. Math. 4 (1995) 389 (beta = 0); the family is sphkern's",
+    .support = 2.0,
+    .dimensions = SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .parameter_count = 1u,
+    .parameters = parameters,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

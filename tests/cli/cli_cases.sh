@@ -399,7 +399,7 @@ check "a study reports every site and both verdicts" grep -q 'Each site on its o
 
 # Resolution axes: eta = k / a_p^(1/D) (sc, a_p = 1: eta = k; fcc: a_p = 1/sqrt(2)); nh windows
 # from fcc's coordination shells 12, 6, 24, 12, 24, 8, 48 at 1, sqrt 2, sqrt 3, 2, sqrt 5, sqrt 6, sqrt 7.
-window() { "$sphkern" roots "$@" --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print("%.12f %.12f" % tuple(d["k_range"]))'; }
+window() { "$sphkern" roots "$@" --json | python3 -c 'import json,sys; d=json.load(sys.stdin)[0]; print("%.12f %.12f" % tuple(d["k_range"]))'; }
 check "eta on sc is k" test "$(window cubic_bspline sc --axis eta --kmin 0.8 --kmax 1.2)" = "0.800000000000 1.200000000000"
 check "eta on fcc" test "$(window cubic_bspline fcc --axis eta --kmin 1 --kmax 1.4)" = \
     "$(python3 -c 'print("%.12f %.12f" % (2 ** (-1 / 6), 1.4 * 2 ** (-1 / 6)))')"

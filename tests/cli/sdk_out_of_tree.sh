@@ -17,6 +17,8 @@ nm -D --defined-only "$plugin" | grep -q ' T sphkern_kernel_entry$'
 python3 -c "
 import json
 r = json.load(open('$work/check.json'))
+assert isinstance(r, list) and len(r) == 1, r
+r = r[0]
 assert r['kernel'] == 'morris_quintic_359', r['kernel']
 assert abs(r['normalization']['3'] - 1.00279) < 5e-6, r['normalization']
 assert abs(r['normalization']['2'] - 1) < 1e-9 and r['verdict'] == 'warn'

@@ -2,6 +2,7 @@
  * grid (q = 0.05 i) misses it, a lattice sum at k = 1/0.705 on fcc does not. */
 #include <math.h>
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 static double w(double q, int dim, double k, const double* p)
 {
@@ -20,6 +21,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "nan_band", "broken", "", 1.0, SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL, w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "nan_band",
+    .title = "broken",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,6 +1,7 @@
 /* A deliberately broken kernel plugin for the loader tests: no supported dimension */
 #include <math.h>
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 static double w(double q, int dim, double k, const double* p)
 {
@@ -18,6 +19,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "no_dimension", "broken", "", 1.0, 0u, 0u, 0u, NULL, 0u, NULL, w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "no_dimension",
+    .title = "broken",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = 0u,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 __attribute__((constructor)) static void on_load(void)
 {
@@ -29,8 +30,17 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "noisy", "prints and ignores signals", "", 1.0, SPHKERN_DIM(3), 0u, 0u, NULL, 0u, NULL,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "noisy",
+    .title = "prints and ignores signals",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(3),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void)
 {

@@ -1,6 +1,7 @@
 // A deliberately broken kernel plugin for the loader tests: a C++ exception thrown
 // across the C boundary.
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #include <stdexcept>
 
@@ -14,7 +15,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION, "throws_exception", "broken", "", 1.0, SPHKERN_DIM(2), 0u, 0u, nullptr, 0u, nullptr,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "throws_exception",
+    .title = "broken",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(2),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 extern "C" SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

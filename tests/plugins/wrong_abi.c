@@ -1,6 +1,7 @@
 /* A deliberately broken kernel plugin for the loader tests: a future ABI version */
 #include <math.h>
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 static double w(double q, int dim, double k, const double* p)
 {
@@ -18,6 +19,16 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    999u, "wrong_abi", "broken", "", 1.0, SPHKERN_DIM(2), 0u, 0u, NULL, 0u, NULL, w, dw, w_batch, dw_batch};
+    .abi_major = 999u, .abi_minor = 0u, .struct_size = (uint32_t)sizeof(sphkern_kernel_descriptor),
+    .name = "wrong_abi",
+    .title = "broken",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(2),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -75,11 +75,11 @@ def test_options_mirror_the_command_line():
 def test_documents_equal_the_command_lines():
     close(sphkern.kernels(), cli_json("kernels"))
     close(sphkern.lattices(), cli_json("lattices"))
-    close(sphkern.roots("cubic_bspline", "triangular", details=True), cli_json("roots", "cubic_bspline", "triangular"))
+    close(sphkern.roots("cubic_bspline", "triangular", details=True), cli_json("roots", "cubic_bspline", "triangular")[0])
     close(sphkern.roots("morris_quintic", "fcc", kmin=0.8, kmax=1.3),
-          cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")["roots"])
+          cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")[0]["roots"])
     close(sphkern.roots("wendland_c4", "hcp", axis="eta", kmin=1.0, kmax=1.6, lateral=True, details=True),
-          cli_json("roots", "wendland_c4", "hcp", "--axis", "eta", "--kmin", "1.0", "--kmax", "1.6", "--lateral"))
+          cli_json("roots", "wendland_c4", "hcp", "--axis", "eta", "--kmin", "1.0", "--kmax", "1.6", "--lateral")[0])
     close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
     close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
           cli_json("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "monaghan", "--layers", "6"))

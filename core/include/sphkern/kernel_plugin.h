@@ -1,35 +1,58 @@
 /*
- * sphkern kernel plugin interface: the only header a kernel plugin includes.
+ * sphkern kernel plugin interface, ABI 2: the header a kernel plugin includes.
  *
  * A plugin is a shared library exporting one C function,
  *
  *     SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void);
  *
- * returning a pointer to a static descriptor that starts with the ABI version.
- * Everything that crosses the boundary is plain C: numbers, C strings, arrays and
- * function pointers. No allocation, exception or C++ type may cross it.
+ * (in C++, inside extern "C", or the host cannot find the name), returning a pointer to a
+ * static descriptor that starts with {abi_major, abi_minor, struct_size}. Everything
+ * that crosses the boundary is plain C: numbers, C strings, arrays and function
+ * pointers. No allocation, exception or C++ type may cross it.
+ *
+ * Versions: the host loads every minor version of its major version and reads only the
+ * fields that lie inside `struct_size`, so a newer minor adds fields at the end (taken
+ * from `reserved`) and an older host ignores them. A new major version is a new layout.
+ * Plugins built against ABI 1 (a first field `abi_version` = 1) keep loading.
+ * Optional features are extensions: `get_extension(id)` returns a pointer to the
+ * extension's static struct, or NULL when the plugin does not provide it.
  *
  * Conventions (q = r / h, h = k d, D = dimension):
- *   w(q, D, k, params)  returns h^D W       (the normalised kernel, sigma_D included)
- *   dw(q, D, k, params) returns h^(D+1) dW/dr
+ *   w(q, D, k, params)   returns h^D W          (the normalised kernel, sigma_D included)
+ *   dw(q, D, k, params)  returns h^(D+1) dW/dr
+ *   d2w(q, D, k, params) returns h^(D+2) d2W/dr2 (extension SPHKERN_EXTENSION_SECOND_DERIVATIVE)
+ *   transform(kh, D, k, params) returns the Fourier transform of W at wave number kappa
+ *     with kh = kappa h: integral of W(|x|) exp(-i kappa.x) d^D x, dimensionless, 1 at
+ *     kh = 0 (extension SPHKERN_EXTENSION_FOURIER_TRANSFORM).
  * Each returns the formula as written for every q >= 0: a one-formula kernel keeps
  * its formula past the support R, a piecewise kernel returns its own zero branch.
- * The host truncates at R. The derivative is its own function: the host never
- * assumes it is the derivative of w (it may depend on k).
+ * The host truncates at R. The derivatives are their own functions: the host never
+ * assumes they are derivatives of w (they may depend on k); `sphkern check` compares.
  *
  * Contract with the host:
- *   - Threads: w, dw, w_batch and dw_batch are called concurrently from several
- *     threads, with different or equal arguments. They must be reentrant: no writable
- *     global or static state, no locale or errno games.
- *   - Memory: `q` and `out` of a batch call never alias; `params` is read-only. The
- *     descriptor and every string and array it points to must stay valid and unchanged
- *     as long as the library is loaded (static storage).
+ *   - Threads: every kernel function (scalar, batch, extensions) is called concurrently
+ *     from several threads, with different or equal arguments. They must be reentrant:
+ *     no writable global or static state, no locale or errno games.
+ *   - Memory: `q` and `out` of a batch call never alias; `params` is read-only and holds
+ *     one value per declared parameter (NULL if none). The descriptor, the extension
+ *     structs and every string and array they point to must stay valid and unchanged as
+ *     long as the library is loaded (static storage).
+ *   - Flags: only the bits defined here; a descriptor with an unknown bit is refused.
  *   - Output: stdout belongs to the host; a plugin must not write to it (sphkern points
  *     descriptor 1 at stderr, so stray output only clutters the log).
  *   - Signals: a plugin must not install signal handlers; the host takes SIGINT,
  *     SIGTERM and SIGHUP back after loading a library.
  *   - The entry function is first called in a child process (a probe with a time
  *     bound), then in the host; it must have no side effect but returning the pointer.
+ *
+ * Fill the descriptor with designated initialisers and SPHKERN_DESCRIPTOR_VERSION:
+ *
+ *     static const sphkern_kernel_descriptor descriptor = {
+ *         SPHKERN_DESCRIPTOR_VERSION,
+ *         .name = "my_kernel", .title = "...", .reference = "...",
+ *         .support = 2.0, .dimensions = SPHKERN_DIM(2) | SPHKERN_DIM(3),
+ *         .w = w, .dw = dw, .w_batch = w_batch, .dw_batch = dw_batch,
+ *     };
  */
 #ifndef SPHKERN_KERNEL_PLUGIN_H
 #define SPHKERN_KERNEL_PLUGIN_H
@@ -41,14 +64,16 @@
 extern "C" {
 #endif
 
-/* Bumped whenever the descriptor layout or a function signature changes. */
-#define SPHKERN_KERNEL_ABI_VERSION 1u
+#define SPHKERN_KERNEL_ABI_MAJOR 2u
+#define SPHKERN_KERNEL_ABI_MINOR 0u
 
 /* Bit set in `dimensions` for each supported dimension D (1, 2, 3). */
 #define SPHKERN_DIM(D) (1u << (D))
 
 /* `flags`: the derivative is a separate formula, not d/dr of W. */
 #define SPHKERN_KERNEL_SEPARATE_DERIVATIVE 1u
+/* Every flag this version defines. */
+#define SPHKERN_KERNEL_KNOWN_FLAGS SPHKERN_KERNEL_SEPARATE_DERIVATIVE
 
 #define SPHKERN_ENTRY_NAME "sphkern_kernel_entry"
 
@@ -66,20 +91,22 @@ typedef struct sphkern_kernel_parameter {
     double max_value;
 } sphkern_kernel_parameter;
 
-/* Scalar form. `params` holds one value per declared parameter (may be NULL if none). */
+/* Scalar form. */
 typedef double (*sphkern_kernel_fn)(double q, int dim, double k, const double* params);
 /* Batch form: out[i] = f(q[i]) for i < n. */
 typedef void (*sphkern_kernel_batch_fn)(const double* q, double* out, size_t n, int dim,
                                         double k, const double* params);
 
 typedef struct sphkern_kernel_descriptor {
-    uint32_t abi_version; /* must be SPHKERN_KERNEL_ABI_VERSION; always first */
+    uint32_t abi_major;   /* SPHKERN_KERNEL_ABI_MAJOR; always first */
+    uint32_t abi_minor;   /* SPHKERN_KERNEL_ABI_MINOR */
+    uint32_t struct_size; /* sizeof(sphkern_kernel_descriptor) in the plugin's build */
+    uint32_t flags;       /* SPHKERN_KERNEL_* bits */
     const char* name;      /* identifier: [a-z0-9_]+ */
     const char* title;
     const char* reference; /* literature reference */
     double support;        /* R: W = 0 for q > R */
     uint32_t dimensions;   /* SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3) subset */
-    uint32_t flags;
     uint32_t parameter_count;
     const sphkern_kernel_parameter* parameters;
     uint32_t breakpoint_count; /* interior q where the piecewise definition changes */
@@ -88,26 +115,32 @@ typedef struct sphkern_kernel_descriptor {
     sphkern_kernel_fn dw;
     sphkern_kernel_batch_fn w_batch;
     sphkern_kernel_batch_fn dw_batch;
+    /* Optional features by identifier (SPHKERN_EXTENSION_*); NULL or returning NULL: none. */
+    const void* (*get_extension)(const char* id);
+    void* reserved[8]; /* zero; later minor versions take fields from here */
 } sphkern_kernel_descriptor;
+
+/* The first three fields, for designated initialisation. */
+#define SPHKERN_DESCRIPTOR_VERSION                                                           \
+    .abi_major = SPHKERN_KERNEL_ABI_MAJOR, .abi_minor = SPHKERN_KERNEL_ABI_MINOR,           \
+    .struct_size = (uint32_t)sizeof(sphkern_kernel_descriptor)
 
 typedef const sphkern_kernel_descriptor* (*sphkern_kernel_entry_fn)(void);
 
-/* Compiles a batch loop once per instruction set and picks one at load time (GCC on
- * x86-64), so that a branch-free scalar formula runs in wide vector registers. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define SPHKERN_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define SPHKERN_VECTOR_CLONES
-#endif
+/* Extension: the second derivative h^(D+2) d2W/dr2, scalar and batch. */
+#define SPHKERN_EXTENSION_SECOND_DERIVATIVE "sphkern.second_derivative.1"
+typedef struct sphkern_second_derivative {
+    sphkern_kernel_fn d2w;
+    sphkern_kernel_batch_fn d2w_batch;
+} sphkern_second_derivative;
 
-/* Defines `name` as a batch function looping over the scalar function `scalar`; the
- * loop vectorises when `scalar` is branch-free (use ?: rather than if/return). */
-#define SPHKERN_BATCH_FROM_SCALAR(name, scalar)                                              \
-    SPHKERN_VECTOR_CLONES static void name(const double* q, double* out, size_t n, int dim, \
-                                           double k, const double* params)                 \
-    {                                                                                      \
-        for (size_t i = 0; i < n; ++i) out[i] = scalar(q[i], dim, k, params);              \
-    }
+/* Extension: the radial Fourier transform of the normalised kernel, as a function of
+ * kh = kappa h (dimensionless; 1 at kh = 0). */
+#define SPHKERN_EXTENSION_FOURIER_TRANSFORM "sphkern.fourier_transform.1"
+typedef double (*sphkern_fourier_fn)(double kh, int dim, double k, const double* params);
+typedef struct sphkern_fourier_transform {
+    sphkern_fourier_fn transform;
+} sphkern_fourier_transform;
 
 #ifdef __cplusplus
 }

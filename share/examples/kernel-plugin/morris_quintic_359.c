@@ -2,6 +2,7 @@
  * many codes copied. `sphkern check` shows why it is wrong: its 3D integral is 1.00279.
  * A plugin includes only <sphkern/kernel_plugin.h> and exports sphkern_kernel_entry. */
 #include <sphkern/kernel_plugin.h>
+#include <sphkern/kernel_plugin_helpers.h>
 
 #define PI 3.14159265358979323846
 
@@ -32,15 +33,18 @@ SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 static const double breakpoints[] = {1.0, 2.0};
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_KERNEL_ABI_VERSION,
-    "morris_quintic_359",                         /* name */
-    "Quintic spline with the 3D constant 3/(359 pi)", /* title */
-    "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214", /* reference */
-    3.0,                                          /* support R */
-    SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
-    0u,                                           /* flags */
-    0u, NULL,                                     /* parameters */
-    2u, breakpoints,
-    w, dw, w_batch, dw_batch};
+    SPHKERN_DESCRIPTOR_VERSION,
+    .name = "morris_quintic_359",
+    .title = "Quintic spline with the 3D constant 3/(359 pi)",
+    .reference = "Morris, Fox & Zhu, J. Comput. Phys. 136 (1997) 214",
+    .support = 3.0,
+    .dimensions = SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3),
+    .breakpoint_count = 2u,
+    .breakpoints = breakpoints,
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
+};
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
