@@ -60,5 +60,7 @@ Action add_run_command(CLI::App& app);
 Action add_surface_command(CLI::App& app);
 Action add_block_command(CLI::App& app);
 Action add_design_command(CLI::App& app);
+Action add_stability_command(CLI::App& app);
+Action add_spectrum_command(CLI::App& app);
 
 } // namespace sphkern::cli

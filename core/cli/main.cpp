@@ -64,6 +64,8 @@ int main(int argc, char** argv)
     add(cli::add_surface_command);
     add(cli::add_block_command);
     add(cli::add_design_command);
+    add(cli::add_stability_command);
+    add(cli::add_spectrum_command);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,140 @@
+// `sphkern stability`: the linear stability of SPH on a lattice at one k: the modes at a
+// wave vector, or the Brillouin-zone scan with the long-wave sound speeds.
+#include "cli/command.hpp"
+#include "support/results_output.hpp"
+
+#include "stability/brillouin_zone.hpp"
+#include "stability/stability_json.hpp"
+#include "stability/stability_scan.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+namespace sphkern::cli {
+
+namespace {
+
+// "x,y[,z]" in 1/d: D finite numbers, not all zero.
+Eigen::Vector3d parse_wavevector(const std::string& text, int dimension)
+{
+    std::vector<double> values;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        std::size_t used = 0;
+        double v = 0;
+        try {
+            v = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || !std::isfinite(v))
+            throw Error(ExitCode::usage, fmt::format("--wavevector {}: \"{}\" is not a finite number; expected {} "
+                                                     "comma-separated numbers in 1/d", one_line(text), one_line(item),
+                                                     dimension));
+        values.push_back(v);
+    }
+    if (static_cast<int>(values.size()) != dimension)
+        throw Error(ExitCode::usage, fmt::format("--wavevector {}: {} components, expected {} for a {}D lattice",
+                                                 one_line(text), values.size(), dimension, dimension));
+    Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
+    for (int i = 0; i < dimension; ++i) kappa[i] = values[static_cast<std::size_t>(i)];
+    if (kappa.norm() == 0 || !std::isfinite(kappa.norm()) || kappa.norm() > 1e6)
+        throw Error(ExitCode::usage, fmt::format("--wavevector {}: expected a non-zero wave vector with |kappa| <= 1e6 "
+                                                 "(in 1/d)", one_line(text)));
+    return kappa;
+}
+
+std::string vector_text(const nlohmann::json& v)
+{
+    std::string s;
+    for (const auto& x : v) s += fmt::format("{}{:.6g}", s.empty() ? "" : ", ", x.get<double>());
+    return "(" + s + ")";
+}
+
+} // namespace
+
+Action add_stability_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
+                                                    "scan, long-wave sound speed");
+    struct Options : CommonOptions {
+        std::string kernel, lattice, wavevector;
+        double k = 0, gamma = 5.0 / 3.0;
+        int grid = 0, threads = 0;
+        std::vector<std::string> sets;
+    };
+    auto options = std::make_shared<Options>();
+    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
+    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
+    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
+    command->add_option("--gamma", options->gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
+    command->add_option("--wavevector", options->wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
+    command->add_option("--grid", options->grid, "Scan points per reciprocal axis (default 24 in 3D, 96 in 2D)")
+        ->check(CLI::Range(2, 400));
+    command->add_option("--threads", options->threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    add_set_option(*command, options->sets);
+    add_plugin_option(*command, *options);
+    add_json_option(*command, *options);
+    return [options] {
+        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
+            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100]", options->k));
+        if (!std::isfinite(options->gamma) || options->gamma <= 0 || options->gamma > 1e6)
+            throw Error(ExitCode::usage,
+                        fmt::format("--gamma {} is not allowed, expected a number in (0, 1e6]", options->gamma));
+        auto lattice = load_lattice(options->lattice);
+        auto registry = discover_kernels(*options);
+        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        if (!options->wavevector.empty()) {
+            const auto kappa = parse_wavevector(options->wavevector, lattice.dimension);
+            auto document = dispersion_document(kernel, lattice, options->k, options->gamma, kappa);
+            if (options->json) {
+                print_json(document);
+                return 0;
+            }
+            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, kappa = {} / d\n", kernel.label(), lattice.name,
+                       options->k, options->gamma, vector_text(document["wavevector"]));
+            fmt::print(results_file(), "  {:>6} {:>16} {:>13}\n", "branch", "omega^2 (c/d)^2", "longitudinal");
+            int b = 0;
+            for (const auto& m : document["modes"])
+                fmt::print(results_file(), "  {:>6} {:>16.10g} {:>13.4f}\n", b++, m["omega2"].get<double>(),
+                           m["longitudinal"].get<double>());
+            return 0;
+        }
+        const int threads = options->threads > 0 ? options->threads
+                                                 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension);
+        auto document = stability_document(kernel, lattice, options->k, options->gamma, grid, threads);
+        if (options->json) {
+            print_json(document);
+            return 0;
+        }
+        fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}: {}\n", kernel.label(),
+                   lattice.name, document["bravais"].get<std::string>(), options->k, options->gamma,
+                   document["stable"].get<bool>() ? "stable" : "UNSTABLE");
+        fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone ({} grid points, refined):\n",
+                   document["grid_points"].get<int>());
+        for (const auto& m : document["branches"])
+            fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",
+                       m["branch"].get<int>(), m["min_omega2"].get<double>(), vector_text(m["at"]),
+                       m["longitudinal"].get<double>());
+        fmt::print(results_file(), "  long waves: speed / c - 1 of the longitudinal mode\n");
+        for (const auto& s : document["sound_speed"]) {
+            std::string relation;
+            if (s.contains("pressure_term"))
+                relation = fmt::format("  (eps_rho {:+.3e}, eps_gradP {:+.3e}, pressure term {:+.3e}, stiffness term {:+.3e})",
+                                       s["eps_rho"].get<double>(), s["eps_gradp"].get<double>(),
+                                       s["pressure_term"].get<double>(), s["stiffness_term"].get<double>());
+            fmt::print(results_file(), "  {:<6} {:+.6e}{}\n", s["direction"].get<std::string>(),
+                       s["longitudinal_error"].get<double>(), relation);
+        }
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

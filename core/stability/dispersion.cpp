@@ -1,0 +1,153 @@
+#include "stability/dispersion.hpp"
+
+#include "kernels/kernel_validity.hpp"
+#include "lattices/lattice_points.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <complex>
+
+namespace sphkern {
+
+Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma)
+    : dim_(lattice.dimension), k_(k), gamma_(gamma)
+{
+    if (!std::isfinite(gamma) || gamma <= 0)
+        fail_input(fmt::format("gamma = {} is not allowed, expected a finite number > 0", gamma));
+    if (!std::isfinite(k) || k <= 0 || k > 100) fail_input(fmt::format("k = {} is not allowed, expected k in (0, 100]", k));
+    kernel.require_dimension(dim_, lattice.name);
+    require_usable_kernel(kernel, dim_, k);
+    mass_ = lattice.volume_per_site(); // rho0 = 1 with a_p voronoi; the spectrum does not depend on it
+    const double R = kernel.support();
+    const double h = k, hd = std::pow(h, dim_);
+    std::vector<double> densities;
+    neighbours_.resize(static_cast<std::size_t>(lattice.sites()));
+    for (int s = 0; s < lattice.sites(); ++s) {
+        auto& list = neighbours_[static_cast<std::size_t>(s)];
+        double density = mass_ * kernel.w(0, dim_, k) / hd;
+        Eigen::Vector3d first = Eigen::Vector3d::Zero();
+        double first_scale = 0;
+        for_each_lattice_point_of_site(lattice.basis, dim_, lattice.motif, s, R * h * (1 + support_edge),
+                                       [&](const Eigen::Vector3d& x, int t) {
+            const double r = x.norm(), q = r / h;
+            if (!kernel.inside(q)) return;
+            const double w = kernel.w(q, dim_, k) / hd;
+            const double dw = kernel.dw(q, dim_, k) / (hd * h);
+            const double d2w = kernel.d2w(q, dim_, k) / (hd * h * h);
+            if (!std::isfinite(w)) fail_non_finite_kernel(kernel, "W", q, dim_, k);
+            if (!std::isfinite(dw)) fail_non_finite_kernel(kernel, "dW/dr", q, dim_, k);
+            if (!std::isfinite(d2w)) fail_non_finite_kernel(kernel, "d2W/dr2", q, dim_, k);
+            const Eigen::Vector3d e = x / r; // r_ij = x_i - x_j = -x, and H is even
+            Neighbour n;
+            n.x = x;
+            n.site = t;
+            n.gradient = -mass_ * dw * e;
+            n.hessian = mass_ * (d2w * e * e.transpose() + (dw / r) * (Eigen::Matrix3d::Identity() - e * e.transpose()));
+            density += mass_ * w;
+            first += n.gradient;
+            first_scale += std::abs(mass_ * dw);
+            list.push_back(n);
+        });
+        if (first.norm() > 1e-9 * std::max(first_scale, 1e-300))
+            fail_input(fmt::format("site {} of lattice {} is not a centre of symmetry: the SPH pressure force on it does "
+                                   "not vanish at rest (first moment {:.3g}), so the lattice is no equilibrium to "
+                                   "linearise about; stability needs sites whose neighbourhoods cancel",
+                                   s, lattice.name, first.norm() / std::max(first_scale, 1e-300)));
+        densities.push_back(density);
+        Eigen::Matrix3d onsite = Eigen::Matrix3d::Zero();
+        for (const auto& n : list) onsite += n.hessian;
+        onsite_.push_back(onsite);
+    }
+    density_ = densities[0];
+    for (std::size_t s = 1; s < densities.size(); ++s)
+        if (std::abs(densities[s] - density_) > 1e-9 * density_)
+            fail_input(fmt::format("the sites of lattice {} do not see one SPH density (site 0: {:.10g}, site {}: {:.10g} "
+                                   "times rho0 at k = {}): one pressure cannot hold them at rest, so stability is "
+                                   "defined only for lattices whose sites are equivalent",
+                                   lattice.name, density_ / mass_, s, densities[s] / mass_, k));
+    c_gradient_ = (1 - 2 / gamma) / (density_ * density_);
+    c_hessian_ = 2 / (gamma * density_);
+}
+
+Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
+{
+    const int n = sites(), D = dim_;
+    // A as a (D n) x n matrix of column vectors, and B - B0 per block.
+    Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(D * n, n), M = Eigen::MatrixXcd::Zero(D * n, D * n);
+    for (int s = 0; s < n; ++s) {
+        for (const auto& nb : neighbours_[static_cast<std::size_t>(s)]) {
+            const double phase = kappa.dot(nb.x);
+            const std::complex<double> e(std::cos(phase), std::sin(phase)); // exp(-i kappa.r_ij), r_ij = -x
+            A.block(D * s, nb.site, D, 1) += e * nb.gradient.head(D).cast<std::complex<double>>();
+            M.block(D * s, D * nb.site, D, D) -= c_hessian_ * e * nb.hessian.topLeftCorner(D, D).cast<std::complex<double>>();
+        }
+        M.block(D * s, D * s, D, D) += c_hessian_ * onsite_[static_cast<std::size_t>(s)].topLeftCorner(D, D).cast<std::complex<double>>();
+    }
+    M += c_gradient_ * A * A.adjoint();
+    return M;
+}
+
+std::vector<double> Dispersion::omega2(const Eigen::Vector3d& kappa) const
+{
+    if (sites() == 1) {
+        // One site: A = -i S and B0 - B = T are real; a fixed-size solver, no allocation.
+        Eigen::Matrix3d S3 = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d S = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d T = Eigen::Matrix3d::Zero();
+        for (const auto& nb : neighbours_[0]) {
+            const double phase = kappa.dot(nb.x);
+            S += std::sin(phase) * nb.gradient;
+            T += (1 - std::cos(phase)) * nb.hessian;
+        }
+        S3 = c_gradient_ * S * S.transpose() + c_hessian_ * T;
+        if (dim_ == 2) {
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
+            solver.computeDirect(S3.topLeftCorner<2, 2>().eval(), Eigen::EigenvaluesOnly);
+            return {solver.eigenvalues()[0], solver.eigenvalues()[1]};
+        }
+        if (dim_ == 1) return {S3(0, 0)};
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(S3, Eigen::EigenvaluesOnly);
+        return {solver.eigenvalues()[0], solver.eigenvalues()[1], solver.eigenvalues()[2]};
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> solver(matrix(kappa), Eigen::EigenvaluesOnly);
+    const auto& v = solver.eigenvalues();
+    return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+Eigen::Matrix3d Dispersion::long_wave_stiffness(const Eigen::Vector3d& n) const
+{
+    const Eigen::Vector3d e = n.normalized();
+    Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
+    for (const auto& nb : neighbours_[0]) t += 0.5 * std::pow(e.dot(nb.x), 2) * nb.hessian;
+    return t; // rho0 = 1
+}
+
+DispersionModes Dispersion::modes(const Eigen::Vector3d& kappa) const
+{
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> solver(matrix(kappa));
+    DispersionModes result;
+    const double norm = kappa.head(dim_).norm();
+    for (int b = 0; b < branches(); ++b) {
+        result.omega2.push_back(solver.eigenvalues()[b]);
+        Eigen::VectorXcd v = solver.eigenvectors().col(b);
+        // A global phase that makes the largest component real and positive: reproducible output.
+        Eigen::Index largest = 0;
+        v.cwiseAbs().maxCoeff(&largest);
+        if (std::abs(v[largest]) > 0) v *= std::abs(v[largest]) / v[largest];
+        double along = 0;
+        if (norm > 0)
+            for (int s = 0; s < sites(); ++s) {
+                std::complex<double> p = 0;
+                for (int a = 0; a < dim_; ++a) p += kappa[a] / norm * v[dim_ * s + a];
+                along += std::norm(p);
+            }
+        result.modes.push_back(v);
+        result.longitudinal.push_back(along);
+    }
+    return result;
+}
+
+} // namespace sphkern

@@ -1,0 +1,67 @@
+// The linearised SPH equations of a lattice at rest (the method document, "Linear
+// stability"): for a plane-wave displacement xi_s exp(i kappa.x) of every site s,
+//   omega^2 xi = [ (c^2 - 2P/rho) A A^H / rho^2 + (2P/rho^2) (B0 - B) ] xi,
+// with A_st = m sum_{j in t} grad W(r_ij) exp(-i kappa.r_ij) (a vector per site pair),
+// B_st = m sum_{j in t} H(r_ij) exp(-i kappa.r_ij), H = W'' r^r^T + (W'/r)(I - r^r^T),
+// B0_s = sum_t B_st(0), rho the SPH density and P/rho = c^2/gamma. Units: c = d = 1, so
+// omega^2 is in c^2/d^2 and kappa in 1/d, in the lattice file's orientation. The mass
+// cancels: the spectrum does not depend on a_p.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "lattices/lattice.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace sphkern {
+
+struct DispersionModes {
+    std::vector<double> omega2;              // ascending, D * sites of them
+    std::vector<Eigen::VectorXcd> modes;     // unit polarisation of each (D per site)
+    std::vector<double> longitudinal;        // |kappa^ . xi|^2 summed over sites: 1 longitudinal, 0 transverse
+};
+
+class Dispersion {
+public:
+    // Throws Error(input) for gamma <= 0, a kernel without the lattice's dimension, or a
+    // multi-site lattice whose sites are not an equilibrium with one pressure (different
+    // SPH densities, or a non-zero first moment at a site).
+    Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma);
+
+    int dimension() const { return dim_; }
+    int sites() const { return static_cast<int>(neighbours_.size()); }
+    int branches() const { return dim_ * sites(); }
+    double k() const { return k_; }
+    double gamma() const { return gamma_; }
+    // The SPH density over the reference density rho0 = m / (a_p d^D): 1 + eps_rho.
+    double density_ratio() const { return density_ / mass_; }
+
+    // The dispersion matrix (D * sites square, Hermitian; real for one site).
+    Eigen::MatrixXcd matrix(const Eigen::Vector3d& kappa) const;
+    // Its eigenvalues, ascending.
+    std::vector<double> omega2(const Eigen::Vector3d& kappa) const;
+    DispersionModes modes(const Eigen::Vector3d& kappa) const;
+
+    // One site only: T / kappa^2 in the long-wave limit along the unit direction n,
+    // T = m sum_j H (n.x_j)^2 / 2, over rho0 (the continuum makes it n n^T). With eps_rho
+    // and the gradient-error tensor E it gives the long-wave limit of the matrix:
+    //   omega^2 / kappa^2 -> (1 - 2/gamma) (I + E) n n^T (I + E) / (1 + eps_rho)^2 + (2/gamma) T / (1 + eps_rho).
+    Eigen::Matrix3d long_wave_stiffness(const Eigen::Vector3d& n) const;
+
+private:
+    struct Neighbour {
+        Eigen::Vector3d x;        // x_j - x_i in units of d
+        int site;                 // the motif site of j
+        Eigen::Vector3d gradient; // m grad_i W(r_ij)
+        Eigen::Matrix3d hessian;  // m H(r_ij)
+    };
+    std::vector<std::vector<Neighbour>> neighbours_; // per site
+    std::vector<Eigen::Matrix3d> onsite_;            // B0_s
+    int dim_;
+    double k_, gamma_, mass_, density_;
+    double c_gradient_, c_hessian_; // (1 - 2/gamma)/rho^2 and 2/(gamma rho)
+};
+
+} // namespace sphkern

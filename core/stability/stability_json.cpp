@@ -1,0 +1,111 @@
+#include "stability/stability_json.hpp"
+
+#include "analysis/hydrostatic_errors.hpp"
+#include "stability/stability_scan.hpp"
+
+namespace sphkern {
+
+namespace {
+
+nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
+{
+    nlohmann::json a = nlohmann::json::array();
+    for (int i = 0; i < dim; ++i) a.push_back(v[i] == 0 ? 0.0 : v[i]); // no "-0"
+    return a;
+}
+
+nlohmann::json header(const Kernel& kernel, const Lattice& lattice, double k, double gamma)
+{
+    return {{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", k}, {"gamma", gamma},
+            {"second_derivative", kernel.provides_second_derivative() ? "plugin" : "numerical"}};
+}
+
+// The directions of the high-symmetry points (Γ-X, Γ-L, ...), each once.
+std::vector<std::pair<std::string, Eigen::Vector3d>> symmetry_directions(const ReciprocalLattice& reciprocal)
+{
+    std::vector<std::pair<std::string, Eigen::Vector3d>> directions;
+    for (const auto& p : high_symmetry_path(reciprocal)) {
+        if (p.kappa.norm() < 1e-12) continue;
+        const Eigen::Vector3d n = p.kappa.normalized();
+        bool seen = false;
+        for (const auto& d : directions) seen |= std::abs(std::abs(d.second.dot(n)) - 1) < 1e-9;
+        if (!seen) directions.emplace_back("Γ-" + p.label, n);
+    }
+    return directions;
+}
+
+} // namespace
+
+nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
+                                   const Eigen::Vector3d& kappa)
+{
+    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const auto modes = dispersion.modes(kappa);
+    const int D = lattice.dimension;
+    auto document = header(kernel, lattice, k, gamma);
+    document["wavevector"] = vector_json(kappa, D);
+    document["omega2"] = modes.omega2;
+    nlohmann::json list = nlohmann::json::array();
+    int most = 0;
+    for (int b = 0; b < dispersion.branches(); ++b) {
+        nlohmann::json polarisation = nlohmann::json::array();
+        for (Eigen::Index i = 0; i < modes.modes[b].size(); ++i)
+            polarisation.push_back({modes.modes[b][i].real(), modes.modes[b][i].imag()});
+        list.push_back({{"omega2", modes.omega2[b]}, {"longitudinal", modes.longitudinal[b]},
+                        {"polarisation", polarisation}});
+        if (modes.longitudinal[b] > modes.longitudinal[most]) most = b;
+    }
+    document["modes"] = list;
+    document["longitudinal_mode"] = most;
+    return document;
+}
+
+nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int grid,
+                                  int threads)
+{
+    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const auto reciprocal = reciprocal_lattice(lattice);
+    const auto scan = scan_brillouin_zone(dispersion, reciprocal, grid, threads);
+    const int D = lattice.dimension;
+    auto document = header(kernel, lattice, k, gamma);
+    document["bravais"] = reciprocal.bravais;
+    nlohmann::json b = nlohmann::json::array();
+    for (int i = 0; i < D; ++i) b.push_back(vector_json(reciprocal.vectors.col(i), D));
+    document["reciprocal_vectors"] = b;
+    document["grid_points"] = scan.grid_points;
+    document["stable"] = scan.stable;
+    document["min_omega2"] = scan.lowest().omega2;
+    document["at"] = vector_json(scan.lowest().kappa, D);
+    document["branch"] = scan.lowest().branch;
+    document["longitudinal"] = scan.lowest().longitudinal;
+    nlohmann::json branches = nlohmann::json::array();
+    for (const auto& m : scan.minima)
+        branches.push_back({{"branch", m.branch}, {"min_omega2", m.omega2}, {"at", vector_json(m.kappa, D)},
+                            {"longitudinal", m.longitudinal}});
+    document["branches"] = branches;
+    // Long waves: the speed per direction, and for one site how it follows from the
+    // hydrostatic errors (eps_rho, E) and the stiffness term.
+    std::unique_ptr<HydrostaticErrors> errors;
+    if (dispersion.sites() == 1)
+        errors = std::make_unique<HydrostaticErrors>(kernel, lattice, 0, lattice.volume_per_site(), lattice.gravity, k);
+    nlohmann::json speeds = nlohmann::json::array();
+    for (const auto& [label, n] : symmetry_directions(reciprocal)) {
+        const auto s = long_wave_sound_speed(dispersion, n);
+        nlohmann::json entry = {{"direction", label}, {"unit_vector", vector_json(n, D)}, {"speeds", s.speeds},
+                                {"longitudinal_error", s.longitudinal - 1}};
+        if (errors) {
+            const double eps_rho = errors->at(k).eps_rho;
+            const double eps_gradp = n.dot(errors->tensor(k).tensor * n);
+            const double stiffness = n.dot(dispersion.long_wave_stiffness(n) * n);
+            entry["eps_rho"] = eps_rho;
+            entry["eps_gradp"] = eps_gradp;
+            entry["pressure_term"] = (1 + eps_gradp) / (1 + eps_rho) - 1;
+            entry["stiffness_term"] = stiffness / (1 + eps_rho) - 1;
+        }
+        speeds.push_back(entry);
+    }
+    document["sound_speed"] = speeds;
+    return document;
+}
+
+} // namespace sphkern

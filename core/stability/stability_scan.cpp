@@ -1,0 +1,125 @@
+#include "stability/stability_scan.hpp"
+
+#include "support/parallel_for.hpp"
+
+#include <boost/math/tools/minima.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <mutex>
+
+namespace sphkern {
+
+int default_grid(int dimension) { return dimension == 3 ? 24 : dimension == 2 ? 96 : 512; }
+
+StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int per_axis,
+                                  int threads)
+{
+    const int D = dispersion.dimension(), branches = dispersion.branches();
+    const int n = std::max(2, per_axis + per_axis % 2);
+    std::size_t total = 1;
+    for (int i = 0; i < D; ++i) total *= static_cast<std::size_t>(n);
+    const Eigen::Matrix3d& b = reciprocal.vectors;
+    auto fraction_of = [&](std::size_t index) {
+        Eigen::Vector3d f = Eigen::Vector3d::Zero();
+        for (int i = 0; i < D; ++i) {
+            f[i] = -0.5 + static_cast<double>(index % n) / n;
+            index /= n;
+        }
+        return f;
+    };
+    // The lowest grid value of each branch, per thread, then merged.
+    struct Best {
+        std::vector<double> value;
+        std::vector<Eigen::Vector3d> at;
+    };
+    std::vector<Best> best(static_cast<std::size_t>(std::max(1, threads)),
+                           Best{std::vector<double>(branches, INFINITY), std::vector<Eigen::Vector3d>(branches)});
+    ParallelFor pool;
+    pool.run(total, threads, [&](int t, std::size_t begin, std::size_t end) {
+        auto& mine = best[static_cast<std::size_t>(t)];
+        for (std::size_t i = begin; i < end && (i % 256 || pool.keep_going()); ++i) {
+            const Eigen::Vector3d f = fraction_of(i);
+            const auto w = dispersion.omega2(b * f);
+            for (int br = 0; br < branches; ++br)
+                if (w[br] < mine.value[br]) mine.value[br] = w[br], mine.at[br] = f;
+        }
+    });
+    StabilityScan scan;
+    scan.grid_points = static_cast<int>(total);
+    for (int br = 0; br < branches; ++br) {
+        std::size_t winner = 0;
+        for (std::size_t t = 1; t < best.size(); ++t)
+            if (best[t].value[br] < best[winner].value[br]) winner = t;
+        Eigen::Vector3d f = best[winner].at[br];
+        double value = best[winner].value[br];
+        // Coordinate-wise Brent around the grid minimum, three sweeps.
+        for (int sweep = 0; sweep < 6; ++sweep)
+            for (int axis = 0; axis < D; ++axis) {
+                auto along = [&](double x) {
+                    Eigen::Vector3d g = f;
+                    g[axis] = x;
+                    return dispersion.omega2(b * g)[br];
+                };
+                std::uintmax_t iterations = 60;
+                auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - 1.0 / n, f[axis] + 1.0 / n, 30,
+                                                                    iterations);
+                if (fx < value) value = fx, f[axis] = x;
+            }
+        BranchMinimum m;
+        m.branch = br;
+        m.kappa = fold_to_first_zone(reciprocal, b * f);
+        const auto modes = dispersion.modes(m.kappa);
+        m.omega2 = modes.omega2[br];
+        m.longitudinal = modes.longitudinal[br];
+        scan.minima.push_back(m);
+        if (m.omega2 < -unstable_threshold) scan.stable = false;
+    }
+    std::stable_sort(scan.minima.begin(), scan.minima.end(),
+                     [](const BranchMinimum& a, const BranchMinimum& c) { return a.omega2 < c.omega2; });
+    return scan;
+}
+
+SoundSpeed long_wave_sound_speed(const Dispersion& dispersion, const Eigen::Vector3d& direction)
+{
+    const int D = dispersion.dimension();
+    SoundSpeed s;
+    s.direction = direction.normalized();
+    // The acoustic modes are the D whose sites move in phase (all of them for one site);
+    // unstable optical modes may lie below them.
+    auto ratio = [&](double kappa) {
+        const auto modes = dispersion.modes(kappa * s.direction);
+        std::vector<std::pair<double, int>> in_phase;
+        for (int b = 0; b < dispersion.branches(); ++b) {
+            double together = 0;
+            for (int a = 0; a < D; ++a) {
+                std::complex<double> sum = 0;
+                for (int site = 0; site < dispersion.sites(); ++site) sum += modes.modes[b][D * site + a];
+                together += std::norm(sum);
+            }
+            in_phase.emplace_back(-together, b);
+        }
+        std::sort(in_phase.begin(), in_phase.end());
+        std::vector<std::pair<double, double>> r; // (omega^2 / kappa^2, longitudinal) of the acoustic modes
+        for (int i = 0; i < D; ++i) {
+            const int b = in_phase[static_cast<std::size_t>(i)].second;
+            r.emplace_back(modes.omega2[b] / (kappa * kappa), modes.longitudinal[b]);
+        }
+        std::sort(r.begin(), r.end());
+        return r;
+    };
+    const auto small = ratio(1e-3), larger = ratio(2e-3);
+    double most = -1;
+    for (int b = 0; b < D; ++b) {
+        // omega^2 / kappa^2 = c^2 + O(kappa^2): Richardson.
+        const double c2 = (4 * small[b].first - larger[b].first) / 3;
+        const double speed = std::copysign(std::sqrt(std::abs(c2)), c2); // negative: imaginary, unstable
+        s.speeds.push_back(speed);
+        if (small[b].second > most) most = small[b].second, s.longitudinal = speed;
+    }
+    std::sort(s.speeds.begin(), s.speeds.end());
+    return s;
+}
+
+} // namespace sphkern
