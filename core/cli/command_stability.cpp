@@ -65,14 +65,21 @@ Action add_stability_command(CLI::App& app)
                                                     "scan, long-wave sound speed");
     struct Options : CommonOptions {
         std::string kernel, lattice, wavevector;
-        double k = 0, gamma = 5.0 / 3.0;
-        int grid = 0, threads = 0;
+        double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0;
+        int grid = 0, threads = 0, steps = 50;
         std::vector<std::string> sets;
     };
     auto options = std::make_shared<Options>();
     command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
     command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
+    auto* k_option = command->add_option("--k", options->k, "Smoothing coefficient, h = k d");
+    auto* kmin_option = command->add_option("--kmin", options->k_min, "Scan k from here (with --kmax): stable intervals");
+    auto* kmax_option = command->add_option("--kmax", options->k_max, "Scan k up to here");
+    command->add_option("--steps", options->steps, "Intervals of the k scan")->capture_default_str()
+        ->check(CLI::Range(1, 2000));
+    k_option->excludes(kmin_option)->excludes(kmax_option);
+    kmin_option->needs(kmax_option);
+    kmax_option->needs(kmin_option);
     command->add_option("--gamma", options->gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
     command->add_option("--wavevector", options->wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
     command->add_option("--grid", options->grid, "Scan points per reciprocal axis (default 24 in 3D, 96 in 2D)")
@@ -82,8 +89,16 @@ Action add_stability_command(CLI::App& app)
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
-            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100]", options->k));
+        const bool over_k = options->k_max > 0 || options->k_min > 0;
+        if (over_k) {
+            if (!std::isfinite(options->k_min) || !std::isfinite(options->k_max) || options->k_min <= 0 ||
+                options->k_max > 100 || options->k_min >= options->k_max)
+                throw Error(ExitCode::usage, fmt::format("--kmin {} --kmax {}: expected 0 < kmin < kmax <= 100",
+                                                         options->k_min, options->k_max));
+            if (!options->wavevector.empty()) throw Error(ExitCode::usage, "--wavevector needs --k, not a k range");
+        } else if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
+            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100] (or give "
+                                                     "--kmin and --kmax)", options->k));
         if (!std::isfinite(options->gamma) || options->gamma <= 0 || options->gamma > 1e6)
             throw Error(ExitCode::usage,
                         fmt::format("--gamma {} is not allowed, expected a number in (0, 1e6]", options->gamma));
@@ -108,6 +123,25 @@ Action add_stability_command(CLI::App& app)
         }
         const int threads = options->threads > 0 ? options->threads
                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        if (over_k) {
+            const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension) / 2;
+            auto document = stability_over_k_document(kernel, lattice, options->k_min, options->k_max, options->steps,
+                                                      options->gamma, grid, threads);
+            if (options->json) {
+                print_json(document);
+                return 0;
+            }
+            fmt::print(results_file(), "{} on {}, gamma = {:.6g}: stable for k in", kernel.label(), lattice.name,
+                       options->gamma);
+            if (document["stable_intervals"].empty()) fmt::print(results_file(), " none of [{}, {}]", options->k_min, options->k_max);
+            for (const auto& i : document["stable_intervals"])
+                fmt::print(results_file(), " [{:.6f}, {:.6f}]", i[0].get<double>(), i[1].get<double>());
+            fmt::print(results_file(), "\n  {:>10} {:>14} {:>8}\n", "k", "min omega^2", "stable");
+            for (const auto& p : document["samples"])
+                fmt::print(results_file(), "  {:>10.6f} {:>14.6g} {:>8}\n", p["k"].get<double>(), p["min_omega2"].get<double>(),
+                           p["stable"].get<bool>() ? "yes" : "no");
+            return 0;
+        }
         const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension);
         auto document = stability_document(kernel, lattice, options->k, options->gamma, grid, threads);
         if (options->json) {

@@ -3,6 +3,8 @@
 #include "analysis/hydrostatic_errors.hpp"
 #include "stability/stability_scan.hpp"
 
+#include <optional>
+
 namespace sphkern {
 
 namespace {
@@ -105,6 +107,50 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
         speeds.push_back(entry);
     }
     document["sound_speed"] = speeds;
+    return document;
+}
+
+nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
+                                         int steps, double gamma, int grid, int threads)
+{
+    const auto reciprocal = reciprocal_lattice(lattice);
+    auto lowest = [&](double k) { return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal, grid, threads); };
+    auto document = header(kernel, lattice, k_min, gamma);
+    document.erase("k");
+    document["k_range"] = {k_min, k_max};
+    document["bravais"] = reciprocal.bravais;
+    nlohmann::json samples = nlohmann::json::array(), intervals = nlohmann::json::array();
+    std::vector<std::pair<double, bool>> verdicts;
+    for (int i = 0; i <= steps; ++i) {
+        const double k = k_min + (k_max - k_min) * i / steps;
+        const auto scan = lowest(k);
+        nlohmann::json per_branch = nlohmann::json::array();
+        for (const auto& m : scan.minima) per_branch.push_back(m.omega2);
+        samples.push_back({{"k", k}, {"min_omega2", scan.lowest().omega2}, {"stable", scan.stable},
+                           {"longitudinal", scan.lowest().longitudinal}, {"branch_minima", per_branch}});
+        verdicts.emplace_back(k, scan.stable);
+    }
+    // Edges between a stable and an unstable sample, by bisection.
+    auto edge = [&](double a, double b, bool a_stable) {
+        for (int it = 0; it < 20 && b - a > 1e-6; ++it) {
+            const double m = 0.5 * (a + b);
+            if (lowest(m).stable == a_stable) a = m;
+            else b = m;
+        }
+        return 0.5 * (a + b);
+    };
+    std::optional<double> start;
+    for (std::size_t i = 0; i < verdicts.size(); ++i) {
+        const auto [k, stable] = verdicts[i];
+        if (stable && !start) start = i == 0 ? k : edge(verdicts[i - 1].first, k, false);
+        if (!stable && start) {
+            intervals.push_back({*start, edge(verdicts[i - 1].first, k, true)});
+            start.reset();
+        }
+    }
+    if (start) intervals.push_back({*start, k_max});
+    document["samples"] = samples;
+    document["stable_intervals"] = intervals;
     return document;
 }
 
