@@ -124,7 +124,8 @@ Action add_stability_command(CLI::App& app)
         const int threads = options->threads > 0 ? options->threads
                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         if (over_k) {
-            const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension) / 2;
+            // Coarser than one scan: the lowest branch is refined from the grid minimum at every k.
+            const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension) / 3;
             auto document = stability_over_k_document(kernel, lattice, options->k_min, options->k_max, options->steps,
                                                       options->gamma, grid, threads);
             if (options->json) {

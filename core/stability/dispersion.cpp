@@ -28,7 +28,6 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
         auto& list = neighbours_[static_cast<std::size_t>(s)];
         double density = mass_ * kernel.w(0, dim_, k) / hd;
         Eigen::Vector3d first = Eigen::Vector3d::Zero();
-        double first_scale = 0;
         for_each_lattice_point_of_site(lattice.basis, dim_, lattice.motif, s, R * h * (1 + support_edge),
                                        [&](const Eigen::Vector3d& x, int t) {
             const double r = x.norm(), q = r / h;
@@ -47,14 +46,14 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
             n.hessian = mass_ * (d2w * e * e.transpose() + (dw / r) * (Eigen::Matrix3d::Identity() - e * e.transpose()));
             density += mass_ * w;
             first += n.gradient;
-            first_scale += std::abs(mass_ * dw);
             list.push_back(n);
         });
-        if (first.norm() > 1e-9 * std::max(first_scale, 1e-300))
+        // Against grad W ~ rho / h: a relative measure would amplify rounding where every W' ~ 0.
+        if (first.norm() > 1e-9 * density / h)
             fail_input(fmt::format("site {} of lattice {} is not a centre of symmetry: the SPH pressure force on it does "
                                    "not vanish at rest (first moment {:.3g}), so the lattice is no equilibrium to "
                                    "linearise about; stability needs sites whose neighbourhoods cancel",
-                                   s, lattice.name, first.norm() / std::max(first_scale, 1e-300)));
+                                   s, lattice.name, first.norm() * h / density));
         densities.push_back(density);
         Eigen::Matrix3d onsite = Eigen::Matrix3d::Zero();
         for (const auto& n : list) onsite += n.hessian;
@@ -74,18 +73,27 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
 Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
 {
     const int n = sites(), D = dim_;
-    // A as a (D n) x n matrix of column vectors, and B - B0 per block.
-    Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(D * n, n), M = Eigen::MatrixXcd::Zero(D * n, D * n);
-    for (int s = 0; s < n; ++s) {
+    // Per site pair, in fixed-size sums: A_st (a vector) and B_st.
+    std::vector<Eigen::Vector3cd> A(static_cast<std::size_t>(n * n), Eigen::Vector3cd::Zero());
+    std::vector<Eigen::Matrix3cd> B(static_cast<std::size_t>(n * n), Eigen::Matrix3cd::Zero());
+    for (int s = 0; s < n; ++s)
         for (const auto& nb : neighbours_[static_cast<std::size_t>(s)]) {
             const double phase = kappa.dot(nb.x);
             const std::complex<double> e(std::cos(phase), std::sin(phase)); // exp(-i kappa.r_ij), r_ij = -x
-            A.block(D * s, nb.site, D, 1) += e * nb.gradient.head(D).cast<std::complex<double>>();
-            M.block(D * s, D * nb.site, D, D) -= c_hessian_ * e * nb.hessian.topLeftCorner(D, D).cast<std::complex<double>>();
+            const auto pair = static_cast<std::size_t>(s * n + nb.site);
+            A[pair] += e * nb.gradient;
+            B[pair] += e * nb.hessian;
         }
-        M.block(D * s, D * s, D, D) += c_hessian_ * onsite_[static_cast<std::size_t>(s)].topLeftCorner(D, D).cast<std::complex<double>>();
+    Eigen::MatrixXcd columns = Eigen::MatrixXcd::Zero(D * n, n), M = Eigen::MatrixXcd::Zero(D * n, D * n);
+    for (int s = 0; s < n; ++s) {
+        for (int t = 0; t < n; ++t) {
+            const auto pair = static_cast<std::size_t>(s * n + t);
+            columns.block(D * s, t, D, 1) = A[pair].head(D);
+            M.block(D * s, D * t, D, D) = -c_hessian_ * B[pair].topLeftCorner(D, D);
+        }
+        M.block(D * s, D * s, D, D) += c_hessian_ * onsite_[static_cast<std::size_t>(s)].topLeftCorner(D, D);
     }
-    M += c_gradient_ * A * A.adjoint();
+    M += c_gradient_ * columns * columns.adjoint();
     return M;
 }
 

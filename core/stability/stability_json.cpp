@@ -114,7 +114,7 @@ nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& la
                                          int steps, double gamma, int grid, int threads)
 {
     const auto reciprocal = reciprocal_lattice(lattice);
-    auto lowest = [&](double k) { return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal, grid, threads); };
+    auto lowest = [&](double k) { return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal, grid, threads, false); };
     auto document = header(kernel, lattice, k_min, gamma);
     document.erase("k");
     document["k_range"] = {k_min, k_max};

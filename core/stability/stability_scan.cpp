@@ -14,7 +14,7 @@ namespace sphkern {
 int default_grid(int dimension) { return dimension == 3 ? 24 : dimension == 2 ? 96 : 512; }
 
 StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int per_axis,
-                                  int threads)
+                                  int threads, bool refine_all)
 {
     const int D = dispersion.dimension(), branches = dispersion.branches();
     const int n = std::max(2, per_axis + per_axis % 2);
@@ -55,7 +55,7 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
         Eigen::Vector3d f = best[winner].at[br];
         double value = best[winner].value[br];
         // Coordinate-wise Brent around the grid minimum, three sweeps.
-        for (int sweep = 0; sweep < 6; ++sweep)
+        for (int sweep = 0; sweep < (refine_all || br == 0 ? 6 : 0); ++sweep)
             for (int axis = 0; axis < D; ++axis) {
                 auto along = [&](double x) {
                     Eigen::Vector3d g = f;

@@ -29,8 +29,10 @@ struct StabilityScan {
 
 // `per_axis` grid points along each reciprocal vector (even, so that Γ and the zone
 // boundary are on the grid).
+// `refine_all` false refines only the lowest branch (the stability verdict); the others keep
+// their grid minima.
 StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int per_axis,
-                                  int threads = 1);
+                                  int threads = 1, bool refine_all = true);
 
 // The grid the command line uses in D dimensions: 96 (2D), 24 (3D) points per axis.
 int default_grid(int dimension);
