@@ -55,9 +55,6 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
                                    "linearise about; stability needs sites whose neighbourhoods cancel",
                                    s, lattice.name, first.norm() * h / density));
         densities.push_back(density);
-        Eigen::Matrix3d onsite = Eigen::Matrix3d::Zero();
-        for (const auto& n : list) onsite += n.hessian;
-        onsite_.push_back(onsite);
     }
     density_ = densities[0];
     for (std::size_t s = 1; s < densities.size(); ++s)
@@ -73,26 +70,30 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
 Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
 {
     const int n = sites(), D = dim_;
-    // Per site pair, in fixed-size sums: A_st (a vector) and B_st.
+    // Per site pair, in fixed-size sums: A_st (a vector) and the block of B0 - B, summed as
+    // H (1 - e) within a site so that long waves lose no digits to cancellation.
     std::vector<Eigen::Vector3cd> A(static_cast<std::size_t>(n * n), Eigen::Vector3cd::Zero());
     std::vector<Eigen::Matrix3cd> B(static_cast<std::size_t>(n * n), Eigen::Matrix3cd::Zero());
     for (int s = 0; s < n; ++s)
         for (const auto& nb : neighbours_[static_cast<std::size_t>(s)]) {
-            const double phase = kappa.dot(nb.x);
+            const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
             const std::complex<double> e(std::cos(phase), std::sin(phase)); // exp(-i kappa.r_ij), r_ij = -x
             const auto pair = static_cast<std::size_t>(s * n + nb.site);
             A[pair] += e * nb.gradient;
-            B[pair] += e * nb.hessian;
+            if (nb.site == s) {
+                B[pair] += std::complex<double>(2 * half * half, -std::sin(phase)) * nb.hessian;
+            } else {
+                B[static_cast<std::size_t>(s * n + s)] += nb.hessian;
+                B[pair] -= e * nb.hessian;
+            }
         }
     Eigen::MatrixXcd columns = Eigen::MatrixXcd::Zero(D * n, n), M = Eigen::MatrixXcd::Zero(D * n, D * n);
-    for (int s = 0; s < n; ++s) {
+    for (int s = 0; s < n; ++s)
         for (int t = 0; t < n; ++t) {
             const auto pair = static_cast<std::size_t>(s * n + t);
             columns.block(D * s, t, D, 1) = A[pair].head(D);
-            M.block(D * s, D * t, D, D) = -c_hessian_ * B[pair].topLeftCorner(D, D);
+            M.block(D * s, D * t, D, D) = c_hessian_ * B[pair].topLeftCorner(D, D);
         }
-        M.block(D * s, D * s, D, D) += c_hessian_ * onsite_[static_cast<std::size_t>(s)].topLeftCorner(D, D);
-    }
     M += c_gradient_ * columns * columns.adjoint();
     return M;
 }

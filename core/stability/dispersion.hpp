@@ -58,7 +58,6 @@ private:
         Eigen::Matrix3d hessian;  // m H(r_ij)
     };
     std::vector<std::vector<Neighbour>> neighbours_; // per site
-    std::vector<Eigen::Matrix3d> onsite_;            // B0_s
     int dim_;
     double k_, gamma_, mass_, density_;
     double c_gradient_, c_hessian_; // (1 - 2/gamma)/rho^2 and 2/(gamma rho)
