@@ -445,5 +445,26 @@ unset XDG_CACHE_HOME
 check "plugin output kept out of --json" python3 -c "import json; json.load(open('$work/noisy.json'))"
 check "plugin output on stderr" grep -q 'hello from a plugin' "$work/noisy.err"
 
+# Stability and spectra: bad values name the option and the range.
+expect 2 'wavevector 0,0,0: expected a non-zero wave vector' -- stability cubic_bspline fcc --k 1.2 --wavevector 0,0,0
+expect 2 'wavevector 1,nan,0: "nan" is not a finite number' -- stability cubic_bspline fcc --k 1.2 --wavevector 1,nan,0
+expect 2 'wavevector 1,2: 2 components, expected 3' -- stability cubic_bspline fcc --k 1.2 --wavevector 1,2
+expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability cubic_bspline fcc --k 1.2 --gamma 0
+expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
+expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
+expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
+expect 3 'defined in 2,3D only' -- spectrum wendland_c2 --dim 1
+
+"$sphkern" stability cubic_bspline fcc --k 1.2 --json >"$work/stability.json"
+check "stability --json: the cubic spline on fcc at k = 1.2 is unstable" grep -q '"stable": false' "$work/stability.json"
+"$sphkern" stability wendland_c2 triangular --kmin 0.9 --kmax 1.4 --steps 10 >"$work/stability-k.txt"
+check "stability over k names the stable intervals" grep -q 'stable for k in \[' "$work/stability-k.txt"
+"$sphkern" spectrum cubic_bspline --dim 3 >"$work/spectrum.txt"
+check "spectrum: the 3D B-spline first vanishes at 2 pi" grep -q 'first zero at kappa h = 6.283' "$work/spectrum.txt"
+"$sphkern" check cubic_bspline --json >"$work/check.json"
+check "check --json: an array, with the spectrum" python3 -c "import json; d = json.load(open('$work/check.json')); assert isinstance(d, list) and 'fourier' in d[0]"
+"$sphkern" check --plugin "$broken/wrong_derivative.so" >"$work/wrong.txt" || true
+check "check names the likely cause of a wrong derivative" grep -q 'hint (1D derivative)' "$work/wrong.txt"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
