@@ -66,7 +66,7 @@ Action add_stability_command(CLI::App& app)
     struct Options : CommonOptions {
         std::string kernel, lattice, wavevector;
         double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0;
-        int grid = 0, threads = 0, steps = 50;
+        int grid = 0, threads = 0, steps = 50, path = 0;
         std::vector<std::string> sets;
     };
     auto options = std::make_shared<Options>();
@@ -82,6 +82,10 @@ Action add_stability_command(CLI::App& app)
     kmax_option->needs(kmin_option);
     command->add_option("--gamma", options->gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
     command->add_option("--wavevector", options->wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
+    auto* path_option = command->add_option("--path", options->path, "Dispersion curves along the high-symmetry "
+                                                                     "path: about this many points")
+                            ->check(CLI::Range(2, 100000));
+    path_option->excludes(kmin_option)->excludes(kmax_option);
     command->add_option("--grid", options->grid, "Scan points per reciprocal axis (default 24 in 3D, 96 in 2D)")
         ->check(CLI::Range(2, 400));
     command->add_option("--threads", options->threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
@@ -105,6 +109,28 @@ Action add_stability_command(CLI::App& app)
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
+        if (!options->wavevector.empty() && options->path > 0)
+            throw Error(ExitCode::usage, "--wavevector and --path: give one of them");
+        if (options->path > 0) {
+            auto document = dispersion_path_document(kernel, lattice, options->k, options->gamma, options->path);
+            if (options->json) {
+                print_json(document);
+                return 0;
+            }
+            const auto& path = document["path"];
+            std::string labels;
+            for (const auto& p : path["points"])
+                labels += fmt::format("{}{} ({:.4f})", labels.empty() ? "" : " - ", p["label"].get<std::string>(),
+                                      p["at"].get<double>());
+            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}: omega^2 in (c/d)^2 along {}\n", kernel.label(),
+                       lattice.name, options->k, options->gamma, labels);
+            for (std::size_t i = 0; i < path["position"].size(); ++i) {
+                fmt::print(results_file(), "  {:>10.6f}", path["position"][i].get<double>());
+                for (const auto& w : path["omega2"][i]) fmt::print(results_file(), " {:>14.8g}", w.get<double>());
+                fmt::print(results_file(), "\n");
+            }
+            return 0;
+        }
         if (!options->wavevector.empty()) {
             const auto kappa = parse_wavevector(options->wavevector, lattice.dimension);
             auto document = dispersion_document(kernel, lattice, options->k, options->gamma, kappa);
@@ -158,6 +184,9 @@ Action add_stability_command(CLI::App& app)
             fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",
                        m["branch"].get<int>(), m["min_omega2"].get<double>(), vector_text(m["at"]),
                        m["longitudinal"].get<double>());
+        fmt::print(results_file(), "  long waves: lowest omega^2 / kappa^2 over every direction {:.6g} c^2 along {}\n",
+                   document["long_wave"]["min_omega2_over_kappa2"].get<double>(),
+                   vector_text(document["long_wave"]["direction"]));
         fmt::print(results_file(), "  long waves: speed / c - 1 of the longitudinal mode\n");
         for (const auto& s : document["sound_speed"]) {
             std::string relation;

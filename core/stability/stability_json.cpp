@@ -1,9 +1,10 @@
 #include "stability/stability_json.hpp"
 
 #include "analysis/hydrostatic_errors.hpp"
+#include "stability/dispersion_path.hpp"
+#include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 
-#include <optional>
 
 namespace sphkern {
 
@@ -85,6 +86,8 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
         branches.push_back({{"branch", m.branch}, {"min_omega2", m.omega2}, {"at", vector_json(m.kappa, D)},
                             {"longitudinal", m.longitudinal}});
     document["branches"] = branches;
+    document["long_wave"] = {{"min_omega2_over_kappa2", scan.long_wave.omega2_over_kappa2},
+                             {"direction", vector_json(scan.long_wave.direction, D)}};
     // Long waves: the speed per direction, and for one site how it follows from the
     // hydrostatic errors (eps_rho, E) and the stiffness term.
     std::unique_ptr<HydrostaticErrors> errors;
@@ -113,44 +116,36 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
 nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
                                          int steps, double gamma, int grid, int threads)
 {
-    const auto reciprocal = reciprocal_lattice(lattice);
-    auto lowest = [&](double k) { return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal, grid, threads, false); };
+    const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads);
     auto document = header(kernel, lattice, k_min, gamma);
     document.erase("k");
     document["k_range"] = {k_min, k_max};
-    document["bravais"] = reciprocal.bravais;
+    document["bravais"] = scan.bravais;
     nlohmann::json samples = nlohmann::json::array(), intervals = nlohmann::json::array();
-    std::vector<std::pair<double, bool>> verdicts;
-    for (int i = 0; i <= steps; ++i) {
-        const double k = k_min + (k_max - k_min) * i / steps;
-        const auto scan = lowest(k);
-        nlohmann::json per_branch = nlohmann::json::array();
-        for (const auto& m : scan.minima) per_branch.push_back(m.omega2);
-        samples.push_back({{"k", k}, {"min_omega2", scan.lowest().omega2}, {"stable", scan.stable},
-                           {"longitudinal", scan.lowest().longitudinal}, {"branch_minima", per_branch}});
-        verdicts.emplace_back(k, scan.stable);
-    }
-    // Edges between a stable and an unstable sample, by bisection.
-    auto edge = [&](double a, double b, bool a_stable) {
-        for (int it = 0; it < 20 && b - a > 1e-6; ++it) {
-            const double m = 0.5 * (a + b);
-            if (lowest(m).stable == a_stable) a = m;
-            else b = m;
-        }
-        return 0.5 * (a + b);
-    };
-    std::optional<double> start;
-    for (std::size_t i = 0; i < verdicts.size(); ++i) {
-        const auto [k, stable] = verdicts[i];
-        if (stable && !start) start = i == 0 ? k : edge(verdicts[i - 1].first, k, false);
-        if (!stable && start) {
-            intervals.push_back({*start, edge(verdicts[i - 1].first, k, true)});
-            start.reset();
-        }
-    }
-    if (start) intervals.push_back({*start, k_max});
+    for (const auto& s : scan.samples)
+        samples.push_back({{"k", s.k}, {"min_omega2", s.branch_minima.front()}, {"stable", s.stable},
+                           {"longitudinal", s.longitudinal}, {"branch_minima", s.branch_minima}});
+    for (const auto& i : scan.stable) intervals.push_back({i.from, i.to});
     document["samples"] = samples;
     document["stable_intervals"] = intervals;
+    return document;
+}
+
+nlohmann::json dispersion_path_json(const DispersionPath& path)
+{
+    nlohmann::json points = nlohmann::json::array();
+    for (std::size_t i = 0; i < path.labels.size(); ++i)
+        points.push_back({{"label", path.labels[i]}, {"at", path.label_positions[i]}});
+    return {{"points", points}, {"position", path.position}, {"omega2", path.omega2}};
+}
+
+nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points)
+{
+    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const auto reciprocal = reciprocal_lattice(lattice);
+    auto document = header(kernel, lattice, k, gamma);
+    document["bravais"] = reciprocal.bravais;
+    document["path"] = dispersion_path_json(dispersion_along_path(dispersion, reciprocal, points));
     return document;
 }
 

@@ -78,7 +78,48 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
     }
     std::stable_sort(scan.minima.begin(), scan.minima.end(),
                      [](const BranchMinimum& a, const BranchMinimum& c) { return a.omega2 < c.omega2; });
+    scan.long_wave = long_wave_minimum(dispersion);
+    if (scan.long_wave.omega2_over_kappa2 < -unstable_threshold) scan.stable = false;
     return scan;
+}
+
+LongWaveMinimum long_wave_minimum(const Dispersion& dispersion)
+{
+    const int D = dispersion.dimension();
+    // Directions by two angles (the polar one fixed in 2D); omega^2 / kappa^2 of the lowest
+    // branch at kappa = 1e-3 and 2e-3, Richardson-extrapolated to kappa -> 0.
+    auto direction = [&](double theta, double phi) {
+        return D == 3 ? Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))
+                      : Eigen::Vector3d(std::cos(phi), std::sin(phi), 0);
+    };
+    auto ratio = [&](double theta, double phi) {
+        const Eigen::Vector3d n = direction(theta, phi);
+        const double small = dispersion.omega2(1e-3 * n).front() / 1e-6,
+                     larger = dispersion.omega2(2e-3 * n).front() / 4e-6;
+        return (4 * small - larger) / 3;
+    };
+    // omega^2(kappa) = omega^2(-kappa): half the directions suffice.
+    const int polar = D == 3 ? 12 : 1, azimuthal = D == 3 ? 24 : 90;
+    const double dtheta = M_PI / 2 / polar, dphi = M_PI / azimuthal;
+    double theta = D == 3 ? 0 : M_PI / 2, phi = 0, best = INFINITY;
+    for (int i = 0; i <= (D == 3 ? polar : 0); ++i)
+        for (int j = 0; j < (D == 3 ? 2 : 1) * azimuthal; ++j) {
+            const double t = D == 3 ? i * dtheta : M_PI / 2, p = j * dphi;
+            const double v = ratio(t, p);
+            if (v < best) best = v, theta = t, phi = p;
+        }
+    for (int sweep = 0; sweep < 3; ++sweep) {
+        std::uintmax_t iterations = 50;
+        auto [p, fp] = boost::math::tools::brent_find_minima([&](double x) { return ratio(theta, x); }, phi - dphi,
+                                                             phi + dphi, 30, iterations);
+        if (fp < best) best = fp, phi = p;
+        if (D < 3) break;
+        iterations = 50;
+        auto [t, ft] = boost::math::tools::brent_find_minima([&](double x) { return ratio(x, phi); }, theta - dtheta,
+                                                             theta + dtheta, 30, iterations);
+        if (ft < best) best = ft, theta = t;
+    }
+    return {best, direction(theta, phi)};
 }
 
 SoundSpeed long_wave_sound_speed(const Dispersion& dispersion, const Eigen::Vector3d& direction)

@@ -20,9 +20,19 @@ struct BranchMinimum {
     double longitudinal = 0; // of the mode there (1 longitudinal, 0 transverse)
 };
 
+// The long-wave limit: the lowest omega^2 / kappa^2 as kappa -> 0 over every direction
+// (in c^2). A negative value is an instability however small the grid cannot see it:
+// near its onset the unstable region shrinks onto Γ.
+struct LongWaveMinimum {
+    double omega2_over_kappa2 = 0;
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+};
+LongWaveMinimum long_wave_minimum(const Dispersion& dispersion);
+
 struct StabilityScan {
     std::vector<BranchMinimum> minima; // one per branch
-    bool stable = true;
+    LongWaveMinimum long_wave;
+    bool stable = true; // no omega^2 and no long-wave omega^2 / kappa^2 below -unstable_threshold
     int grid_points = 0;
     const BranchMinimum& lowest() const { return minima.front(); }
 };

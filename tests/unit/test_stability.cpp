@@ -157,6 +157,52 @@ TEST_CASE("long waves: the sound speed follows from eps_rho, the gradient-error 
         }
 }
 
+TEST_CASE("the long-wave minimum is the lowest omega^2 / kappa^2 of the long-wave limit over every direction")
+{
+    const double gamma = 5.0 / 3.0;
+    const Kernel kernel = shipped_kernel("cubic_bspline");
+    // fcc at k = 1.02: unstable only for long waves (a 8^3 grid sees nothing below zero); at 0.95 stable.
+    for (auto [lattice_name, k] : {std::pair{"fcc", 1.02}, {"fcc", 0.95}, {"sc", 1.3}, {"triangular", 1.1}}) {
+        CAPTURE(lattice_name);
+        CAPTURE(k);
+        const auto lattice = load_lattice(lattice_name);
+        const int D = lattice.dimension;
+        const Dispersion dispersion(kernel, lattice, k, gamma);
+        HydrostaticErrors errors(kernel, lattice, 0, lattice.volume_per_site(), lattice.gravity, k);
+        const double eps_rho = errors.at(k).eps_rho;
+        const auto E = errors.tensor(k).tensor;
+        auto lowest_limit = [&](const Eigen::Vector3d& n) {
+            const Eigen::Vector3d g = (Eigen::Matrix3d::Identity() + E) * n;
+            const Eigen::Matrix3d limit = (1 - 2 / gamma) * g * g.transpose() / std::pow(1 + eps_rho, 2) +
+                                          (2 / gamma) * dispersion.long_wave_stiffness(n) / (1 + eps_rho);
+            return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(limit.topLeftCorner(D, D)).eigenvalues()[0];
+        };
+        // Brute force: 40000 directions of a Fibonacci sphere (a circle in 2D).
+        double brute = INFINITY;
+        const int count = 40000;
+        for (int i = 0; i < count; ++i) {
+            Eigen::Vector3d n;
+            if (D == 3) {
+                const double z = 1 - (2.0 * i + 1) / count, phi = i * M_PI * (3 - std::sqrt(5.0));
+                n = {std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z};
+            } else {
+                n = {std::cos(M_PI * i / count), std::sin(M_PI * i / count), 0};
+            }
+            brute = std::min(brute, lowest_limit(n));
+        }
+        const auto found = long_wave_minimum(dispersion);
+        CHECK(found.omega2_over_kappa2 == doctest::Approx(lowest_limit(found.direction)).epsilon(1e-7).scale(1));
+        CHECK(found.omega2_over_kappa2 <= brute + 1e-9);
+        const auto scan = scan_brillouin_zone(dispersion, reciprocal_lattice(lattice), 8);
+        CHECK(scan.stable == (brute >= -unstable_threshold && scan.lowest().omega2 >= -unstable_threshold));
+        if (brute < 0) // a finite wave along that direction is unstable too
+            CHECK(dispersion.omega2(0.05 * found.direction).front() < 0);
+    }
+    const auto fcc = load_lattice("fcc");
+    CHECK_FALSE(scan_brillouin_zone(Dispersion(kernel, fcc, 1.02, gamma), reciprocal_lattice(fcc), 8).stable);
+    CHECK(scan_brillouin_zone(Dispersion(kernel, fcc, 0.95, gamma), reciprocal_lattice(fcc), 8).stable);
+}
+
 TEST_CASE("many neighbours: the spectrum approaches the continuum omega^2 = kappa^2 [(1 - 2/gamma) W^2 + (2/gamma) W^]")
 {
     const double gamma = 1.4, k = 2.6;

@@ -1,0 +1,35 @@
+// Stability against k: the minimum of every branch of omega^2 over the Brillouin zone at
+// evenly spaced k, and the k intervals where the lattice is stable (each edge between a
+// stable and an unstable sample refined by bisection to 1e-6).
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "lattices/lattice.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+struct StabilitySample {
+    double k = 0;
+    std::vector<double> branch_minima; // ascending branch order; only the lowest is refined
+    bool stable = true;
+    double longitudinal = 0;           // of the lowest branch's minimum
+};
+
+struct StableInterval {
+    double from, to;
+};
+
+struct StabilityOverK {
+    std::string bravais;
+    std::vector<StabilitySample> samples;
+    std::vector<StableInterval> stable;
+};
+
+// `steps` + 1 samples over [k_min, k_max]; `grid` points per reciprocal axis.
+StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
+                                double gamma, int grid, int threads);
+
+} // namespace sphkern
