@@ -143,8 +143,8 @@ std::vector<std::pair<double, double>> solve_by_newton(const Kernel& kernel, con
         scans[static_cast<std::size_t>(i)] = find_roots(errors, p.k_min, p.k_max, 200);
     }
     std::vector<std::pair<double, double>> found;
-    for (const char* function : {"rho", "gradp"}) {
-        auto other = [&](const Root& r) { return std::string(function) == "rho" ? r.values.eps_gradp : r.values.eps_rho; };
+    for (auto function : {ErrorFunction::rho, ErrorFunction::gradp}) {
+        auto other = [&](const Root& r) { return function == ErrorFunction::rho ? r.values.eps_gradp : r.values.eps_rho; };
         for (int i = 0; i < steps; ++i)
             for (const auto& r0 : scans[static_cast<std::size_t>(i)].roots) {
                 if (r0.function != function) continue;

@@ -9,7 +9,7 @@ namespace sphkern {
 
 nlohmann::json root_json(const Root& r)
 {
-    return {{"function", r.function},         {"k", r.k},
+    return {{"function", function_name(r.function)},         {"k", r.k},
             {"eps_rho", r.values.eps_rho},    {"eps_gradp", r.values.eps_gradp},
             {"lateral", r.values.lateral},    {"neighbours", r.values.neighbours},
             {"support_radius", r.support_radius}};
@@ -20,7 +20,7 @@ nlohmann::json root_scan_json(const RootScan& scan)
     nlohmann::json roots = nlohmann::json::array(), jumps = nlohmann::json::array();
     for (const auto& r : scan.roots) roots.push_back(root_json(r));
     for (const auto& j : scan.jumps)
-        jumps.push_back({{"function", j.function}, {"kind", j.kind}, {"k", j.k}, {"left", j.left}, {"right", j.right}});
+        jumps.push_back({{"function", function_name(j.function)}, {"kind", jump_kind_name(j.kind)}, {"k", j.k}, {"left", j.left}, {"right", j.right}});
     return {{"roots", roots}, {"jumps", jumps}};
 }
 

@@ -15,13 +15,10 @@ namespace {
 // A value this large at a converged bracket means the bracket closed on a pole.
 constexpr double singular_value = 1e-6;
 
-double pick(const ErrorValues& v, bool rho) { return rho ? v.eps_rho : v.eps_gradp; }
-
-void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t active, int samples, bool rho,
-                RootScan& out)
+void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t active, int samples,
+                ErrorFunction name, RootScan& out)
 {
-    const char* name = rho ? "rho" : "gradp";
-    auto f = [&](double k) { return pick(errors.at_piece(k, active), rho); };
+    auto f = [&](double k) { return value_of(errors.at_piece(k, active), name); };
     double k0 = a, f0 = f(a);
     for (int i = 1; i <= samples; ++i) {
         throw_if_interrupted();
@@ -37,10 +34,10 @@ void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t
                 f, k0, k1, f0, f1, [](double lo, double hi) { return hi - lo <= root_tolerance; }, iterations);
             double k = 0.5 * (bracket.first + bracket.second);
             ErrorValues at = errors.at_piece(k, active);
-            if (std::abs(pick(at, rho)) <= singular_value)
+            if (std::abs(value_of(at, name)) <= singular_value)
                 out.roots.push_back({name, k, at, errors.kernel().support() * k});
             else
-                out.jumps.push_back({name, "singularity", k, f(bracket.first), f(bracket.second)});
+                out.jumps.push_back({name, JumpKind::singularity, k, f(bracket.first), f(bracket.second)});
         }
         k0 = k1;
         f0 = f1;
@@ -48,6 +45,12 @@ void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t
 }
 
 } // namespace
+
+const char* function_name(ErrorFunction f) { return f == ErrorFunction::rho ? "rho" : "gradp"; }
+
+double value_of(const ErrorValues& v, ErrorFunction f) { return f == ErrorFunction::rho ? v.eps_rho : v.eps_gradp; }
+
+const char* jump_kind_name(JumpKind kind) { return kind == JumpKind::support ? "support" : "singularity"; }
 
 RootScan find_roots(const HydrostaticErrors& errors, double k_min, double k_max, int samples)
 {
@@ -60,20 +63,20 @@ RootScan find_roots(const HydrostaticErrors& errors, double k_min, double k_max,
         // The shells summed in the open piece: those with R k < r are left out.
         std::size_t active = errors.active_terms(0.5 * (a + b));
         int n = std::max(8, static_cast<int>(std::ceil(samples * (b - a) / (k_max - k_min))));
-        for (bool rho : {true, false}) scan_piece(errors, a, b, active, n, rho, scan);
+        for (auto f : {ErrorFunction::rho, ErrorFunction::gradp}) scan_piece(errors, a, b, active, n, f, scan);
         if (p + 1 < edges.size() - 1) {
             std::size_t next = errors.active_terms(0.5 * (b + edges[p + 2]));
             ErrorValues left = errors.at_piece(b, active), right = errors.at_piece(b, next);
-            for (bool rho : {true, false}) {
-                double l = pick(left, rho), r = pick(right, rho);
+            for (auto f : {ErrorFunction::rho, ErrorFunction::gradp}) {
+                double l = value_of(left, f), r = value_of(right, f);
                 if (l != 0.0 && r != 0.0 && std::signbit(l) != std::signbit(r))
-                    scan.jumps.push_back({rho ? "rho" : "gradp", "support", b, l, r});
+                    scan.jumps.push_back({f, JumpKind::support, b, l, r});
             }
         }
     }
     // A root on a piece edge is found from both sides.
     auto by_function_then_k = [](const Root& x, const Root& y) {
-        return x.function != y.function ? x.function > y.function : x.k < y.k;
+        return x.function != y.function ? x.function < y.function : x.k < y.k;
     };
     std::sort(scan.roots.begin(), scan.roots.end(), by_function_then_k);
     scan.roots.erase(std::unique(scan.roots.begin(), scan.roots.end(),

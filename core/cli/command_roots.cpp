@@ -40,11 +40,11 @@ void print_scan(const RootScan& scan)
 {
     fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
     for (const auto& r : scan.roots)
-        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", r.function, r.k,
+        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", function_name(r.function), r.k,
                    r.values.eps_rho, r.values.eps_gradp, r.values.neighbours, r.support_radius);
     if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
     for (const auto& j : scan.jumps)
-        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", j.function, j.k, j.kind,
+        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", function_name(j.function), j.k, jump_kind_name(j.kind),
                    j.left, j.right);
 }
 

@@ -2,8 +2,10 @@
 #include "cli/command.hpp"
 #include "support/results_output.hpp"
 
+#include "study/gnuplot.hpp"
 #include "study/plots.hpp"
 #include "study/report.hpp"
+#include "study/results_writer.hpp"
 #include "study/study_runner.hpp"
 #include "support/chunked_writer.hpp"
 #include "support/install_paths.hpp"

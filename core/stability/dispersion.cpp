@@ -24,6 +24,13 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     const double h = k, hd = std::pow(h, dim_);
     std::vector<double> densities;
     neighbours_.resize(static_cast<std::size_t>(lattice.sites()));
+    basis_ = lattice.basis;
+    const Eigen::Matrix3d to_cells = basis_.inverse();
+    const int n_sites = lattice.sites();
+    for (int s = 0; s < n_sites; ++s)
+        for (int t = 0; t < n_sites; ++t)
+            offsets_.push_back(basis_ * (lattice.motif[static_cast<std::size_t>(t)] - lattice.motif[static_cast<std::size_t>(s)]));
+    std::array<int, 3> cell_max{};
     for (int s = 0; s < lattice.sites(); ++s) {
         auto& list = neighbours_[static_cast<std::size_t>(s)];
         double density = mass_ * kernel.w(0, dim_, k) / hd;
@@ -42,6 +49,15 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
             Neighbour n;
             n.x = x;
             n.site = t;
+            const Eigen::Vector3d offset = offsets_[static_cast<std::size_t>(s * n_sites + t)];
+            const Eigen::Vector3d cell = to_cells * (x - offset);
+            for (int a = 0; a < 3; ++a) {
+                n.cell[a] = a < dim_ ? static_cast<int>(std::lround(cell[a])) : 0;
+                cell_min_[a] = std::min(cell_min_[a], n.cell[a]);
+                cell_max[a] = std::max(cell_max[a], n.cell[a]);
+            }
+            const Eigen::Vector3d back = basis_ * Eigen::Vector3d(n.cell[0], n.cell[1], n.cell[2]) + offset;
+            if ((back - x).norm() > 1e-9 * std::max(1.0, x.norm())) integer_cells_ = false;
             n.gradient = -mass_ * dw * e;
             n.hessian = mass_ * (d2w * e * e.transpose() + (dw / r) * (Eigen::Matrix3d::Identity() - e * e.transpose()));
             density += mass_ * w;
@@ -56,6 +72,13 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
                                    s, lattice.name, first.norm() * h / density));
         densities.push_back(density);
     }
+    for (int a = 0; a < 3; ++a) cell_span_[a] = cell_max[a] - cell_min_[a] + 1;
+    for (auto& q : hessian_moments_) q.setZero();
+    for (const auto& nb : neighbours_[0]) {
+        gradient_moment_ += nb.gradient * nb.x.transpose();
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) hessian_moments_[static_cast<std::size_t>(3 * a + b)] += 0.5 * nb.x[a] * nb.x[b] * nb.hessian;
+    }
     density_ = densities[0];
     for (std::size_t s = 1; s < densities.size(); ++s)
         if (std::abs(densities[s] - density_) > 1e-9 * density_)
@@ -67,6 +90,30 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     c_hessian_ = 2 / (gamma * density_);
 }
 
+bool Dispersion::fast_phases(const Eigen::Vector3d& kappa) const
+{
+    return integer_cells_ && kappa.head(dim_).norm() >= fast_phase_min;
+}
+
+std::vector<std::complex<double>> Dispersion::cell_phases(const Eigen::Vector3d& kappa) const
+{
+    std::vector<std::complex<double>> table;
+    table.reserve(static_cast<std::size_t>(cell_span_[0] + cell_span_[1] + cell_span_[2]));
+    for (int a = 0; a < 3; ++a) {
+        const double step = a < dim_ ? kappa.dot(basis_.col(a)) : 0;
+        for (int n = cell_min_[a]; n < cell_min_[a] + cell_span_[a]; ++n) table.push_back(std::polar(1.0, n * step));
+    }
+    return table;
+}
+
+std::complex<double> Dispersion::phase_of(const Neighbour& nb, const std::vector<std::complex<double>>& table) const
+{
+    const std::size_t i = static_cast<std::size_t>(nb.cell[0] - cell_min_[0]);
+    const std::size_t j = static_cast<std::size_t>(cell_span_[0] + nb.cell[1] - cell_min_[1]);
+    const std::size_t l = static_cast<std::size_t>(cell_span_[0] + cell_span_[1] + nb.cell[2] - cell_min_[2]);
+    return table[i] * table[j] * table[l];
+}
+
 Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
 {
     const int n = sites(), D = dim_;
@@ -74,14 +121,26 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
     // H (1 - e) within a site so that long waves lose no digits to cancellation.
     std::vector<Eigen::Vector3cd> A(static_cast<std::size_t>(n * n), Eigen::Vector3cd::Zero());
     std::vector<Eigen::Matrix3cd> B(static_cast<std::size_t>(n * n), Eigen::Matrix3cd::Zero());
+    const bool fast = fast_phases(kappa);
+    const auto table = fast ? cell_phases(kappa) : std::vector<std::complex<double>>{};
+    std::vector<std::complex<double>> offset_phase;
+    for (const auto& o : offsets_) offset_phase.push_back(std::polar(1.0, kappa.dot(o)));
     for (int s = 0; s < n; ++s)
         for (const auto& nb : neighbours_[static_cast<std::size_t>(s)]) {
-            const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
-            const std::complex<double> e(std::cos(phase), std::sin(phase)); // exp(-i kappa.r_ij), r_ij = -x
             const auto pair = static_cast<std::size_t>(s * n + nb.site);
+            std::complex<double> e; // exp(-i kappa.r_ij) = exp(i kappa.x), r_ij = -x
+            double one_minus_cos;
+            if (fast) {
+                e = phase_of(nb, table) * offset_phase[pair];
+                one_minus_cos = 1 - e.real();
+            } else {
+                const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
+                e = {std::cos(phase), std::sin(phase)};
+                one_minus_cos = 2 * half * half;
+            }
             A[pair] += e * nb.gradient;
             if (nb.site == s) {
-                B[pair] += std::complex<double>(2 * half * half, -std::sin(phase)) * nb.hessian;
+                B[pair] += std::complex<double>(one_minus_cos, -e.imag()) * nb.hessian;
             } else {
                 B[static_cast<std::size_t>(s * n + s)] += nb.hessian;
                 B[pair] -= e * nb.hessian;
@@ -105,10 +164,19 @@ std::vector<double> Dispersion::omega2(const Eigen::Vector3d& kappa) const
         Eigen::Matrix3d S3 = Eigen::Matrix3d::Zero();
         Eigen::Vector3d S = Eigen::Vector3d::Zero();
         Eigen::Matrix3d T = Eigen::Matrix3d::Zero();
-        for (const auto& nb : neighbours_[0]) {
-            const double phase = kappa.dot(nb.x);
-            S += std::sin(phase) * nb.gradient;
-            T += (1 - std::cos(phase)) * nb.hessian;
+        if (fast_phases(kappa)) {
+            const auto table = cell_phases(kappa);
+            for (const auto& nb : neighbours_[0]) {
+                const auto e = phase_of(nb, table);
+                S += e.imag() * nb.gradient;
+                T += (1 - e.real()) * nb.hessian;
+            }
+        } else {
+            for (const auto& nb : neighbours_[0]) {
+                const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
+                S += std::sin(phase) * nb.gradient;
+                T += 2 * half * half * nb.hessian;
+            }
         }
         S3 = c_gradient_ * S * S.transpose() + c_hessian_ * T;
         if (dim_ == 2) {
@@ -130,8 +198,15 @@ Eigen::Matrix3d Dispersion::long_wave_stiffness(const Eigen::Vector3d& n) const
 {
     const Eigen::Vector3d e = n.normalized();
     Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
-    for (const auto& nb : neighbours_[0]) t += 0.5 * std::pow(e.dot(nb.x), 2) * nb.hessian;
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) t += e[a] * e[b] * hessian_moments_[static_cast<std::size_t>(3 * a + b)];
     return t; // rho0 = 1
+}
+
+Eigen::Matrix3d Dispersion::long_wave_matrix(const Eigen::Vector3d& n) const
+{
+    const Eigen::Vector3d s = gradient_moment_ * n.normalized();
+    return c_gradient_ * s * s.transpose() + c_hessian_ * long_wave_stiffness(n);
 }
 
 DispersionModes Dispersion::modes(const Eigen::Vector3d& kappa) const

@@ -13,6 +13,8 @@
 
 #include <Eigen/Dense>
 
+#include <array>
+#include <complex>
 #include <vector>
 
 namespace sphkern {
@@ -49,15 +51,34 @@ public:
     // and the gradient-error tensor E it gives the long-wave limit of the matrix:
     //   omega^2 / kappa^2 -> (1 - 2/gamma) (I + E) n n^T (I + E) / (1 + eps_rho)^2 + (2/gamma) T / (1 + eps_rho).
     Eigen::Matrix3d long_wave_stiffness(const Eigen::Vector3d& n) const;
+    // One site only: the limit of the matrix over kappa^2 along n, from moments of the
+    // neighbours (S ~ kappa (sum g x^T) n, T ~ kappa^2 stiffness): exact, no sin or cos.
+    Eigen::Matrix3d long_wave_matrix(const Eigen::Vector3d& n) const;
 
 private:
     struct Neighbour {
         Eigen::Vector3d x;        // x_j - x_i in units of d
         int site;                 // the motif site of j
+        std::array<int, 3> cell;  // x = basis * cell + the sites' offset
         Eigen::Vector3d gradient; // m grad_i W(r_ij)
         Eigen::Matrix3d hessian;  // m H(r_ij)
     };
+    // exp(i kappa.x) of every neighbour, as products of exp(i n kappa.a_j) over the cells'
+    // integer coordinates: a few sincos per wave vector instead of one per neighbour.
+    // Long waves (|kappa| < fast_phase_min) take sin and cos directly, so that
+    // 1 - cos(kappa.x) keeps its digits.
+    static constexpr double fast_phase_min = 0.1;
+    bool fast_phases(const Eigen::Vector3d& kappa) const;
+    std::vector<std::complex<double>> cell_phases(const Eigen::Vector3d& kappa) const; // per axis, from cell_min_
+    std::complex<double> phase_of(const Neighbour& nb, const std::vector<std::complex<double>>& table) const;
+
     std::vector<std::vector<Neighbour>> neighbours_; // per site
+    Eigen::Matrix3d basis_;
+    std::vector<Eigen::Vector3d> offsets_;           // per site pair s * sites + t: x_t - x_s within a cell
+    std::array<int, 3> cell_min_{}, cell_span_{};
+    Eigen::Matrix3d gradient_moment_ = Eigen::Matrix3d::Zero();                  // site 0: sum m grad W x^T
+    std::array<Eigen::Matrix3d, 9> hessian_moments_{};                          // site 0: sum m H x_a x_b / 2
+    bool integer_cells_ = true;
     int dim_;
     double k_, gamma_, mass_, density_;
     double c_gradient_, c_hessian_; // (1 - 2/gamma)/rho^2 and 2/(gamma rho)

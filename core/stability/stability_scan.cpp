@@ -86,20 +86,27 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
 LongWaveMinimum long_wave_minimum(const Dispersion& dispersion)
 {
     const int D = dispersion.dimension();
-    // Directions by two angles (the polar one fixed in 2D); omega^2 / kappa^2 of the lowest
-    // branch at kappa = 1e-3 and 2e-3, Richardson-extrapolated to kappa -> 0.
+    // Directions by two angles (the polar one fixed in 2D). One site: the exact limit matrix;
+    // several: omega^2 / kappa^2 of the lowest branch at kappa = 1e-3 and 2e-3,
+    // Richardson-extrapolated to kappa -> 0.
     auto direction = [&](double theta, double phi) {
         return D == 3 ? Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))
                       : Eigen::Vector3d(std::cos(phi), std::sin(phi), 0);
     };
     auto ratio = [&](double theta, double phi) {
         const Eigen::Vector3d n = direction(theta, phi);
+        if (dispersion.sites() == 1) {
+            const Eigen::MatrixXd m = dispersion.long_wave_matrix(n).topLeftCorner(D, D);
+            return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues()[0];
+        }
         const double small = dispersion.omega2(1e-3 * n).front() / 1e-6,
                      larger = dispersion.omega2(2e-3 * n).front() / 4e-6;
         return (4 * small - larger) / 3;
     };
     // omega^2(kappa) = omega^2(-kappa): half the directions suffice.
-    const int polar = D == 3 ? 12 : 1, azimuthal = D == 3 ? 24 : 90;
+    // Several sites cost an eigensolver per direction: a coarser start, the same refinement.
+    const int fine = dispersion.sites() == 1 ? 2 : 1;
+    const int polar = D == 3 ? 6 * fine : 1, azimuthal = D == 3 ? 12 * fine : 45 * fine;
     const double dtheta = M_PI / 2 / polar, dphi = M_PI / azimuthal;
     double theta = D == 3 ? 0 : M_PI / 2, phi = 0, best = INFINITY;
     for (int i = 0; i <= (D == 3 ? polar : 0); ++i)

@@ -1,40 +1,17 @@
 #include "study/plots.hpp"
 
-#include "support/error.hpp"
-#include "support/child_process.hpp"
-#include "support/interruption.hpp"
+#include "study/gnuplot.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
-#include <unistd.h>
 
 namespace sphkern {
 namespace fs = std::filesystem;
 
-fs::path find_gnuplot()
-{
-    const char* path = std::getenv("PATH");
-    std::stringstream list(path ? path : "/usr/bin:/bin");
-    std::string folder;
-    std::error_code ec;
-    while (std::getline(list, folder, ':')) {
-        fs::path candidate = fs::path(folder) / "gnuplot";
-        // Absolute folders only: gnuplot runs from the staging folder, where "." means something else.
-        if (fs::path(folder).is_absolute() && fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
-            return candidate;
-    }
-    return {};
-}
-
 namespace {
-
-constexpr double gnuplot_timeout_seconds = 120;
 
 const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
@@ -52,34 +29,9 @@ std::string datablock(const std::string& name, const StudyCase& c, bool rho)
     return s + "EOD\n";
 }
 
-// Keeps the script beside the figure and runs gnuplot inside the folder (no shell: an
-// argument vector), so that the script names its output relatively.
-void run_gnuplot(const fs::path& folder, const std::string& name, const std::string& script, const fs::path& gnuplot)
+std::vector<std::string> draw_bulk_figures(const Study& study, const StudyResults& results, const fs::path& folder, const fs::path& gnuplot)
 {
-    throw_if_interrupted();
-    fs::path script_file = folder / (name + ".gp");
-    {
-        std::ofstream out(script_file);
-        out << script;
-        if (!out) throw Error(ExitCode::output, script_file.string() + ": cannot write (disk full?)");
-    }
-    auto run = run_program({gnuplot.string(), name + ".gp"}, folder, gnuplot_timeout_seconds);
-    if (run.timed_out)
-        throw Error(ExitCode::output, fmt::format("gnuplot did not finish {} within {} s", script_file.string(),
-                                                  gnuplot_timeout_seconds));
-    if (run.exit_status != 0) {
-        std::string reason = run.signal ? fmt::format("killed by signal {}", run.signal)
-                                        : run.output.substr(0, run.output.find('\n'));
-        throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + ": " + reason);
-    }
-}
-
-} // namespace
-
-std::vector<std::string> draw_study_plots(const Study& study, const StudyResults& results, const fs::path& folder,
-                                          const fs::path& gnuplot)
-{
-    fs::create_directories(folder);
+    std::vector<std::string> written;
     // Group the cases by figure (lattice, mode), then by panel (kernel).
     std::map<std::pair<std::string, std::string>, std::vector<const StudyCase*>> figures;
     std::vector<std::pair<std::string, std::string>> order;
@@ -88,7 +40,6 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         if (!figures.count(key)) order.push_back(key);
         figures[key].push_back(&c);
     }
-    std::vector<std::string> written;
     for (const auto& key : order) {
         const auto& cases = figures[key];
         std::vector<std::string> kernels;
@@ -130,6 +81,12 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         run_gnuplot(folder, name, script, gnuplot);
         written.push_back(folder.filename().string() + "/" + name + ".svg");
     }
+    return written;
+}
+
+std::vector<std::string> draw_surface_figures(const StudyResults& results, const fs::path& folder, const fs::path& gnuplot)
+{
+    std::vector<std::string> written;
     // Free-surface profiles: a figure per lattice, a panel per kernel, a curve per form.
     std::vector<std::string> surface_lattices;
     for (const auto& c : results.surface)
@@ -175,6 +132,12 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         run_gnuplot(folder, name, script, gnuplot);
         written.push_back(folder.filename().string() + "/" + name + ".svg");
     }
+    return written;
+}
+
+std::vector<std::string> draw_sweep_figures(const StudyResults& results, const fs::path& folder, const fs::path& gnuplot)
+{
+    std::vector<std::string> written;
     // Parameter sweeps: heat maps of both errors over (k, parameter) with both zero contours.
     for (const auto& c : results.sweeps) {
         std::string name = c.lattice + "-" + c.kernel + "-" + c.parameter + "-map";
@@ -206,6 +169,105 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
         run_gnuplot(folder, name, script, gnuplot);
         written.push_back(folder.filename().string() + "/" + name + ".svg");
     }
+    return written;
+}
+
+// Stability: per lattice, a panel per kernel of min omega^2 against k, and one of the
+// dispersion curves along the high-symmetry path.
+std::vector<std::string> draw_stability_figures(const StudyResults& results, const fs::path& folder,
+                                                const fs::path& gnuplot)
+{
+    std::vector<std::string> written, lattices;
+    for (const auto& c : results.stability)
+        if (c.refused.empty() && std::find(lattices.begin(), lattices.end(), c.lattice) == lattices.end())
+            lattices.push_back(c.lattice);
+    for (const auto& lattice : lattices) {
+        std::vector<const StabilityCase*> cases;
+        for (const auto& c : results.stability)
+            if (c.lattice == lattice && c.refused.empty()) cases.push_back(&c);
+        const int columns = std::min<int>(3, static_cast<int>(cases.size()));
+        const int rows = (static_cast<int>(cases.size()) + columns - 1) / columns;
+        const std::string head = fmt::format(
+            "set encoding utf8\nset terminal svg size {},{} dynamic enhanced font 'sans,11' background '#ffffff'\n",
+            420 * columns, 340 * rows);
+        // min omega^2 against k.
+        std::string name = lattice + "-stability", script = head;
+        script += fmt::format("set output '{}.svg'\nset multiplot layout {},{} title '{}: min ω² of each branch "
+                              "over the Brillouin zone (c²/d²); green: condition (22) at a_p = {}, blue: stable'\n"
+                              "set grid\nset xlabel 'k'\nunset key\nset yrange [*<-0.001:0.001<*]\n",
+                              name, rows, columns, lattice,
+                              cases.front()->overlap.empty() ? "-" : cases.front()->overlap.front().ap_name);
+        int block = 0;
+        for (const auto* c : cases) {
+            const std::string id = fmt::format("m{}", block++);
+            script += "$" + id + " << EOD\n";
+            for (const auto& s : c->over_k.samples) {
+                script += fmt::format("{:.8f}", s.k);
+                for (double w : s.branch_minima) script += fmt::format(" {:.10g}", w);
+                script += "\n";
+            }
+            script += "EOD\nunset object\n";
+            int object = 1;
+            for (const auto& o : c->overlap)
+                if (&o == &c->overlap.front())
+                    for (const auto& i : o.accurate)
+                        script += fmt::format("set object {} rect from {},graph 0 to {},graph 1 fc rgb '#d9f0d3' "
+                                              "fs solid noborder behind\n", object++, i.from, i.to);
+            for (const auto& i : c->over_k.stable)
+                script += fmt::format("set object {} rect from {},graph 0 to {},graph 0.04 fc rgb '#4575b4' "
+                                      "fs solid noborder front\n", object++, i.from, i.to);
+            std::string plot;
+            const std::size_t branches = c->over_k.samples.front().branch_minima.size();
+            for (std::size_t b = 0; b < branches; ++b)
+                plot += fmt::format("{}${} using 1:{} with lines lw 2 lc rgb '{}'", b ? ", " : "", id, b + 2,
+                                    colours[b % 6]);
+            script += fmt::format("set title '{}' noenhanced\nplot {}\n", c->kernel_label, plot);
+        }
+        script += "unset multiplot\n";
+        run_gnuplot(folder, name, script, gnuplot);
+        written.push_back(folder.filename().string() + "/" + name + ".svg");
+        // Dispersion curves.
+        name = lattice + "-dispersion";
+        script = head + fmt::format("set output '{}.svg'\nset multiplot layout {},{} title '{}: ω² along the "
+                                    "high-symmetry path (c²/d²)'\nset grid xtics\nunset key\n",
+                                    name, rows, columns, lattice);
+        for (const auto* c : cases) {
+            const std::string id = fmt::format("p{}", block++);
+            script += "$" + id + " << EOD\n";
+            for (std::size_t i = 0; i < c->path.position.size(); ++i) {
+                script += fmt::format("{:.8f}", c->path.position[i]);
+                for (double w : c->path.omega2[i]) script += fmt::format(" {:.10g}", w);
+                script += "\n";
+            }
+            std::string tics;
+            for (std::size_t i = 0; i < c->path.labels.size(); ++i)
+                tics += fmt::format("{}'{}' {}", i ? ", " : "", c->path.labels[i], c->path.label_positions[i]);
+            std::string plot;
+            const std::size_t branches = c->path.omega2.front().size();
+            for (std::size_t b = 0; b < branches; ++b)
+                plot += fmt::format("{}${} using 1:{} with lines lw 2 lc rgb '{}'", b ? ", " : "", id, b + 2,
+                                    colours[b % 6]);
+            script += fmt::format("EOD\nset xtics ({})\nset xrange [0:{}]\nset title '{} (k = {:.4f})' noenhanced\n"
+                                  "set yrange [*<-0.001:0.001<*]\nplot {}, 0 with lines lc rgb 'black' dt 2\n",
+                                  tics, c->path.label_positions.back(), c->kernel_label, c->path_k, plot);
+        }
+        script += "unset multiplot\n";
+        run_gnuplot(folder, name, script, gnuplot);
+        written.push_back(folder.filename().string() + "/" + name + ".svg");
+    }
+    return written;
+}
+
+} // namespace
+
+std::vector<std::string> draw_study_plots(const Study& study, const StudyResults& results, const fs::path& folder,
+                                          const fs::path& gnuplot)
+{
+    fs::create_directories(folder);
+    std::vector<std::string> written;
+    for (auto part : {draw_bulk_figures(study, results, folder, gnuplot), draw_surface_figures(results, folder, gnuplot),
+                      draw_sweep_figures(results, folder, gnuplot), draw_stability_figures(results, folder, gnuplot)})
+        written.insert(written.end(), part.begin(), part.end());
     return written;
 }
 

@@ -25,7 +25,7 @@ std::string fixed(double v, int decimals = 5)
     return fmt::format("{:.{}f}", v, decimals);
 }
 
-std::string eps_name(const std::string& function) { return function == "rho" ? "eps_rho" : "eps_gradP"; }
+std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
 
 std::string intervals_text(const Acceptance& a)
 {
@@ -64,24 +64,25 @@ std::string replication_markdown(const StudyResults& results)
          "| eps_gradP (sphkern) | status | note |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     int reproduced = 0, errata = 0;
     for (const auto& r : results.comparison) {
-        reproduced += r.status == "reproduced";
-        errata += r.status == "erratum";
+        reproduced += r.status == ComparisonStatus::reproduced;
+        errata += r.status == ComparisonStatus::erratum;
         const auto& p = r.reference;
-        if (r.function == "none") {
+        if (!r.function) {
             s += fmt::format("| {} | - | no root | {} | | | | | | {} | {} |\n", r.kernel,
-                             r.status == "reproduced" ? "no root" : "roots found", r.status, r.note);
+                             r.status == ComparisonStatus::reproduced ? "no root" : "roots found", status_name(r.status),
+                             r.note);
             continue;
         }
         std::string gradp_paper = p.contains("printed_eps_gradp") ? p["printed_eps_gradp"].get<std::string>()
                                                                    : number(p.value("eps_gradp", nlohmann::json()));
         if (r.computed)
             s += fmt::format("| {} | {} | {} | {:.5f} | {:+.1e} | {} | {} | {} | {} | {} | {} |\n", r.kernel,
-                             eps_name(r.function), number(p["k"]), r.computed->k, r.computed->k - p["k"].get<double>(),
+                             eps_name(*r.function), number(p["k"]), r.computed->k, r.computed->k - p["k"].get<double>(),
                              number(p["eps_rho"]), fixed(r.computed->values.eps_rho), gradp_paper,
-                             fixed(r.computed->values.eps_gradp), r.status, r.note);
+                             fixed(r.computed->values.eps_gradp), status_name(r.status), r.note);
         else
-            s += fmt::format("| {} | {} | {} | - | | {} | | {} | | {} | {} |\n", r.kernel, eps_name(r.function),
-                             number(p["k"]), number(p["eps_rho"]), gradp_paper, r.status, r.note);
+            s += fmt::format("| {} | {} | {} | - | | {} | | {} | | {} | {} |\n", r.kernel, eps_name(*r.function),
+                             number(p["k"]), number(p["eps_rho"]), gradp_paper, status_name(r.status), r.note);
     }
     s += fmt::format("\n{} of {} rows reproduced; {} row(s) marked as errata of the paper; {} differ.\n\n", reproduced,
                      results.comparison.size(), errata, results.comparison.size() - reproduced - errata);
@@ -163,7 +164,9 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
     return s;
 }
 
-std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
+namespace {
+
+std::string header_markdown(const Study& study)
 {
     std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: {} in [{}, {}], {} samples per curve, epsilon = {}.\n"
                                 "Errors are the bulk relative errors of share/docs/method.md section 2 (a particle on a lattice "
@@ -191,8 +194,12 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
         }
     }
     s += "\n\n";
-    s += replication_markdown(results);
+    return s;
+}
 
+std::string explanations_markdown(const StudyResults& results)
+{
+    std::string s;
     // Why the non-automatic modes differ from the default, root by root.
     bool any = false;
     for (const auto& c : results.cases) {
@@ -218,6 +225,12 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
     }
     if (any) s += "\n";
 
+    return s;
+}
+
+std::string roots_markdown(const StudyResults& results)
+{
+    std::string s;
     s += "## Roots and jumps\n\n";
     for (const auto& g : grouped(results)) {
         s += fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->mode, g[0]->ap_name, g[0]->a_p) +
@@ -230,12 +243,16 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
                                  r.support_radius);
             for (const auto& j : c->scan.jumps)
                 s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c->kernel_label,
-                                 eps_name(j.function), j.kind, j.k, fixed(j.left), fixed(j.right));
+                                 eps_name(j.function), jump_kind_name(j.kind), j.k, fixed(j.left), fixed(j.right));
         }
         s += "\n";
     }
-    s += verdicts_markdown(study, results);
+    return s;
+}
 
+std::string surface_markdown(const StudyResults& results)
+{
+    std::string s;
     if (!results.surface.empty()) {
         s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
              "P = 0 there), by lattice sums over the half-space (share/docs/method.md section 6). Each cell: eps_rho / eps_gradP.\n\n";
@@ -262,6 +279,12 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
         s += "\n";
     }
 
+    return s;
+}
+
+std::string sweeps_markdown(const StudyResults& results)
+{
+    std::string s;
     if (!results.sweeps.empty()) {
         s += "## Kernel design: parameter sweeps\n\nFor each swept parameter, the (k, parameter) where eps_rho and "
              "eps_gradP vanish together (sphkern design), with the designed kernel's condition (22) intervals; "
@@ -282,12 +305,66 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
         s += "\n";
     }
 
+    return s;
+}
+
+std::string figures_markdown(const std::vector<std::string>& figures)
+{
+    std::string s;
     if (!figures.empty()) {
-        s += "## Figures\n\neps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= epsilon shaded "
-             "(as the paper's Figs. 4 to 6).\n\n";
+        s += "## Figures\n\nErrors against k: eps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= "
+             "epsilon shaded (as the paper's Figs. 4 to 6). Stability: min omega^2 of each branch against k, the k where "
+             "condition (22) holds shaded green, the stable k marked blue at the bottom; dispersion curves: omega^2 of "
+             "each branch along the high-symmetry path at the k named in the panel.\n\n";
         for (const auto& f : figures) s += fmt::format("![{}]({})\n\n", f, f);
     }
     return s;
+}
+
+std::string stability_markdown(const StudyResults& results)
+{
+    if (results.stability.empty()) return {};
+    std::string s = fmt::format(
+        "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
+        "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
+        "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; the method document, section 10). "
+        "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
+        results.stability.front().gamma);
+    std::string lattice;
+    for (const auto& c : results.stability) {
+        if (c.lattice != lattice) {
+            s += lattice.empty() ? "" : "\n";
+            lattice = c.lattice;
+            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable k | dispersion curves at k |\n"
+                             "|---|---|---|---|---|\n", lattice);
+        }
+        if (!c.refused.empty()) {
+            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, c.refused);
+            continue;
+        }
+        std::string stable, both;
+        for (const auto& i : c.over_k.stable) stable += fmt::format("{}[{:.4f}, {:.4f}]", stable.empty() ? "" : " ", i.from, i.to);
+        for (const auto& o : c.overlap) {
+            std::string intervals;
+            for (const auto& i : o.both) intervals += fmt::format("{}[{:.4f}, {:.4f}]", intervals.empty() ? "" : " ", i.from, i.to);
+            both += fmt::format("{}{}: {}", both.empty() ? "" : "; ", o.ap_name,
+                                !intervals.empty() ? intervals
+                                : o.accurate.empty() ? std::string("none (condition (22) fails)")
+                                                     : std::string("none: every accurate k is unstable"));
+        }
+        s += fmt::format("| {} | [{:.4f}, {:.4f}] | {} | {} | {:.4f} |\n", c.kernel_label, c.over_k.samples.front().k,
+                         c.over_k.samples.back().k, stable.empty() ? std::string("none") : stable, both, c.path_k);
+    }
+    return s + "\n";
+}
+
+} // namespace
+
+std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
+{
+    return header_markdown(study) + replication_markdown(results) + explanations_markdown(results) +
+           roots_markdown(results) + verdicts_markdown(study, results) + surface_markdown(results) +
+           sweeps_markdown(results) + stability_markdown(results) + figures_markdown(figures);
 }
 
 } // namespace sphkern

@@ -1,7 +1,8 @@
 // The Markdown report of a study, and the parts of it printed on stdout.
 #pragma once
 
-#include "study/study_runner.hpp"
+#include "study/study.hpp"
+#include "study/study_results.hpp"
 
 #include <string>
 #include <vector>

@@ -114,6 +114,13 @@ void check_study_budget(const Study& study, const JsonNode& root)
         if (layers > max_study_surface_layers)
             refuse("kernels x lattices x surface forms x layers", layers, max_study_surface_layers);
     }
+    if (study.stability) {
+        double points = double(study.kernels.size()) * double(study.lattices.size()) * (study.stability->steps + 1);
+        const int grid = study.stability->grid > 0 ? study.stability->grid : 32; // the 2D default, the larger
+        points *= study.stability->grid > 0 ? std::pow(grid, 3) : grid * grid;
+        if (points > max_study_stability_points)
+            refuse("kernels x lattices x stability k samples x wave vectors", points, max_study_stability_points);
+    }
 }
 
 } // namespace
@@ -125,7 +132,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     study.document = std::move(document);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral"});
+                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability"});
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
@@ -279,6 +286,30 @@ Study parse_study(nlohmann::json document, const fs::path& file)
         if (auto ap = node->find("volume_coefficient"))
             surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
         study.surface = surface;
+    }
+    if (auto node = root.find("stability")) {
+        node->expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points"});
+        StudyStability stability;
+        if (auto gamma = node->find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
+        if (auto k = node->find("k")) {
+            k->expect_keys({"min", "max", "steps"});
+            if (k->find("min") || k->find("max")) {
+                stability.k_min = k->at("min").number_in(1e-3, 100);
+                stability.k_max = k->at("max").number_in(1e-3, 100);
+                if (*stability.k_min >= *stability.k_max) k->at("max").error("expected max > min");
+            }
+            if (auto steps = k->find("steps")) stability.steps = static_cast<int>(steps->integer_in(1, 2000));
+        }
+        if (auto grid = node->find("grid")) stability.grid = static_cast<int>(grid->integer_in(2, 200));
+        if (auto k = node->find("dispersion_k")) {
+            if (k->is_string()) {
+                if (k->string() != "best") k->error("expected a number or \"best\"");
+            } else {
+                stability.path_k = k->number_in(1e-3, 100);
+            }
+        }
+        if (auto points = node->find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
+        study.stability = stability;
     }
     check_study_budget(study, root);
     return study;

@@ -1,5 +1,6 @@
 // A study: kernels x lattices x volume coefficients x evaluation modes over a
-// k-interval, read from a JSON file (share/docs/study-format.md).
+// k-interval, read from a JSON file (the format: share/docs/study-format.md and
+// share/schemas/study.schema.json).
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
@@ -51,10 +52,22 @@ struct StudySweep {
     std::string json_path;
 };
 
+// The optional stability section: min omega^2 against k, the stable k intervals and the
+// dispersion curves of every kernel on every lattice.
+struct StudyStability {
+    double gamma = 5.0 / 3.0;
+    std::optional<double> k_min, k_max; // empty: the study's window in k, over its volume coefficients
+    int steps = 100;                    // k samples - 1
+    int grid = 0;                       // points per reciprocal axis; 0: 8 in 3D, 32 in 2D
+    std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
+    int path_points = 120;
+};
+
 // A study's total work, bounded before it starts (see check in parse_study).
 inline constexpr double max_study_curve_points = 2e6;
 inline constexpr double max_study_sweep_points = 2e6;
 inline constexpr double max_study_surface_layers = 1e6;
+inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples
 
 struct Study {
     std::string file;
@@ -75,6 +88,7 @@ struct Study {
     bool plots = true;
     std::optional<StudySurface> surface;
     std::vector<StudySweep> sweeps;
+    std::optional<StudyStability> stability;
 };
 
 Study read_study(const std::filesystem::path& file);

@@ -1,104 +1,13 @@
-// Runs a study: every kernel x lattice x volume coefficient x mode, with curves,
-// roots, jumps, condition (22), mode-difference explanations and the comparison
-// with a reference table.
+// Runs a study: its kernels and lattices loaded once, then each section in turn (bulk
+// cases, surface, sweeps, stability) and the comparison with a reference table.
 #pragma once
 
-#include "analysis/acceptance.hpp"
-#include "analysis/design.hpp"
-#include "analysis/roots.hpp"
-#include "analysis/site_roots.hpp"
-#include "analysis/surface_profile.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "study/study.hpp"
-
-#include <ostream>
-#include <nlohmann/json.hpp>
-
-#include <optional>
-#include <string>
-#include <vector>
+#include "study/study_results.hpp"
 
 namespace sphkern {
 
-// Why a root of a non-automatic mode differs from the default evaluation at that k.
-struct ModeDifference {
-    double radius;      // shell radius in d
-    int count;
-    std::string reason; // "evaluated past R" or "left out of the shell list"
-    double q;           // r / h at the root
-    double contribution; // to the function that vanished, in the mode (past R) or missing from it
-};
-
-struct RootExplanation {
-    Root root;
-    double default_value = 0;              // the same function in the default evaluation at root.k
-    std::optional<double> default_root_k;  // nearest root of the same function in the default evaluation
-    std::vector<ModeDifference> differences;
-};
-
-struct StudyCase {
-    std::string lattice;
-    int dimension = 0;
-    std::string mode;
-    bool automatic = true;
-    std::string kernel;      // name
-    std::string kernel_label;
-    double support = 0;
-    std::string ap_name;
-    double a_p = 0;
-    double k_min = 0, k_max = 0; // the study's window, in k for this kernel, lattice and a_p
-    std::vector<std::pair<double, ErrorValues>> curve;
-    RootScan scan;                      // of the first site studied (the curve's site too)
-    std::vector<int> sites;             // the sites studied
-    Acceptance acceptance;              // condition (22) along gravity, at every site studied at once
-    Acceptance acceptance_every;        // the same for every direction (the gradient-error tensor)
-    std::vector<SiteRoots> per_site;    // each site on its own (lattices with several sites)
-    std::vector<RootExplanation> explanations; // non-automatic modes only
-};
-
-struct ComparisonRow {
-    nlohmann::json reference;        // the row as published
-    std::string kernel;
-    std::string function;            // "rho", "gradp" or "none"
-    std::optional<Root> computed;    // the matching root in the compared mode
-    std::string status;              // "reproduced", "differs", "erratum"
-    std::string note;
-};
-
-struct SurfaceCase {
-    std::string lattice;
-    std::string kernel_label;
-    std::string form;
-    std::string ap_name;
-    double a_p = 0;
-    double k = 0;
-    SurfaceProfile profile;
-};
-
-struct SweepCase {
-    std::string lattice;
-    std::string kernel;
-    std::string parameter;
-    std::string ap_name;
-    double a_p = 0;
-    std::vector<double> ks, values;                 // the grid
-    std::vector<std::vector<double>> rho, gradp;    // [value index][k index]
-    DesignResult design;
-    std::vector<Acceptance> designed_acceptance;    // condition (22) of each designed kernel
-};
-
-struct StudyResults {
-    std::vector<StudyCase> cases;
-    std::vector<ComparisonRow> comparison;
-    std::vector<SurfaceCase> surface;
-    std::vector<SweepCase> sweeps;
-    double tolerance = 1e-4;
-    nlohmann::json reference; // the whole reference table, if any
-};
-
 StudyResults run_study(const Study& study, KernelRegistry& registry);
-
-// results.json, streamed.
-void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results);
 
 } // namespace sphkern

@@ -64,7 +64,7 @@ TEST_CASE("roots agree with a brute-force evaluation to 1e-9 in 2D and 3D")
                     CAPTURE(root.k);
                     auto value = [&](double k) {
                         auto v = brute_force_errors(kernel, lattice, k, a_p, lattice.gravity);
-                        return root.function == "rho" ? v.eps_rho : v.eps_gradp;
+                        return root.function == ErrorFunction::rho ? v.eps_rho : v.eps_gradp;
                     };
                     double below = value(root.k - 1e-9), above = value(root.k + 1e-9);
                     CHECK(std::signbit(below) != std::signbit(above));
@@ -83,7 +83,7 @@ TEST_CASE("a sign change across a breakpoint is a jump, not a root; the composit
     const double k_b = std::sqrt(7.0) / 3;
     bool jump = false;
     for (const auto& j : scan.jumps)
-        if (j.function == "gradp" && std::abs(j.k - k_b) < 1e-14) {
+        if (j.function == ErrorFunction::gradp && std::abs(j.k - k_b) < 1e-14) {
             jump = true;
             CHECK(j.left == doctest::Approx(gaussian.at_piece(k_b, 3).eps_gradp));
             CHECK(std::signbit(j.left) != std::signbit(j.right));
@@ -91,7 +91,7 @@ TEST_CASE("a sign change across a breakpoint is a jump, not a root; the composit
     CHECK(jump);
     for (const auto& r : scan.roots) {
         CHECK(std::abs(r.k - k_b) > 1e-6);
-        CHECK(std::abs(r.function == "rho" ? r.values.eps_rho : r.values.eps_gradp) < 1e-8);
+        CHECK(std::abs(value_of(r.values, r.function)) < 1e-8);
     }
     // Eq. (13b) is singular at k = 63/74, where no lattice point is inside the R = 1 support:
     // the errors stay finite and the roots are real roots.
@@ -99,7 +99,7 @@ TEST_CASE("a sign change across a breakpoint is a jump, not a root; the composit
     HydrostaticErrors errors(composite, lattice, 0, std::sqrt(3.0) / 2, lattice.gravity, 1.25);
     CHECK(std::isfinite(errors.at(63.0 / 74).eps_gradp));
     for (const auto& r : find_roots(errors, 0.75, 1.25).roots)
-        CHECK(std::abs(r.function == "rho" ? r.values.eps_rho : r.values.eps_gradp) < 1e-8);
+        CHECK(std::abs(value_of(r.values, r.function)) < 1e-8);
 }
 
 TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without tuning")
@@ -125,7 +125,7 @@ TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without t
             continue;
         }
         if (row.contains("erratum")) continue; // the composite gradient row: see share/docs/method.md, errata
-        std::string function = row["eps_gradp"].is_number() && row["eps_gradp"] == 0 ? "gradp" : "rho";
+        const auto function = row["eps_gradp"].is_number() && row["eps_gradp"] == 0 ? ErrorFunction::gradp : ErrorFunction::rho;
         const Root* best = nullptr;
         for (const auto& r : scan.roots)
             if (r.function == function && (!best || std::abs(r.k - row["k"].get<double>()) < std::abs(best->k - row["k"].get<double>())))

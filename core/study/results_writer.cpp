@@ -1,0 +1,138 @@
+#include "study/results_writer.hpp"
+
+#include "analysis/results_json.hpp"
+#include "stability/stability_json.hpp"
+#include "support/chunked_writer.hpp"
+
+#include <cmath>
+
+namespace sphkern {
+
+namespace {
+
+nlohmann::json per_site_json(const StudyCase& c, double epsilon)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& p : c.per_site) list.push_back(site_roots_json(p, epsilon));
+    return list;
+}
+
+nlohmann::json intervals_json(const std::vector<KInterval>& intervals)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& i : intervals) list.push_back({i.from, i.to});
+    return list;
+}
+
+nlohmann::json stability_json(const StabilityCase& c)
+{
+    nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma}};
+    if (!c.refused.empty()) {
+        entry["refused"] = c.refused;
+        return entry;
+    }
+    nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
+                   intervals = nlohmann::json::array(), overlap = nlohmann::json::array();
+    for (const auto& s : c.over_k.samples) {
+        ks.push_back(s.k);
+        minima.push_back(s.branch_minima);
+        stable.push_back(s.stable);
+    }
+    for (const auto& i : c.over_k.stable) intervals.push_back({i.from, i.to});
+    for (const auto& o : c.overlap)
+        overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
+                           {"accurate_and_stable", intervals_json(o.both)}});
+    entry.update({{"bravais", c.over_k.bravais}, {"k", ks}, {"branch_minima", minima}, {"stable", stable},
+                  {"stable_intervals", intervals}, {"overlap", overlap},
+                  {"dispersion", {{"k", c.path_k}, {"path", dispersion_path_json(c.path)}}}});
+    return entry;
+}
+
+} // namespace
+
+// Streamed: every part but the curves is a small JSON value; the curves, most of the
+// document, are written number by number without building a JSON tree for them.
+void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results)
+{
+    ChunkedWriter w(out);
+    auto number = [&](double v) {
+        if (std::isfinite(v)) w.print("{}", v);
+        else w.text("null");
+    };
+    w.print("{{\n \"sphkern_version\": {},\n \"study_file\": {},\n \"study\": {},\n \"cases\": [",
+            nlohmann::json(SPHKERN_VERSION).dump(), nlohmann::json(study.file).dump(), study.document.dump());
+    for (std::size_t i = 0; i < results.cases.size(); ++i) {
+        const auto& c = results.cases[i];
+        nlohmann::json explanations = nlohmann::json::array();
+        for (const auto& e : c.explanations) {
+            nlohmann::json diffs = nlohmann::json::array();
+            for (const auto& d : e.differences)
+                diffs.push_back({{"radius", d.radius}, {"count", d.count}, {"reason", d.reason}, {"q", d.q},
+                                 {"contribution", d.contribution}});
+            explanations.push_back({{"function", function_name(e.root.function)}, {"k", e.root.k},
+                                    {"default_value", e.default_value},
+                                    {"default_root_k", e.default_root_k ? nlohmann::json(*e.default_root_k) : nullptr},
+                                    {"differences", diffs}});
+        }
+        auto scan = root_scan_json(c.scan);
+        std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
+                                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
+                                          {"jumps", scan["jumps"]},
+                                          {"sites", c.sites},
+                                          {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
+                                          {"acceptance_every_direction", acceptance_json(c.acceptance_every, study.epsilon)},
+                                          {"per_site", per_site_json(c, study.epsilon)},
+                                          {"explanations", explanations}}
+                               .dump();
+        head.pop_back(); // the closing brace: the curve follows
+        w.text(i ? ",\n  " : "\n  ");
+        w.text(head);
+        const char* fields[] = {"k", "eps_rho", "eps_gradp", "neighbours"};
+        w.text(", \"curve\": {");
+        for (int f = 0; f < 4; ++f) {
+            w.print("{}\"{}\": [", f ? ", " : "", fields[f]);
+            for (std::size_t j = 0; j < c.curve.size(); ++j) {
+                if (j) w.text(",");
+                const auto& [k, v] = c.curve[j];
+                if (f == 3) w.print("{}", v.neighbours);
+                else number(f == 0 ? k : f == 1 ? v.eps_rho : v.eps_gradp);
+            }
+            w.text("]");
+        }
+        w.text("}}");
+    }
+    nlohmann::json comparison = nlohmann::json::array();
+    for (const auto& r : results.comparison)
+        comparison.push_back({{"reference", r.reference},
+                              {"function", r.function ? nlohmann::json(function_name(*r.function)) : nlohmann::json("none")},
+                              {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
+                              {"status", status_name(r.status)},
+                              {"note", r.note}});
+    nlohmann::json surface = nlohmann::json::array();
+    for (const auto& c : results.surface) {
+        auto entry = surface_json(c.profile);
+        entry.update({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
+                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k}});
+        surface.push_back(entry);
+    }
+    nlohmann::json sweeps = nlohmann::json::array();
+    for (const auto& c : results.sweeps) {
+        nlohmann::json solutions = nlohmann::json::array();
+        for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
+            const auto& s = c.design.solutions[i];
+            solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
+                                 {"eps_gradp", s.values.eps_gradp}, {"jacobian_condition", s.jacobian_condition},
+                                 {"non_negative", s.non_negative},
+                                 {"acceptance", acceptance_json(c.designed_acceptance[i], study.epsilon)}});
+        }
+        sweeps.push_back({{"lattice", c.lattice}, {"kernel", c.kernel}, {"parameter", c.parameter},
+                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
+                          {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
+    }
+    nlohmann::json stability = nlohmann::json::array();
+    for (const auto& c : results.stability) stability.push_back(stability_json(c));
+    w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {},\n \"stability\": {}\n}}\n",
+            comparison.dump(1), surface.dump(1), sweeps.dump(1), stability.dump(1));
+}
+
+} // namespace sphkern

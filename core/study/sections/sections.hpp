@@ -1,0 +1,23 @@
+// The sections of a study, each run on its own into the study's results: the bulk cases
+// first (the others read their condition (22) windows), then the optional ones.
+#pragma once
+
+#include "study/study.hpp"
+#include "study/study_inputs.hpp"
+#include "study/study_results.hpp"
+
+namespace sphkern {
+
+// Every kernel x lattice x a_p x mode: curves, roots, jumps, condition (22), explanations.
+void run_bulk_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
+
+// "surface": a free-surface profile per lattice, kernel and gradient form.
+void run_surface_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
+
+// "sweeps": both errors over (k, parameter) and the designed kernels.
+void run_sweep_section(const Study& study, KernelRegistry& registry, const StudyInputs& inputs, StudyResults& results);
+
+// "stability": stable k intervals, dispersion curves and their overlap with condition (22).
+void run_stability_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
+
+} // namespace sphkern
