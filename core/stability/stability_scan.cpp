@@ -11,6 +11,54 @@
 
 namespace sphkern {
 
+namespace {
+
+// Distinct valleys refined besides the grid minimum.
+constexpr int valley_candidates = 3;
+
+// The grid's local minima (periodic neighbours, ties allowed) other than Γ, lowest first,
+// one per value: symmetric copies of a valley are refined once.
+std::vector<std::size_t> valley_floors(const std::vector<double>& value, int n, int D, int count)
+{
+    std::vector<std::size_t> floors;
+    const std::size_t total = value.size();
+    auto coordinate = [&](std::size_t index, int axis) {
+        for (int a = 0; a < axis; ++a) index /= static_cast<std::size_t>(n);
+        return static_cast<int>(index % static_cast<std::size_t>(n));
+    };
+    const std::size_t gamma = [&] { // fraction 0 on every axis: grid coordinate n / 2
+        std::size_t index = 0;
+        for (int a = D - 1; a >= 0; --a) index = index * static_cast<std::size_t>(n) + static_cast<std::size_t>(n / 2);
+        return index;
+    }();
+    for (std::size_t i = 0; i < total; ++i) {
+        if (i == gamma) continue;
+        bool floor = true;
+        for (int offset = 0; offset < (D == 3 ? 27 : D == 2 ? 9 : 3) && floor; ++offset) {
+            std::size_t j = 0, stride = 1;
+            int o = offset;
+            for (int a = 0; a < D; ++a) {
+                const int c = (coordinate(i, a) + (o % 3) - 1 + n) % n;
+                o /= 3;
+                j += static_cast<std::size_t>(c) * stride;
+                stride *= static_cast<std::size_t>(n);
+            }
+            floor = value[j] >= value[i];
+        }
+        if (floor) floors.push_back(i);
+    }
+    std::sort(floors.begin(), floors.end(), [&](std::size_t a, std::size_t c) { return value[a] < value[c]; });
+    std::vector<std::size_t> distinct;
+    for (std::size_t i : floors) {
+        if (static_cast<int>(distinct.size()) == count) break;
+        if (!distinct.empty() && std::abs(value[i] - value[distinct.back()]) <= 1e-9 * std::abs(value[i])) continue;
+        distinct.push_back(i);
+    }
+    return distinct;
+}
+
+} // namespace
+
 int default_grid(int dimension) { return dimension == 3 ? 24 : dimension == 2 ? 96 : 512; }
 
 StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int per_axis,
@@ -29,33 +77,29 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
         }
         return f;
     };
-    // The lowest grid value of each branch, per thread, then merged.
+    // The lowest grid value of each branch, per thread, then merged; the lowest branch on
+    // every grid point, for its local minima.
     struct Best {
         std::vector<double> value;
         std::vector<Eigen::Vector3d> at;
     };
     std::vector<Best> best(static_cast<std::size_t>(std::max(1, threads)),
                            Best{std::vector<double>(branches, INFINITY), std::vector<Eigen::Vector3d>(branches)});
+    std::vector<double> lowest(total);
     ParallelFor pool;
     pool.run(total, threads, [&](int t, std::size_t begin, std::size_t end) {
         auto& mine = best[static_cast<std::size_t>(t)];
         for (std::size_t i = begin; i < end && (i % 256 || pool.keep_going()); ++i) {
             const Eigen::Vector3d f = fraction_of(i);
             const auto w = dispersion.omega2(b * f);
+            lowest[i] = w[0];
             for (int br = 0; br < branches; ++br)
                 if (w[br] < mine.value[br]) mine.value[br] = w[br], mine.at[br] = f;
         }
     });
-    StabilityScan scan;
-    scan.grid_points = static_cast<int>(total);
-    for (int br = 0; br < branches; ++br) {
-        std::size_t winner = 0;
-        for (std::size_t t = 1; t < best.size(); ++t)
-            if (best[t].value[br] < best[winner].value[br]) winner = t;
-        Eigen::Vector3d f = best[winner].at[br];
-        double value = best[winner].value[br];
-        // Coordinate-wise Brent around the grid minimum, three sweeps.
-        for (int sweep = 0; sweep < (refine_all || br == 0 ? 6 : 0); ++sweep)
+    // Coordinate-wise Brent from a grid point, within one grid step on each axis.
+    auto refine = [&](int br, Eigen::Vector3d f, double value, int sweeps) {
+        for (int sweep = 0; sweep < sweeps; ++sweep)
             for (int axis = 0; axis < D; ++axis) {
                 auto along = [&](double x) {
                     Eigen::Vector3d g = f;
@@ -66,6 +110,22 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
                 auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - 1.0 / n, f[axis] + 1.0 / n, 30,
                                                                     iterations);
                 if (fx < value) value = fx, f[axis] = x;
+            }
+        return std::pair{f, value};
+    };
+    StabilityScan scan;
+    scan.grid_points = static_cast<int>(total);
+    for (int br = 0; br < branches; ++br) {
+        std::size_t winner = 0;
+        for (std::size_t t = 1; t < best.size(); ++t)
+            if (best[t].value[br] < best[winner].value[br]) winner = t;
+        auto [f, value] = refine(br, best[winner].at[br], best[winner].value[br], refine_all || br == 0 ? 6 : 0);
+        // The lowest branch: also its lowest grid valleys away from Γ, where an instability
+        // starts as a valley floor crosses zero (the grid minimum may still be Γ then).
+        if (br == 0)
+            for (std::size_t i : valley_floors(lowest, n, D, valley_candidates)) {
+                auto [g, v] = refine(0, fraction_of(i), lowest[i], 6);
+                if (v < value) f = g, value = v;
             }
         BranchMinimum m;
         m.branch = br;

@@ -192,6 +192,14 @@ study s_plugin '{"name": "s", "kernels": ["'"$broken"'/crash_in_w.so"], "lattice
 expect 4 'crash_in_w.so: plugin crashed with signal 11' -- run "$work/s_plugin.json" -o "$work/out11"
 study s_surface '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "surface": {"forms": ["up"]}}'
 expect 3 's_surface.json: /surface/forms/0: gradient form "up" is unknown' -- run "$work/s_surface.json" -o "$work/out12"
+study s_gamma '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"gamma": 0}}'
+expect 3 's_gamma.json: /stability/gamma: ' -- run "$work/s_gamma.json" -o "$work/out12"
+study s_stability_k '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"k": {"min": 1.2, "max": 1.1}}}'
+expect 3 's_stability_k.json: /stability/k/max: expected max > min' -- run "$work/s_stability_k.json" -o "$work/out12"
+study s_stability_key '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"gama": 1.4}}'
+expect 3 's_stability_key.json: /stability: unknown key "gama"' -- run "$work/s_stability_key.json" -o "$work/out12"
+study s_stability_budget '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"grid": 200, "k": {"steps": 2000}}}'
+expect 3 'kernels x lattices x stability k samples x wave vectors' -- run "$work/s_stability_budget.json" -o "$work/out12"
 study s_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "cubic_bspline", "parameter": "beta", "range": [0, 1]}]}'
 expect 3 's_sweep.json: /sweeps/0: kernel cubic_bspline has no parameter "beta"' -- run "$work/s_sweep.json" -o "$work/out13"
 study s_range '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "a+b", "parameter": "alpha", "range": [1, 0]}]}'
@@ -453,6 +461,14 @@ expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability 
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
+# In a study the same lattice is reported as not available, and the study completes.
+study s_lieb "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"$data/lattices/lieb.json\", \"square\"], \"stability\": {\"k\": {\"steps\": 10}}}"
+"$sphkern" run "$work/s_lieb.json" --no-plots -o "$work/out_lieb" >/dev/null 2>&1
+check "study with lieb: not available, square scanned" grep -q 'not available: the sites of lattice lieb do not see one SPH density' "$work/out_lieb/report.md"
+check "study with lieb: square has stable intervals" python3 -c "
+import json; r = json.load(open('$work/out_lieb/results.json'))
+s = {x['lattice']: x for x in r['stability']}
+assert 'refused' in s['lieb'] and s['square']['stable_intervals'], s.keys()"
 expect 3 'defined in 2,3D only' -- spectrum wendland_c2 --dim 1
 
 "$sphkern" stability cubic_bspline fcc --k 1.2 --json >"$work/stability.json"

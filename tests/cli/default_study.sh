@@ -18,8 +18,21 @@ assert r['sphkern_version'] and r['study']['name'] == 'potapov2021'
 assert len(r['cases']) == 8 * 3 * 2, len(r['cases'])
 assert sum(c['status'] == 'reproduced' for c in r['comparison']) == 20
 assert len(r['surface']) == 8 * 3 and all(len(s['layers']) >= 4 for s in r['surface'])
+st = r['stability']
+assert len(st) == 8 and all(len(s['k']) == 101 and len(s['branch_minima'][0]) == 2 for s in st), len(st)
+for s in st:  # a sample is stable exactly when it lies in a stable interval
+    for k, ok in zip(s['k'], s['stable']):
+        assert ok == any(a <= k <= b for a, b in s['stable_intervals']), (s['kernel'], k)
+    for o in s['overlap']:
+        for a, b in o['accurate_and_stable']:
+            assert any(x <= a and b <= y for x, y in o['accurate']) and any(x <= a and b <= y for x, y in s['stable_intervals'])
 "
 grep -q '## Free-surface profiles' "$work/out/report.md"
+grep -q '## Linear stability' "$work/out/report.md"
+if command -v gnuplot >/dev/null; then
+    test -s "$work/out/plots/triangular-stability.svg"
+    test -s "$work/out/plots/triangular-dispersion.svg"
+fi
 "$sphkern" run lattices-3d --no-plots -o "$work/out3d" >/dev/null
 python3 -c "
 import json
