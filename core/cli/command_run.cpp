@@ -8,6 +8,7 @@
 #include "study/results_writer.hpp"
 #include "study/study_runner.hpp"
 #include "support/chunked_writer.hpp"
+#include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/output_folder.hpp"
 

@@ -4,6 +4,7 @@
 #include "kernels/kernel_blend.hpp"
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
+#include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/interruption.hpp"
 #include "support/json_input.hpp"
@@ -22,12 +23,6 @@ namespace fs = std::filesystem;
 std::shared_ptr<const KernelDefinition> load_kernel_file(const fs::path& file)
 {
     return file.extension() == ".json" ? load_expression_kernel(file) : load_kernel_plugin(file);
-}
-
-bool looks_like_path(const std::string& spec, const std::string& extension)
-{
-    return spec.find('/') != std::string::npos ||
-           (spec.size() > extension.size() && spec.compare(spec.size() - extension.size(), extension.size(), extension) == 0);
 }
 
 std::vector<fs::path> kernel_plugin_folders()

@@ -56,8 +56,6 @@ private:
     std::vector<std::pair<std::string, std::shared_ptr<const KernelDefinition>>> blends_;
 };
 
-bool looks_like_path(const std::string& spec, const std::string& extension);
-
 // A plugin library, or an expression kernel if the file ends in .json.
 std::shared_ptr<const KernelDefinition> load_kernel_file(const std::filesystem::path& file);
 

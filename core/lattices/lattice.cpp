@@ -1,6 +1,6 @@
 #include "lattices/lattice.hpp"
 
-#include "kernels/kernel_registry.hpp"
+#include "support/file_spec.hpp"
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"

@@ -5,6 +5,7 @@
 #include "analysis/results_json.hpp"
 #include "analysis/surface_profile.hpp"
 #include "support/error.hpp"
+#include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
 
@@ -86,6 +87,12 @@ StudyMode read_mode(const JsonNode& node)
 
 } // namespace
 
+namespace {
+
+const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
+
+} // namespace
+
 Study read_study(const fs::path& file) { return parse_study(read_json_file(file), file); }
 
 namespace {
@@ -157,13 +164,11 @@ Study parse_study(nlohmann::json document, const fs::path& file)
             item.error("expected a kernel name, a plugin file or {\"kernel\": ..., \"set\": {...}}, got " +
                        json_type_name(item.value()));
         }
-        if (k.spec.find('/') != std::string::npos && fs::path(k.spec).is_relative())
-            k.spec = (file.parent_path() / k.spec).string();
+        k.spec = resolve_beside(k.spec, file, kernel_file_extensions);
         study.kernels.push_back(k);
     }
     study.lattices = string_list(root.at("lattices"));
-    for (auto& l : study.lattices)
-        if (l.find('/') != std::string::npos && fs::path(l).is_relative()) l = (file.parent_path() / l).string();
+    for (auto& l : study.lattices) l = resolve_beside(l, file, {".json"});
 
     if (auto ap = root.find("volume_coefficients")) {
         ap->expect_array(1, 100);
@@ -246,8 +251,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
             StudySweep sweep;
             sweep.json_path = node.path();
             sweep.kernel = node.at("kernel").string();
-            if (sweep.kernel.find('/') != std::string::npos && fs::path(sweep.kernel).is_relative())
-                sweep.kernel = (file.parent_path() / sweep.kernel).string();
+            sweep.kernel = resolve_beside(sweep.kernel, file, kernel_file_extensions);
             if (auto set = node.find("set")) {
                 set->expect_object();
                 for (const auto& [name, unused] : set->value().items()) sweep.parameters[name] = set->at(name).number();

@@ -461,6 +461,18 @@ expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability 
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
+# Relative names in a study are relative to the study file, run from elsewhere; a file
+# whose name has a '+' is that file, not a blend.
+mkdir -p "$work/beside/sub" "$work/elsewhere"
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); d['name']='mine'; json.dump(d,open(sys.argv[2],'w'))" \
+    "$data/../../lattices/sc.json" "$work/beside/my-lattice.json"
+cp "$broken/abi1_cubic.so" "$work/beside/x+y.so"
+printf '%s' '{"name": "s", "kernels": ["x+y.so", "cubic_bspline+wendland_c2"], "lattices": ["my-lattice.json"], "k": {"samples": 11}}' >"$work/beside/s.json"
+(cd "$work/elsewhere" && "$sphkern" run ../beside/s.json --no-plots -o out >/dev/null 2>"$work/beside.err")
+check "study resolves bare names beside it: $(cat "$work/beside.err")" python3 -c "
+import json; r = json.load(open('$work/elsewhere/out/results.json'))
+assert {c['lattice'] for c in r['cases']} == {'mine'}, r['cases'][0]['lattice']
+assert len(r['cases']) == 2"
 # In a study the same lattice is reported as not available, and the study completes.
 study s_lieb "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"$data/lattices/lieb.json\", \"square\"], \"stability\": {\"k\": {\"steps\": 10}}}"
 "$sphkern" run "$work/s_lieb.json" --no-plots -o "$work/out_lieb" >/dev/null 2>&1
