@@ -12,7 +12,10 @@ bool KernelDefinition::supports(int dim) const
 std::string KernelDefinition::dimensions_text() const
 {
     std::string s;
-    for (int d : dimensions) s += (s.empty() ? "" : ",") + std::to_string(d);
+    for (int d : dimensions) {
+        if (!s.empty()) s += ',';
+        s += std::to_string(d);
+    }
     return s;
 }
 

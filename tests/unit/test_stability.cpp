@@ -231,7 +231,7 @@ TEST_CASE("the spectrum does not depend on how the lattice is oriented")
     turned.gravity = Q * lattice.gravity;
     const Kernel kernel = shipped_kernel("cubic_bspline");
     const Dispersion a(kernel, lattice, 1.2, 5.0 / 3), b(kernel, turned, 1.2, 5.0 / 3);
-    for (const Eigen::Vector3d kappa : {Eigen::Vector3d(0.4, 1.1, -2.0), Eigen::Vector3d(3.0, 0.1, 0.2)}) {
+    for (const Eigen::Vector3d& kappa : {Eigen::Vector3d(0.4, 1.1, -2.0), Eigen::Vector3d(3.0, 0.1, 0.2)}) {
         const auto wa = a.omega2(kappa), wb = b.omega2(Q * kappa);
         for (int i = 0; i < 3; ++i) CHECK(wa[i] == doctest::Approx(wb[i]).epsilon(1e-12).scale(1));
     }
