@@ -22,7 +22,8 @@ if ((${#missing[@]})); then
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# SPHKERN_WERROR=ON (CI) makes every compiler warning an error.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPHKERN_WERROR="${SPHKERN_WERROR:-OFF}" >/dev/null
 cmake --build build -j "$(nproc)" >&2
 
 case "${1:-run}" in

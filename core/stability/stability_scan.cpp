@@ -107,7 +107,7 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
                     return dispersion.omega2(b * g)[br];
                 };
                 std::uintmax_t iterations = 60;
-                auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - 1.0 / n, f[axis] + 1.0 / n, 30,
+                auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - 1.0 / n, f[axis] + 1.0 / n, 20,
                                                                     iterations);
                 if (fx < value) value = fx, f[axis] = x;
             }
@@ -124,7 +124,7 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
         // starts as a valley floor crosses zero (the grid minimum may still be Γ then).
         if (br == 0)
             for (std::size_t i : valley_floors(lowest, n, D, valley_candidates)) {
-                auto [g, v] = refine(0, fraction_of(i), lowest[i], 6);
+                auto [g, v] = refine(0, fraction_of(i), lowest[i], 3);
                 if (v < value) f = g, value = v;
             }
         BranchMinimum m;
