@@ -23,7 +23,10 @@ if ((${#missing[@]})); then
 fi
 
 # SPHKERN_WERROR=ON (CI) makes every compiler warning an error.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPHKERN_WERROR="${SPHKERN_WERROR:-OFF}" >/dev/null
+# Libraries in Debian's multiarch folder (lib/x86_64-linux-gnu), as Debian installs them.
+multiarch=$(gcc -print-multiarch 2>/dev/null || true)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPHKERN_WERROR="${SPHKERN_WERROR:-OFF}" \
+    ${multiarch:+-DCMAKE_INSTALL_LIBDIR="lib/$multiarch"} >/dev/null
 cmake --build build -j "$(nproc)" >&2
 
 case "${1:-run}" in
