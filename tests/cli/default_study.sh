@@ -60,4 +60,8 @@ for s in d['solutions']: print(repr(s['k']), repr(s['parameter']))
             python3 -c "import json,sys; e = json.load(sys.stdin); assert abs(e['eps_rho']) < 1e-9 and abs(e['eps_gradp']) < 1e-9, e"
     done
 done
+# Every results.json written here, and the shipped studies, against their JSON Schemas.
+root=$(cd "$(dirname "$0")/../.." && pwd)
+python3 "$root/tests/cli/validate_study_schemas.py" "$root/share/schemas" "$root/share/studies" "$sphkern" \
+    "$work/out/results.json" "$work/out3d/results.json" "$work/design/results.json"
 echo "1 passed, 0 failed"
