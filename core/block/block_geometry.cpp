@@ -1,0 +1,106 @@
+#include "block/block_geometry.hpp"
+
+#include "support/error.hpp"
+#include "support/parallel_for.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace sphkern {
+
+std::size_t checked_block_size(const Lattice& lattice, const BlockOptions& options)
+{
+    const int dim = lattice.dimension;
+    long double total = lattice.sites();
+    for (int i = 0; i < 3; ++i) {
+        long long n = options.cells[static_cast<std::size_t>(i)];
+        if (i >= dim && n != 1) fail_input("a " + std::to_string(dim) + "D block takes " + std::to_string(dim) + " sizes");
+        if (n < 1) fail_input("block size " + std::to_string(n) + " along basis vector " + std::to_string(i + 1) +
+                              " is not allowed, expected a positive number of cells");
+        total *= static_cast<long double>(n);
+    }
+    if (total > static_cast<long double>(max_block_particles)) {
+        std::ostringstream s;
+        s << "a block of " << static_cast<double>(total) << " particles is more than the limit of " << max_block_particles
+          << " (about " << max_block_particles * 100 / (1 << 20) << " MiB of memory)";
+        fail_input(s.str());
+    }
+    return static_cast<std::size_t>(total);
+}
+
+BlockGeometry place_particles(const Lattice& lattice, const BlockOptions& options, BlockResult& result)
+{
+    const int dim = lattice.dimension;
+    const int sites = lattice.sites();
+    const long double total = static_cast<long double>(checked_block_size(lattice, options));
+    BlockGeometry geometry;
+    const long long size[3] = {options.cells[0], options.cells[1], options.cells[2]};
+    const long long n1 = size[0], n2 = size[1], n3 = size[2];
+    geometry.size[0] = n1, geometry.size[1] = n2, geometry.size[2] = n3;
+    const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3), count = static_cast<std::size_t>(total);
+    geometry.cells = cells;
+    geometry.count = count;
+    // Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
+    // so that a row of cells is a contiguous run for every site.
+    // Every per-particle array is first touched by the thread that fills it.
+    result.x = HugeArray<double>(count);
+    result.y = HugeArray<double>(count);
+    result.z = HugeArray<double>(count);
+    result.layer = HugeArray<int>(count);
+    result.eps_rho = HugeArray<double>(count);
+    result.eps_gradp = HugeArray<double>(count);
+    geometry.depth = HugeArray<double>(count);
+    auto& depth = geometry.depth;
+    double* x = result.x.data();
+    double* y = result.y.data();
+    double* z = result.z.data();
+    // The highest particle sits in the top cell layer: the maximum height over the motif.
+    double top = -INFINITY;
+    for (const auto& m : lattice.motif)
+        for (long long corner : {0LL, size[dim - 1] - 1}) {
+            Eigen::Vector3d index = Eigen::Vector3d::Zero();
+            index[dim - 1] = static_cast<double>(corner);
+            top = std::max(top, -result.gravity.dot(lattice.basis * (index + m)));
+        }
+    // The layers are the occupied planes, top first, ranked by depth (several sites may share
+    // one, and planes need not be equally spaced): the plane of (vertical cell, site).
+    const long long vertical = size[dim - 1];
+    std::vector<std::pair<double, std::size_t>> plane_depths; // depth, vertical cell * sites + site
+    for (long long c = 0; c < vertical; ++c)
+        for (int s = 0; s < sites; ++s) {
+            Eigen::Vector3d index = Eigen::Vector3d::Zero();
+            index[dim - 1] = static_cast<double>(c);
+            plane_depths.emplace_back(top + result.gravity.dot(lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)])),
+                                      static_cast<std::size_t>(c * sites + s));
+        }
+    std::sort(plane_depths.begin(), plane_depths.end());
+    std::vector<int> plane_of(plane_depths.size());
+    int rank = 0;
+    for (std::size_t i = 0; i < plane_depths.size(); ++i) {
+        if (i > 0 && plane_depths[i].first - plane_depths[i - 1].first > 1e-9) ++rank;
+        plane_of[plane_depths[i].second] = rank;
+    }
+    ParallelFor fill;
+    fill.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::size_t s = i / cells;
+            const long long cc = static_cast<long long>(i - s * cells);
+            const Eigen::Vector3d index(double(cc % n1), double((cc / n1) % n2), double(cc / (n1 * n2)));
+            const Eigen::Vector3d p = lattice.basis * (index + lattice.motif[s]);
+            x[i] = p.x();
+            y[i] = p.y();
+            z[i] = p.z();
+            depth[i] = top + result.gravity.dot(p);
+            const long long vertical_cell = dim == 3 ? cc / (n1 * n2) : (cc / n1) % n2;
+            result.layer[i] = plane_of[static_cast<std::size_t>(vertical_cell) * static_cast<std::size_t>(sites) + s];
+            result.eps_rho[i] = 0; // touched here, in this thread, rather than in the sweep
+            result.eps_gradp[i] = 0;
+        }
+    });
+    return geometry;
+}
+
+} // namespace sphkern
