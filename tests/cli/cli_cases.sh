@@ -460,6 +460,15 @@ expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability 
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
+expect 2 '--path: Value 1 not in range 2 to 100000' -- stability cubic_bspline fcc --k 1.2 --path 1
+expect 2 '--kmin excludes --path' -- stability cubic_bspline fcc --kmin 1 --kmax 1.2 --path 10
+expect 2 '--wavevector and --path: give one of them' -- stability cubic_bspline fcc --k 1.2 --path 10 --wavevector 1,0,0
+check "stability --path starts at Γ with omega^2 = 0 and ends at R" python3 -c "
+import json, subprocess
+d = json.loads(subprocess.run(['$sphkern', 'stability', 'cubic_bspline', 'sc', '--k', '1.2', '--path', '40', '--json'],
+                              capture_output=True, check=True, text=True).stdout)['path']
+assert [p['label'] for p in d['points']] == ['Γ', 'X', 'M', 'Γ', 'R'], d['points']
+assert all(abs(w) < 1e-12 for w in d['omega2'][0]) and abs(d['position'][-1] - d['points'][-1]['at']) < 1e-12"
 # Relative names in a study are relative to the study file, run from elsewhere; a file
 # whose name has a '+' is that file, not a blend.
 mkdir -p "$work/beside/sub" "$work/elsewhere"
