@@ -8,6 +8,8 @@
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/results_json.hpp"
+#include "stability/stability_over_k.hpp"
+#include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -27,7 +29,17 @@ struct RootsOptions : CommonOptions {
     std::string axis = "k";
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
+    bool stability = false;
+    double gamma = 5.0 / 3.0;
+    int steps = 100;
 };
+
+std::string intervals_text(const std::vector<KInterval>& intervals)
+{
+    std::string s;
+    for (const auto& i : intervals) s += fmt::format(" [{:.6f}, {:.6f}]", i.from, i.to);
+    return s.empty() ? " none" : s;
+}
 
 std::string acceptance_text(const Acceptance& a)
 {
@@ -65,12 +77,42 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     for (const auto& s : sites) all.push_back(s.get());
     const auto analysis = analyse_roots(all, options.k_min, options.k_max, options.epsilon, options.lateral);
     const auto& chosen = analysis.sites[static_cast<std::size_t>(options.evaluation.site)];
+    // The stable k of the same window, and where condition (22) at every site holds there too.
+    nlohmann::json stability;
+    std::vector<KInterval> stable, both;
+    if (options.stability) {
+        try {
+            const auto scan = stability_over_k(kernel, lattice, options.k_min, options.k_max, options.steps, options.gamma,
+                                               default_grid(lattice.dimension) / 3, 1);
+            for (const auto& i : scan.stable) stable.push_back({i.from, i.to});
+            both = accurate_and_stable(analysis.all_along.intervals, scan);
+            auto list = [](const std::vector<KInterval>& v) {
+                nlohmann::json a = nlohmann::json::array();
+                for (const auto& i : v) a.push_back({i.from, i.to});
+                return a;
+            };
+            stability = {{"gamma", options.gamma}, {"stable_intervals", list(stable)}, {"accurate_and_stable", list(both)}};
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::input) throw;
+            stability = {{"gamma", options.gamma}, {"refused", e.what()}};
+        }
+    }
     if (options.json) {
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
                                        options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
+        if (options.stability) document["stability"] = stability;
         collected->push_back(document);
         return;
     }
+    auto print_stability = [&] {
+        if (!options.stability) return;
+        if (stability.contains("refused"))
+            fmt::print(results_file(), "stability (gamma = {:.6g}): not available: {}\n", options.gamma,
+                       stability["refused"].get<std::string>());
+        else
+            fmt::print(results_file(), "stable (gamma = {:.6g}) for k in{}\n  accurate (condition (22), every site) and stable:{}\n",
+                       options.gamma, intervals_text(stable), intervals_text(both));
+    };
     const std::string lateral = options.lateral ? ", lateral error included" : "";
     fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}{}\n", kernel.label(), lattice.name, a_p,
                options.k_min, options.k_max,
@@ -79,7 +121,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     print_scan(chosen.scan);
     fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", options.epsilon, lateral, acceptance_text(chosen.along));
     fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
-    if (sites.size() == 1) return;
+    if (sites.size() == 1) return print_stability();
     for (const auto& s : analysis.sites) {
         if (s.site == options.evaluation.site) continue;
         fmt::print(results_file(), "site {}:\n", s.site);
@@ -89,6 +131,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     }
     fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
                acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
+    print_stability();
 }
 
 } // namespace
@@ -105,6 +148,11 @@ Action add_roots_command(CLI::App& app)
     command->add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
     command->add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), eta (h/V^(1/D)) or nh (neighbours)")
         ->capture_default_str();
+    command->add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
+                                                        "stability) and where condition (22) holds there");
+    command->add_option("--gamma", options->gamma, "With --stability: adiabatic index")->capture_default_str();
+    command->add_option("--steps", options->steps, "With --stability: k intervals of the scan")->capture_default_str()
+        ->check(CLI::Range(1, 2000));
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -113,6 +161,9 @@ Action add_roots_command(CLI::App& app)
         if (options->axis == "k") check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
+        if (!std::isfinite(options->gamma) || options->gamma <= 0 || options->gamma > 1e6)
+            throw Error(ExitCode::usage,
+                        fmt::format("--gamma {} is not allowed, expected a number in (0, 1e6]", options->gamma));
         auto registry = discover_kernels(*options);
         std::vector<Lattice> lattices;
         if (options->lattice == "all")

@@ -4,6 +4,8 @@
 #include "stability/stability_scan.hpp"
 #include "support/interruption.hpp"
 
+#include <algorithm>
+
 
 namespace sphkern {
 
@@ -47,6 +49,17 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
     }
     if (inside) result.stable.push_back({start, k_max});
     return result;
+}
+
+std::vector<KInterval> accurate_and_stable(const std::vector<KInterval>& accurate, const StabilityOverK& stability)
+{
+    std::vector<KInterval> both;
+    for (const auto& x : accurate)
+        for (const auto& y : stability.stable) {
+            const double from = std::max(x.from, y.from), to = std::min(x.to, y.to);
+            if (from < to) both.push_back({from, to});
+        }
+    return both;
 }
 
 } // namespace sphkern

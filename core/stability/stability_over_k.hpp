@@ -3,6 +3,7 @@
 // stable and an unstable sample refined by bisection to 1e-6).
 #pragma once
 
+#include "analysis/acceptance.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 
@@ -31,5 +32,8 @@ struct StabilityOverK {
 // `steps` + 1 samples over [k_min, k_max]; `grid` points per reciprocal axis.
 StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
                                 double gamma, int grid, int threads);
+
+// The parts of the `accurate` intervals (condition (22)) where the lattice is stable too.
+std::vector<KInterval> accurate_and_stable(const std::vector<KInterval>& accurate, const StabilityOverK& stability);
 
 } // namespace sphkern

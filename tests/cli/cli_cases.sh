@@ -461,6 +461,18 @@ expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamm
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
 expect 2 '--path: Value 1 not in range 2 to 100000' -- stability cubic_bspline fcc --k 1.2 --path 1
+expect 2 '--gamma -1 is not allowed, expected a number in \(0, 1e6\]' -- roots cubic_bspline fcc --stability --gamma -1
+check "roots --stability: the stable intervals of stability --kmin/--kmax, and their overlap with (22)" python3 -c "
+import json, subprocess
+run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_output=True, check=True, text=True).stdout)
+r = run('roots', 'cubic_bspline', 'fcc', '--stability', '--steps', '50')[0]
+s = run('stability', 'cubic_bspline', 'fcc', '--kmin', '0.75', '--kmax', '1.25', '--steps', '50')
+assert r['stability']['stable_intervals'] == s['stable_intervals'], (r['stability'], s['stable_intervals'])
+inside = lambda k, v: any(a < k < b for a, b in v)
+for i in range(1, 500):
+    k = 0.75 + 0.5 * i / 500
+    both = inside(k, r['all_sites']['acceptance']['intervals']) and inside(k, s['stable_intervals'])
+    assert both == inside(k, r['stability']['accurate_and_stable']), k"
 expect 2 '--kmin excludes --path' -- stability cubic_bspline fcc --kmin 1 --kmax 1.2 --path 10
 expect 2 '--wavevector and --path: give one of them' -- stability cubic_bspline fcc --k 1.2 --path 10 --wavevector 1,0,0
 check "stability --path starts at Γ with omega^2 = 0 and ends at R" python3 -c "

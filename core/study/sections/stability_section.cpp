@@ -16,21 +16,6 @@
 
 namespace sphkern {
 
-namespace {
-
-std::vector<KInterval> intersect(const std::vector<KInterval>& a, const std::vector<StableInterval>& b)
-{
-    std::vector<KInterval> both;
-    for (const auto& x : a)
-        for (const auto& y : b) {
-            const double from = std::max(x.from, y.from), to = std::min(x.to, y.to);
-            if (from < to) both.push_back({from, to});
-        }
-    return both;
-}
-
-} // namespace
-
 void run_stability_section(const Study& study, const StudyInputs& inputs, StudyResults& results)
 {
     if (!study.stability) return;
@@ -76,7 +61,7 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         }
         if (c.refused.empty())
             for (const auto* b : accurate)
-                c.overlap.push_back({b->ap_name, b->acceptance.intervals, intersect(b->acceptance.intervals, c.over_k.stable)});
+                c.overlap.push_back({b->ap_name, b->acceptance.intervals, accurate_and_stable(b->acceptance.intervals, c.over_k)});
         std::lock_guard lock(progress_mutex);
         progress.step(kernel.name() + " on " + lattice.name);
     };
