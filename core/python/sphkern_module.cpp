@@ -14,6 +14,8 @@
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "stability/stability_json.hpp"
+#include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 
@@ -26,6 +28,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <thread>
 
 namespace py = pybind11;
 using namespace sphkern;
@@ -272,6 +275,57 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.");
+    m.def("stability",
+          [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
+             const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
+             int path, int threads, const py::object& params) {
+              if (!std::isfinite(gamma) || gamma <= 0 || gamma > 1e6)
+                  fail_input(fmt::format("gamma = {} is not allowed, expected a number in (0, 1e6]", gamma));
+              if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
+              if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
+              if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
+              auto lattice = load_lattice(lattice_spec);
+              auto kernel = kernel_of(kernel_spec, params);
+              const int cores = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+              nlohmann::json document;
+              if (!kmin.is_none() || !kmax.is_none()) { // stability against k
+                  if (kmin.is_none() || kmax.is_none() || !k.is_none() || !wavevector.is_none() || path)
+                      fail_input("kmin and kmax go together, without k, wavevector or path");
+                  const double lo = kmin.cast<double>(), hi = kmax.cast<double>();
+                  check_k_interval(lo, hi, "kmin/kmax");
+                  py::gil_scoped_release unlocked;
+                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma,
+                                                       grid ? grid : default_grid(lattice.dimension) / 3, cores);
+              } else {
+                  if (k.is_none()) fail_input("k: expected a number (or kmin and kmax)");
+                  const double at = k.cast<double>();
+                  check_k(at, "k");
+                  if (!wavevector.is_none()) {
+                      if (path) fail_input("wavevector and path: give one of them");
+                      const auto v = wavevector.cast<std::vector<double>>();
+                      if (static_cast<int>(v.size()) != lattice.dimension)
+                          fail_input(fmt::format("wavevector: {} components, expected {}", v.size(), lattice.dimension));
+                      Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
+                      for (std::size_t i = 0; i < v.size(); ++i) kappa[static_cast<Eigen::Index>(i)] = v[i];
+                      if (!std::isfinite(kappa.norm()) || kappa.norm() == 0 || kappa.norm() > 1e6)
+                          fail_input("wavevector: expected a non-zero wave vector with |kappa| <= 1e6 (in 1/d)");
+                      document = dispersion_document(kernel, lattice, at, gamma, kappa);
+                  } else if (path) {
+                      document = dispersion_path_document(kernel, lattice, at, gamma, path);
+                  } else {
+                      py::gil_scoped_release unlocked;
+                      document = stability_document(kernel, lattice, at, gamma,
+                                                    grid ? grid : default_grid(lattice.dimension), cores);
+                  }
+              }
+              return to_python(document);
+          },
+          py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
+          py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
+          py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
+          py::arg("threads") = 0, py::arg("params") = py::none(),
+          "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
+          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan.");
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,

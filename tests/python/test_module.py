@@ -87,6 +87,21 @@ def test_documents_equal_the_command_lines():
           cli_json("design", "cubic_bspline+desbrun_spiky", "triangular", "--param", "alpha"))
 
 
+def test_stability_documents_equal_the_command_lines():
+    close(sphkern.stability("cubic_bspline", "fcc", 1.2),
+          cli_json("stability", "cubic_bspline", "fcc", "--k", "1.2"))
+    close(sphkern.stability("wendland_c2", "hcp", 1.1, wavevector=[0.3, 0.1, 0.5]),
+          cli_json("stability", "wendland_c2", "hcp", "--k", "1.1", "--wavevector", "0.3,0.1,0.5"))
+    close(sphkern.stability("cubic_bspline", "triangular", kmin=0.8, kmax=1.2, steps=10),
+          cli_json("stability", "cubic_bspline", "triangular", "--kmin", "0.8", "--kmax", "1.2", "--steps", "10"))
+    close(sphkern.stability("cubic_bspline", "sc", 1.2, path=30),
+          cli_json("stability", "cubic_bspline", "sc", "--k", "1.2", "--path", "30"))
+    with pytest.raises(ValueError):
+        sphkern.stability("cubic_bspline", "fcc", 1.2, gamma=0)
+    with pytest.raises(ValueError):
+        sphkern.stability("cubic_bspline", "fcc", 1.2, wavevector=[0, 0, 0])
+
+
 def test_kernel_functions_are_vectorised_and_equal_the_plugin():
     kernel = sphkern.kernel("cubic_bspline")
     q = np.linspace(0, 2.5, 11).reshape(11, 1)
