@@ -1,5 +1,7 @@
 #include "study/report.hpp"
 
+#include "support/install_paths.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,6 +26,9 @@ std::string fixed(double v, int decimals = 5)
     if (std::abs(v) >= 1e3) return fmt::format("{:.3g}", v);
     return fmt::format("{:.{}f}", v, decimals);
 }
+
+// The method document where this sphkern finds its data (installed, or the source tree's).
+std::string method_document() { return (data_folder("docs") / "method.md").string(); }
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
 
@@ -169,10 +174,10 @@ namespace {
 std::string header_markdown(const Study& study)
 {
     std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: {} in [{}, {}], {} samples per curve, epsilon = {}.\n"
-                                "Errors are the bulk relative errors of share/docs/method.md section 2 (a particle on a lattice "
+                                "Errors are the bulk relative errors of {} section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
                                 study.title, SPHKERN_VERSION, study.file, study.axis, study.k_min, study.k_max, study.samples,
-                                study.epsilon);
+                                study.epsilon, method_document());
     s += "Modes: ";
     for (const auto& m : study.modes) {
         s += fmt::format("**{}** ", m.name);
@@ -255,7 +260,7 @@ std::string surface_markdown(const StudyResults& results)
     std::string s;
     if (!results.surface.empty()) {
         s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
-             "P = 0 there), by lattice sums over the half-space (share/docs/method.md section 6). Each cell: eps_rho / eps_gradP.\n\n";
+             "P = 0 there), by lattice sums over the half-space (" + method_document() + " section 6). Each cell: eps_rho / eps_gradP.\n\n";
         std::size_t columns = 0;
         for (const auto& c : results.surface) columns = std::max(columns, c.profile.layers.size());
         std::string current;
@@ -327,9 +332,9 @@ std::string stability_markdown(const StudyResults& results)
     std::string s = fmt::format(
         "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
         "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
-        "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; the method document, section 10). "
+        "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10). "
         "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        results.stability.front().gamma);
+        results.stability.front().gamma, method_document());
     std::string lattice;
     for (const auto& c : results.stability) {
         if (c.lattice != lattice) {
