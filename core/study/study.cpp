@@ -40,6 +40,8 @@ std::optional<double> parse_radius(const nlohmann::json& value)
 
 namespace {
 
+const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
+
 std::vector<std::string> string_list(const JsonNode& node)
 {
     node.expect_array(1, 1000);
@@ -85,11 +87,98 @@ StudyMode read_mode(const JsonNode& node)
     return mode;
 }
 
-} // namespace
+// "set": {"parameter": value, ...}
+std::map<std::string, double> parameter_values(const JsonNode& set)
+{
+    set.expect_object();
+    std::map<std::string, double> values;
+    for (const auto& [name, unused] : set.value().items()) values[name] = set.at(name).number();
+    return values;
+}
 
-namespace {
+StudyKernel read_kernel(const JsonNode& item, const fs::path& file)
+{
+    StudyKernel k;
+    k.json_path = item.path();
+    if (item.is_string()) {
+        k.spec = item.string();
+    } else if (item.is_object()) {
+        item.expect_keys({"kernel", "set"});
+        k.spec = item.at("kernel").string();
+        if (auto set = item.find("set")) k.parameters = parameter_values(*set);
+    } else {
+        item.error("expected a kernel name, a plugin file or {\"kernel\": ..., \"set\": {...}}, got " +
+                   json_type_name(item.value()));
+    }
+    k.spec = resolve_beside(k.spec, file, kernel_file_extensions);
+    return k;
+}
 
-const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
+// A k given as a number, or "best" (empty): each kernel's best k of condition (22).
+std::optional<double> k_or_best(const JsonNode& node)
+{
+    if (!node.is_string()) return node.number_in(1e-3, 100);
+    if (node.string() != "best") node.error("expected a number or \"best\"");
+    return std::nullopt;
+}
+
+StudySweep read_sweep(const JsonNode& node, const fs::path& file)
+{
+    node.expect_keys({"kernel", "set", "parameter", "range", "samples"});
+    StudySweep sweep;
+    sweep.json_path = node.path();
+    sweep.kernel = resolve_beside(node.at("kernel").string(), file, kernel_file_extensions);
+    if (auto set = node.find("set")) sweep.parameters = parameter_values(*set);
+    sweep.parameter = node.at("parameter").string();
+    auto range = node.at("range");
+    range.expect_array(2, 2);
+    sweep.min = range[0].number();
+    sweep.max = range[1].number();
+    if (!(sweep.min < sweep.max)) range.error("expected [min, max] with min < max");
+    if (auto n = node.find("samples")) sweep.samples = static_cast<int>(n->integer_in(3, 1000));
+    return sweep;
+}
+
+StudySurface read_surface(const JsonNode& node)
+{
+    node.expect_keys({"k", "layers", "forms", "volume_coefficient"});
+    StudySurface surface;
+    if (auto k = node.find("k")) surface.k = k_or_best(*k);
+    if (auto layers = node.find("layers")) surface.layers = static_cast<int>(layers->integer_in(1, 1000));
+    if (auto forms = node.find("forms")) {
+        surface.forms = string_list(*forms);
+        for (std::size_t i = 0; i < surface.forms.size(); ++i) {
+            try {
+                parse_gradient_form(surface.forms[i]);
+            } catch (const Error& e) {
+                (*forms)[i].error(e.what());
+            }
+        }
+    }
+    if (auto ap = node.find("volume_coefficient"))
+        surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
+    return surface;
+}
+
+StudyStability read_stability(const JsonNode& node)
+{
+    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points"});
+    StudyStability stability;
+    if (auto gamma = node.find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
+    if (auto k = node.find("k")) {
+        k->expect_keys({"min", "max", "steps"});
+        if (k->find("min") || k->find("max")) {
+            stability.k_min = k->at("min").number_in(1e-3, 100);
+            stability.k_max = k->at("max").number_in(1e-3, 100);
+            if (*stability.k_min >= *stability.k_max) k->at("max").error("expected max > min");
+        }
+        if (auto steps = k->find("steps")) stability.steps = static_cast<int>(steps->integer_in(1, 2000));
+    }
+    if (auto grid = node.find("grid")) stability.grid = static_cast<int>(grid->integer_in(2, 200));
+    if (auto k = node.find("dispersion_k")) stability.path_k = k_or_best(*k);
+    if (auto points = node.find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
+    return stability;
+}
 
 } // namespace
 
@@ -147,26 +236,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
 
     auto kernels = root.at("kernels");
     kernels.expect_array(1, 1000);
-    for (std::size_t i = 0; i < kernels.size(); ++i) {
-        auto item = kernels[i];
-        StudyKernel k;
-        k.json_path = item.path();
-        if (item.is_string()) {
-            k.spec = item.string();
-        } else if (item.is_object()) {
-            item.expect_keys({"kernel", "set"});
-            k.spec = item.at("kernel").string();
-            if (auto set = item.find("set")) {
-                set->expect_object();
-                for (const auto& [name, unused] : set->value().items()) k.parameters[name] = set->at(name).number();
-            }
-        } else {
-            item.error("expected a kernel name, a plugin file or {\"kernel\": ..., \"set\": {...}}, got " +
-                       json_type_name(item.value()));
-        }
-        k.spec = resolve_beside(k.spec, file, kernel_file_extensions);
-        study.kernels.push_back(k);
-    }
+    for (std::size_t i = 0; i < kernels.size(); ++i) study.kernels.push_back(read_kernel(kernels[i], file));
     study.lattices = string_list(root.at("lattices"));
     for (auto& l : study.lattices) l = resolve_beside(l, file, {".json"});
 
@@ -245,76 +315,10 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     if (auto p = root.find("plots")) study.plots = p->boolean();
     if (auto sweeps = root.find("sweeps")) {
         sweeps->expect_array(1, 20);
-        for (std::size_t i = 0; i < sweeps->size(); ++i) {
-            auto node = (*sweeps)[i];
-            node.expect_keys({"kernel", "set", "parameter", "range", "samples"});
-            StudySweep sweep;
-            sweep.json_path = node.path();
-            sweep.kernel = node.at("kernel").string();
-            sweep.kernel = resolve_beside(sweep.kernel, file, kernel_file_extensions);
-            if (auto set = node.find("set")) {
-                set->expect_object();
-                for (const auto& [name, unused] : set->value().items()) sweep.parameters[name] = set->at(name).number();
-            }
-            sweep.parameter = node.at("parameter").string();
-            auto range = node.at("range");
-            range.expect_array(2, 2);
-            sweep.min = range[0].number();
-            sweep.max = range[1].number();
-            if (!(sweep.min < sweep.max)) range.error("expected [min, max] with min < max");
-            if (auto n = node.find("samples")) sweep.samples = static_cast<int>(n->integer_in(3, 1000));
-            study.sweeps.push_back(sweep);
-        }
+        for (std::size_t i = 0; i < sweeps->size(); ++i) study.sweeps.push_back(read_sweep((*sweeps)[i], file));
     }
-    if (auto node = root.find("surface")) {
-        node->expect_keys({"k", "layers", "forms", "volume_coefficient"});
-        StudySurface surface;
-        if (auto k = node->find("k")) {
-            if (k->is_string()) {
-                if (k->string() != "best") k->error("expected a number or \"best\"");
-            } else {
-                surface.k = k->number_in(1e-3, 100);
-            }
-        }
-        if (auto layers = node->find("layers")) surface.layers = static_cast<int>(layers->integer_in(1, 1000));
-        if (auto forms = node->find("forms")) {
-            surface.forms = string_list(*forms);
-            for (std::size_t i = 0; i < surface.forms.size(); ++i) {
-                try {
-                    parse_gradient_form(surface.forms[i]);
-                } catch (const Error& e) {
-                    (*forms)[i].error(e.what());
-                }
-            }
-        }
-        if (auto ap = node->find("volume_coefficient"))
-            surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
-        study.surface = surface;
-    }
-    if (auto node = root.find("stability")) {
-        node->expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points"});
-        StudyStability stability;
-        if (auto gamma = node->find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
-        if (auto k = node->find("k")) {
-            k->expect_keys({"min", "max", "steps"});
-            if (k->find("min") || k->find("max")) {
-                stability.k_min = k->at("min").number_in(1e-3, 100);
-                stability.k_max = k->at("max").number_in(1e-3, 100);
-                if (*stability.k_min >= *stability.k_max) k->at("max").error("expected max > min");
-            }
-            if (auto steps = k->find("steps")) stability.steps = static_cast<int>(steps->integer_in(1, 2000));
-        }
-        if (auto grid = node->find("grid")) stability.grid = static_cast<int>(grid->integer_in(2, 200));
-        if (auto k = node->find("dispersion_k")) {
-            if (k->is_string()) {
-                if (k->string() != "best") k->error("expected a number or \"best\"");
-            } else {
-                stability.path_k = k->number_in(1e-3, 100);
-            }
-        }
-        if (auto points = node->find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
-        study.stability = stability;
-    }
+    if (auto node = root.find("surface")) study.surface = read_surface(*node);
+    if (auto node = root.find("stability")) study.stability = read_stability(*node);
     check_study_budget(study, root);
     return study;
 }
