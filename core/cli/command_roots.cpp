@@ -8,6 +8,7 @@
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/results_json.hpp"
+#include "stability/dispersion.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -161,9 +162,7 @@ Action add_roots_command(CLI::App& app)
         if (options->axis == "k") check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
-        if (!std::isfinite(options->gamma) || options->gamma <= 0 || options->gamma > 1e6)
-            throw Error(ExitCode::usage,
-                        fmt::format("--gamma {} is not allowed, expected a number in (0, 1e6]", options->gamma));
+        check_gamma(options->gamma, "--gamma");
         auto registry = discover_kernels(*options);
         std::vector<Lattice> lattices;
         if (options->lattice == "all")

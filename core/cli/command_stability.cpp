@@ -39,15 +39,7 @@ Eigen::Vector3d parse_wavevector(const std::string& text, int dimension)
                                                      dimension));
         values.push_back(v);
     }
-    if (static_cast<int>(values.size()) != dimension)
-        throw Error(ExitCode::usage, fmt::format("--wavevector {}: {} components, expected {} for a {}D lattice",
-                                                 one_line(text), values.size(), dimension, dimension));
-    Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
-    for (int i = 0; i < dimension; ++i) kappa[i] = values[static_cast<std::size_t>(i)];
-    if (kappa.norm() == 0 || !std::isfinite(kappa.norm()) || kappa.norm() > 1e6)
-        throw Error(ExitCode::usage, fmt::format("--wavevector {}: expected a non-zero wave vector with |kappa| <= 1e6 "
-                                                 "(in 1/d)", one_line(text)));
-    return kappa;
+    return checked_wavevector(values, dimension, "--wavevector " + one_line(text));
 }
 
 std::string vector_text(const nlohmann::json& v)
@@ -103,9 +95,7 @@ Action add_stability_command(CLI::App& app)
         } else if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
             throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100] (or give "
                                                      "--kmin and --kmax)", options->k));
-        if (!std::isfinite(options->gamma) || options->gamma <= 0 || options->gamma > 1e6)
-            throw Error(ExitCode::usage,
-                        fmt::format("--gamma {} is not allowed, expected a number in (0, 1e6]", options->gamma));
+        check_gamma(options->gamma, "--gamma");
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);

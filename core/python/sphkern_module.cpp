@@ -14,6 +14,7 @@
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "stability/dispersion.hpp"
 #include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -279,8 +280,7 @@ PYBIND11_MODULE(sphkern, m)
           [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
              const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
              int path, int threads, const py::object& params) {
-              if (!std::isfinite(gamma) || gamma <= 0 || gamma > 1e6)
-                  fail_input(fmt::format("gamma = {} is not allowed, expected a number in (0, 1e6]", gamma));
+              check_gamma(gamma, "gamma");
               if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
               if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
               if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
@@ -302,13 +302,8 @@ PYBIND11_MODULE(sphkern, m)
                   check_k(at, "k");
                   if (!wavevector.is_none()) {
                       if (path) fail_input("wavevector and path: give one of them");
-                      const auto v = wavevector.cast<std::vector<double>>();
-                      if (static_cast<int>(v.size()) != lattice.dimension)
-                          fail_input(fmt::format("wavevector: {} components, expected {}", v.size(), lattice.dimension));
-                      Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
-                      for (std::size_t i = 0; i < v.size(); ++i) kappa[static_cast<Eigen::Index>(i)] = v[i];
-                      if (!std::isfinite(kappa.norm()) || kappa.norm() == 0 || kappa.norm() > 1e6)
-                          fail_input("wavevector: expected a non-zero wave vector with |kappa| <= 1e6 (in 1/d)");
+                      const auto kappa = checked_wavevector(wavevector.cast<std::vector<double>>(), lattice.dimension,
+                                                            "wavevector");
                       document = dispersion_document(kernel, lattice, at, gamma, kappa);
                   } else if (path) {
                       document = dispersion_path_document(kernel, lattice, at, gamma, path);

@@ -11,6 +11,24 @@
 
 namespace sphkern {
 
+void check_gamma(double gamma, const std::string& what)
+{
+    if (!std::isfinite(gamma) || gamma <= 0 || gamma > 1e6)
+        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a number in (0, 1e6]", what, gamma));
+}
+
+Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension, const std::string& what)
+{
+    if (static_cast<int>(components.size()) != dimension)
+        throw Error(ExitCode::usage, fmt::format("{}: {} components, expected {} for a {}D lattice", what,
+                                                 components.size(), dimension, dimension));
+    Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
+    for (int i = 0; i < dimension; ++i) kappa[i] = components[static_cast<std::size_t>(i)];
+    if (!std::isfinite(kappa.norm()) || kappa.norm() == 0 || kappa.norm() > 1e6)
+        throw Error(ExitCode::usage, fmt::format("{}: expected a non-zero wave vector with |kappa| <= 1e6 (in 1/d)", what));
+    return kappa;
+}
+
 Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma)
     : dim_(lattice.dimension), k_(k), gamma_(gamma)
 {

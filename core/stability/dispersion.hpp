@@ -14,10 +14,17 @@
 #include <Eigen/Dense>
 
 #include <array>
+#include <string>
 #include <complex>
 #include <vector>
 
 namespace sphkern {
+
+// Checks of the inputs the command line and the Python module take alike; Error(usage)
+// whose message starts with `what` (an option's name, or the option and its text).
+void check_gamma(double gamma, const std::string& what);                  // in (0, 1e6]
+Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension,
+                                   const std::string& what);              // D finite components, 0 < |kappa| <= 1e6
 
 struct DispersionModes {
     std::vector<double> omega2;              // ascending, D * sites of them

@@ -197,6 +197,17 @@ study s_stability_k '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["f
 expect 3 's_stability_k.json: /stability/k/max: expected max > min' -- run "$work/s_stability_k.json" -o "$work/out12"
 study s_stability_key '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"gama": 1.4}}'
 expect 3 's_stability_key.json: /stability: unknown key "gama"' -- run "$work/s_stability_key.json" -o "$work/out12"
+for bad in 'dispersion_k:"worst":/stability/dispersion_k: expected a number or "best"' \
+           'grid:1:/stability/grid: value 1 is out of range, expected an integer in \[2, 200\]' \
+           'path_points:5:/stability/path_points: value 5 is out of range, expected an integer in \[10, 5000\]' \
+           'k:{"steps": 0}:/stability/k/steps: value 0 is out of range, expected an integer in \[1, 2000\]' \
+           'k:{"min": 0.9}:/stability/k: missing required key "max"' \
+           'gamma:"x":/stability/gamma: expected a number, got a string'; do
+    key=${bad%%:*} rest=${bad#*:} value=${rest%%:/*} message=/${rest#*:/}
+    study s_stability_field "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"fcc\"], \"stability\": {\"$key\": $value}}"
+    expect 3 "s_stability_field.json: $message" -- run "$work/s_stability_field.json" -o "$work/out12"
+done
+expect 2 '--steps: Value 0 not in range 1 to 2000' -- roots cubic_bspline fcc --stability --steps 0
 study s_stability_budget '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"grid": 200, "k": {"steps": 2000}}}'
 expect 3 'kernels x lattices x stability k samples x wave vectors' -- run "$work/s_stability_budget.json" -o "$work/out12"
 study s_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "cubic_bspline", "parameter": "beta", "range": [0, 1]}]}'

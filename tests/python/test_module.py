@@ -100,6 +100,13 @@ def test_stability_documents_equal_the_command_lines():
         sphkern.stability("cubic_bspline", "fcc", 1.2, gamma=0)
     with pytest.raises(ValueError):
         sphkern.stability("cubic_bspline", "fcc", 1.2, wavevector=[0, 0, 0])
+    for kwargs, message in [({"wavevector": [1, 0]}, "wavevector: 2 components, expected 3 for a 3D lattice"),
+                            ({"kmin": 0.8}, "kmin and kmax go together, without k, wavevector or path"),
+                            ({"wavevector": [1, 0, 0], "path": 10}, "wavevector and path: give one of them"),
+                            ({"gamma": -1}, "gamma -1 is not allowed, expected a number in (0, 1e6]")]:
+        with pytest.raises(ValueError) as raised:
+            sphkern.stability("cubic_bspline", "fcc", 1.2, **kwargs)
+        assert str(raised.value) == message
 
 
 def test_kernel_functions_are_vectorised_and_equal_the_plugin():
