@@ -32,13 +32,17 @@ std::string method_document() { return (data_folder("docs") / "method.md").strin
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
 
-std::string intervals_text(const Acceptance& a)
+// "[a, b] [c, d]" of any list of intervals (KInterval, StableInterval); `none` if empty.
+template <class Intervals>
+std::string intervals_text(const Intervals& intervals, const std::string& none)
 {
-    if (a.intervals.empty()) return "-";
+    if (intervals.empty()) return none;
     std::string s;
-    for (const auto& i : a.intervals) s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", i.from, i.to);
+    for (const auto& i : intervals) s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", i.from, i.to);
     return s;
 }
+
+std::string intervals_text(const Acceptance& a) { return intervals_text(a.intervals, "-"); }
 
 // The cases grouped by lattice, mode and a_p, in the order they first appear.
 std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
@@ -347,18 +351,13 @@ std::string stability_markdown(const StudyResults& results)
             s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, c.refused);
             continue;
         }
-        std::string stable, both;
-        for (const auto& i : c.over_k.stable) stable += fmt::format("{}[{:.4f}, {:.4f}]", stable.empty() ? "" : " ", i.from, i.to);
-        for (const auto& o : c.overlap) {
-            std::string intervals;
-            for (const auto& i : o.both) intervals += fmt::format("{}[{:.4f}, {:.4f}]", intervals.empty() ? "" : " ", i.from, i.to);
+        std::string both;
+        for (const auto& o : c.overlap)
             both += fmt::format("{}{}: {}", both.empty() ? "" : "; ", o.ap_name,
-                                !intervals.empty() ? intervals
-                                : o.accurate.empty() ? std::string("none (condition (22) fails)")
-                                                     : std::string("none: every accurate k is unstable"));
-        }
+                                intervals_text(o.both, o.accurate.empty() ? "none (condition (22) fails)"
+                                                                          : "none: every accurate k is unstable"));
         s += fmt::format("| {} | [{:.4f}, {:.4f}] | {} | {} | {:.4f} |\n", c.kernel_label, c.over_k.samples.front().k,
-                         c.over_k.samples.back().k, stable.empty() ? std::string("none") : stable, both, c.path_k);
+                         c.over_k.samples.back().k, intervals_text(c.over_k.stable, "none"), both, c.path_k);
     }
     return s + "\n";
 }
