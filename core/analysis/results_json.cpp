@@ -24,13 +24,18 @@ nlohmann::json root_scan_json(const RootScan& scan)
     return {{"roots", roots}, {"jumps", jumps}};
 }
 
+nlohmann::json intervals_json(const std::vector<KInterval>& intervals)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& i : intervals) list.push_back({i.from, i.to});
+    return list;
+}
+
 nlohmann::json acceptance_json(const Acceptance& a, double epsilon)
 {
-    nlohmann::json intervals = nlohmann::json::array();
-    for (const auto& i : a.intervals) intervals.push_back({i.from, i.to});
     return {{"epsilon", epsilon},
             {"verdict", a.passes() ? "pass" : "fail"},
-            {"intervals", intervals},
+            {"intervals", intervals_json(a.intervals)},
             {"best_k", a.best_k},
             {"best_max_error", a.best_error}};
 }

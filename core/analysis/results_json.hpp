@@ -13,6 +13,8 @@ namespace sphkern {
 nlohmann::json root_json(const Root& root);
 nlohmann::json root_scan_json(const RootScan& scan); // {"roots": [...], "jumps": [...]}
 nlohmann::json acceptance_json(const Acceptance& acceptance, double epsilon);
+// [[from, to], ...]
+nlohmann::json intervals_json(const std::vector<KInterval>& intervals);
 nlohmann::json surface_json(const SurfaceProfile& profile); // {"spacing", "layers": [...], "bulk"}
 
 // The documents `kernels --json`, `lattices --json`, `shells --json`, `roots --json`,

@@ -87,12 +87,8 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
                                                default_grid(lattice.dimension) / 3, 1);
             for (const auto& i : scan.stable) stable.push_back({i.from, i.to});
             both = accurate_and_stable(analysis.all_along.intervals, scan);
-            auto list = [](const std::vector<KInterval>& v) {
-                nlohmann::json a = nlohmann::json::array();
-                for (const auto& i : v) a.push_back({i.from, i.to});
-                return a;
-            };
-            stability = {{"gamma", options.gamma}, {"stable_intervals", list(stable)}, {"accurate_and_stable", list(both)}};
+            stability = {{"gamma", options.gamma}, {"stable_intervals", intervals_json(stable)},
+                         {"accurate_and_stable", intervals_json(both)}};
         } catch (const Error& e) {
             if (e.code() != ExitCode::input) throw;
             stability = {{"gamma", options.gamma}, {"refused", e.what()}};

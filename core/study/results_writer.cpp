@@ -17,13 +17,6 @@ nlohmann::json per_site_json(const StudyCase& c, double epsilon)
     return list;
 }
 
-nlohmann::json intervals_json(const std::vector<KInterval>& intervals)
-{
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& i : intervals) list.push_back({i.from, i.to});
-    return list;
-}
-
 nlohmann::json stability_json(const StabilityCase& c)
 {
     nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma}};
