@@ -85,7 +85,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
         try {
             const auto scan = stability_over_k(kernel, lattice, options.k_min, options.k_max, options.steps, options.gamma,
                                                default_grid(lattice.dimension) / 3, 1);
-            for (const auto& i : scan.stable) stable.push_back({i.from, i.to});
+            stable = scan.stable;
             both = accurate_and_stable(analysis.all_along.intervals, scan);
             stability = {{"gamma", options.gamma}, {"stable_intervals", intervals_json(stable)},
                          {"accurate_and_stable", intervals_json(both)}};

@@ -1,6 +1,7 @@
 #include "stability/stability_json.hpp"
 
 #include "analysis/hydrostatic_errors.hpp"
+#include "analysis/results_json.hpp"
 #include "stability/dispersion_path.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
@@ -121,13 +122,12 @@ nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& la
     document.erase("k");
     document["k_range"] = {k_min, k_max};
     document["bravais"] = scan.bravais;
-    nlohmann::json samples = nlohmann::json::array(), intervals = nlohmann::json::array();
+    nlohmann::json samples = nlohmann::json::array();
     for (const auto& s : scan.samples)
         samples.push_back({{"k", s.k}, {"min_omega2", s.branch_minima.front()}, {"stable", s.stable},
                            {"longitudinal", s.longitudinal}, {"branch_minima", s.branch_minima}});
-    for (const auto& i : scan.stable) intervals.push_back({i.from, i.to});
     document["samples"] = samples;
-    document["stable_intervals"] = intervals;
+    document["stable_intervals"] = intervals_json(scan.stable);
     return document;
 }
 

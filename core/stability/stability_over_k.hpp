@@ -19,14 +19,10 @@ struct StabilitySample {
     double longitudinal = 0;           // of the lowest branch's minimum
 };
 
-struct StableInterval {
-    double from, to;
-};
-
 struct StabilityOverK {
     std::string bravais;
     std::vector<StabilitySample> samples;
-    std::vector<StableInterval> stable;
+    std::vector<KInterval> stable;
 };
 
 // `steps` + 1 samples over [k_min, k_max]; `grid` points per reciprocal axis.

@@ -32,9 +32,8 @@ std::string method_document() { return (data_folder("docs") / "method.md").strin
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
 
-// "[a, b] [c, d]" of any list of intervals (KInterval, StableInterval); `none` if empty.
-template <class Intervals>
-std::string intervals_text(const Intervals& intervals, const std::string& none)
+// "[a, b] [c, d]", or `none` if there is no interval.
+std::string intervals_text(const std::vector<KInterval>& intervals, const std::string& none)
 {
     if (intervals.empty()) return none;
     std::string s;

@@ -25,18 +25,17 @@ nlohmann::json stability_json(const StabilityCase& c)
         return entry;
     }
     nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
-                   intervals = nlohmann::json::array(), overlap = nlohmann::json::array();
+                   overlap = nlohmann::json::array();
     for (const auto& s : c.over_k.samples) {
         ks.push_back(s.k);
         minima.push_back(s.branch_minima);
         stable.push_back(s.stable);
     }
-    for (const auto& i : c.over_k.stable) intervals.push_back({i.from, i.to});
     for (const auto& o : c.overlap)
         overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
                            {"accurate_and_stable", intervals_json(o.both)}});
     entry.update({{"bravais", c.over_k.bravais}, {"k", ks}, {"branch_minima", minima}, {"stable", stable},
-                  {"stable_intervals", intervals}, {"overlap", overlap},
+                  {"stable_intervals", intervals_json(c.over_k.stable)}, {"overlap", overlap},
                   {"dispersion", {{"k", c.path_k}, {"path", dispersion_path_json(c.path)}}}});
     return entry;
 }
