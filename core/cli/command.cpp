@@ -93,6 +93,24 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
                                    : parse_direction(options.gravity, lattice.dimension, "--gravity");
 }
 
+std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max)
+{
+    std::vector<double> values;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
+            throw Error(ExitCode::usage, option + " " + text + ": \"" + item + "\" is not a finite number");
+        values.push_back(v);
+    }
+    if (values.size() < min || values.size() > max)
+        throw Error(ExitCode::usage, option + " " + text + ": expected " + std::to_string(min) +
+                                         (max > min ? " to " + std::to_string(max) : "") + " comma-separated numbers");
+    return values;
+}
+
 void print_json(const nlohmann::json& document) { fmt::print(results_file(), "{}\n", document.dump(2)); }
 
 } // namespace sphkern::cli

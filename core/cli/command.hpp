@@ -47,6 +47,9 @@ void add_evaluation_options(CLI::App& command, EvaluationOptions& options);
 EvaluationMode evaluation_mode(const EvaluationOptions& options);
 Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
 
+// "a,b[,c]": between `min` and `max` finite numbers; Error(usage) naming `option` otherwise.
+std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max);
+
 // Prints `document` to stdout, pretty and complete.
 void print_json(const nlohmann::json& document);
 
@@ -62,5 +65,6 @@ Action add_block_command(CLI::App& app);
 Action add_design_command(CLI::App& app);
 Action add_stability_command(CLI::App& app);
 Action add_spectrum_command(CLI::App& app);
+Action add_particles_command(CLI::App& app);
 
 } // namespace sphkern::cli

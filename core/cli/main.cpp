@@ -66,6 +66,7 @@ int main(int argc, char** argv)
     add(cli::add_design_command);
     add(cli::add_stability_command);
     add(cli::add_spectrum_command);
+    add(cli::add_particles_command);
 
     try {
         app.parse(argc, argv);

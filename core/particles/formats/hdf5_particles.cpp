@@ -1,0 +1,214 @@
+// HDF5 particle files through libhdf5's C API, with its own error printing switched off:
+// SWIFT and GADGET snapshots and initial conditions (/Header, /PartType0) and PySPH output
+// (/particles/<array>/arrays/<property>).
+#include "particles/formats/particle_files.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <mutex>
+
+namespace sphkern {
+
+namespace {
+
+// An HDF5 handle closed by its own close function.
+class Handle {
+public:
+    Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+    ~Handle()
+    {
+        if (id_ >= 0) close_(id_);
+    }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    hid_t get() const { return id_; }
+    bool valid() const { return id_ >= 0; }
+
+private:
+    hid_t id_;
+    herr_t (*close_)(hid_t);
+};
+
+void silence_hdf5()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+}
+
+bool exists(hid_t location, const std::string& path) { return H5Lexists(location, path.c_str(), H5P_DEFAULT) > 0; }
+
+struct File {
+    std::string name;
+    hid_t id;
+
+    // A dataset of doubles (any stored number type is converted) with its shape.
+    std::vector<double> dataset(const std::string& path, std::vector<hsize_t>& shape) const
+    {
+        Handle set(H5Dopen2(id, path.c_str(), H5P_DEFAULT), H5Dclose);
+        if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
+        Handle space(H5Dget_space(set.get()), H5Sclose);
+        const int rank = H5Sget_simple_extent_ndims(space.get());
+        if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} has rank {}; expected 1 or 2", name, path, rank));
+        shape.assign(static_cast<std::size_t>(rank), 0);
+        H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
+        Handle type(H5Dget_type(set.get()), H5Tclose);
+        const H5T_class_t kind = H5Tget_class(type.get());
+        if (kind != H5T_FLOAT && kind != H5T_INTEGER)
+            fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
+        hsize_t total = 1;
+        for (auto s : shape) total *= s;
+        std::vector<double> values(static_cast<std::size_t>(total));
+        if (total > 0 && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+            fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
+        return values;
+    }
+    std::vector<double> column(const std::string& path, std::size_t count) const
+    {
+        std::vector<hsize_t> shape;
+        auto values = dataset(path, shape);
+        if (shape.size() != 1 || shape[0] != count)
+            fail_input(fmt::format("{}: dataset {} has shape {}; expected ({})", name, path, shape_text(shape), count));
+        return values;
+    }
+    // A numeric attribute of `object` with up to `max` values.
+    std::vector<double> attribute(const std::string& object, const std::string& attr) const
+    {
+        if (!exists(id, object) || H5Aexists_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT) <= 0) return {};
+        Handle a(H5Aopen_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+        Handle space(H5Aget_space(a.get()), H5Sclose);
+        const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+        Handle type(H5Aget_type(a.get()), H5Tclose);
+        const H5T_class_t kind = H5Tget_class(type.get());
+        if (n <= 0 || n > 64 || (kind != H5T_FLOAT && kind != H5T_INTEGER))
+            fail_input(fmt::format("{}: attribute {} of {} is not a short list of numbers", name, attr, object));
+        std::vector<double> values(static_cast<std::size_t>(n));
+        if (H5Aread(a.get(), H5T_NATIVE_DOUBLE, values.data()) < 0)
+            fail_input(fmt::format("{}: attribute {} of {} cannot be read", name, attr, object));
+        return values;
+    }
+    static std::string shape_text(const std::vector<hsize_t>& shape)
+    {
+        std::string text;
+        for (auto s : shape) text += (text.empty() ? "" : ", ") + std::to_string(s);
+        return "(" + text + ")";
+    }
+};
+
+ParticleSet read_snapshot(const File& f)
+{
+    ParticleSet set;
+    set.name = f.name;
+    const auto dimension = f.attribute("/Header", "Dimension");
+    set.dimension = dimension.empty() ? 3 : static_cast<int>(dimension[0]);
+    if (set.dimension != 2 && set.dimension != 3)
+        fail_input(fmt::format("{}: /Header Dimension is {}; expected 2 or 3", f.name, set.dimension));
+    std::vector<hsize_t> shape;
+    const auto coordinates = f.dataset("/PartType0/Coordinates", shape);
+    if (shape.size() != 2 || (shape[1] != 3 && shape[1] != static_cast<hsize_t>(set.dimension)))
+        fail_input(fmt::format("{}: /PartType0/Coordinates has shape {}; expected (N, 3)", f.name, File::shape_text(shape)));
+    const std::size_t n = static_cast<std::size_t>(shape[0]), columns = static_cast<std::size_t>(shape[1]);
+    const auto counts = f.attribute("/Header", "NumPart_Total");
+    if (!counts.empty() && static_cast<std::size_t>(counts[0]) != n &&
+        f.attribute("/Header", "NumPart_Total_HighWord").empty())
+        fail_input(fmt::format("{}: /Header NumPart_Total[0] is {} but /PartType0/Coordinates has {} rows", f.name, counts[0], n));
+    for (std::size_t i = 0; i < n; ++i) {
+        set.x.push_back(coordinates[i * columns]);
+        set.y.push_back(coordinates[i * columns + 1]);
+        set.z.push_back(set.dimension == 3 ? coordinates[i * columns + 2] : 0.0);
+    }
+    if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
+    auto optional_column = [&](std::initializer_list<const char*> names) -> std::vector<double> {
+        for (const char* dataset : names)
+            if (exists(f.id, "/PartType0") && exists(f.id, std::string("/PartType0/") + dataset))
+                return f.column(std::string("/PartType0/") + dataset, n);
+        return {};
+    };
+    set.h = optional_column({"SmoothingLengths", "SmoothingLength"});
+    set.mass = optional_column({"Masses", "Mass"});
+    set.density = optional_column({"Densities", "Density"});
+    const auto table = f.attribute("/Header", "MassTable");
+    if (set.mass.empty() && !table.empty() && table[0] > 0) set.mass.assign(n, table[0]);
+    const auto box = f.attribute("/Header", "BoxSize");
+    if (!box.empty()) {
+        PeriodicBox b;
+        for (int a = 0; a < 3; ++a) b.edges(a, a) = box.size() >= 3 ? box[static_cast<std::size_t>(a)] : box[0];
+        if (set.dimension == 2) b.edges(2, 2) = 1;
+        set.box = b;
+    }
+    const auto gamma = f.attribute("/HydroScheme", "Kernel gamma");
+    if (!gamma.empty()) set.support_per_h = gamma[0];
+    return set;
+}
+
+ParticleSet read_pysph(const File& f, const std::string& requested)
+{
+    std::vector<std::string> names;
+    Handle group(H5Gopen2(f.id, "/particles", H5P_DEFAULT), H5Gclose);
+    H5G_info_t info{};
+    H5Gget_info(group.get(), &info);
+    for (hsize_t i = 0; i < info.nlinks && i < 1000; ++i) {
+        char buffer[256] = {};
+        H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, buffer, sizeof buffer, H5P_DEFAULT);
+        names.emplace_back(buffer);
+    }
+    auto listed = [&] {
+        std::string text;
+        for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+        return text;
+    };
+    std::string array = requested;
+    if (array.empty()) {
+        if (names.size() == 1) array = names[0];
+        else if (std::find(names.begin(), names.end(), "fluid") != names.end()) array = "fluid";
+        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with --array NAME", f.name, listed()));
+    }
+    if (std::find(names.begin(), names.end(), array) == names.end())
+        fail_input(fmt::format("{}: no particle array \"{}\"; the file has {}", f.name, array, listed()));
+    const std::string base = "/particles/" + array + "/arrays/";
+    if (!exists(f.id, base + "x") || !exists(f.id, base + "y"))
+        fail_input(fmt::format("{}: {}x and {}y are missing; expected PySPH arrays x, y[, z][, h][, m][, rho]", f.name,
+                               base, base));
+    std::vector<hsize_t> shape;
+    ParticleSet set;
+    set.name = f.name;
+    set.x = f.dataset(base + "x", shape);
+    const std::size_t n = set.x.size();
+    set.y = f.column(base + "y", n);
+    auto optional_column = [&](const char* p) { return exists(f.id, base + p) ? f.column(base + p, n) : std::vector<double>{}; };
+    set.z = optional_column("z");
+    set.h = optional_column("h");
+    set.mass = optional_column("m");
+    set.density = optional_column("rho");
+    // PySPH keeps z (zero) for 2D runs.
+    const bool flat = set.z.empty() || std::all_of(set.z.begin(), set.z.end(), [](double z) { return z == 0; });
+    set.dimension = flat ? 2 : 3;
+    if (flat) set.z.assign(n, 0.0), set.gravity = Eigen::Vector3d(0, -1, 0);
+    return set;
+}
+
+} // namespace
+
+ParticleSet read_hdf5_particles(const std::filesystem::path& file, const ParticleFileOptions& options)
+{
+    silence_hdf5();
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) fail_input(name + ": no such file");
+    if (H5Fis_hdf5(file.c_str()) <= 0) fail_input(name + ": not an HDF5 file");
+    Handle handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!handle.valid()) fail_input(name + ": cannot be opened as HDF5 (a truncated file?)");
+    const File f{name, handle.get()};
+    if (exists(f.id, "/PartType0")) {
+        if (!exists(f.id, "/PartType0/Coordinates"))
+            fail_input(name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
+        return read_snapshot(f);
+    }
+    if (exists(f.id, "/particles")) return read_pysph(f, options.array);
+    fail_input(name + ": neither /PartType0 (SWIFT, GADGET) nor /particles (PySPH); expected a particle snapshot");
+}
+
+} // namespace sphkern

@@ -1,0 +1,66 @@
+#include "particles/formats/particle_files.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+
+namespace sphkern {
+
+std::optional<ParticleFileFormat> particle_file_format(const std::filesystem::path& file)
+{
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".h5" || ext == ".hdf5" || ext == ".hdf") return ParticleFileFormat::hdf5;
+    if (ext == ".csv") return ParticleFileFormat::csv;
+    if (ext == ".vtk") return ParticleFileFormat::vtk;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
+    char head[16] = {};
+    std::ifstream in(file, std::ios::binary);
+    in.read(head, sizeof head);
+    if (std::memcmp(head, "\x89HDF\r\n\x1a\n", 8) == 0) return ParticleFileFormat::hdf5;
+    if (std::memcmp(head, "# vtk DataFile", 14) == 0) return ParticleFileFormat::vtk;
+    return std::nullopt;
+}
+
+ParticleSet read_particle_file(const std::filesystem::path& file, const ParticleFileOptions& options)
+{
+    const auto format = particle_file_format(file);
+    if (!format)
+        fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv or .vtk");
+    ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
+                      : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
+                                                           : read_vtk_particles(file, options);
+    apply_dimension(set, options);
+    if (options.max_particles && set.size() > options.max_particles)
+        fail_input(fmt::format("{}: {} particles, more than the memory limit of {} (--memory-limit)", file.string(),
+                               set.size(), options.max_particles));
+    return set;
+}
+
+void apply_dimension(ParticleSet& set, const ParticleFileOptions& options)
+{
+    if (!options.dimension || *options.dimension == set.dimension) return;
+    if (*options.dimension != 2 || set.dimension != 3)
+        fail_input(fmt::format("{}: --dim {} for a set with {} coordinates; expected --dim 2 for a 3-column set",
+                               set.name, *options.dimension, set.dimension));
+    auto constant = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; }); };
+    if (constant(set.z)) {
+    } else if (constant(set.y)) {
+        set.y.swap(set.z); // a 2D set in the x-z plane (DualSPHysics)
+    } else if (constant(set.x)) {
+        set.x.swap(set.y), set.y.swap(set.z);
+    } else {
+        fail_input(set.name + ": --dim 2, but no coordinate is the same for every particle");
+    }
+    std::fill(set.z.begin(), set.z.end(), 0.0);
+    set.dimension = 2;
+    set.gravity = Eigen::Vector3d(0, -1, 0);
+    if (set.box) set.box->edges.col(2) = Eigen::Vector3d::UnitZ(); // a box given for 3D keeps its x and y only
+}
+
+} // namespace sphkern

@@ -1,0 +1,35 @@
+// Particle sets from files: SWIFT, GADGET and PySPH HDF5, CSV with a header line, and legacy
+// VTK (ASCII or big-endian BINARY, POLYDATA or UNSTRUCTURED_GRID). Every error names the
+// file, the dataset, column or array, and the particle id where there is one.
+#pragma once
+
+#include "particles/particle_set.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace sphkern {
+
+enum class ParticleFileFormat { hdf5, csv, vtk };
+
+struct ParticleFileOptions {
+    std::string array;           // PySPH: the particle array (default: the only one, or "fluid")
+    std::optional<int> dimension; // 2: read a 3-column file whose one coordinate is constant as 2D
+    std::size_t max_particles = 0;
+};
+
+// By extension (.h5, .hdf5, .csv, .vtk), else by the file's first bytes; nullopt if neither says.
+std::optional<ParticleFileFormat> particle_file_format(const std::filesystem::path& file);
+
+ParticleSet read_particle_file(const std::filesystem::path& file, const ParticleFileOptions& options);
+
+ParticleSet read_csv_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
+ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
+ParticleSet read_hdf5_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
+
+// For readers: keeps x, y, z as read, or turns a 3D set into 2D where asked (`dimension` 2) by
+// dropping its one constant coordinate. Throws Error(input) if no coordinate is constant.
+void apply_dimension(ParticleSet& set, const ParticleFileOptions& options);
+
+} // namespace sphkern

@@ -1,0 +1,111 @@
+#include "particles/neighbour_grid.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sphkern {
+
+NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach)
+{
+    if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
+    if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
+        fail_input(fmt::format("{}: {} particles, more than this engine indexes", set.name, set.size()));
+    particles_ = set.size();
+    x_ = set.x, y_ = set.y, z_ = set.z;
+    source_.resize(particles_);
+    for (std::size_t i = 0; i < particles_; ++i) source_[i] = static_cast<std::uint32_t>(i);
+    if (set.box) {
+        const double width = set.box->smallest_width(set.dimension);
+        if (width < 2 * reach)
+            fail_input(fmt::format("{}: the periodic box is {:.6g} wide, less than twice the support radius {:.6g}; "
+                                   "expected a larger box or a smaller h",
+                                   set.name, width, reach));
+        add_ghosts(set, reach);
+    }
+    sort_into_bins(reach);
+}
+
+void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
+{
+    const int dim = set.dimension;
+    Eigen::Matrix3d cell = set.box->edges;
+    if (dim == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    // A ghost is needed where an image lies within `reach` of the box: within this
+    // fractional margin of a face along each edge.
+    Eigen::Vector3d margin = Eigen::Vector3d::Zero();
+    for (int a = 0; a < dim; ++a) margin[a] = reach * inverse.row(a).norm() * (1 + 1e-9);
+    const int nz = dim == 3 ? 1 : 0;
+    for (std::size_t i = 0; i < particles_; ++i) {
+        const Eigen::Vector3d f = inverse * set.position(i);
+        for (int a = -1; a <= 1; ++a)
+            for (int b = -1; b <= 1; ++b)
+                for (int c = -nz; c <= nz; ++c) {
+                    if (a == 0 && b == 0 && c == 0) continue;
+                    const Eigen::Vector3d image = f + Eigen::Vector3d(a, b, c);
+                    bool near = true;
+                    for (int d = 0; d < dim; ++d) near = near && image[d] >= -margin[d] && image[d] < 1 + margin[d];
+                    if (!near) continue;
+                    const Eigen::Vector3d p = cell * image;
+                    x_.push_back(p.x()), y_.push_back(p.y()), z_.push_back(dim == 3 ? p.z() : 0.0);
+                    source_.push_back(static_cast<std::uint32_t>(i));
+                }
+    }
+}
+
+void NeighbourGrid::sort_into_bins(double reach)
+{
+    const std::size_t count = x_.size();
+    const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
+    double lo[3], extent[3];
+    for (int a = 0; a < 3; ++a) {
+        const auto [mn, mx] = std::minmax_element(coordinates[a], coordinates[a] + count);
+        lo[a] = *mn, extent[a] = *mx - *mn;
+        // Bins at least `reach` wide, so that the 3 x 3 (x 3) block around a bin holds every
+        // neighbour; not more bins than points, so that sparse sets stay small.
+        const double bins = std::floor(extent[a] / reach);
+        n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, std::max(1.0, std::cbrt(static_cast<double>(count)) * 4)));
+    }
+    const std::size_t total_bins = n_[0] * n_[1] * n_[2];
+    std::vector<std::uint32_t> bx(count), by(count), bz(count);
+    std::vector<std::uint64_t> bin(count), fill(total_bins + 1, 0);
+    for (std::size_t p = 0; p < count; ++p) {
+        std::uint32_t* out[3] = {&bx[p], &by[p], &bz[p]};
+        for (int a = 0; a < 3; ++a) {
+            const double t = extent[a] > 0 ? (coordinates[a][p] - lo[a]) / extent[a] * static_cast<double>(n_[a]) : 0.0;
+            *out[a] = static_cast<std::uint32_t>(std::min(static_cast<double>(n_[a] - 1), std::max(0.0, std::floor(t))));
+        }
+        bin[p] = (static_cast<std::uint64_t>(bz[p]) * n_[1] + by[p]) * n_[0] + bx[p];
+        ++fill[bin[p] + 1];
+    }
+    for (std::size_t b = 0; b < total_bins; ++b) fill[b + 1] += fill[b];
+    start_ = fill;
+    // A stable counting sort: particles keep their order inside a bin.
+    std::vector<std::uint64_t> where(count);
+    for (std::size_t p = 0; p < count; ++p) where[p] = fill[bin[p]]++;
+    auto permute = [&](auto& values) {
+        std::remove_reference_t<decltype(values)> sorted(values.size());
+        for (std::size_t p = 0; p < count; ++p) sorted[where[p]] = values[p];
+        values.swap(sorted);
+    };
+    permute(x_), permute(y_), permute(z_), permute(source_), permute(bx), permute(by), permute(bz);
+    bin_x_.swap(bx), bin_y_.swap(by), bin_z_.swap(bz);
+    sorted_particles_.resize(particles_);
+    for (std::size_t p = 0; p < particles_; ++p) sorted_particles_[p] = static_cast<std::uint32_t>(where[p]);
+    // In sweep order: by position in the sorted arrays.
+    std::sort(sorted_particles_.begin(), sorted_particles_.end());
+}
+
+std::vector<double> NeighbourGrid::gather(const std::vector<double>& per_particle) const
+{
+    std::vector<double> values(x_.size());
+    for (std::size_t p = 0; p < x_.size(); ++p) values[p] = per_particle[source_[p]];
+    return values;
+}
+
+} // namespace sphkern

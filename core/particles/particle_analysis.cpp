@@ -1,0 +1,109 @@
+#include "particles/particle_analysis.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <numeric>
+
+namespace sphkern {
+
+namespace {
+
+void check_request(const ParticleSet& set, const ParticleRequest& request)
+{
+    if (request.threads < 0 || request.threads > 1024)
+        fail_input(fmt::format("--threads {}: expected 0 (every core) to 1024", request.threads));
+    if (request.histogram_bins > 100000) fail_input(fmt::format("--histogram {}: expected at most 100000 bins", request.histogram_bins));
+    if (const auto& s = request.sweep) {
+        if (s->rule != SmoothingRule::eta && s->rule != SmoothingRule::nh) fail_input("a sweep runs over eta or N_H");
+        if (!std::isfinite(s->from) || !std::isfinite(s->to) || s->from <= 0 || s->to <= s->from)
+            fail_input(fmt::format("sweep range {} {}: expected 0 < A < B", s->from, s->to));
+        if (s->steps < 1 || s->steps > 1000) fail_input(fmt::format("--steps {}: expected 1 to 1000", s->steps));
+    }
+    if (request.gravity && request.gravity->norm() == 0) fail_input("--gravity: the direction is zero");
+    if (request.rho0 && (!std::isfinite(*request.rho0) || *request.rho0 <= 0))
+        fail_input(fmt::format("--rho0 {}: expected a positive number", *request.rho0));
+    if (!std::isfinite(request.depth) || request.depth < 0 || request.depth > 1e6)
+        fail_input(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
+    (void)set;
+}
+
+std::vector<double> magnitudes(const std::vector<std::array<double, 3>>& v)
+{
+    std::vector<double> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out[i] = std::hypot(v[i][0], v[i][1], v[i][2]);
+    return out;
+}
+
+ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bins)
+{
+    ParticlePoint point;
+    std::vector<double> frobenius(m.size()), neighbours(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
+    const std::pair<const char*, const std::vector<double>*> fields[] = {
+        {"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}};
+    for (const auto& [name, values] : fields) point.statistics.emplace_back(name, summarise(*values));
+    const auto e1 = magnitudes(m.e1), m1 = magnitudes(m.m1);
+    point.statistics.emplace_back("|e1|", summarise(e1));
+    point.statistics.emplace_back("|m1|", summarise(m1));
+    point.statistics.emplace_back("||E||_F", summarise(frobenius));
+    point.statistics.emplace_back("neighbours", summarise(neighbours));
+    if (bins)
+        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins));
+    point.mean_neighbours = point.statistics.back().second.mean;
+    point.seconds = m.seconds;
+    point.pairs = m.pairs;
+    return point;
+}
+
+} // namespace
+
+ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request)
+{
+    check_request(set, request);
+    kernel.require_dimension(set.dimension, set.name);
+    ParticleAnswer answer;
+    answer.volume = request.volume.value_or(default_volume_model(set));
+    answer.volumes = particle_volumes(set, answer.volume);
+    const double n = static_cast<double>(set.size());
+    answer.mean_volume = std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0) / n;
+    answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
+    answer.gravity = request.gravity ? request.gravity->normalized() : set.gravity;
+    if (set.dimension == 2 && answer.gravity.z() != 0) fail_input("--gravity: a 2D set takes x,y");
+    // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
+    answer.rho0 = request.rho0.value_or(1.0);
+    if (!request.rho0 && !set.mass.empty())
+        answer.rho0 = std::accumulate(set.mass.begin(), set.mass.end(), 0.0) /
+                      std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0);
+    ParticleSet oriented = set;
+    oriented.gravity = answer.gravity;
+
+    std::vector<SmoothingSpec> specs;
+    if (const auto& s = request.sweep)
+        for (int i = 0; i <= s->steps; ++i)
+            specs.push_back({s->rule, s->from + (s->to - s->from) * i / s->steps, 0});
+    else specs.push_back(request.smoothing);
+    const int dim = set.dimension;
+    const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
+    for (std::size_t p = 0; p < specs.size(); ++p) {
+        auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume);
+        MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, request.threads};
+        auto measures = measure_particles(kernel, oriented, inputs);
+        ParticlePoint point = summarise_point(measures, dim, request.histogram_bins);
+        const double h_mean = std::accumulate(h.begin(), h.end(), 0.0) / n;
+        point.eta = h_mean / unit;
+        point.nh = neighbour_number(point.eta, R, dim);
+        const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
+        point.h_min = *lo, point.h_max = *hi;
+        answer.threads = measures.threads;
+        if (specs.size() > 1) spdlog::info("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
+        answer.points.push_back(std::move(point));
+        if (specs.size() == 1) answer.h = std::move(h), answer.measures = std::move(measures);
+    }
+    return answer;
+}
+
+} // namespace sphkern

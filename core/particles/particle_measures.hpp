@@ -1,0 +1,45 @@
+// The consistency errors of SPH on a particle set, per particle (share/docs/method.md
+// section 11): e0 (density of a constant), eps_rho (with masses), the first moment m1, the
+// gradient of a constant e1, the linear-gradient error tensor E, eps_gradp = g.E.g (the
+// difference form) and the sum form's eps_gradp at a depth, and the neighbour count.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "particles/particle_set.hpp"
+
+#include <array>
+#include <vector>
+
+namespace sphkern {
+
+struct MeasureInputs {
+    std::vector<double> h;      // sphkern's h of every particle (support R h)
+    std::vector<double> volume; // V_j
+    std::vector<double> mass;   // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
+    double rho0 = 1;            // the reference density of eps_rho
+    double spacing = 1;         // d of k = h / d, the argument of kernels that depend on k
+    double depth = 1;           // of the sum form, in units of h
+    int threads = 0;            // 0: every core
+};
+
+struct ParticleMeasures {
+    std::vector<double> e0, eps_rho, eps_gradp, eps_gradp_sum;
+    std::vector<std::array<double, 3>> e1, m1;
+    std::vector<std::array<double, 6>> E; // xx, yy, zz, xy, xz, yz
+    std::vector<int> neighbours;          // j != i inside the support
+    std::size_t pairs = 0;                // sum of the neighbour counts
+    int threads = 1;
+    double seconds = 0;                   // the sums, without the neighbour grid
+    double grid_seconds = 0;
+    std::size_t size() const { return e0.size(); }
+};
+
+// Every particle's measures by direct sums over its neighbours (periodic images by the
+// minimum image). Independent of the thread count. Throws Error(input) for two particles at
+// one position (naming both ids) and a non-finite kernel value (the kernel's fault code).
+ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs);
+
+// ||E||_F of the stored components.
+double frobenius_norm(const std::array<double, 6>& E, int dimension);
+
+} // namespace sphkern

@@ -1,0 +1,133 @@
+#include "particles/particle_report.hpp"
+
+#include "support/chunked_writer.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern {
+
+namespace {
+
+nlohmann::json summary_json(const Summary& s)
+{
+    return {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min}, {"max", s.max},
+            {"p1", s.p1},     {"p50", s.p50}, {"p99", s.p99}};
+}
+
+nlohmann::json point_json(const ParticlePoint& p)
+{
+    nlohmann::json statistics = nlohmann::json::object();
+    for (const auto& [name, s] : p.statistics) statistics[name] = summary_json(s);
+    nlohmann::json point = {{"eta", p.eta},         {"nh", p.nh},       {"h_min", p.h_min}, {"h_max", p.h_max},
+                            {"mean_neighbours", p.mean_neighbours}, {"pairs", p.pairs}, {"seconds", p.seconds},
+                            {"statistics", statistics}};
+    if (!p.histograms.empty()) {
+        nlohmann::json histograms = nlohmann::json::object();
+        for (const auto& [name, h] : p.histograms) histograms[name] = {{"min", h.lo}, {"max", h.hi}, {"counts", h.counts}};
+        point["histograms"] = histograms;
+    }
+    return point;
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
+{
+    return dim == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
+}
+
+} // namespace
+
+nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    nlohmann::json source = {{"name", set.name}, {"particles", set.size()}, {"dimension", set.dimension},
+                             {"periodic", set.box.has_value()}};
+    if (set.box) {
+        nlohmann::json edges = nlohmann::json::array();
+        for (int a = 0; a < set.dimension; ++a) edges.push_back(vector_json(set.box->edges.col(a), set.dimension));
+        source["box"] = edges;
+    }
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& p : answer.points) points.push_back(point_json(p));
+    nlohmann::json document = {{"kernel", kernel.label()},
+                               {"support", kernel.support()},
+                               {"source", source},
+                               {"volume", volume_model_name(answer.volume)},
+                               {"mean_volume", answer.mean_volume},
+                               {"rho0", answer.rho0},
+                               {"gravity", vector_json(answer.gravity, set.dimension)},
+                               {"threads", answer.threads}};
+    if (answer.points.size() == 1) document.update(point_json(answer.points[0]));
+    else document["sweep"] = points;
+    return document;
+}
+
+void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    fmt::print(out, "{} on {}: {} particles in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
+               kernel.label(), set.name, set.size(), set.dimension, set.box ? "periodic box" : "free (no box)",
+               volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
+               set.dimension == 3 ? fmt::format(", {:.4g}", answer.gravity.z()) : "");
+    for (const auto& p : answer.points) {
+        fmt::print(out, "\neta = {:.6g} (h / mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
+                        "average, {} pairs in {:.3f} s\n",
+                   p.eta, p.nh, p.h_min, p.h_max, p.mean_neighbours, p.pairs, p.seconds);
+        fmt::print(out, "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "measure", "mean", "std", "rms",
+                   "min", "p1", "p50", "p99", "max");
+        for (const auto& [name, s] : p.statistics)
+            fmt::print(out, "{:<14} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e}\n", name,
+                       s.mean, s.std, s.rms, s.min, s.p1, s.p50, s.p99, s.max);
+        for (const auto& [name, h] : p.histograms) {
+            fmt::print(out, "histogram of {} over [{:.6g}, {:.6g}]:", name, h.lo, h.hi);
+            for (auto c : h.counts) fmt::print(out, " {}", c);
+            fmt::print(out, "\n");
+        }
+    }
+}
+
+void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    const auto& m = *answer.measures;
+    const bool three = set.dimension == 3;
+    ChunkedWriter out(stream);
+    out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
+              three ? "e1_z," : "", three ? ",m1_z" : "");
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        out.print("{},{:.17g},{:.17g},", i, set.x[i], set.y[i]);
+        if (three) out.print("{:.17g},", set.z[i]);
+        out.print("{:.17g},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},", answer.h[i], answer.volumes[i],
+                  m.neighbours[i], m.e0[i], m.eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
+        if (three) out.print("{:.17g},", m.e1[i][2]);
+        out.print("{:.17g},{:.17g}", m.m1[i][0], m.m1[i][1]);
+        if (three) out.print(",{:.17g}", m.m1[i][2]);
+        out.print("\n");
+    }
+}
+
+void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    const auto& m = *answer.measures;
+    const std::size_t n = set.size();
+    ChunkedWriter out(stream);
+    out.print("# vtk DataFile Version 3.0\nsphkern particles: consistency errors per particle\nASCII\nDATASET POLYDATA\n");
+    out.print("POINTS {} double\n", n);
+    for (std::size_t i = 0; i < n; ++i) out.print("{:.17g} {:.17g} {:.17g}\n", set.x[i], set.y[i], set.z[i]);
+    out.print("VERTICES {} {}\n", n, 2 * n);
+    for (std::size_t i = 0; i < n; ++i) out.print("1 {}\n", i);
+    out.print("POINT_DATA {}\n", n);
+    auto scalars = [&](const char* name, auto value) {
+        out.print("SCALARS {} double 1\nLOOKUP_TABLE default\n", name);
+        for (std::size_t i = 0; i < n; ++i) out.print("{:.17g}\n", static_cast<double>(value(i)));
+    };
+    scalars("id", [](std::size_t i) { return i; });
+    scalars("h", [&](std::size_t i) { return answer.h[i]; });
+    scalars("volume", [&](std::size_t i) { return answer.volumes[i]; });
+    scalars("neighbours", [&](std::size_t i) { return m.neighbours[i]; });
+    scalars("e0", [&](std::size_t i) { return m.e0[i]; });
+    scalars("eps_rho", [&](std::size_t i) { return m.eps_rho[i]; });
+    scalars("eps_gradp", [&](std::size_t i) { return m.eps_gradp[i]; });
+    for (const auto& [name, field] : {std::pair{"e1", &m.e1}, std::pair{"m1", &m.m1}}) {
+        out.print("VECTORS {} double\n", name);
+        for (const auto& v : *field) out.print("{:.17g} {:.17g} {:.17g}\n", v[0], v[1], v[2]);
+    }
+}
+
+} // namespace sphkern

@@ -1,0 +1,21 @@
+// What `sphkern particles` prints and writes: the statistics as a table or JSON, and the
+// per-particle values as CSV or legacy VTK (point data, for ParaView).
+#pragma once
+
+#include "particles/particle_analysis.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+
+namespace sphkern {
+
+nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer);
+void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer);
+
+// One row per particle in id order: id, x, y, [z,] h, volume, neighbours, e0, eps_rho,
+// eps_gradp, e1_x, e1_y[, e1_z], m1_x, m1_y[, m1_z]. Needs a single h (answer.measures).
+void write_particle_csv(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
+void write_particle_vtk(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
+
+} // namespace sphkern

@@ -1,0 +1,87 @@
+#include "particles/particle_set.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphkern {
+
+double PeriodicBox::volume(int dimension) const
+{
+    return dimension == 2 ? std::abs(edges(0, 0) * edges(1, 1) - edges(0, 1) * edges(1, 0))
+                          : std::abs(edges.determinant());
+}
+
+double PeriodicBox::smallest_width(int dimension) const
+{
+    // Width along edge a = volume / area of the opposite face = 1 / |row a of the inverse|.
+    Eigen::Matrix3d cell = edges;
+    if (dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    double width = INFINITY;
+    for (int a = 0; a < dimension; ++a) width = std::min(width, 1 / inverse.row(a).norm());
+    return width;
+}
+
+namespace {
+
+void check_positive(const std::vector<double>& values, const ParticleSet& set, const char* field)
+{
+    if (values.empty()) return;
+    if (values.size() != set.size())
+        fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (!std::isfinite(values[i]) || values[i] <= 0)
+            fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, i,
+                                   values[i]));
+}
+
+void wrap_into_box(ParticleSet& set)
+{
+    Eigen::Matrix3d cell = set.box->edges;
+    if (set.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        Eigen::Vector3d f = inverse * set.position(i);
+        bool moved = false;
+        for (int a = 0; a < set.dimension; ++a) {
+            // A particle more than one box outside is not a rounding matter: the box is wrong.
+            if (f[a] < -1 || f[a] >= 2)
+                fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, i,
+                                       set.x[i], set.y[i], set.z[i]));
+            if (f[a] < 0 || f[a] >= 1) f[a] -= std::floor(f[a]), moved = true;
+        }
+        if (!moved) continue;
+        const Eigen::Vector3d p = cell * f;
+        set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = set.dimension == 2 ? 0.0 : p.z();
+    }
+}
+
+} // namespace
+
+void validate_particle_set(ParticleSet& set)
+{
+    if (set.dimension != 2 && set.dimension != 3)
+        fail_input(fmt::format("{}: particles in {} dimensions; expected 2 or 3", set.name, set.dimension));
+    if (set.size() < 2) fail_input(fmt::format("{}: {} particles; expected at least 2", set.name, set.size()));
+    if (set.y.size() != set.size() || set.z.size() != set.size())
+        fail_input(fmt::format("{}: the coordinate arrays differ in length", set.name));
+    for (std::size_t i = 0; i < set.size(); ++i)
+        if (!std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]))
+            fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, i, set.x[i],
+                                   set.y[i], set.z[i]));
+    check_positive(set.h, set, "the smoothing length");
+    check_positive(set.mass, set, "the mass");
+    check_positive(set.density, set, "the density");
+    if (set.box) {
+        const double volume = set.box->volume(set.dimension);
+        if (!std::isfinite(volume) || volume <= 0)
+            fail_input(fmt::format("{}: the periodic box has no volume; expected {} independent edges", set.name,
+                                   set.dimension));
+        wrap_into_box(set);
+    }
+}
+
+} // namespace sphkern

@@ -1,0 +1,44 @@
+// A set of particles with no lattice behind it: positions in D = 2 or 3 dimensions,
+// optionally a periodic box (a parallelepiped: minimum-image displacements), and what a
+// file may carry per particle (smoothing length, mass, density). Section 11 of
+// share/docs/method.md says what sphkern computes on it.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+// A periodic cell: its edge vectors are the columns of `edges` (in 2D the third is e_z and
+// its z is ignored); positions are wrapped into it.
+struct PeriodicBox {
+    Eigen::Matrix3d edges = Eigen::Matrix3d::Identity();
+    double volume(int dimension) const;
+    // The distance between opposite faces along each edge: no displacement longer than
+    // half the smallest width has two images inside a sphere around a particle.
+    double smallest_width(int dimension) const;
+};
+
+struct ParticleSet {
+    std::string name;  // the file, lattice or "poisson", for messages
+    int dimension = 3;
+    std::vector<double> x, y, z;         // z is 0 in 2D
+    std::vector<double> h, mass, density; // each empty or one value per particle
+    std::optional<PeriodicBox> box;
+    double support_per_h = 0;   // a file's own convention (SWIFT's kernel gamma), 0 if unknown
+    double spacing = 0;         // a lattice's nearest-neighbour distance d, 0 for other sets
+    Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -1); // the lattice's, else -y (2D) or -z (3D)
+
+    std::size_t size() const { return x.size(); }
+    Eigen::Vector3d position(std::size_t i) const { return {x[i], y[i], z[i]}; }
+};
+
+// Checks what every source must give: D, at least two particles, finite coordinates inside
+// the box (wrapped into it), positive finite h, masses and densities. Throws Error(input)
+// naming the set, the field and the particle id.
+void validate_particle_set(ParticleSet& set);
+
+} // namespace sphkern

@@ -1,0 +1,55 @@
+#include "particles/particle_volumes.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern {
+
+VolumeModel parse_volume_model(const std::string& name)
+{
+    if (name == "uniform") return VolumeModel::uniform;
+    if (name == "file") return VolumeModel::file;
+    if (name == "voronoi") return VolumeModel::voronoi;
+    throw Error(ExitCode::usage, "--volume " + name + ": expected uniform, file or voronoi");
+}
+
+const char* volume_model_name(VolumeModel model)
+{
+    switch (model) {
+    case VolumeModel::uniform: return "uniform";
+    case VolumeModel::file: return "file";
+    case VolumeModel::voronoi: return "voronoi";
+    }
+    return "";
+}
+
+VolumeModel default_volume_model(const ParticleSet& set)
+{
+    return !set.mass.empty() && !set.density.empty() ? VolumeModel::file : VolumeModel::uniform;
+}
+
+std::vector<double> particle_volumes(const ParticleSet& set, VolumeModel model)
+{
+    switch (model) {
+    case VolumeModel::uniform:
+        if (!set.box)
+            fail_input(fmt::format("{}: uniform volumes need a box (--box); a free set can use --volume file (m / rho)",
+                                   set.name));
+        return std::vector<double>(set.size(), set.box->volume(set.dimension) / static_cast<double>(set.size()));
+    case VolumeModel::file: {
+        if (set.mass.empty() || set.density.empty())
+            fail_input(fmt::format("{}: --volume file needs masses and densities in the file; expected {}", set.name,
+                                   set.mass.empty() ? "masses" : "densities"));
+        std::vector<double> volume(set.size());
+        for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = set.mass[i] / set.density[i];
+        return volume;
+    }
+    case VolumeModel::voronoi:
+        if (!set.box) fail_input(fmt::format("{}: Voronoi volumes need a periodic box (--box)", set.name));
+        return voronoi_volumes(set);
+    }
+    return {};
+}
+
+} // namespace sphkern

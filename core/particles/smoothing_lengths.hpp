@@ -1,0 +1,30 @@
+// sphkern's h for every particle of a set (support radius R h): from eta, from a neighbour
+// number, from k on a lattice, or from the file's own h under a stated convention.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "particles/particle_set.hpp"
+
+#include <vector>
+
+namespace sphkern {
+
+enum class SmoothingRule { eta, nh, k, file };
+
+struct SmoothingSpec {
+    SmoothingRule rule = SmoothingRule::eta;
+    double value = 1.2;        // eta, N_H or k; unused for `file`
+    double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
+};
+
+// N_H = c_D (R eta)^D, the mean number of neighbours inside the support at uniform density
+// (Dehnen & Aly 2012; c_2 = pi, c_3 = 4 pi / 3), and its inverse.
+double neighbour_number(double eta, double support, int dimension);
+double eta_for_neighbour_number(double nh, double support, int dimension);
+
+// h of every particle; `mean_volume` is V̄ of h = eta V̄^(1/D). Throws Error(input) naming the
+// choices when the rule does not fit the set (k without a lattice, a file h without a convention).
+std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
+                                      double mean_volume);
+
+} // namespace sphkern

@@ -1,0 +1,23 @@
+// A lattice cut to a periodic block of N1 x N2 [x N3] cells, optionally disturbed by
+// independent Gaussian displacements (the same set for a seed on every machine).
+#pragma once
+
+#include "lattices/lattice.hpp"
+#include "particles/particle_set.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace sphkern {
+
+struct LatticeBlockSpec {
+    std::array<long long, 3> cells = {1, 1, 1};
+    double sigma = 0;       // standard deviation per axis, in units of d
+    std::uint64_t seed = 1;
+};
+
+// Particles in cell-major order: id = ((c3 * N2 + c2) * N1 + c1) * sites + s.
+// Throws Error(input) for a size that is not positive or over `max_particles`.
+ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles);
+
+} // namespace sphkern

@@ -1,0 +1,41 @@
+#include "particles/sources/particle_source.hpp"
+
+#include "lattices/lattice.hpp"
+#include "particles/particles_memory.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern {
+
+SourceKind source_kind(const std::string& spec)
+{
+    if (spec == "poisson") return SourceKind::poisson;
+    if (particle_file_format(spec)) return SourceKind::file;
+    return SourceKind::lattice;
+}
+
+ParticleSet load_particles(const ParticleSource& source)
+{
+    switch (source.kind) {
+    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, max_particles());
+    case SourceKind::poisson: return poisson_particles(source.poisson, max_particles());
+    case SourceKind::file: break;
+    }
+    ParticleFileOptions options = source.file;
+    options.max_particles = max_particles();
+    ParticleSet set = read_particle_file(source.spec, options);
+    if (source.box) {
+        PeriodicBox box;
+        for (int a = 0; a < set.dimension; ++a) {
+            if (!std::isfinite((*source.box)[a]) || (*source.box)[a] <= 0)
+                fail_input(fmt::format("--box: side {} is {}; expected a positive number", a + 1, (*source.box)[a]));
+            box.edges(a, a) = (*source.box)[a];
+        }
+        set.box = box;
+    }
+    validate_particle_set(set);
+    return set;
+}
+
+} // namespace sphkern

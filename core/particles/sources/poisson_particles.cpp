@@ -1,0 +1,41 @@
+#include "particles/sources/poisson_particles.hpp"
+
+#include "support/error.hpp"
+
+#include <boost/random/mersenne_twister.hpp>
+#include <boost/random/uniform_real_distribution.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphkern {
+
+ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles)
+{
+    if (spec.dimension != 2 && spec.dimension != 3) fail_input(fmt::format("--dim {}: expected 2 or 3", spec.dimension));
+    if (spec.count < 2 || spec.count > max_particles)
+        fail_input(fmt::format("--count {}: expected 2 to {} particles (the memory limit, --memory-limit)", spec.count,
+                               max_particles));
+    for (int a = 0; a < spec.dimension; ++a)
+        if (!std::isfinite(spec.box[a]) || spec.box[a] <= 0)
+            fail_input(fmt::format("--box: side {} is {}; expected a positive number", a + 1, spec.box[a]));
+    ParticleSet set;
+    set.name = "poisson";
+    set.dimension = spec.dimension;
+    if (spec.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
+    PeriodicBox box;
+    box.edges = Eigen::Vector3d(spec.box.x(), spec.box.y(), spec.dimension == 3 ? spec.box.z() : 1.0).asDiagonal();
+    set.box = box;
+    boost::random::mt19937_64 engine(spec.seed);
+    boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
+    set.x.resize(spec.count), set.y.resize(spec.count), set.z.assign(spec.count, 0.0);
+    for (std::size_t i = 0; i < spec.count; ++i) {
+        set.x[i] = unit(engine) * spec.box.x();
+        set.y[i] = unit(engine) * spec.box.y();
+        if (spec.dimension == 3) set.z[i] = unit(engine) * spec.box.z();
+    }
+    validate_particle_set(set);
+    return set;
+}
+
+} // namespace sphkern

@@ -1,0 +1,20 @@
+// A uniform random (Poisson) set: N independent uniform positions in a periodic box.
+#pragma once
+
+#include "particles/particle_set.hpp"
+
+#include <cstdint>
+
+namespace sphkern {
+
+struct PoissonSpec {
+    int dimension = 3;
+    std::size_t count = 0;
+    Eigen::Vector3d box = Eigen::Vector3d::Ones(); // the sides of a rectangular box
+    std::uint64_t seed = 1;
+};
+
+// Throws Error(input) for a count below 2 or over `max_particles`, or a box side that is not positive.
+ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles);
+
+} // namespace sphkern

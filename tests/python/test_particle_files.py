@@ -1,0 +1,184 @@
+"""`sphkern particles` on the files other codes write: one set of particles stored as CSV,
+SWIFT and GADGET HDF5, PySPH HDF5 and big-endian BINARY legacy VTK (POLYDATA and
+UNSTRUCTURED_GRID) must give the same statistics as the CSV; broken files give one line
+and exit 3, with no HDF5 error stack. Run by ctest with SPHKERN_CLI set."""
+import json
+import os
+import struct
+import subprocess
+
+import numpy as np
+import pytest
+
+h5py = pytest.importorskip("h5py")
+
+CLI = os.environ["SPHKERN_CLI"]
+GAMMA = 1.936492  # SWIFT's kernel gamma of Wendland C2 in 3D
+N, L = 1500, 1.0
+
+
+def particles():
+    rng = np.random.default_rng(2026)
+    x = rng.uniform(0, L, (N, 3))
+    h = 0.085 * rng.uniform(0.9, 1.1, N)
+    m = (L**3 / N) * rng.uniform(0.8, 1.2, N)
+    rho = rng.uniform(0.9, 1.1, N)
+    return x, h, m, rho
+
+
+def run(*args):
+    done = subprocess.run([CLI, "particles", "wendland_c2", *args, "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def refused(*args):
+    done = subprocess.run([CLI, "particles", "wendland_c2", *args], capture_output=True, text=True)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 3, done.stderr
+    assert len(lines) == 1 and lines[0].startswith("sphkern: error: "), done.stderr
+    return lines[0]
+
+
+def write_csv(path, x, h, m, rho):
+    with open(path, "w") as f:
+        f.write("x,y,z,h,m,rho\n")
+        for p, hh, mm, r in zip(x, h, m, rho):
+            f.write(f"{p[0]!r},{p[1]!r},{p[2]!r},{hh!r},{mm!r},{r!r}\n")
+
+
+def write_swift(path, x, h, m, rho, gamma=True):
+    with h5py.File(path, "w") as f:
+        header = f.create_group("Header")
+        header.attrs["BoxSize"] = [L, L, L]
+        header.attrs["Dimension"] = 3
+        header.attrs["NumPart_Total"] = [N, 0, 0, 0, 0, 0]
+        header.attrs["MassTable"] = [0.0] * 6
+        if gamma:
+            f.create_group("HydroScheme").attrs["Kernel gamma"] = GAMMA
+        part = f.create_group("PartType0")
+        part["Coordinates"] = x
+        part["SmoothingLengths"] = h
+        part["Masses"] = m
+        part["Densities"] = rho
+
+
+def write_gadget(path, x, h, m, rho):
+    with h5py.File(path, "w") as f:
+        header = f.create_group("Header")
+        header.attrs["BoxSize"] = L
+        header.attrs["NumPart_Total"] = np.array([N, 0, 0, 0, 0, 0], dtype=np.uint32)
+        header.attrs["MassTable"] = [m[0], 0, 0, 0, 0, 0]
+        part = f.create_group("PartType0")
+        part["Coordinates"] = x.astype(np.float32)
+        part["SmoothingLength"] = h.astype(np.float32)
+        part["Density"] = rho.astype(np.float32)
+
+
+def write_pysph(path, x, h, m, rho):
+    with h5py.File(path, "w") as f:
+        for name, scale in (("fluid", 1.0), ("solid", 0.5)):
+            arrays = f.create_group(f"particles/{name}/arrays")
+            for key, values in (("x", x[:, 0]), ("y", x[:, 1]), ("z", x[:, 2]), ("h", h), ("m", m), ("rho", rho)):
+                arrays[key] = values * (scale if key in "xyz" else 1.0)
+
+
+def write_vtk_binary(path, x, h, m, rho, unstructured):
+    with open(path, "wb") as f:
+        kind = "UNSTRUCTURED_GRID" if unstructured else "POLYDATA"
+        f.write(f"# vtk DataFile Version 3.0\nparticles\nBINARY\nDATASET {kind}\nPOINTS {N} double\n".encode())
+        f.write(struct.pack(f">{3 * N}d", *x.ravel()))
+        if unstructured:
+            f.write(f"\nCELLS {N} {2 * N}\n".encode())
+            f.write(struct.pack(f">{2 * N}i", *[v for i in range(N) for v in (1, i)]))
+            f.write(f"\nCELL_TYPES {N}\n".encode())
+            f.write(struct.pack(f">{N}i", *([1] * N)))
+        else:
+            f.write(f"\nVERTICES {N} {2 * N}\n".encode())
+            f.write(struct.pack(f">{2 * N}i", *[v for i in range(N) for v in (1, i)]))
+        f.write(f"\nPOINT_DATA {N}\nSCALARS h float 1\nLOOKUP_TABLE default\n".encode())
+        f.write(struct.pack(f">{N}f", *h))
+        f.write(b"\nFIELD FieldData 3\n")
+        f.write(f"mass 1 {N} double\n".encode())
+        f.write(struct.pack(f">{N}d", *m))
+        f.write(f"\nvelocity 3 {N} double\n".encode())
+        f.write(struct.pack(f">{3 * N}d", *np.zeros(3 * N)))
+        f.write(f"\ndensity 1 {N} double\n".encode())
+        f.write(struct.pack(f">{N}d", *rho))
+        f.write(b"\n")
+
+
+def close(a, b, tol):
+    for key in b["statistics"]:
+        for stat in b["statistics"][key]:
+            x, y = a["statistics"][key][stat], b["statistics"][key][stat]
+            assert abs(x - y) <= tol * (1 + abs(y)), (key, stat, x, y)
+
+
+def test_every_format_gives_the_statistics_of_the_csv(tmp_path):
+    x, h, m, rho = particles()
+    write_csv(tmp_path / "set.csv", x, h, m, rho)
+    box = ["--box", f"{L},{L},{L}"]
+    reference = run(str(tmp_path / "set.csv"), "--support-per-h", str(GAMMA), *box)
+    assert reference["volume"] == "file" and reference["source"]["particles"] == N
+    assert reference["mean_neighbours"] > 20
+
+    write_swift(tmp_path / "swift.hdf5", x, h, m, rho)
+    close(run(str(tmp_path / "swift.hdf5")), reference, 1e-13)  # box and gamma from the file
+    write_pysph(tmp_path / "pysph.h5", x, h, m, rho)
+    close(run(str(tmp_path / "pysph.h5"), "--support-per-h", str(GAMMA), *box), reference, 1e-13)
+    for unstructured in (False, True):
+        path = tmp_path / f"set-{unstructured}.vtk"
+        # h stored as float: compare with a CSV of the same rounded h.
+        write_vtk_binary(path, x, h, m, rho, unstructured)
+    h32 = h.astype(np.float32).astype(np.float64)
+    write_csv(tmp_path / "set32.csv", x, h32, m, rho)
+    reference32 = run(str(tmp_path / "set32.csv"), "--support-per-h", str(GAMMA), *box)
+    for unstructured in (False, True):
+        close(run(str(tmp_path / f"set-{unstructured}.vtk"), "--support-per-h", str(GAMMA), *box), reference32, 1e-13)
+
+    # GADGET: float32 coordinates, masses from the MassTable, h is the support radius.
+    write_gadget(tmp_path / "gadget.hdf5", x, h, m, rho)
+    f32 = lambda a: a.astype(np.float32).astype(np.float64)
+    write_csv(tmp_path / "gadget.csv", f32(x), f32(h), np.full(N, m[0]), f32(rho))
+    close(run(str(tmp_path / "gadget.hdf5"), "--support-per-h", "1"),
+          run(str(tmp_path / "gadget.csv"), "--support-per-h", "1", *box), 1e-13)
+
+
+def test_pysph_arrays_and_conventions_are_asked_for(tmp_path):
+    x, h, m, rho = particles()
+    write_pysph(tmp_path / "pysph.h5", x, h, m, rho)
+    assert "--support-per-h X" in refused(str(tmp_path / "pysph.h5"), "--array", "fluid")
+    write_swift(tmp_path / "nogamma.hdf5", x, h, m, rho, gamma=False)
+    assert "SWIFT its kernel gamma" in refused(str(tmp_path / "nogamma.hdf5"))
+    assert "no particle array \"gas\"; the file has fluid, solid" in refused(
+        str(tmp_path / "pysph.h5"), "--array", "gas", "--eta", "1.2", "--box", "1,1,1")
+    # Without --array, PySPH's "fluid" is the default.
+    doc = run(str(tmp_path / "pysph.h5"), "--eta", "1.2", "--box", "1,1,1")
+    assert doc["source"]["particles"] == N
+
+
+def test_broken_hdf5_files_give_one_line(tmp_path):
+    x, h, m, rho = particles()
+    write_swift(tmp_path / "good.hdf5", x, h, m, rho)
+    data = (tmp_path / "good.hdf5").read_bytes()
+    (tmp_path / "cut.hdf5").write_bytes(data[: len(data) // 2])
+    assert "cut.hdf5" in refused(str(tmp_path / "cut.hdf5"))
+    with h5py.File(tmp_path / "nocoords.hdf5", "w") as f:
+        f.create_group("PartType0")["Masses"] = m
+    assert "/PartType0/Coordinates is missing" in refused(str(tmp_path / "nocoords.hdf5"))
+    with h5py.File(tmp_path / "shape.hdf5", "w") as f:
+        f.create_group("PartType0")["Coordinates"] = x[:, :2].copy()
+    assert "has shape (1500, 2); expected (N, 3)" in refused(str(tmp_path / "shape.hdf5"))
+    bad = x.copy()
+    bad[42, 1] = np.nan
+    write_swift(tmp_path / "nan.hdf5", bad, h, m, rho)
+    assert "particle 42 has a non-finite coordinate" in refused(str(tmp_path / "nan.hdf5"))
+    zero = m.copy()
+    zero[7] = 0
+    write_swift(tmp_path / "mass.hdf5", x, h, zero, rho)
+    assert "the mass of particle 7 is 0" in refused(str(tmp_path / "mass.hdf5"))
+    outside = x.copy()
+    outside[3, 0] = 5.0
+    write_swift(tmp_path / "outside.hdf5", outside, h, m, rho)
+    assert "particle 3 at (5, " in refused(str(tmp_path / "outside.hdf5"))

@@ -1,0 +1,380 @@
+// Particle sets: every measure against a brute-force O(N^2) sum over periodic images
+// (variable h and volumes, periodic and free, 2D and 3D), the lattice limit against the
+// shell sums of the lattice code, the exact Poisson limits, Voronoi volumes against a_p,
+// determinism, and the readers' round trips and refusals.
+#include "analysis/site_errors.hpp"
+#include "helpers.hpp"
+#include "particles/formats/particle_files.hpp"
+#include "particles/particle_analysis.hpp"
+#include "particles/particle_report.hpp"
+#include "particles/sources/lattice_particles.hpp"
+#include "particles/sources/poisson_particles.hpp"
+#include "support/error.hpp"
+
+#include <boost/random/mersenne_twister.hpp>
+#include <boost/random/uniform_real_distribution.hpp>
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <numeric>
+
+using namespace sphkern;
+using sphkern::test::shipped_kernel;
+
+namespace {
+
+const std::size_t plenty = 100'000'000;
+
+// Every measure of particle i written out from the definitions: all pairs, every periodic
+// image in the 3^D neighbouring boxes, the support edge inside.
+struct Brute {
+    double e0, eps_rho, eps_gradp;
+    Eigen::Vector3d e1, m1;
+    Eigen::Matrix3d E;
+    int neighbours;
+};
+
+Brute brute_force(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& in, std::size_t i,
+                  const Eigen::Vector3d& g)
+{
+    const int dim = set.dimension;
+    const double h = in.h[i], k = h / in.spacing, R = kernel.support(), hd = std::pow(h, dim);
+    const std::vector<double> mass = in.mass.empty() ? in.volume : in.mass; // rho0 = 1 when empty
+    Brute b{in.volume[i] * kernel.w(0, dim, k) / hd - 1, mass[i] * kernel.w(0, dim, k) / hd / in.rho0 - 1, 0,
+            Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), -Eigen::Matrix3d::Identity(), 0};
+    if (dim == 2) b.E(2, 2) = 0;
+    const int images = set.box ? 1 : 0;
+    for (std::size_t j = 0; j < set.size(); ++j)
+        for (int a = -images; a <= images; ++a)
+            for (int c = -images; c <= images; ++c)
+                for (int e = (dim == 3 ? -images : 0); e <= (dim == 3 ? images : 0); ++e) {
+                    Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+                    if (set.box) shift = set.box->edges * Eigen::Vector3d(a, c, e);
+                    const Eigen::Vector3d r = set.position(j) + shift - set.position(i);
+                    const double d = r.norm();
+                    if (d == 0 || d / h > R * (1 + 1e-12)) continue;
+                    const double W = kernel.w(d / h, dim, k) / hd, dW = kernel.dw(d / h, dim, k) / hd / h;
+                    const Eigen::Vector3d grad = -dW * r / d;
+                    b.e0 += in.volume[j] * W;
+                    b.eps_rho += mass[j] * W / in.rho0;
+                    b.m1 += in.volume[j] * W * r / h;
+                    b.e1 += h * in.volume[j] * grad;
+                    b.E += in.volume[j] * r * grad.transpose();
+                    b.neighbours += 1;
+                }
+    b.eps_gradp = g.dot(b.E * g);
+    return b;
+}
+
+ParticleSet random_set(int dim, std::size_t n, bool periodic, std::uint64_t seed)
+{
+    PoissonSpec spec;
+    spec.dimension = dim, spec.count = n, spec.seed = seed;
+    spec.box = Eigen::Vector3d(1.0, 1.3, 0.9);
+    auto set = poisson_particles(spec, plenty);
+    if (!periodic) set.box.reset();
+    return set;
+}
+
+MeasureInputs varied_inputs(const ParticleSet& set, double h0, std::uint64_t seed)
+{
+    boost::random::mt19937_64 engine(seed);
+    boost::random::uniform_real_distribution<double> u(0.7, 1.3);
+    MeasureInputs in;
+    const double v0 = (set.dimension == 3 ? 1.17 : 1.3) / static_cast<double>(set.size());
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        in.h.push_back(h0 * u(engine));
+        in.volume.push_back(v0 * u(engine));
+        in.mass.push_back(2.5 * v0 * u(engine));
+    }
+    in.rho0 = 2.5;
+    in.spacing = std::pow(v0, 1.0 / set.dimension);
+    in.depth = 3;
+    return in;
+}
+
+void check_against_brute_force(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& in)
+{
+    const auto m = measure_particles(kernel, set, in);
+    const Eigen::Vector3d g = set.gravity;
+    int larger = 0;
+    for (std::size_t i = 0; i < set.size(); i += 7) {
+        const Brute b = brute_force(kernel, set, in, i, g);
+        CHECK(m.neighbours[i] == b.neighbours);
+        CHECK(m.e0[i] == doctest::Approx(b.e0).epsilon(1e-12));
+        CHECK(m.eps_rho[i] == doctest::Approx(b.eps_rho).epsilon(1e-12));
+        CHECK(m.eps_gradp[i] == doctest::Approx(b.eps_gradp).epsilon(1e-12));
+        const Eigen::Vector3d e1(m.e1[i][0], m.e1[i][1], m.e1[i][2]);
+        CHECK(m.eps_gradp_sum[i] == doctest::Approx(b.eps_gradp + 2 * in.depth * e1.dot(g)).epsilon(1e-12));
+        for (int a = 0; a < 3; ++a) {
+            CHECK(std::abs(m.e1[i][static_cast<std::size_t>(a)] - b.e1[a]) < 1e-11);
+            CHECK(std::abs(m.m1[i][static_cast<std::size_t>(a)] - b.m1[a]) < 1e-11);
+        }
+        const auto& E = m.E[i];
+        const double stored[6] = {b.E(0, 0), b.E(1, 1), b.E(2, 2), b.E(0, 1), b.E(0, 2), b.E(1, 2)};
+        for (int c = 0; c < 6; ++c) CHECK(std::abs(E[static_cast<std::size_t>(c)] - stored[c]) < 1e-11);
+        larger += b.neighbours > 10;
+    }
+    CHECK(larger > 0); // the sets are dense enough for the sums to mean something
+}
+
+} // namespace
+
+TEST_CASE("every measure equals a brute-force sum: 2D and 3D, periodic and free, variable h, volumes and masses")
+{
+    const auto cubic = shipped_kernel("cubic_bspline");
+    const auto wendland = shipped_kernel("wendland_c2");
+    for (int dim : {2, 3})
+        for (bool periodic : {true, false}) {
+            CAPTURE(dim);
+            CAPTURE(periodic);
+            const auto set = random_set(dim, dim == 3 ? 2500 : 1500, periodic, 11 + dim);
+            const double h0 = dim == 3 ? 0.09 : 0.06;
+            check_against_brute_force(cubic, set, varied_inputs(set, h0, 5));
+            check_against_brute_force(wendland, set, varied_inputs(set, h0, 6));
+        }
+}
+
+TEST_CASE("on an unperturbed periodic lattice block every particle has the lattice's eps_rho and eps_gradP")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    for (const std::string name : {"triangular", "square", "fcc", "bcc", "hcp", "sc", "honeycomb"}) {
+        CAPTURE(name);
+        const auto lattice = name == "honeycomb" ? load_lattice(SPHKERN_SOURCE_DIR "/tests/data/lattices/honeycomb.json")
+                                                 : load_lattice(name);
+        const double k = 1.13;
+        LatticeBlockSpec spec;
+        spec.cells = lattice.dimension == 2 ? std::array<long long, 3>{12, 12, 1} : std::array<long long, 3>{7, 7, 7};
+        const auto set = lattice_particles(lattice, spec, plenty);
+        ParticleRequest request;
+        request.smoothing = {SmoothingRule::k, k, 0};
+        const auto answer = analyse_particles(kernel, set, request);
+        const double a_p = lattice.volume_coefficient("voronoi");
+        CHECK(answer.mean_volume == doctest::Approx(a_p).epsilon(1e-13));
+        const auto sites = errors_per_site(kernel, lattice, every_site(lattice), a_p, lattice.gravity, k);
+        const auto& m = *answer.measures;
+        double worst_rho = 0, worst_gradp = 0, worst_e1 = 0;
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            const auto& site = *sites[i % static_cast<std::size_t>(lattice.sites())];
+            const auto values = site.at(k);
+            worst_rho = std::max(worst_rho, std::abs(m.e0[i] - values.eps_rho));
+            worst_gradp = std::max(worst_gradp, std::abs(m.eps_gradp[i] - values.eps_gradp));
+            // e1 = h sum V grad_i W = -k m1 of the lattice code (its first moment, times d^(D+1)).
+            const Eigen::Vector3d first = site.tensor(k).first_moment;
+            for (int a = 0; a < 3; ++a)
+                worst_e1 = std::max(worst_e1, std::abs(m.e1[i][static_cast<std::size_t>(a)] + k * first[a]));
+            REQUIRE(m.neighbours[i] == values.neighbours);
+        }
+        CHECK(worst_rho < 1e-12);
+        CHECK(worst_gradp < 1e-12);
+        CHECK(worst_e1 < 1e-12);
+    }
+}
+
+TEST_CASE("Voronoi volumes: a lattice's cell is a_p d^D to 1e-12; a random set's cells fill its box")
+{
+    for (const std::string name : {"triangular", "fcc", "hcp", "bcc", "hex_prism"}) {
+        CAPTURE(name);
+        const auto lattice = load_lattice(name);
+        LatticeBlockSpec spec;
+        spec.cells = lattice.dimension == 2 ? std::array<long long, 3>{6, 5, 1} : std::array<long long, 3>{4, 3, 5};
+        const auto set = lattice_particles(lattice, spec, plenty);
+        const double a_p = lattice.volume_coefficient("voronoi");
+        for (double v : voronoi_volumes(set)) REQUIRE(std::abs(v - a_p) < 1e-12 * a_p);
+    }
+    for (int dim : {2, 3}) {
+        const auto set = random_set(dim, 3000, true, 3);
+        const auto v = voronoi_volumes(set);
+        const double total = std::accumulate(v.begin(), v.end(), 0.0);
+        CHECK(total == doctest::Approx(set.box->volume(dim)).epsilon(1e-10));
+    }
+}
+
+namespace {
+
+// The integral of W^2 over D-space at h = 1, by composite Simpson over q (independent of
+// the statistics code).
+double integral_of_w_squared(const Kernel& kernel, int dim)
+{
+    const int n = 20000;
+    const double R = kernel.support(), step = R / n;
+    double sum = 0;
+    for (int i = 0; i <= n; ++i) {
+        const double q = i * step, w = kernel.w(q, dim, 1.0);
+        const double f = w * w * (dim == 3 ? 4 * std::numbers::pi * q * q : 2 * std::numbers::pi * q);
+        sum += f * (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2));
+    }
+    return sum * step / 3;
+}
+
+} // namespace
+
+TEST_CASE("Poisson sets: the mean of e0 is V W(0) - 1/N and its variance V int W^2 - 1/N (exact limits)")
+{
+    const auto kernel = shipped_kernel("wendland_c2");
+    for (int dim : {2, 3}) {
+        CAPTURE(dim);
+        // Sixteen independent sets: the spread of their means is the standard error.
+        const std::size_t n = 5000;
+        std::vector<double> means, variances;
+        double expected_mean = 0, expected_variance = 0;
+        for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+            PoissonSpec spec;
+            spec.dimension = dim, spec.count = n, spec.seed = seed;
+            const auto set = poisson_particles(spec, plenty);
+            ParticleRequest request;
+            request.smoothing = {SmoothingRule::nh, 60, 0};
+            const auto answer = analyse_particles(kernel, set, request);
+            const auto& s = answer.points[0].statistics[0];
+            REQUIRE(s.first == "e0");
+            means.push_back(s.second.mean);
+            variances.push_back(s.second.std * s.second.std);
+            const double h = answer.h[0], V = answer.mean_volume, N = static_cast<double>(n);
+            expected_mean = V * kernel.w(0, dim, 1.0) / std::pow(h, dim) - 1 / N;
+            expected_variance = V * integral_of_w_squared(kernel, dim) / std::pow(h, dim) - 1 / N;
+        }
+        auto mean_and_error = [](const std::vector<double>& v) {
+            const double m = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+            double s = 0;
+            for (double x : v) s += (x - m) * (x - m);
+            return std::pair{m, std::sqrt(s / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()))};
+        };
+        const auto [mean, mean_error] = mean_and_error(means);
+        const auto [variance, variance_error] = mean_and_error(variances);
+        MESSAGE("D = ", dim, ": mean e0 ", mean, " +- ", mean_error, " (exact ", expected_mean, "), variance ", variance,
+                " +- ", variance_error, " (exact ", expected_variance, ")");
+        // Seven standard errors (Student's t with 15 degrees of freedom: p < 1e-5); the seeds
+        // are fixed and Boost's generator portable, so the outcome is the same on every machine.
+        CHECK(std::abs(mean - expected_mean) < 7 * mean_error);
+        CHECK(std::abs(variance - expected_variance) < 7 * variance_error);
+        CHECK(mean_error < 0.05 * expected_mean); // the test can tell a wrong limit
+    }
+}
+
+TEST_CASE("a perturbed lattice is the same for a seed; results do not depend on the thread count")
+{
+    const auto lattice = load_lattice("fcc");
+    LatticeBlockSpec spec;
+    spec.cells = {8, 8, 8};
+    spec.sigma = 0.05;
+    spec.seed = 7;
+    const auto a = lattice_particles(lattice, spec, plenty), b = lattice_particles(lattice, spec, plenty);
+    CHECK(a.x == b.x);
+    CHECK(a.z == b.z);
+    spec.seed = 8;
+    CHECK(lattice_particles(lattice, spec, plenty).x != a.x);
+    const auto kernel = shipped_kernel("morris_quintic");
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::k, 1.0, 0};
+    request.threads = 1;
+    const auto one = analyse_particles(kernel, a, request);
+    request.threads = 3;
+    const auto three = analyse_particles(kernel, a, request);
+    CHECK(one.measures->e0 == three.measures->e0);
+    CHECK(one.measures->eps_gradp == three.measures->eps_gradp);
+    // The disorder shows: the spread of e0 is far above rounding.
+    CHECK(one.points[0].statistics[0].second.std > 1e-4);
+}
+
+TEST_CASE("the neighbour number gives h: a Poisson set's mean neighbour count is N_H (N - 1)/N")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    PoissonSpec spec;
+    spec.dimension = 3, spec.count = 30000, spec.seed = 2;
+    const auto set = poisson_particles(spec, plenty);
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::nh, 57, 0};
+    const auto answer = analyse_particles(kernel, set, request);
+    CHECK(answer.points[0].nh == doctest::Approx(57).epsilon(1e-12));
+    // Each count is Poisson-distributed (variance 57): the mean of 30000 is within 0.5 of 57 at 10 sigma.
+    CHECK(std::abs(answer.points[0].mean_neighbours - 57) < 0.5);
+    CHECK(eta_for_neighbour_number(neighbour_number(1.3, 2, 2), 2, 2) == doctest::Approx(1.3).epsilon(1e-14));
+}
+
+TEST_CASE("files: CSV and VTK round trips, DualSPHysics-style CSV, and one-line refusals")
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("sphkern-particles-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto kernel = shipped_kernel("wendland_c2");
+    const auto set = random_set(3, 800, true, 4);
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::eta, 1.3, 0};
+    const auto answer = analyse_particles(kernel, set, request);
+    {
+        std::ofstream csv(dir / "out.csv"), vtk(dir / "out.vtk");
+        write_particle_csv(csv, set, answer);
+        write_particle_vtk(vtk, set, answer);
+    }
+    for (const char* file : {"out.csv", "out.vtk"}) {
+        CAPTURE(file);
+        const auto back = read_particle_file(dir / file, {});
+        REQUIRE(back.size() == set.size());
+        CHECK(back.dimension == 3);
+        CHECK(back.x == set.x);
+        CHECK(back.y == set.y);
+        CHECK(back.z == set.z);
+        CHECK(back.h == answer.h);
+    }
+    {
+        std::ofstream dual(dir / "dual.csv");
+        dual << "# a comment line\nPos.x [m];Pos.y [m];Pos.z [m];Idp;Rhop [kg/m^3];\n"
+             << "0.5;0.25;1.0;0;1000.5;\n1.5;0.25;1.0;1;999.0;\n2.5;0.25;3.0;2;998.0;\n";
+    }
+    ParticleFileOptions two;
+    two.dimension = 2;
+    const auto dual = read_particle_file(dir / "dual.csv", two);
+    CHECK(dual.dimension == 2);
+    CHECK(dual.x == std::vector<double>{0.5, 1.5, 2.5});
+    CHECK(dual.y == std::vector<double>{1.0, 1.0, 3.0}); // the x-z plane
+    CHECK(dual.density == std::vector<double>{1000.5, 999.0, 998.0});
+
+    auto refused = [&](const std::string& name, const std::string& text, const std::string& expected) {
+        CAPTURE(name);
+        {
+            std::ofstream f(dir / name);
+            f << text;
+        }
+        try {
+            auto s = read_particle_file(dir / name, {});
+            validate_particle_set(s);
+            FAIL("accepted");
+        } catch (const Error& e) {
+            CHECK(e.code() == ExitCode::input);
+            CHECK(std::string(e.what()).find(expected) != std::string::npos);
+            CHECK(std::string(e.what()).find('\n') == std::string::npos);
+        }
+    };
+    refused("nox.csv", "a,y,z\n1,2,3\n", "no column x");
+    refused("word.csv", "x,y\n1,2\n3,abc\n", "line 3, column y (particle 1): \"abc\" is not a number");
+    refused("short.csv", "x,y,h\n1,2,3\n4,5\n", "line 3 (particle 1): 2 fields, expected 3");
+    refused("nan.csv", "x,y\n1,2\nnan,5\n", "particle 1 has a non-finite coordinate");
+    refused("h.csv", "x,y,h\n1,2,0.1\n4,5,-1\n", "the smoothing length of particle 1 is -1");
+    refused("empty.csv", "", "empty.csv: no header line");
+    refused("cut.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 double\n1 2 3 4 5 6\n",
+            "unexpected end of file");
+    refused("grid.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n", "expected POLYDATA or UNSTRUCTURED_GRID");
+    refused("junk.h5", "not hdf5 at all", "not an HDF5 file");
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("two particles at one position, and a box smaller than the support, are refused by name")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    auto set = random_set(2, 200, true, 9);
+    set.x[17] = set.x[3], set.y[17] = set.y[3];
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::eta, 1.2, 0};
+    try {
+        analyse_particles(kernel, set, request);
+        FAIL("accepted");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("particles 3 and 17 are at the same position") != std::string::npos);
+    }
+    const auto small = random_set(2, 50, true, 9);
+    request.smoothing = {SmoothingRule::eta, 2.0, 0};
+    CHECK_THROWS_WITH_AS(analyse_particles(kernel, small, request),
+                         doctest::Contains("less than twice the support radius"), Error);
+}
