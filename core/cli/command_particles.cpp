@@ -10,7 +10,9 @@
 #include "support/results_output.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace sphkern::cli {
 
@@ -20,7 +22,8 @@ struct ParticlesOptions : CommonOptions {
     std::string kernel, source, size, box, gravity, volume, array, csv, vtk;
     std::vector<std::string> sets;
     std::vector<double> eta_range, nh_range;
-    double sigma = 0, eta = 0, nh = 0, k = 0, support_per_h = 0, depth = 1, rho0 = 0, memory_limit = 0;
+    double sigma = 0, depth = 1, memory_limit = 0;
+    std::optional<double> eta, nh, k, support_per_h, rho0;
     unsigned long long seed = 1, count = 0;
     int dim = 0, steps = 10, threads = 0;
     std::size_t histogram = 0;
@@ -82,15 +85,16 @@ ParticleSource source_of(const ParticlesOptions& o)
 ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
 {
     ParticleRequest request;
-    const int rules = (o.eta != 0) + (o.nh != 0) + (o.k != 0) + !o.eta_range.empty() + !o.nh_range.empty();
+    const int rules = o.eta.has_value() + o.nh.has_value() + o.k.has_value() + !o.eta_range.empty() + !o.nh_range.empty();
     if (rules > 1) throw Error(ExitCode::usage, "give one of --eta, --nh, --k, --eta-range and --nh-range");
-    if (o.eta != 0) request.smoothing = {SmoothingRule::eta, o.eta, 0};
-    else if (o.nh != 0) request.smoothing = {SmoothingRule::nh, o.nh, 0};
-    else if (o.k != 0) request.smoothing = {SmoothingRule::k, o.k, 0};
-    else if (!set.h.empty()) request.smoothing = {SmoothingRule::file, 0, o.support_per_h};
+    if (o.eta) request.smoothing = {SmoothingRule::eta, *o.eta, 0};
+    else if (o.nh) request.smoothing = {SmoothingRule::nh, *o.nh, 0};
+    else if (o.k) request.smoothing = {SmoothingRule::k, *o.k, 0};
+    else if (!set.h.empty() && o.eta_range.empty() && o.nh_range.empty())
+        request.smoothing = {SmoothingRule::file, 0, o.support_per_h.value_or(0)};
     else request.smoothing = {SmoothingRule::eta, 1.2, 0}; // the documented default
-    if (o.support_per_h != 0 && (request.smoothing.rule != SmoothingRule::file))
-        throw Error(ExitCode::usage, "--support-per-h maps a file's h; it does not go with --eta, --nh or --k");
+    if (o.support_per_h && (request.smoothing.rule != SmoothingRule::file || *o.support_per_h <= 0))
+        throw Error(ExitCode::usage, "--support-per-h maps a file's h (a positive number); it does not go with --eta, --nh or --k");
     if (!o.eta_range.empty() || !o.nh_range.empty()) {
         const bool eta = !o.eta_range.empty();
         const auto& range = eta ? o.eta_range : o.nh_range;
@@ -101,7 +105,7 @@ ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
     if (!o.volume.empty()) request.volume = parse_volume_model(o.volume);
     if (!o.gravity.empty()) request.gravity = parse_direction(o.gravity, set.dimension, "--gravity");
     request.depth = o.depth;
-    if (o.rho0 != 0) request.rho0 = o.rho0;
+    request.rho0 = o.rho0;
     request.threads = o.threads;
     request.histogram_bins = o.histogram;
     return request;
@@ -141,6 +145,20 @@ void add_options(CLI::App& c, ParticlesOptions& o)
     add_json_option(c, o);
 }
 
+// An output never replaces the particle file just read, nor the other output.
+void refuse_output_over_input(const ParticlesOptions& o)
+{
+    auto same = [](const std::string& a, const std::string& b) {
+        std::error_code ec;
+        return a == b || std::filesystem::equivalent(a, b, ec);
+    };
+    for (const auto* out : {&o.csv, &o.vtk})
+        if (!out->empty() && same(*out, o.source))
+            throw Error(ExitCode::output, *out + ": is the particle file being read; choose another output file");
+    if (!o.csv.empty() && same(o.csv, o.vtk))
+        throw Error(ExitCode::output, "--csv and --vtk name the same file " + o.csv + "; give two files");
+}
+
 } // namespace
 
 Action add_particles_command(CLI::App& app)
@@ -153,6 +171,7 @@ Action add_particles_command(CLI::App& app)
         set_memory_limit_gib(o.memory_limit);
         if ((command->count("--csv") && o.csv.empty()) || (command->count("--vtk") && o.vtk.empty()))
             throw Error(ExitCode::usage, "--csv and --vtk need a file name");
+        refuse_output_over_input(o);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const ParticleSet set = load_particles(source_of(o));

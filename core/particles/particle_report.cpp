@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 namespace sphkern {
 
 namespace {
@@ -32,6 +34,24 @@ nlohmann::json point_json(const ParticlePoint& p)
 nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
 {
     return dim == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
+}
+
+const Summary& statistic(const ParticlePoint& p, const char* name)
+{
+    for (const auto& [key, s] : p.statistics)
+        if (key == name) return s;
+    throw std::logic_error(std::string("no statistic ") + name);
+}
+
+// A sweep as the curves of the literature: one row per eta (N_H), the RMS of each error.
+void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
+{
+    fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "eta", "N_H", "neighbours",
+               "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
+    for (const auto& p : answer.points)
+        fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
+                   p.nh, p.mean_neighbours, statistic(p, "e0").mean, statistic(p, "e0").rms, statistic(p, "eps_gradp").rms,
+                   statistic(p, "eps_gradp_sum").rms, statistic(p, "|e1|").rms, statistic(p, "||E||_F").rms);
 }
 
 } // namespace
@@ -66,6 +86,10 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
                kernel.label(), set.name, set.size(), set.dimension, set.box ? "periodic box" : "free (no box)",
                volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
                set.dimension == 3 ? fmt::format(", {:.4g}", answer.gravity.z()) : "");
+    if (answer.points.size() > 1) {
+        print_sweep_table(out, answer);
+        return;
+    }
     for (const auto& p : answer.points) {
         fmt::print(out, "\neta = {:.6g} (h / mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
                         "average, {} pairs in {:.3f} s\n",

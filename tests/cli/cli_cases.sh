@@ -525,5 +525,48 @@ check "check --json: an array, with the spectrum" python3 -c "import json; d = j
 "$sphkern" check --plugin "$broken/wrong_derivative.so" >"$work/wrong.txt" || true
 check "check names the likely cause of a wrong derivative" grep -q 'hint (1D derivative)' "$work/wrong.txt"
 
+# Particle sets.
+expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
+expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
+expect 2 'expected positive whole numbers of cells' -- particles cubic_bspline fcc --size 8,0.5,8
+expect 3 'less than twice the support radius' -- particles cubic_bspline fcc --size 3,3,3 --k 1.2
+expect 3 '--sigma -1: expected a number in \[0, 10\]' -- particles cubic_bspline fcc --size 8,8,8 --sigma -1
+expect 2 '--sigma disturbs a lattice' -- particles cubic_bspline poisson --count 100 --sigma 0.1
+expect 2 'a poisson set needs --count N' -- particles cubic_bspline poisson
+expect 3 '--count 1: expected 2 to' -- particles cubic_bspline poisson --count 1
+expect 3 'the memory limit, --memory-limit' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
+expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
+expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
+expect 3 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0
+expect 3 '--nh 0.5: expected a neighbour number' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
+expect 2 'give one of --eta, --nh, --k' -- particles cubic_bspline fcc --size 8,8,8 --eta 1.2 --nh 50
+expect 2 '--volume cells: expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
+expect 3 'sweep range 2 1: expected 0 < A < B' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
+expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2 --csv "$work/p.csv"
+expect 2 '--csv and --vtk need a file name' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
+expect 3 '--gravity' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
+expect 3 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
+printf 'x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n' >"$work/free.csv"
+expect 3 'free.csv: uniform volumes need a box' -- particles cubic_bspline "$work/free.csv"
+expect 3 'free.csv: Voronoi volumes need a periodic box' -- particles cubic_bspline "$work/free.csv" --volume voronoi
+expect 3 'free.csv: --volume file needs masses and densities' -- particles cubic_bspline "$work/free.csv" --volume file
+printf 'x,y,h\n0.1,0.2,0.1\n0.5,0.7,0.1\n' >"$work/withh.csv"
+expect 3 'the file.s smoothing lengths need a convention: --support-per-h X' -- particles cubic_bspline "$work/withh.csv" --box 1,1
+expect 2 '--support-per-h maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
+expect 5 'is the particle file being read' -- particles cubic_bspline "$work/withh.csv" --box 1,1 --support-per-h 2 --csv "$work/withh.csv"
+check "particles: the input survives an output aimed at it" grep -q '0.5,0.7,0.1' "$work/withh.csv"
+expect 5 '--csv and --vtk name the same file' -- particles cubic_bspline fcc --size 8,8,8 --csv "$work/same" --vtk "$work/same"
+expect 3 'not a particle file; expected' -- particles cubic_bspline "$work/free.xyz"
+printf 'garbage' >"$work/fake.h5"
+expect 3 'fake.h5: not an HDF5 file' -- particles cubic_bspline "$work/fake.h5"
+printf 'x,y,z\n0.1,0.2,0.3\n0.5,0.7,0.4\n' >"$work/xyz.csv"
+expect 3 '--dim 2, but no coordinate is the same for every particle' -- particles cubic_bspline "$work/xyz.csv" --dim 2 --box 1,1
+expect 0 '^$' -- particles cubic_bspline fcc --size 8,8,8 --k 1.2 --csv "$work/p.csv" --vtk "$work/p.vtk"
+check "particles --csv: the documented columns, one row per particle" python3 -c "
+lines = open('$work/p.csv').read().splitlines()
+assert lines[0] == 'id,x,y,z,h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,e1_z,m1_x,m1_y,m1_z', lines[0]
+assert len(lines) == 1 + 8 * 8 * 8"
+check "particles --vtk: point data for every particle" grep -q '^POINT_DATA 512$' "$work/p.vtk"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

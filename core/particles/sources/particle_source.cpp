@@ -12,7 +12,9 @@ SourceKind source_kind(const std::string& spec)
 {
     if (spec == "poisson") return SourceKind::poisson;
     if (particle_file_format(spec)) return SourceKind::file;
-    return SourceKind::lattice;
+    // Lattice files are JSON; any other path is a particle file (refused by name if it is none).
+    const bool path = spec.find('/') != std::string::npos;
+    return path && !spec.ends_with(".json") ? SourceKind::file : SourceKind::lattice;
 }
 
 ParticleSet load_particles(const ParticleSource& source)
