@@ -72,15 +72,14 @@ void NeighbourGrid::sort_into_bins(double reach)
         n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, std::max(1.0, std::cbrt(static_cast<double>(count)) * 4)));
     }
     const std::size_t total_bins = n_[0] * n_[1] * n_[2];
-    std::vector<std::uint32_t> bx(count), by(count), bz(count);
     std::vector<std::uint64_t> bin(count), fill(total_bins + 1, 0);
     for (std::size_t p = 0; p < count; ++p) {
-        std::uint32_t* out[3] = {&bx[p], &by[p], &bz[p]};
+        std::uint64_t cell[3];
         for (int a = 0; a < 3; ++a) {
             const double t = extent[a] > 0 ? (coordinates[a][p] - lo[a]) / extent[a] * static_cast<double>(n_[a]) : 0.0;
-            *out[a] = static_cast<std::uint32_t>(std::min(static_cast<double>(n_[a] - 1), std::max(0.0, std::floor(t))));
+            cell[a] = static_cast<std::uint64_t>(std::min(static_cast<double>(n_[a] - 1), std::max(0.0, std::floor(t))));
         }
-        bin[p] = (static_cast<std::uint64_t>(bz[p]) * n_[1] + by[p]) * n_[0] + bx[p];
+        bin[p] = (cell[2] * n_[1] + cell[1]) * n_[0] + cell[0];
         ++fill[bin[p] + 1];
     }
     for (std::size_t b = 0; b < total_bins; ++b) fill[b + 1] += fill[b];
@@ -93,12 +92,9 @@ void NeighbourGrid::sort_into_bins(double reach)
         for (std::size_t p = 0; p < count; ++p) sorted[where[p]] = values[p];
         values.swap(sorted);
     };
-    permute(x_), permute(y_), permute(z_), permute(source_), permute(bx), permute(by), permute(bz);
-    bin_x_.swap(bx), bin_y_.swap(by), bin_z_.swap(bz);
-    sorted_particles_.resize(particles_);
-    for (std::size_t p = 0; p < particles_; ++p) sorted_particles_[p] = static_cast<std::uint32_t>(where[p]);
-    // In sweep order: by position in the sorted arrays.
-    std::sort(sorted_particles_.begin(), sorted_particles_.end());
+    ghost_.assign(count, 1);
+    std::fill(ghost_.begin(), ghost_.begin() + static_cast<std::ptrdiff_t>(particles_), 0);
+    permute(x_), permute(y_), permute(z_), permute(source_), permute(ghost_);
 }
 
 std::vector<double> NeighbourGrid::gather(const std::vector<double>& per_particle) const

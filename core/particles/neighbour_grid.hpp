@@ -1,7 +1,7 @@
 // Neighbour search for any particle set: a cell list over the particles and, in a periodic
 // box, their images within reach of a face ("ghosts"), all sorted in cell order so that the
-// candidates of a particle are a few contiguous runs of memory (9 in 3D, 3 in 2D). Sums over
-// a particle's runs are taken in a fixed order, whatever thread asks.
+// candidates of a bin's particles are a few contiguous runs of memory (9 in 3D, 3 in 2D).
+// Sums over a bin's runs are taken in a fixed order, whatever thread asks.
 #pragma once
 
 #include "particles/particle_set.hpp"
@@ -19,8 +19,6 @@ public:
 
     std::size_t points() const { return x_.size(); }  // particles and ghosts
     std::size_t particles() const { return particles_; }
-    // The sorted position of each particle, in cell order (the order to sweep in).
-    const std::vector<std::uint32_t>& sorted_particles() const { return sorted_particles_; }
     // The particle a point (particle or ghost) stands for.
     std::uint32_t source(std::size_t point) const { return source_[point]; }
     const double* x() const { return x_.data(); }
@@ -29,11 +27,16 @@ public:
     // A per-particle quantity in point order (ghosts carry their particle's value).
     std::vector<double> gather(const std::vector<double>& per_particle) const;
 
-    // visit(begin, end) for each run of points that may lie within reach of point p.
+    // Bins in sweep order; the points of bin b are [bin_begin(b), bin_begin(b + 1)).
+    std::size_t bins() const { return start_.size() - 1; }
+    std::size_t bin_begin(std::size_t b) const { return static_cast<std::size_t>(start_[b]); }
+    bool is_ghost(std::size_t point) const { return ghost_[point] != 0; }
+
+    // visit(begin, end) for each run of points that may lie within reach of a point of bin b.
     template <class Visit>
-    void for_each_run(std::size_t p, Visit&& visit) const
+    void for_each_run_of_bin(std::size_t b, Visit&& visit) const
     {
-        const std::size_t bx = bin_x_[p], by = bin_y_[p], bz = bin_z_[p];
+        const std::size_t bx = b % n_[0], by = b / n_[0] % n_[1], bz = b / (n_[0] * n_[1]);
         const std::size_t x0 = bx > 0 ? bx - 1 : 0, x1 = std::min(bx + 1, n_[0] - 1);
         const std::size_t z0 = bz > 0 ? bz - 1 : 0, z1 = std::min(bz + 1, n_[2] - 1);
         const std::size_t y0 = by > 0 ? by - 1 : 0, y1 = std::min(by + 1, n_[1] - 1);
@@ -50,8 +53,8 @@ private:
 
     std::size_t particles_ = 0;
     std::vector<double> x_, y_, z_;
-    std::vector<std::uint32_t> source_, sorted_particles_;
-    std::vector<std::uint32_t> bin_x_, bin_y_, bin_z_;
+    std::vector<std::uint32_t> source_;
+    std::vector<std::uint8_t> ghost_;
     std::vector<std::uint64_t> start_; // first point of each bin, and one past the last
     std::size_t n_[3] = {1, 1, 1};
 };

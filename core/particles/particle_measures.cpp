@@ -5,6 +5,8 @@
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
 
+#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -27,16 +29,50 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The neighbours of one particle, gathered from its runs: displacement, distance, V_j, m_j.
-struct Neighbours {
-    std::vector<double> dx, dy, dz, r, q, volume, mass, w, dw;
+// The points that may neighbour the particles of one bin, copied into contiguous arrays.
+struct Candidates {
+    std::vector<double> x, y, z, volume, mass;
+    std::vector<std::uint32_t> point;
     std::size_t count = 0;
+};
+
+// One particle's neighbours: displacement, distance, q, V_j, m_j, W and W'.
+struct Neighbours {
+    std::vector<double> r2, dx, dy, dz, r, q, volume, mass, w, dw;
+    std::vector<std::uint32_t> index;
     void reserve(std::size_t n)
     {
-        if (dx.size() >= n) return;
-        for (auto* v : {&dx, &dy, &dz, &r, &q, &volume, &mass, &w, &dw}) v->resize(std::max<std::size_t>(n, 2 * dx.size()));
+        if (r2.size() >= n) return;
+        for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &volume, &mass, &w, &dw}) v->resize(n);
+        index.resize(n);
     }
 };
+
+// r2[c] for every candidate: no branch, so that it vectorises.
+SPHKERN_VECTOR_CLONES void squared_distances(const double* __restrict x, const double* __restrict y,
+                                             const double* __restrict z, std::size_t n, double xi, double yi, double zi,
+                                             double* __restrict r2)
+{
+    for (std::size_t c = 0; c < n; ++c) {
+        const double dx = x[c] - xi, dy = y[c] - yi, dz = z[c] - zi;
+        r2[c] = dx * dx + dy * dy + dz * dz;
+    }
+}
+
+// The candidates inside the support (the particle itself, at r = 0, left out), and the
+// number of candidates at r = 0 (1 unless two particles share a position).
+std::size_t inside_support(const double* __restrict r2, std::size_t n, double reach2, std::uint32_t* __restrict index,
+                           std::size_t& at_zero)
+{
+    std::size_t m = 0, zero = 0;
+    for (std::size_t c = 0; c < n; ++c) {
+        index[m] = static_cast<std::uint32_t>(c);
+        m += r2[c] <= reach2 && r2[c] > 0;
+        zero += r2[c] == 0;
+    }
+    at_zero = zero;
+    return m;
+}
 
 struct Sweep {
     const Kernel& kernel;
@@ -44,37 +80,52 @@ struct Sweep {
     const MeasureInputs& in;
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order
-    double self_w;                    // w(0) at each particle's own k: recomputed when k varies
 
-    void gather(std::size_t p, double reach2, Neighbours& nb) const
+    void gather_candidates(std::size_t bin, Candidates& c) const
     {
-        nb.count = 0;
-        const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
-        grid.for_each_run(p, [&](std::size_t begin, std::size_t end) {
-            nb.reserve(nb.count + (end - begin));
-            for (std::size_t s = begin; s < end; ++s) {
-                const double dx = grid.x()[s] - xi, dy = grid.y()[s] - yi, dz = grid.z()[s] - zi;
-                const double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 > reach2 || s == p) continue;
-                if (r2 == 0)
-                    fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set.name,
-                                           std::min(grid.source(p), grid.source(s)), std::max(grid.source(p), grid.source(s)),
-                                           xi, yi, zi));
-                const std::size_t n = nb.count++;
-                nb.dx[n] = dx, nb.dy[n] = dy, nb.dz[n] = dz, nb.r[n] = std::sqrt(r2);
-                nb.volume[n] = volume[s], nb.mass[n] = mass[s];
+        c.count = 0;
+        grid.for_each_run_of_bin(bin, [&](std::size_t begin, std::size_t end) {
+            const std::size_t n = c.count + (end - begin);
+            if (c.x.size() < n)
+                for (auto* v : {&c.x, &c.y, &c.z, &c.volume, &c.mass}) v->resize(2 * n);
+            if (c.point.size() < n) c.point.resize(2 * n);
+            for (std::size_t s = begin; s < end; ++s, ++c.count) {
+                c.x[c.count] = grid.x()[s], c.y[c.count] = grid.y()[s], c.z[c.count] = grid.z()[s];
+                c.volume[c.count] = volume[s], c.mass[c.count] = mass[s];
+                c.point[c.count] = static_cast<std::uint32_t>(s);
             }
         });
     }
 
-    void measure(std::size_t p, Neighbours& nb, ParticleMeasures& out) const
+    [[noreturn]] void fail_duplicate(std::size_t p, const Candidates& c, const Neighbours& nb) const
+    {
+        for (std::size_t k = 0; k < c.count; ++k)
+            if (nb.r2[k] == 0 && c.point[k] != p) {
+                const auto a = grid.source(p), b = grid.source(c.point[k]);
+                fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set.name,
+                                       std::min(a, b), std::max(a, b), grid.x()[p], grid.y()[p], grid.z()[p]));
+            }
+        fail_input(set.name + ": two particles are at the same position");
+    }
+
+    void measure(std::size_t p, const Candidates& c, Neighbours& nb, ParticleMeasures& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h;
-        gather(p, reach * reach * (1 + 2 * support_edge), nb);
-        const std::size_t n = nb.count;
-        for (std::size_t j = 0; j < n; ++j) nb.q[j] = nb.r[j] / h;
+        const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h, inv_h = 1 / h;
+        const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
+        nb.reserve(c.count);
+        squared_distances(c.x.data(), c.y.data(), c.z.data(), c.count, xi, yi, zi, nb.r2.data());
+        std::size_t at_zero = 0;
+        const std::size_t n = inside_support(nb.r2.data(), c.count, reach * reach * (1 + 2 * support_edge), nb.index.data(), at_zero);
+        if (at_zero != 1) fail_duplicate(p, c, nb);
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::uint32_t t = nb.index[j];
+            nb.dx[j] = c.x[t] - xi, nb.dy[j] = c.y[t] - yi, nb.dz[j] = c.z[t] - zi;
+            nb.r[j] = std::sqrt(nb.r2[t]);
+            nb.q[j] = nb.r[j] * inv_h;
+            nb.volume[j] = c.volume[t], nb.mass[j] = c.mass[t];
+        }
         kernel.w_batch(nb.q.data(), nb.w.data(), n, dim, k);
         kernel.dw_batch(nb.q.data(), nb.dw.data(), n, dim, k);
         const double w0 = kernel.w(0, dim, k);
@@ -91,6 +142,13 @@ struct Sweep {
             E[0] += g * d[0] * d[0], E[1] += g * d[1] * d[1], E[2] += g * d[2] * d[2];
             E[3] += g * d[0] * d[1], E[4] += g * d[0] * d[2], E[5] += g * d[1] * d[2];
         }
+        store(i, n, h, s0, sm, m1, e1, E, out);
+    }
+
+    void store(std::size_t i, std::size_t n, double h, double s0, double sm, const double* m1, const double* e1,
+               const double* E, ParticleMeasures& out) const
+    {
+        const int dim = set.dimension;
         const double hd = std::pow(h, dim), hd1 = hd * h;
         out.e0[i] = s0 / hd - 1;
         out.eps_rho[i] = sm / hd / in.rho0 - 1;
@@ -137,7 +195,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     std::vector<double> mass = inputs.mass;
     if (mass.empty())
         for (double v : inputs.volume) mass.push_back(inputs.rho0 * v);
-    Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume), grid.gather(mass), 0};
+    const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume), grid.gather(mass)};
 
     ParticleMeasures out;
     const std::size_t n = set.size();
@@ -147,11 +205,19 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     out.grid_seconds = seconds_since(started);
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
-    const auto& order = grid.sorted_particles();
+    // Bin by bin: the candidates of a bin are gathered once for all its particles.
     ParallelFor pass;
-    pass.run(n, out.threads, [&](int, std::size_t begin, std::size_t end) {
+    pass.run(grid.bins(), out.threads, [&](int, std::size_t begin, std::size_t end) {
+        Candidates candidates;
         Neighbours nb;
-        for (std::size_t t = begin; t < end && pass.keep_going(); ++t) sweep.measure(order[t], nb, out);
+        for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
+            bool gathered = false;
+            for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p) {
+                if (grid.is_ghost(p)) continue;
+                if (!gathered) sweep.gather_candidates(b, candidates), gathered = true;
+                sweep.measure(p, candidates, nb, out);
+            }
+        }
     });
     out.seconds = seconds_since(t0);
     for (int count : out.neighbours) out.pairs += static_cast<std::size_t>(count);
