@@ -67,7 +67,12 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
     answer.volume = request.volume.value_or(default_volume_model(set));
-    answer.volumes = particle_volumes(set, answer.volume);
+    answer.volumes = request.given_volumes.empty() ? particle_volumes(set, answer.volume) : request.given_volumes;
+    if (answer.volumes.size() != set.size())
+        fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
+    for (std::size_t i = 0; i < answer.volumes.size(); ++i)
+        if (!std::isfinite(answer.volumes[i]) || answer.volumes[i] <= 0)
+            fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", i, answer.volumes[i]));
     const double n = static_cast<double>(set.size());
     answer.mean_volume = std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0) / n;
     answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);

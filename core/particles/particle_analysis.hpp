@@ -25,6 +25,7 @@ struct ParticleRequest {
     SmoothingSpec smoothing;
     std::optional<SmoothingSweep> sweep;
     std::optional<VolumeModel> volume;       // default: default_volume_model
+    std::vector<double> given_volumes;       // non-empty: these volumes, whatever `volume` says
     std::optional<Eigen::Vector3d> gravity;  // default: the set's
     double depth = 1;                        // of eps_gradp_sum, in units of h
     std::optional<double> rho0;              // of eps_rho where the set has masses

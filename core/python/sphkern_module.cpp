@@ -11,6 +11,7 @@
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
+#include "particles_binding.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
@@ -205,6 +206,7 @@ PYBIND11_MODULE(sphkern, m)
         }
     });
 
+    bind_particles(m, &kernel_of, &to_python);
     m.def("kernels", [] {
         std::lock_guard lock(registry_mutex);
         nlohmann::json list = nlohmann::json::array();

@@ -1,0 +1,166 @@
+// sphkern.particles: the particle-set measures on numpy arrays. Positions are copied once
+// (into the engine's own layout); the per-particle results come back as numpy arrays.
+#include "particles_binding.hpp"
+
+#include "particles/particle_report.hpp"
+#include "particles/particle_set.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+
+namespace py = pybind11;
+
+namespace sphkern {
+
+namespace {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<double> per_particle(const py::object& value, std::size_t n, const char* what)
+{
+    DoubleArray a;
+    try {
+        a = value.cast<DoubleArray>();
+    } catch (const py::cast_error&) {
+        fail_input(fmt::format("{}: expected a number or an array of {} numbers", what, n));
+    }
+    if (a.ndim() == 0 || (a.ndim() == 1 && a.size() == 1)) return std::vector<double>(n, *a.data());
+    if (a.ndim() != 1 || static_cast<std::size_t>(a.size()) != n)
+        fail_input(fmt::format("{}: expected a number or an array of {} numbers", what, n));
+    return std::vector<double>(a.data(), a.data() + n);
+}
+
+ParticleSet set_of(const py::object& positions, const py::object& box)
+{
+    DoubleArray p;
+    try {
+        p = positions.cast<DoubleArray>();
+    } catch (const py::cast_error&) {
+        fail_input("positions: expected an array of shape (N, 2) or (N, 3)");
+    }
+    if (p.ndim() != 2 || (p.shape(1) != 2 && p.shape(1) != 3))
+        fail_input("positions: expected an array of shape (N, 2) or (N, 3)");
+    ParticleSet set;
+    set.name = "positions";
+    set.dimension = static_cast<int>(p.shape(1));
+    const std::size_t n = static_cast<std::size_t>(p.shape(0)), dim = static_cast<std::size_t>(set.dimension);
+    set.x.resize(n), set.y.resize(n), set.z.assign(n, 0.0);
+    const double* data = p.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        set.x[i] = data[i * dim], set.y[i] = data[i * dim + 1];
+        if (dim == 3) set.z[i] = data[i * dim + 2];
+    }
+    if (dim == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
+    if (!box.is_none()) {
+        const auto sides = per_particle(box, dim, "box");
+        PeriodicBox b;
+        for (std::size_t a = 0; a < dim; ++a) {
+            if (!std::isfinite(sides[a]) || sides[a] <= 0) fail_input("box: expected positive sides");
+            b.edges(static_cast<int>(a), static_cast<int>(a)) = sides[a];
+        }
+        set.box = b;
+    }
+    return set;
+}
+
+ParticleRequest request_of(ParticleSet& set, const Kernel& kernel, const py::object& h, const py::object& eta,
+                           const py::object& nh, const py::object& volume)
+{
+    ParticleRequest request;
+    const int rules = !h.is_none() + !eta.is_none() + !nh.is_none();
+    if (rules > 1) fail_input("give one of h, eta and nh");
+    if (!h.is_none()) {
+        set.h = per_particle(h, set.size(), "h");
+        request.smoothing = {SmoothingRule::file, 0, kernel.support()}; // sphkern's own h
+    } else if (!nh.is_none()) {
+        request.smoothing = {SmoothingRule::nh, nh.cast<double>(), 0};
+    } else {
+        request.smoothing = {SmoothingRule::eta, eta.is_none() ? 1.2 : eta.cast<double>(), 0};
+    }
+    if (py::isinstance<py::str>(volume)) {
+        const auto name = volume.cast<std::string>();
+        if (name != "uniform" && name != "voronoi") fail_input("volume: expected \"uniform\", \"voronoi\" or an array");
+        request.volume = parse_volume_model(name);
+    } else if (!volume.is_none()) {
+        request.given_volumes = per_particle(volume, set.size(), "volume");
+    }
+    return request;
+}
+
+py::array_t<double> column(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
+
+template <std::size_t N>
+py::array_t<double> rows(const std::vector<std::array<double, N>>& values, std::size_t width)
+{
+    py::array_t<double> out({values.size(), width});
+    auto view = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < values.size(); ++i)
+        for (std::size_t a = 0; a < width; ++a) view(i, a) = values[i][a];
+    return out;
+}
+
+py::array_t<double> tensors(const std::vector<std::array<double, 6>>& E, int dim)
+{
+    const std::size_t d = static_cast<std::size_t>(dim);
+    py::array_t<double> out({E.size(), d, d});
+    auto view = out.mutable_unchecked<3>();
+    const int index[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+    for (std::size_t i = 0; i < E.size(); ++i)
+        for (std::size_t a = 0; a < d; ++a)
+            for (std::size_t b = 0; b < d; ++b) view(i, a, b) = E[i][static_cast<std::size_t>(index[a][b])];
+    return out;
+}
+
+} // namespace
+
+void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
+{
+    m.def(
+        "particles",
+        [kernel_of, to_python](const std::string& kernel_spec, const py::object& positions, const py::object& box,
+                               const py::object& h, const py::object& eta, const py::object& nh,
+                               const py::object& volume, const py::object& gravity, double depth, int threads,
+                               const py::object& params) {
+            auto kernel = kernel_of(kernel_spec, params);
+            ParticleSet set = set_of(positions, box);
+            ParticleRequest request = request_of(set, kernel, h, eta, nh, volume);
+            if (!gravity.is_none()) {
+                const auto g = per_particle(gravity, static_cast<std::size_t>(set.dimension), "gravity");
+                request.gravity = Eigen::Vector3d(g[0], g[1], set.dimension == 3 ? g[2] : 0.0);
+            }
+            request.depth = depth;
+            request.threads = threads;
+            ParticleAnswer answer;
+            {
+                py::gil_scoped_release unlocked;
+                validate_particle_set(set);
+                answer = analyse_particles(kernel, set, request);
+            }
+            const auto& m = *answer.measures;
+            const std::size_t d = static_cast<std::size_t>(set.dimension);
+            py::dict out = to_python(particle_answer_json(kernel, set, answer));
+            out["h"] = column(answer.h);
+            out["volume"] = column(answer.volumes);
+            for (const auto& [name, values] :
+                 {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
+                out[name] = column(*values);
+            out["e1"] = rows(m.e1, d);
+            out["m1"] = rows(m.m1, d);
+            out["E"] = tensors(m.E, set.dimension);
+            out["neighbours"] = py::array_t<int>(m.neighbours.size(), m.neighbours.data());
+            return out;
+        },
+        py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
+        py::arg("eta") = py::none(), py::arg("nh") = py::none(), py::arg("volume") = py::none(),
+        py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0, py::arg("params") = py::none(),
+        "Consistency errors of a kernel on particles at `positions` (N x 2 or N x 3), as `sphkern particles --json` "
+        "prints them, plus per-particle numpy arrays e0, eps_rho, eps_gradp, eps_gradp_sum, e1, m1, E, neighbours, "
+        "h and volume. h: sphkern's h (support R h), a number or one per particle; or eta, or nh (default eta 1.2). "
+        "volume: \"uniform\" (needs box), \"voronoi\" (needs box) or an array.");
+}
+
+} // namespace sphkern
