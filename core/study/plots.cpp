@@ -1,6 +1,7 @@
 #include "study/plots.hpp"
 
 #include "study/gnuplot.hpp"
+#include "study/particles_outputs.hpp"
 
 #include <fmt/format.h>
 
@@ -266,7 +267,8 @@ std::vector<std::string> draw_study_plots(const Study& study, const StudyResults
     fs::create_directories(folder);
     std::vector<std::string> written;
     for (auto part : {draw_bulk_figures(study, results, folder, gnuplot), draw_surface_figures(results, folder, gnuplot),
-                      draw_sweep_figures(results, folder, gnuplot), draw_stability_figures(results, folder, gnuplot)})
+                      draw_sweep_figures(results, folder, gnuplot), draw_stability_figures(results, folder, gnuplot),
+                      draw_particles_figures(results, folder, gnuplot)})
         written.insert(written.end(), part.begin(), part.end());
     return written;
 }

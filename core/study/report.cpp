@@ -1,5 +1,7 @@
 #include "study/report.hpp"
 
+#include "study/particles_outputs.hpp"
+
 #include "support/install_paths.hpp"
 
 #include <fmt/format.h>
@@ -367,7 +369,7 @@ std::string report_markdown(const Study& study, const StudyResults& results, con
 {
     return header_markdown(study) + replication_markdown(results) + explanations_markdown(results) +
            roots_markdown(results) + verdicts_markdown(study, results) + surface_markdown(results) +
-           sweeps_markdown(results) + stability_markdown(results) + figures_markdown(figures);
+           sweeps_markdown(results) + stability_markdown(results) + particles_markdown(results) + figures_markdown(figures);
 }
 
 } // namespace sphkern

@@ -1,6 +1,7 @@
 #include "study/results_writer.hpp"
 
 #include "analysis/results_json.hpp"
+#include "study/particles_outputs.hpp"
 #include "stability/stability_json.hpp"
 #include "support/chunked_writer.hpp"
 
@@ -123,8 +124,8 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
     }
     nlohmann::json stability = nlohmann::json::array();
     for (const auto& c : results.stability) stability.push_back(stability_json(c));
-    w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {},\n \"stability\": {}\n}}\n",
-            comparison.dump(1), surface.dump(1), sweeps.dump(1), stability.dump(1));
+    w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {},\n \"stability\": {},\n \"particles\": {}\n}}\n",
+            comparison.dump(1), surface.dump(1), sweeps.dump(1), stability.dump(1), particles_results_json(results).dump(1));
 }
 
 } // namespace sphkern

@@ -217,6 +217,11 @@ void check_study_budget(const Study& study, const JsonNode& root)
         if (points > max_study_stability_points)
             refuse("kernels x lattices x stability k samples x wave vectors", points, max_study_stability_points);
     }
+    if (study.particles) {
+        const double evaluations = double(study.kernels.size()) * study_particle_evaluations(*study.particles);
+        if (evaluations > max_study_particle_evaluations)
+            refuse("kernels x particles x N_H values, over all particle sources", evaluations, max_study_particle_evaluations);
+    }
 }
 
 } // namespace
@@ -228,7 +233,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     study.document = std::move(document);
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability"});
+                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability", "particles"});
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
@@ -319,6 +324,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     }
     if (auto node = root.find("surface")) study.surface = read_surface(*node);
     if (auto node = root.find("stability")) study.stability = read_stability(*node);
+    if (auto node = root.find("particles")) study.particles = read_study_particles(*node, file);
     check_study_budget(study, root);
     return study;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
+#include "study/study_particles.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,7 @@ inline constexpr double max_study_curve_points = 2e6;
 inline constexpr double max_study_sweep_points = 2e6;
 inline constexpr double max_study_surface_layers = 1e6;
 inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples
+inline constexpr double max_study_particle_evaluations = 1e8; // particles x N_H values, over all sources
 
 struct Study {
     std::string file;
@@ -89,6 +91,7 @@ struct Study {
     std::optional<StudySurface> surface;
     std::vector<StudySweep> sweeps;
     std::optional<StudyStability> stability;
+    std::optional<StudyParticles> particles;
 };
 
 Study read_study(const std::filesystem::path& file);

@@ -10,6 +10,7 @@
 #include "analysis/surface_profile.hpp"
 #include "stability/dispersion_path.hpp"
 #include "stability/stability_over_k.hpp"
+#include "study/study_particles.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -112,6 +113,7 @@ struct StudyResults {
     std::vector<SurfaceCase> surface;
     std::vector<SweepCase> sweeps;
     std::vector<StabilityCase> stability;
+    std::vector<ParticlesCase> particles;
     double tolerance = 1e-4;
     nlohmann::json reference; // the whole reference table, if any
 };

@@ -14,6 +14,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     run_surface_section(study, inputs, results);
     run_sweep_section(study, registry, inputs, results);
     run_stability_section(study, inputs, results);
+    run_particles_section(study, inputs, results);
     if (study.compare_with) compare_with_reference(study, results);
     return results;
 }

@@ -60,8 +60,33 @@ for s in d['solutions']: print(repr(s['k']), repr(s['parameter']))
             python3 -c "import json,sys; e = json.load(sys.stdin); assert abs(e['eps_rho']) < 1e-9 and abs(e['eps_gradp']) < 1e-9, e"
     done
 done
+# The particles section: an unperturbed fcc block gives the lattice's eps_rho at the same k
+# (h = eta V^(1/3), V = a_p d^3), a disturbed one does not.
+cat >"$work/particles.json" <<'STUDY'
+{"name": "p", "kernels": ["cubic_bspline", "wendland_c2"], "lattices": ["fcc"], "k": {"samples": 11},
+ "particles": {"sources": [{"lattice": "fcc", "size": [10, 10, 10]}, {"lattice": "fcc", "size": [10, 10, 10], "sigma": 0.1},
+                           {"poisson": 2, "count": 3000, "seed": 3}],
+               "nh": {"min": 40, "max": 80, "steps": 2}}}
+STUDY
+"$sphkern" run "$work/particles.json" -o "$work/particles" --no-plots >/dev/null
+python3 - "$work/particles/results.json" "$sphkern" <<'CHECK'
+import json, subprocess, sys
+r = json.load(open(sys.argv[1]))
+cases = {(c["source"], c["kernel"]): c for c in r["particles"]}
+assert len(cases) == 6, list(cases)
+for kernel in ("cubic_bspline", "wendland_c2"):
+    for p in cases[("fcc, 10x10x10 cells, sigma = 0 d", kernel)]["points"]:
+        k = p["eta"] * (2 ** -0.5) ** (1 / 3)
+        e = json.loads(subprocess.run([sys.argv[2], "eps", kernel, "fcc", "--k", repr(k), "--json"],
+                                      check=True, capture_output=True, text=True).stdout)
+        s = p["statistics"]["e0"]
+        assert abs(s["mean"] - e["eps_rho"]) < 1e-12 and s["std"] < 1e-12, (kernel, p["nh"], s, e["eps_rho"])
+    disturbed = cases[("fcc, 10x10x10 cells, sigma = 0.1 d", kernel)]["points"]
+    assert all(p["statistics"]["e0"]["std"] > 1e-3 for p in disturbed)
+print("particles section: lattice limit and disorder as expected")
+CHECK
 # Every results.json written here, and the shipped studies, against their JSON Schemas.
 root=$(cd "$(dirname "$0")/../.." && pwd)
 python3 "$root/tests/cli/validate_study_schemas.py" "$root/share/schemas" "$root/share/studies" "$sphkern" \
-    "$work/out/results.json" "$work/out3d/results.json" "$work/design/results.json"
+    "$work/out/results.json" "$work/out3d/results.json" "$work/design/results.json" "$work/particles/results.json"
 echo "1 passed, 0 failed"

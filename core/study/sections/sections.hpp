@@ -20,4 +20,7 @@ void run_sweep_section(const Study& study, KernelRegistry& registry, const Study
 // "stability": stable k intervals, dispersion curves and their overlap with condition (22).
 void run_stability_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
 
+// "particles": every kernel on particle sets that are no lattice, over N_H or eta.
+void run_particles_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
+
 } // namespace sphkern

@@ -1,0 +1,117 @@
+#include "study/study_particles.hpp"
+
+#include "support/error.hpp"
+#include "support/file_spec.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern {
+
+namespace {
+
+std::uint64_t seed_of(const JsonNode& node)
+{
+    const auto seed = node.find("seed");
+    return seed ? static_cast<std::uint64_t>(seed->integer_in(0, 1LL << 53)) : 1;
+}
+
+StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)
+{
+    node.expect_object();
+    const int kinds = !!node.find("lattice") + !!node.find("poisson") + !!node.find("file");
+    if (kinds != 1) node.error("expected one of \"lattice\", \"poisson\" and \"file\"");
+    StudyParticleSource s;
+    s.json_path = node.path();
+    auto& src = s.source;
+    if (auto lattice = node.find("lattice")) {
+        node.expect_keys({"lattice", "size", "sigma", "seed"});
+        src.kind = SourceKind::lattice;
+        src.spec = resolve_beside(lattice->string(), study_file, {".json"});
+        const auto size = node.at("size");
+        const std::size_t n = size.expect_array(2, 3);
+        s.sizes = n;
+        std::string cells;
+        for (std::size_t a = 0; a < n; ++a) {
+            src.block.cells[a] = size[a].integer_in(1, 1000000);
+            if (a) cells += 'x';
+            cells += std::to_string(src.block.cells[a]);
+        }
+        if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number_in(0, 10);
+        src.block.seed = seed_of(node);
+        s.label = fmt::format("{}, {} cells, sigma = {:g} d", lattice->string(), cells, src.block.sigma);
+    } else if (auto poisson = node.find("poisson")) {
+        node.expect_keys({"poisson", "count", "seed", "box"});
+        src.kind = SourceKind::poisson;
+        src.spec = "poisson";
+        src.poisson.dimension = static_cast<int>(poisson->integer_in(2, 3));
+        src.poisson.count = static_cast<std::size_t>(node.at("count").integer_in(2, 1LL << 40));
+        src.poisson.seed = seed_of(node);
+        if (auto box = node.find("box")) {
+            const std::size_t n = box->expect_array(static_cast<std::size_t>(src.poisson.dimension),
+                                                     static_cast<std::size_t>(src.poisson.dimension));
+            for (std::size_t a = 0; a < n; ++a) src.poisson.box[static_cast<int>(a)] = (*box)[a].number_in(1e-300, 1e300);
+        }
+        s.label = fmt::format("poisson, {}D, {} particles", src.poisson.dimension, src.poisson.count);
+    } else {
+        node.expect_keys({"file", "box", "array", "dim"});
+        src.kind = SourceKind::file;
+        const auto name = node.at("file").string();
+        src.spec = resolve_beside(name, study_file, {".h5", ".hdf5", ".csv", ".vtk"});
+        if (auto box = node.find("box")) {
+            const std::size_t n = box->expect_array(2, 3);
+            Eigen::Vector3d sides(1, 1, 1);
+            for (std::size_t a = 0; a < n; ++a) sides[static_cast<int>(a)] = (*box)[a].number_in(1e-300, 1e300);
+            src.box = sides;
+        }
+        if (auto array = node.find("array")) src.file.array = array->string();
+        if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(2, 3));
+        s.label = name;
+    }
+    return s;
+}
+
+} // namespace
+
+StudyParticles read_study_particles(const JsonNode& node, const std::filesystem::path& study_file)
+{
+    node.expect_keys({"sources", "nh", "eta", "volume"});
+    StudyParticles particles;
+    particles.json_path = node.path();
+    const auto sources = node.at("sources");
+    const std::size_t n = sources.expect_array(1, 100);
+    for (std::size_t i = 0; i < n; ++i) particles.sources.push_back(read_source(sources[i], study_file));
+    if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
+    if (auto range = node.find("nh") ? node.find("nh") : node.find("eta")) {
+        range->expect_keys({"min", "max", "steps"});
+        auto& sweep = particles.sweep;
+        sweep.rule = node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta;
+        const double top = sweep.rule == SmoothingRule::nh ? 1e5 : 100;
+        sweep.from = range->at("min").number_in(sweep.rule == SmoothingRule::nh ? 1 : 1e-3, top);
+        sweep.to = range->at("max").number_in(sweep.from, top);
+        if (!(sweep.to > sweep.from)) range->at("max").error("expected max > min");
+        sweep.steps = range->find("steps") ? static_cast<int>(range->at("steps").integer_in(1, 1000)) : 9;
+    }
+    if (auto volume = node.find("volume")) {
+        try {
+            particles.volume = parse_volume_model(volume->string());
+        } catch (const Error& e) {
+            volume->error("expected \"uniform\", \"file\" or \"voronoi\"");
+        }
+    }
+    return particles;
+}
+
+double study_particle_evaluations(const StudyParticles& particles)
+{
+    double total = 0;
+    for (const auto& s : particles.sources) {
+        double count = 1e6; // a file's size is known only once it is read
+        if (s.source.kind == SourceKind::poisson) count = static_cast<double>(s.source.poisson.count);
+        if (s.source.kind == SourceKind::lattice)
+            count = double(s.source.block.cells[0]) * double(s.source.block.cells[1]) * double(s.source.block.cells[2]);
+        total += count * (particles.sweep.steps + 1);
+    }
+    return total;
+}
+
+} // namespace sphkern

@@ -1,0 +1,46 @@
+// The optional "particles" section of a study: every kernel on particle sets that are no
+// lattice (disturbed lattice blocks, Poisson sets, files), over a range of N_H or eta.
+#pragma once
+
+#include "particles/particle_analysis.hpp"
+#include "particles/sources/particle_source.hpp"
+#include "support/json_input.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+struct StudyParticleSource {
+    std::string label;     // "fcc, sigma = 0.1 d, 20x20x20", "poisson, 3D, 20000", the file
+    std::string json_path;
+    ParticleSource source;
+    std::size_t sizes = 0; // a lattice's cell counts given: must match its dimension
+};
+
+struct StudyParticles {
+    std::vector<StudyParticleSource> sources;
+    SmoothingSweep sweep{SmoothingRule::nh, 20, 200, 9};
+    std::optional<VolumeModel> volume;
+    std::string json_path;
+};
+
+struct ParticlesCase {
+    std::string source, kernel_label;
+    int dimension = 0;
+    std::size_t particles = 0;
+    VolumeModel volume = VolumeModel::uniform;
+    std::vector<ParticlePoint> points;
+};
+
+// Reads the section: {"sources": [...], "nh" or "eta": {"min", "max", "steps"}, "volume"};
+// each source one of {"lattice", "size", "sigma", "seed"}, {"poisson": D, "count", "seed",
+// "box"} or {"file", "box", "array", "dim"}, relative files beside the study.
+StudyParticles read_study_particles(const JsonNode& node, const std::filesystem::path& study_file);
+
+// An upper bound of the particles the section evaluates, over all sources and h (the budget).
+double study_particle_evaluations(const StudyParticles& particles);
+
+} // namespace sphkern
