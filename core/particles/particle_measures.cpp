@@ -29,6 +29,28 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// A plain line on stderr every few seconds of a long sweep, terminal or not: how far, and
+// an estimate of the rest.
+class ProgressLines {
+public:
+    ProgressLines(std::string what, std::size_t total) : what_(std::move(what)), total_(total) {}
+    void report(std::size_t done)
+    {
+        const double elapsed = seconds_since(start_);
+        if (elapsed - last_ < 3 || done == 0 || done >= total_) return;
+        last_ = elapsed;
+        const double fraction = static_cast<double>(done) / static_cast<double>(total_);
+        spdlog::info("{}: {:.0f}% of the sums after {:.0f} s, about {:.0f} s to go", what_, 100 * fraction, elapsed,
+                     elapsed * (1 - fraction) / fraction);
+    }
+
+private:
+    std::string what_;
+    std::size_t total_;
+    Clock::time_point start_ = Clock::now();
+    double last_ = 0;
+};
+
 // The points that may neighbour the particles of one bin, copied into contiguous arrays.
 struct Candidates {
     std::vector<double> x, y, z, volume, mass;
@@ -207,10 +229,12 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     auto t0 = Clock::now();
     // Bin by bin: the candidates of a bin are gathered once for all its particles.
     ParallelFor pass;
-    pass.run(grid.bins(), out.threads, [&](int, std::size_t begin, std::size_t end) {
+    ProgressLines progress(set.name, grid.bins());
+    pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         Candidates candidates;
         Neighbours nb;
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
+            if (thread == 0 && (b & 255) == 0) progress.report((b - begin) * static_cast<std::size_t>(out.threads));
             bool gathered = false;
             for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p) {
                 if (grid.is_ghost(p)) continue;
