@@ -7,13 +7,20 @@ namespace sphkern {
 
 namespace {
 
-// The p-quantile of sorted values, interpolated between neighbouring ranks.
-double quantile(const std::vector<double>& sorted, double p)
+// The p-quantile, interpolated between neighbouring ranks: two selections instead of a sort.
+double quantile(std::vector<double>& values, double p)
 {
-    const double rank = p * static_cast<double>(sorted.size() - 1);
+    const double rank = p * static_cast<double>(values.size() - 1);
     const std::size_t lo = static_cast<std::size_t>(std::floor(rank));
-    const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-    return sorted[lo] + (rank - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+    const auto at = [&](std::size_t r) {
+        std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(r), values.end());
+        return values[r];
+    };
+    const double below = at(lo);
+    if (lo + 1 >= values.size() || rank == static_cast<double>(lo)) return below;
+    // The next order statistic is the smallest value above rank lo.
+    const double above = *std::min_element(values.begin() + static_cast<std::ptrdiff_t>(lo) + 1, values.end());
+    return below + (rank - static_cast<double>(lo)) * (above - below);
 }
 
 } // namespace
@@ -29,8 +36,8 @@ Summary summarise(std::vector<double> values)
     double deviation = 0;
     for (double v : values) deviation += (v - s.mean) * (v - s.mean);
     s.std = std::sqrt(deviation / n);
-    std::sort(values.begin(), values.end());
-    s.min = values.front(), s.max = values.back();
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    s.min = *lo, s.max = *hi;
     s.p1 = quantile(values, 0.01), s.p50 = quantile(values, 0.5), s.p99 = quantile(values, 0.99);
     return s;
 }
