@@ -270,6 +270,9 @@ check "second SIGINT: exit $status, left: $(leftovers out_long)" test $status -e
 signal_when 'evaluating a block' TERM -- block cubic_bspline fcc --k 1.2 --size 160,160,160 --csv "$work/block.csv"
 check "block stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "block stopped writes no csv" test -z "$(leftovers block.csv)"
+signal_when 'particles and [0-9]+ ghosts on' TERM -- particles cubic_bspline fcc --size 120,120,120 --k 1.3 --csv "$work/psig.csv"
+check "particles stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
+check "particles stopped writes no csv" test -z "$(leftovers psig.csv)"
 signal_when 'running design' INT -- design wendland_c2_shape fcc --param beta --kmin 0.5 --kmax 8
 check "design stopped by SIGINT: exit $status in $elapsed ms, $err" test $status -eq 130
 # A plugin that ignores SIGINT and hangs in its probe: sphkern stops the probe itself.
