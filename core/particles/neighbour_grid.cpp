@@ -43,6 +43,10 @@ void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
     const int nz = dim == 3 ? 1 : 0;
     for (std::size_t i = 0; i < particles_; ++i) {
         const Eigen::Vector3d f = inverse * set.position(i);
+        // Most particles lie farther than the margin from every face: no image of theirs is near.
+        bool inner = true;
+        for (int d = 0; d < dim; ++d) inner = inner && f[d] >= margin[d] && f[d] < 1 - margin[d];
+        if (inner) continue;
         for (int a = -1; a <= 1; ++a)
             for (int b = -1; b <= 1; ++b)
                 for (int c = -nz; c <= nz; ++c) {
@@ -66,9 +70,9 @@ void NeighbourGrid::sort_into_bins(double reach)
     for (int a = 0; a < 3; ++a) {
         const auto [mn, mx] = std::minmax_element(coordinates[a], coordinates[a] + count);
         lo[a] = *mn, extent[a] = *mx - *mn;
-        // Bins at least `reach` wide, so that the 3 x 3 (x 3) block around a bin holds every
-        // neighbour; not more bins than points, so that sparse sets stay small.
-        const double bins = std::floor(extent[a] / reach);
+        // Bins at least reach / stencil_reach wide, so that the block of bins around a bin holds
+        // every neighbour; not many more bins than points, so that sparse sets stay small.
+        const double bins = std::floor(extent[a] / reach * stencil_reach);
         n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, std::max(1.0, std::cbrt(static_cast<double>(count)) * 4)));
     }
     const std::size_t total_bins = n_[0] * n_[1] * n_[2];

@@ -13,6 +13,13 @@ namespace sphkern {
 
 class NeighbourGrid {
 public:
+    // Bins are reach / stencil_reach wide and a bin's candidates lie within stencil_reach
+    // bins along each axis. Smaller bins hold fewer candidates (5 x 5 x 5 bins of half a reach
+    // hold (5/2)^3 reach^3, 3 x 3 x 3 of one reach 27 reach^3), but in more and shorter runs:
+    // on a Poisson set at N_H = 44 one reach is the faster (1.7 s against 2.2 s for 10^6
+    // particles on one core, share/docs/BENCHMARKS.md).
+    static constexpr std::size_t stencil_reach = 1;
+
     // `reach`: the largest support radius of any particle. Throws Error(input) for a periodic
     // box narrower than twice the reach (a particle would see two images of one neighbour).
     NeighbourGrid(const ParticleSet& set, double reach);
@@ -37,9 +44,10 @@ public:
     void for_each_run_of_bin(std::size_t b, Visit&& visit) const
     {
         const std::size_t bx = b % n_[0], by = b / n_[0] % n_[1], bz = b / (n_[0] * n_[1]);
-        const std::size_t x0 = bx > 0 ? bx - 1 : 0, x1 = std::min(bx + 1, n_[0] - 1);
-        const std::size_t z0 = bz > 0 ? bz - 1 : 0, z1 = std::min(bz + 1, n_[2] - 1);
-        const std::size_t y0 = by > 0 ? by - 1 : 0, y1 = std::min(by + 1, n_[1] - 1);
+        constexpr std::size_t s = stencil_reach;
+        const std::size_t x0 = bx > s ? bx - s : 0, x1 = std::min(bx + s, n_[0] - 1);
+        const std::size_t z0 = bz > s ? bz - s : 0, z1 = std::min(bz + s, n_[2] - 1);
+        const std::size_t y0 = by > s ? by - s : 0, y1 = std::min(by + s, n_[1] - 1);
         for (std::size_t cz = z0; cz <= z1; ++cz)
             for (std::size_t cy = y0; cy <= y1; ++cy) {
                 const std::size_t row = (cz * n_[1] + cy) * n_[0];

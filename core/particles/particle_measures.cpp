@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 namespace sphkern {
@@ -51,26 +52,22 @@ private:
     double last_ = 0;
 };
 
-// The points that may neighbour the particles of one bin, copied into contiguous arrays.
-struct Candidates {
-    std::vector<double> x, y, z, volume, mass;
-    std::vector<std::uint32_t> point;
-    std::size_t count = 0;
-};
-
-// One particle's neighbours: displacement, distance, q, V_j, m_j, W and W'.
+// One particle's neighbours: displacement, distance, q, V_j, m_j, W and W'; and the scratch
+// of its candidates (r^2 of a run, the points inside the support).
 struct Neighbours {
     std::vector<double> r2, dx, dy, dz, r, q, volume, mass, w, dw;
     std::vector<std::uint32_t> index;
+    std::size_t count = 0;
     void reserve(std::size_t n)
     {
-        if (r2.size() >= n) return;
-        for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &volume, &mass, &w, &dw}) v->resize(n);
-        index.resize(n);
+        if (dx.size() >= n) return;
+        const std::size_t size = std::max(n, 2 * dx.size());
+        for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &volume, &mass, &w, &dw}) v->resize(size);
+        index.resize(size);
     }
 };
 
-// r2[c] for every candidate: no branch, so that it vectorises.
+// r2 of every point of a run: no branch, so that it vectorises.
 SPHKERN_VECTOR_CLONES void squared_distances(const double* __restrict x, const double* __restrict y,
                                              const double* __restrict z, std::size_t n, double xi, double yi, double zi,
                                              double* __restrict r2)
@@ -81,20 +78,79 @@ SPHKERN_VECTOR_CLONES void squared_distances(const double* __restrict x, const d
     }
 }
 
-// The candidates inside the support (the particle itself, at r = 0, left out), and the
-// number of candidates at r = 0 (1 unless two particles share a position).
-std::size_t inside_support(const double* __restrict r2, std::size_t n, double reach2, std::uint32_t* __restrict index,
-                           std::size_t& at_zero)
+// Appends the points first + c of a run with r2[c] <= reach2 to `index` (one comparison, no branch).
+std::size_t append_inside(const double* __restrict r2, std::size_t n, double reach2, std::uint32_t first,
+                          std::uint32_t* __restrict index)
 {
-    std::size_t m = 0, zero = 0;
+    std::size_t m = 0;
     for (std::size_t c = 0; c < n; ++c) {
-        index[m] = static_cast<std::uint32_t>(c);
-        m += r2[c] <= reach2 && r2[c] > 0;
-        zero += r2[c] == 0;
+        index[m] = first + static_cast<std::uint32_t>(c);
+        m += r2[c] <= reach2;
     }
-    at_zero = zero;
     return m;
 }
+
+// The neighbours' displacements, distances, volumes and masses, gathered by index.
+SPHKERN_VECTOR_CLONES void gather_neighbours(const double* __restrict x, const double* __restrict y,
+                                             const double* __restrict z, const double* __restrict volume,
+                                             const double* __restrict mass, const std::uint32_t* __restrict index,
+                                             std::size_t n, double xi, double yi, double zi, double* __restrict dx,
+                                             double* __restrict dy, double* __restrict dz, double* __restrict r,
+                                             double* __restrict v, double* __restrict m)
+{
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::uint32_t s = index[j];
+        dx[j] = x[s] - xi, dy[j] = y[s] - yi, dz[j] = z[s] - zi;
+        r[j] = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
+        v[j] = volume[s], m[j] = mass[s];
+    }
+}
+
+SPHKERN_VECTOR_CLONES void scaled(const double* __restrict r, std::size_t n, double factor, double* __restrict q)
+{
+    for (std::size_t j = 0; j < n; ++j) q[j] = r[j] * factor;
+}
+
+// The sums over one particle's neighbours, in eight lanes of partial sums added in a fixed
+// order at the end: the loop vectorises, and the result does not depend on the thread count.
+enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
+constexpr std::size_t lanes = 8;
+
+SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const double* __restrict dy,
+                                          const double* __restrict dz, const double* __restrict r,
+                                          const double* __restrict v, const double* __restrict m,
+                                          const double* __restrict w, const double* __restrict dw, std::size_t n,
+                                          double* __restrict total)
+{
+    double acc[sums][lanes] = {};
+    const std::size_t full = n / lanes * lanes;
+    for (std::size_t base = 0; base < n; base += lanes)
+        for (std::size_t l = 0; l < lanes; ++l) {
+            const std::size_t j = base + l;
+            // Past the end, a lane adds zeros (j < n masks it without a branch out of the loop).
+            const bool live = j < n;
+            const std::size_t k = live ? j : 0;
+            const double vw = live ? v[k] * w[k] : 0.0, mw = live ? m[k] * w[k] : 0.0;
+            // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
+            const double g = live ? -v[k] * dw[k] / r[k] : 0.0;
+            const double x = dx[k], y = dy[k], z = dz[k];
+            acc[s0][l] += vw, acc[sm][l] += mw;
+            acc[m1x][l] += vw * x, acc[m1y][l] += vw * y, acc[m1z][l] += vw * z;
+            acc[e1x][l] += g * x, acc[e1y][l] += g * y, acc[e1z][l] += g * z;
+            acc[exx][l] += g * x * x, acc[eyy][l] += g * y * y, acc[ezz][l] += g * z * z;
+            acc[exy][l] += g * x * y, acc[exz][l] += g * x * z, acc[eyz][l] += g * y * z;
+        }
+    (void)full;
+    for (int s = 0; s < sums; ++s) {
+        double t = 0;
+        for (std::size_t l = 0; l < lanes; ++l) t += acc[s][l];
+        total[s] = t;
+    }
+}
+
+struct Run {
+    std::size_t begin, end;
+};
 
 struct Sweep {
     const Kernel& kernel;
@@ -103,68 +159,57 @@ struct Sweep {
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order
 
-    void gather_candidates(std::size_t bin, Candidates& c) const
+    [[noreturn]] void fail_duplicate(std::size_t p, std::size_t s) const
     {
-        c.count = 0;
-        grid.for_each_run_of_bin(bin, [&](std::size_t begin, std::size_t end) {
-            const std::size_t n = c.count + (end - begin);
-            if (c.x.size() < n)
-                for (auto* v : {&c.x, &c.y, &c.z, &c.volume, &c.mass}) v->resize(2 * n);
-            if (c.point.size() < n) c.point.resize(2 * n);
-            for (std::size_t s = begin; s < end; ++s, ++c.count) {
-                c.x[c.count] = grid.x()[s], c.y[c.count] = grid.y()[s], c.z[c.count] = grid.z()[s];
-                c.volume[c.count] = volume[s], c.mass[c.count] = mass[s];
-                c.point[c.count] = static_cast<std::uint32_t>(s);
-            }
-        });
+        const auto a = grid.source(p), b = grid.source(s);
+        fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set.name,
+                               std::min(a, b), std::max(a, b), grid.x()[p], grid.y()[p], grid.z()[p]));
     }
 
-    [[noreturn]] void fail_duplicate(std::size_t p, const Candidates& c, const Neighbours& nb) const
+    // The points of `runs` inside the support of point p, the point itself left out.
+    void gather(std::size_t p, const std::vector<Run>& runs, double reach2, Neighbours& nb) const
     {
-        for (std::size_t k = 0; k < c.count; ++k)
-            if (nb.r2[k] == 0 && c.point[k] != p) {
-                const auto a = grid.source(p), b = grid.source(c.point[k]);
-                fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set.name,
-                                       std::min(a, b), std::max(a, b), grid.x()[p], grid.y()[p], grid.z()[p]));
+        const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
+        std::size_t m = 0;
+        for (const auto& run : runs) {
+            const std::size_t n = run.end - run.begin;
+            nb.reserve(m + n);
+            squared_distances(grid.x() + run.begin, grid.y() + run.begin, grid.z() + run.begin, n, xi, yi, zi,
+                              nb.r2.data());
+            m += append_inside(nb.r2.data(), n, reach2, static_cast<std::uint32_t>(run.begin), nb.index.data() + m);
+        }
+        gather_neighbours(grid.x(), grid.y(), grid.z(), volume.data(), mass.data(), nb.index.data(), m, xi, yi, zi,
+                          nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.volume.data(), nb.mass.data());
+        // The particle itself is the one neighbour at r = 0; another one there is a duplicate.
+        std::size_t self = m;
+        for (std::size_t j = 0; j < m; ++j)
+            if (nb.r[j] == 0) {
+                if (nb.index[j] != p) fail_duplicate(p, nb.index[j]);
+                self = j;
             }
-        fail_input(set.name + ": two particles are at the same position");
+        if (self == m) throw std::logic_error("a particle is not among its own candidates");
+        // Out of the list: the last neighbour takes its place.
+        for (auto* v : {&nb.dx, &nb.dy, &nb.dz, &nb.r, &nb.volume, &nb.mass}) (*v)[self] = (*v)[m - 1];
+        nb.count = m - 1;
     }
 
-    void measure(std::size_t p, const Candidates& c, Neighbours& nb, ParticleMeasures& out) const
+    void measure(std::size_t p, const std::vector<Run>& runs, Neighbours& nb, ParticleMeasures& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h, inv_h = 1 / h;
-        const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
-        nb.reserve(c.count);
-        squared_distances(c.x.data(), c.y.data(), c.z.data(), c.count, xi, yi, zi, nb.r2.data());
-        std::size_t at_zero = 0;
-        const std::size_t n = inside_support(nb.r2.data(), c.count, reach * reach * (1 + 2 * support_edge), nb.index.data(), at_zero);
-        if (at_zero != 1) fail_duplicate(p, c, nb);
-        for (std::size_t j = 0; j < n; ++j) {
-            const std::uint32_t t = nb.index[j];
-            nb.dx[j] = c.x[t] - xi, nb.dy[j] = c.y[t] - yi, nb.dz[j] = c.z[t] - zi;
-            nb.r[j] = std::sqrt(nb.r2[t]);
-            nb.q[j] = nb.r[j] * inv_h;
-            nb.volume[j] = c.volume[t], nb.mass[j] = c.mass[t];
-        }
+        const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h;
+        gather(p, runs, reach * reach * (1 + 2 * support_edge), nb);
+        const std::size_t n = nb.count;
+        scaled(nb.r.data(), n, 1 / h, nb.q.data());
         kernel.w_batch(nb.q.data(), nb.w.data(), n, dim, k);
         kernel.dw_batch(nb.q.data(), nb.dw.data(), n, dim, k);
+        double t[sums];
+        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.volume.data(), nb.mass.data(),
+                       nb.w.data(), nb.dw.data(), n, t);
         const double w0 = kernel.w(0, dim, k);
-        double s0 = volume[p] * w0, sm = mass[p] * w0;
-        double m1[3] = {0, 0, 0}, e1[3] = {0, 0, 0}, E[6] = {0, 0, 0, 0, 0, 0};
-        for (std::size_t j = 0; j < n; ++j) {
-            const double vw = nb.volume[j] * nb.w[j];
-            s0 += vw;
-            sm += nb.mass[j] * nb.w[j];
-            const double d[3] = {nb.dx[j], nb.dy[j], nb.dz[j]};
-            // grad_i W_ij = -W'(r) r_ij / r; g collects -V_j W' / r.
-            const double g = -nb.volume[j] * nb.dw[j] / nb.r[j];
-            for (int a = 0; a < 3; ++a) m1[a] += vw * d[a], e1[a] += g * d[a];
-            E[0] += g * d[0] * d[0], E[1] += g * d[1] * d[1], E[2] += g * d[2] * d[2];
-            E[3] += g * d[0] * d[1], E[4] += g * d[0] * d[2], E[5] += g * d[1] * d[2];
-        }
-        store(i, n, h, s0, sm, m1, e1, E, out);
+        const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
+        const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
+        store(i, n, h, t[s0] + volume[p] * w0, t[sm] + mass[p] * w0, m1, e1, E, out);
     }
 
     void store(std::size_t i, std::size_t n, double h, double s0, double sm, const double* m1, const double* e1,
@@ -231,16 +276,16 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     ParallelFor pass;
     ProgressLines progress(set.name, grid.bins());
     pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        Candidates candidates;
+        std::vector<Run> runs;
         Neighbours nb;
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (thread == 0 && (b & 255) == 0) progress.report((b - begin) * static_cast<std::size_t>(out.threads));
-            bool gathered = false;
-            for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p) {
-                if (grid.is_ghost(p)) continue;
-                if (!gathered) sweep.gather_candidates(b, candidates), gathered = true;
-                sweep.measure(p, candidates, nb, out);
-            }
+            runs.clear();
+            grid.for_each_run_of_bin(b, [&](std::size_t first, std::size_t last) {
+                if (last > first) runs.push_back({first, last});
+            });
+            for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
+                if (!grid.is_ghost(p)) sweep.measure(p, runs, nb, out);
         }
     });
     out.seconds = seconds_since(t0);
