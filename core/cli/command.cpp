@@ -2,6 +2,7 @@
 #include "support/results_output.hpp"
 
 #include "support/error.hpp"
+#include "support/provenance.hpp"
 
 #include <fmt/format.h>
 
@@ -93,6 +94,15 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
                                    : parse_direction(options.gravity, lattice.dimension, "--gravity");
 }
 
-void print_json(const nlohmann::json& document) { fmt::print(results_file(), "{}\n", document.dump(2)); }
+// Every document says where it comes from; an array is a list of documents.
+void print_json(nlohmann::json document)
+{
+    const auto origin = provenance();
+    if (document.is_object()) document["provenance"] = origin;
+    if (document.is_array())
+        for (auto& item : document)
+            if (item.is_object()) item["provenance"] = origin;
+    fmt::print(results_file(), "{}\n", document.dump(2));
+}
 
 } // namespace sphkern::cli

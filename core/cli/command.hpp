@@ -48,7 +48,7 @@ EvaluationMode evaluation_mode(const EvaluationOptions& options);
 Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
 
 // Prints `document` to stdout, pretty and complete.
-void print_json(const nlohmann::json& document);
+void print_json(nlohmann::json document);
 
 Action add_kernels_command(CLI::App& app);
 Action add_check_command(CLI::App& app);
@@ -62,5 +62,6 @@ Action add_block_command(CLI::App& app);
 Action add_design_command(CLI::App& app);
 Action add_stability_command(CLI::App& app);
 Action add_spectrum_command(CLI::App& app);
+Action add_studies_command(CLI::App& app);
 
 } // namespace sphkern::cli
