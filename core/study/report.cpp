@@ -173,10 +173,16 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
     s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
     for (const auto& g : groups) {
         std::string windows;
-        if (study.axis != "k")
-            for (const auto* c : g)
-                windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
-                                       c->k_min, c->k_max);
+        if (study.axis != "k") {
+            const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
+                return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
+            });
+            if (same) windows = fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
+            else
+                for (const auto* c : g)
+                    windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
+                                           c->k_min, c->k_max);
+        }
         s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
                          g[0]->ap_name, g[0]->a_p, windows) +
              "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
