@@ -3,6 +3,7 @@
 
 #include "support/error.hpp"
 #include "support/provenance.hpp"
+#include "study/study_provenance.hpp"
 
 #include <fmt/format.h>
 
@@ -95,9 +96,18 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
 }
 
 // Every document says where it comes from; an array is a list of documents.
-void print_json(nlohmann::json document)
+nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice)
+{
+    nlohmann::json kernels = nlohmann::json::array(), lattices = nlohmann::json::array();
+    if (kernel) kernels.push_back(kernel_input_json(*kernel));
+    if (lattice) lattices.push_back(lattice_input_json(*lattice));
+    return {{"kernels", kernels}, {"lattices", lattices}};
+}
+
+void print_json(nlohmann::json document, const nlohmann::json& inputs)
 {
     const auto origin = provenance();
+    if (document.is_object() && !inputs.is_null()) document["inputs"] = inputs;
     if (document.is_object()) document["provenance"] = origin;
     if (document.is_array())
         for (auto& item : document)

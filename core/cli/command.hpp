@@ -48,7 +48,13 @@ EvaluationMode evaluation_mode(const EvaluationOptions& options);
 Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
 
 // Prints `document` to stdout, pretty and complete.
-void print_json(nlohmann::json document);
+// Prints a --json document with its "provenance" (an array: each element) and, when
+// given, its "inputs" (command_inputs).
+void print_json(nlohmann::json document, const nlohmann::json& inputs = nullptr);
+
+// {"kernels": [descriptor], "lattices": [definition]} of a command's kernel and lattice
+// (either may be null), as results.json records a study's.
+nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice);
 
 Action add_kernels_command(CLI::App& app);
 Action add_check_command(CLI::App& app);

@@ -106,6 +106,18 @@ for s in d['solutions']: print(repr(s['k']), repr(s['parameter']))
             python3 -c "import json,sys; e = json.load(sys.stdin); assert abs(e['eps_rho']) < 1e-9 and abs(e['eps_gradp']) < 1e-9, e"
     done
 done
+# A --json document carries its provenance and, where the command has them, its inputs.
+"$sphkern" eps cubic_bspline fcc --k 1.2 --json >"$work/eps.json"
+"$sphkern" kernels --json >"$work/kernels.json"
+python3 -c "
+import hashlib, json
+e = json.load(open('$work/eps.json'))
+assert e['provenance']['command_line'][1:] == ['eps', 'cubic_bspline', 'fcc', '--k', '1.2', '--json'], e['provenance']
+k, l = e['inputs']['kernels'][0], e['inputs']['lattices'][0]
+assert k['name'] == 'cubic_bspline' and k['sha256'] == hashlib.sha256(open(k['file'], 'rb').read()).hexdigest()
+assert l['definition'] == json.load(open(l['file'])) and l['sha256'] == hashlib.sha256(open(l['file'], 'rb').read()).hexdigest()
+assert all(item['provenance']['sphkern_version'] for item in json.load(open('$work/kernels.json')))
+"
 # Every results.json written here, and the shipped studies, against their JSON Schemas.
 python3 "$root/tests/cli/validate_study_schemas.py" "$root/share/schemas" "$root/share/studies" "$sphkern" \
     "$work/out/results.json" "$work/out3d/results.json" "$work/design/results.json"

@@ -17,11 +17,12 @@ LATTICES = [entry["name"] for entry in sphkern.lattices()]
 
 
 def cli_json(*args):
-    """The command's document without its provenance (date, command line: the module's have none)."""
+    """The command's document without its provenance and inputs (the module's have neither)."""
     done = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True, check=True)
     document = json.loads(done.stdout)
     for item in document if isinstance(document, list) else [document]:
         assert item.pop("provenance")["sphkern_version"] == sphkern.__version__
+        item.pop("inputs", None)
     return document
 
 
