@@ -2,6 +2,8 @@
 #include "support/results_output.hpp"
 
 #include "support/error.hpp"
+#include "support/provenance.hpp"
+#include "study/study_provenance.hpp"
 
 #include <fmt/format.h>
 
@@ -111,6 +113,25 @@ std::vector<double> parse_number_list(const std::string& option, const std::stri
     return values;
 }
 
-void print_json(const nlohmann::json& document) { fmt::print(results_file(), "{}\n", document.dump(2)); }
+
+// Every document says where it comes from; an array is a list of documents.
+nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice)
+{
+    nlohmann::json kernels = nlohmann::json::array(), lattices = nlohmann::json::array();
+    if (kernel) kernels.push_back(kernel_input_json(*kernel));
+    if (lattice) lattices.push_back(lattice_input_json(*lattice));
+    return {{"kernels", kernels}, {"lattices", lattices}};
+}
+
+void print_json(nlohmann::json document, const nlohmann::json& inputs)
+{
+    const auto origin = provenance();
+    if (document.is_object() && !inputs.is_null()) document["inputs"] = inputs;
+    if (document.is_object()) document["provenance"] = origin;
+    if (document.is_array())
+        for (auto& item : document)
+            if (item.is_object()) item["provenance"] = origin;
+    fmt::print(results_file(), "{}\n", document.dump(2));
+}
 
 } // namespace sphkern::cli

@@ -51,7 +51,13 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
 std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max);
 
 // Prints `document` to stdout, pretty and complete.
-void print_json(const nlohmann::json& document);
+// Prints a --json document with its "provenance" (an array: each element) and, when
+// given, its "inputs" (command_inputs).
+void print_json(nlohmann::json document, const nlohmann::json& inputs = nullptr);
+
+// {"kernels": [descriptor], "lattices": [definition]} of a command's kernel and lattice
+// (either may be null), as results.json records a study's.
+nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice);
 
 Action add_kernels_command(CLI::App& app);
 Action add_check_command(CLI::App& app);
@@ -66,5 +72,6 @@ Action add_design_command(CLI::App& app);
 Action add_stability_command(CLI::App& app);
 Action add_spectrum_command(CLI::App& app);
 Action add_particles_command(CLI::App& app);
+Action add_studies_command(CLI::App& app);
 
 } // namespace sphkern::cli

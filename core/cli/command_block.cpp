@@ -120,7 +120,8 @@ Action add_block_command(CLI::App& app)
                         {"pair_interactions_per_pass", result.pair_interactions}, {"threads", result.threads},
                         {"fused_passes", result.timings.fused},
                         {"seconds", {{"setup", result.timings.setup}, {"evaluation", result.timings.evaluation}}},
-                        {"pair_interactions_per_second", rate}, {"layers", layers}});
+                        {"pair_interactions_per_second", rate}, {"layers", layers}},
+                       command_inputs(&kernel, &lattice));
             return 0;
         }
         fmt::print(results_file(), "{} on {}: {} particles, {} pair interactions per pass, {} threads\n", kernel.label(),

@@ -57,6 +57,7 @@ Action add_check_command(CLI::App& app)
                         fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(),
                                    c["check"].get<std::string>(), c["hint"].get<std::string>());
             }
+            if (options->json) result["inputs"] = command_inputs(&kernel, nullptr);
             results.push_back(std::move(result));
         }
         if (options->json) print_json(results); // an array, for one kernel too

@@ -58,7 +58,7 @@ Action add_design_command(CLI::App& app)
                                        : default_parameter_range(kernel, options->parameter);
         auto result = design_kernel(kernel, problem);
         if (options->json) {
-            print_json(design_json(kernel, problem, result));
+            print_json(design_json(kernel, problem, result), command_inputs(&kernel, &lattice));
             return 0;
         }
         fmt::print(results_file(), "{} on {}, a_p = {:.10g}: both errors zero for {} in [{}, {}], k in [{}, {}]\n", kernel.name(),

@@ -61,7 +61,8 @@ Action add_eps_command(CLI::App& app)
                         {"eta", eta}, {"site", options->evaluation.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp},
                         {"lateral", v.lateral}, {"neighbours", v.neighbours},
                         {"support_radius", kernel.support() * options->k}, {"sites", per_site},
-                        {"worst_site", reports[worst].site}});
+                        {"worst_site", reports[worst].site}},
+                       command_inputs(&kernel, &lattice));
             return 0;
         }
         fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", kernel.label(), lattice.name, options->k, a_p,

@@ -1,10 +1,13 @@
-// `sphkern lattices`: the shipped lattices, their volume coefficients and gravity.
+// `sphkern lattices`: the shipped lattices, their volume coefficients and gravity, and the examples.
 #include "cli/command.hpp"
 #include "analysis/results_json.hpp"
+#include "support/install_paths.hpp"
 #include "support/results_output.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <memory>
 
 namespace sphkern::cli {
@@ -27,6 +30,22 @@ void print_description(const Lattice& lattice, const nlohmann::json& d)
             shells += fmt::format("{}{:.4f} ({})", shells.empty() ? "" : ", ", s["radius"].get<double>(), s["count"].get<int>());
         fmt::print(results_file(), "  site {} at ({}) d: shells up to {} d: {}\n", site["site"].get<int>(), position,
                    d["shells_radius"].get<double>(), shells);
+    }
+}
+
+// The example lattices shipped beside the others, used by their path.
+void print_examples()
+{
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(data_folder("lattices") / "examples", ec))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    if (files.empty()) return;
+    std::sort(files.begin(), files.end());
+    fmt::print(results_file(), "\nexamples (several sites; give the file):\n");
+    for (const auto& file : files) {
+        const auto lattice = read_lattice(file);
+        fmt::print(results_file(), "{:<12} {:>3} {:>5}  {}\n", lattice.name, lattice.dimension, lattice.sites(), file.string());
     }
 }
 
@@ -73,6 +92,7 @@ Action add_lattices_command(CLI::App& app)
             fmt::print(results_file(), "{:<12} {:>3} {:>5}  {:<44} {}\n", l["name"].get<std::string>(),
                        l["dimension"].get<int>(), l["sites"].get<int>(), coefficients, gravity);
         }
+        print_examples();
         return 0;
     };
 }

@@ -8,6 +8,7 @@
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/results_output.hpp"
+#include "support/sha256.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -159,6 +160,20 @@ void refuse_output_over_input(const ParticlesOptions& o)
         throw Error(ExitCode::output, "--csv and --vtk name the same file " + o.csv + "; give two files");
 }
 
+// The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.
+nlohmann::json particle_inputs(const ParticlesOptions& o, const Kernel& kernel)
+{
+    const auto kind = source_kind(o.source);
+    std::optional<Lattice> lattice;
+    if (kind == SourceKind::lattice) lattice = load_lattice(o.source);
+    nlohmann::json inputs = command_inputs(&kernel, lattice ? &*lattice : nullptr);
+    nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
+                             {"count", o.count}, {"box", o.box}, {"array", o.array}};
+    if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
+    inputs["particles"] = source;
+    return inputs;
+}
+
 } // namespace
 
 Action add_particles_command(CLI::App& app)
@@ -178,7 +193,7 @@ Action add_particles_command(CLI::App& app)
         const ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
-        if (o.json) print_json(particle_answer_json(kernel, set, answer));
+        if (o.json) print_json(particle_answer_json(kernel, set, answer), particle_inputs(o, kernel));
         else print_particle_answer(results_file(), kernel, set, answer);
         return 0;
     };

@@ -34,7 +34,7 @@ Action add_shells_command(CLI::App& app)
                                 ? lattice.gravity
                                 : parse_direction(options->gravity, lattice.dimension, "--gravity");
         if (options->json) {
-            print_json(shells_json(lattice, options->site, options->radius, e));
+            print_json(shells_json(lattice, options->site, options->radius, e), command_inputs(nullptr, &lattice));
             return 0;
         }
         auto shells = lattice_shells(lattice, options->site, options->radius);

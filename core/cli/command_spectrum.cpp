@@ -49,7 +49,8 @@ Action add_spectrum_command(CLI::App& app)
                         {"source", summary.provided ? "plugin" : "quadrature"},
                         {"min", summary.minimum}, {"at", summary.at},
                         {"first_zero", summary.first_zero ? nlohmann::json(*summary.first_zero) : nlohmann::json()},
-                        {"curve", points}});
+                        {"curve", points}},
+                       command_inputs(&kernel, nullptr));
             return 0;
         }
         fmt::print(results_file(), "# Fourier transform of {} in {}D ({}): min {:.6g} at kappa h = {:.6g}, {}\n",

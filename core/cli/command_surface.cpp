@@ -48,7 +48,7 @@ Action add_surface_command(CLI::App& app)
                                        gravity_of(lattice, options->evaluation), options->k, options->layers, form,
                                        options->termination < 0 ? std::nullopt : std::optional<int>(options->termination));
         if (options->json) {
-            print_json(surface_document(kernel, lattice, options->k, a_p, form, profile));
+            print_json(surface_document(kernel, lattice, options->k, a_p, form, profile), command_inputs(&kernel, &lattice));
             return 0;
         }
         const bool one_site = lattice.sites() == 1;

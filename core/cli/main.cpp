@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
+#include "support/provenance.hpp"
 #include "support/results_output.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -43,7 +44,8 @@ int main(int argc, char** argv)
     spdlog::set_level(spdlog::level::info);
 
     CLI::App app{"sphkern " SPHKERN_VERSION ": accuracy of SPH smoothing kernels on regular particle lattices"};
-    app.set_version_flag("--version", "sphkern " SPHKERN_VERSION);
+    app.set_version_flag("--version", version_text());
+    record_command_line(argc, argv);
     app.require_subcommand(1);
     std::string log_level = "info";
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
@@ -67,6 +69,7 @@ int main(int argc, char** argv)
     add(cli::add_stability_command);
     add(cli::add_spectrum_command);
     add(cli::add_particles_command);
+    add(cli::add_studies_command);
 
     try {
         app.parse(argc, argv);

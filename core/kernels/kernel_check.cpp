@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace sphkern {
 
@@ -35,6 +36,7 @@ struct Checks {
     void add(int dim, const std::string& name, int status, const std::string& detail, const std::string& hint = {})
     {
         static const char* names[] = {"ok", "warn", "fail"};
+        if (status > 0 && hint.empty()) throw std::logic_error("check " + name + " warns or fails without a hint");
         nlohmann::json item = {{"dimension", dim}, {"check", name}, {"status", names[status]}, {"detail", detail}};
         if (status > 0 && !hint.empty()) item["hint"] = hint;
         items.push_back(std::move(item));
@@ -128,6 +130,49 @@ void check_pieces(const Kernel& kernel, int dim, Checks& checks)
                "declare the support where W ends: R sets the neighbour count N_H, H/d and the k windows");
 }
 
+// The integral of the formula past R, out to 4 R: what truncation at R cuts off. Not
+// finite (a formula that grows past R) means nothing a truncation explains.
+double tail_integral(const Kernel& kernel, int dim)
+{
+    const double R = kernel.support();
+    double total = 0;
+    try {
+        for (int piece = 0; piece < 3; ++piece)
+            total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                [&](double q) { return kernel.w(q, dim, check_k) * std::pow(q, dim - 1); }, R * (1 + piece),
+                R * (2 + piece), 15, 1e-15);
+    } catch (const std::exception&) {
+        return NAN;
+    }
+    return sphere_area(dim) * total;
+}
+
+// |integral - 1| <= 1e-9 is ok. A larger deviation that the part of the formula cut off
+// at R accounts for (to 1e-6) is a truncation: a warning. Anything else is a wrong
+// normalisation constant and fails above 1e-6: eps_rho inherits it one to one.
+void check_normalization(const Kernel& kernel, int dim, double integral, double error, Checks& checks)
+{
+    const double deviation = std::abs(integral - 1);
+    std::string detail = "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")";
+    if (deviation <= normalization_ok) {
+        checks.add(dim, "normalization", 0, detail);
+        return;
+    }
+    const double whole = integral + tail_integral(kernel, dim);
+    if (std::isfinite(whole) && std::abs(whole - 1) <= normalization_truncation) {
+        checks.add(dim, "normalization", deviation <= normalization_warn ? 1 : 2,
+                   detail + "; the formula continued past R integrates to " + format(whole),
+                   "normalised over all space, not over the support: cutting the formula at R changes its integral "
+                   "by " + format(integral - 1, 3) + "; divide W by " + format(integral) + " in " +
+                       std::to_string(dim) + "D or choose a larger R");
+        return;
+    }
+    checks.add(dim, "normalization", deviation <= normalization_truncation ? 1 : 2, detail,
+               "the normalisation constant is off by a factor " + format(integral) + " in " + std::to_string(dim) +
+                   "D (eps_rho inherits it one to one): divide the " + std::to_string(dim) + "D constant by " +
+                   format(integral));
+}
+
 // A provided Fourier transform against the radial quadrature of W.
 void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
 {
@@ -180,14 +225,14 @@ nlohmann::json check_kernel(const Kernel& kernel)
             }
         checks.add(dim, "finiteness", bad ? 2 : 0,
                    bad ? std::to_string(bad) + " non-finite values, first at q = " + format(bad_q)
-                       : "W and dW/dr finite on [0, 1.5 R] at k = 0.75, 1, 1.25");
+                       : "W and dW/dr finite on [0, 1.5 R] at k = 0.75, 1, 1.25",
+                   "a division by zero or a power of a negative number near q = " + format(bad_q) +
+                       "? every q >= 0 must give a finite value");
 
         // Normalisation of the truncated kernel.
         auto [integral, error] = kernel_integral(kernel, dim, check_k);
         normalization[D] = integral;
-        double deviation = std::abs(integral - 1);
-        checks.add(dim, "normalization", deviation <= normalization_ok ? 0 : deviation <= normalization_warn ? 1 : 2,
-                   "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")");
+        check_normalization(kernel, dim, integral, error, checks);
 
         // The moment of the gradient: integral of x . grad W over D-space = -D for a
         // normalised kernel that vanishes at R (by parts); it sees a wrong dW/dr and a
@@ -268,7 +313,11 @@ nlohmann::json check_kernel(const Kernel& kernel)
             bool dw_ok = dw_jump <= 1e-7 * dw_scale;
             checks.add(dim, "continuity", w_ok ? (dw_ok ? 0 : 1) : (at_support ? 1 : 2),
                        where + ": jump of W " + format(w_jump, 4) + ", of dW/dr " + format(dw_jump, 4) +
-                           " (in units of h^-D, h^-(D+1))");
+                           " (in units of h^-D, h^-(D+1))",
+                       at_support ? "W or dW/dr does not reach zero at R: the errors jump where a shell crosses the "
+                                    "support; a kernel that ends smoothly at R avoids it"
+                                  : "the pieces do not meet at q = " + format(b) +
+                                        ": check each piece's formula and constant there");
         }
 
         // Negative lobes of W inside the support.

@@ -10,7 +10,8 @@ namespace sphkern {
 
 // Normalisation thresholds on |integral - 1|.
 inline constexpr double normalization_ok = 1e-9;
-inline constexpr double normalization_warn = 1e-2;
+inline constexpr double normalization_warn = 1e-2;       // a truncation loss above this fails
+inline constexpr double normalization_truncation = 1e-6; // a constant off by more fails
 
 // Runs every check in this process. The result has "kernel", "verdict" (ok, warn,
 // fail), "normalization" ({"D": integral}), "second_moment" and "checks".

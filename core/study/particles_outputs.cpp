@@ -1,6 +1,5 @@
 #include "study/particles_outputs.hpp"
 
-#include "study/gnuplot.hpp"
 
 #include <fmt/format.h>
 
@@ -65,13 +64,10 @@ std::string particles_markdown(const StudyResults& results)
     return s;
 }
 
-std::vector<std::string> draw_particles_figures(const StudyResults& results, const std::filesystem::path& folder,
-                                                const std::filesystem::path& gnuplot)
+void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
 {
     static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-    std::vector<std::string> written;
     for (const auto& [source, cases] : by_source(results)) {
-        const std::string name = file_name(source);
         std::string data, e0_plot, gradp_plot;
         for (std::size_t i = 0; i < cases.size(); ++i) {
             data += fmt::format("$c{} << EOD\n", i);
@@ -79,22 +75,21 @@ std::vector<std::string> draw_particles_figures(const StudyResults& results, con
                 data += fmt::format("{:.10g} {:.10g} {:.10g}\n", p.nh, statistic(p, "e0").rms, statistic(p, "eps_gradp").rms);
             data += "EOD\n";
             const char* colour = colours[i % 8];
-            e0_plot += fmt::format("{}$c{} using 1:2 with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", i ? ", " : "",
-                                   i, colour, cases[i]->kernel_label);
-            gradp_plot += fmt::format("{}$c{} using 1:3 with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'",
-                                      i ? ", " : "", i, colour, cases[i]->kernel_label);
+            const std::string style = fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour,
+                                                  cases[i]->kernel_label);
+            e0_plot += fmt::format("{}$c{} using 1:2 {}", i ? ", " : "", i, style);
+            gradp_plot += fmt::format("{}$c{} using 1:3 {}", i ? ", " : "", i, style);
         }
-        const std::string script = fmt::format(
-            "set encoding utf8\nset terminal svg size 1200,520 dynamic enhanced font 'sans,11' background '#ffffff'\n"
-            "set output '{}.svg'\n{}"
-            "set multiplot layout 1,2 title '{}' noenhanced\nset logscale xy\nset grid\nset xlabel 'N_H'\n"
+        const std::string body = fmt::format(
+            "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
+            "set logscale xy\nset grid\nset xlabel 'neighbour number N_H (dimensionless)'\n"
             "set key outside right top noenhanced\n"
-            "set ylabel 'RMS e0'\nplot {}\nset ylabel 'RMS eps_gradp' noenhanced\nplot {}\nunset multiplot\n",
-            name, data, source, e0_plot, gradp_plot);
-        run_gnuplot(folder, name, script, gnuplot);
-        written.push_back(folder.filename().string() + "/" + name + ".svg");
+            "set title 'density of a constant field'\nset ylabel 'RMS of e0 (relative)'\nplot {}\n"
+            "set title 'hydrostatic pressure gradient'\nset ylabel 'RMS of eps_gradp (relative)' noenhanced\nplot {}\n"
+            "unset multiplot\n",
+            data, source, e0_plot, gradp_plot);
+        draw(file_name(source), 1400, 560, body);
     }
-    return written;
 }
 
 nlohmann::json particles_results_json(const StudyResults& results)

@@ -7,15 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
+#include <functional>
 #include <string>
-#include <vector>
 
 namespace sphkern {
 
 std::string particles_markdown(const StudyResults& results);
-std::vector<std::string> draw_particles_figures(const StudyResults& results, const std::filesystem::path& folder,
-                                                const std::filesystem::path& gnuplot);
+// Hands each figure to `draw` as a gnuplot body without terminal and output (name, width, height).
+using DrawFigure = std::function<void(const std::string& name, int width, int height, const std::string& body)>;
+void draw_particles_figures(const StudyResults& results, const DrawFigure& draw);
 nlohmann::json particles_results_json(const StudyResults& results);
 
 } // namespace sphkern

@@ -18,6 +18,35 @@ const char* status_name(ComparisonStatus status)
     return "differs";
 }
 
+namespace {
+
+// Every value the row prints as a number, against the matching root: k and both errors.
+void compare_values(const JsonNode& row, const Root& computed, double tolerance, ComparisonRow& c)
+{
+    c.compared = {"k"};
+    if (std::abs(computed.k - row.at("k").number()) > tolerance) c.differing.push_back("k");
+    for (const char* key : {"eps_rho", "eps_gradp"}) {
+        const auto& v = row.at(key).value();
+        if (!v.is_number()) continue; // the paper prints no number ("> 1"): nothing to compare
+        c.compared.push_back(key);
+        const double value = std::string(key) == "eps_rho" ? computed.values.eps_rho : computed.values.eps_gradp;
+        if (!(std::abs(value - v.get<double>()) <= tolerance)) c.differing.push_back(key);
+    }
+}
+
+// Reproduced only when nothing differs; an erratum when every difference is one the
+// reference declares ("erratum" covers the whole row, "erratum_<key>" one value).
+ComparisonStatus comparison_status(const JsonNode& row, const std::vector<std::string>& differing)
+{
+    if (differing.empty()) return ComparisonStatus::reproduced;
+    if (row.find("erratum")) return ComparisonStatus::erratum;
+    for (const auto& key : differing)
+        if (!row.find("erratum_" + key)) return ComparisonStatus::differs;
+    return ComparisonStatus::erratum;
+}
+
+} // namespace
+
 void compare_with_reference(const Study& study, StudyResults& results)
 {
     auto document = read_json_file(*study.compare_with);
@@ -44,6 +73,7 @@ void compare_with_reference(const Study& study, StudyResults& results)
         for (const char* key : {"printed_eps_gradp", "erratum", "erratum_eps_gradp", "erratum_eps_rho"})
             if (auto v = row.find(key)) v->string();
         if (auto no_root = row.find("no_root"); no_root && no_root->boolean()) {
+            if (!match->scan.roots.empty()) c.differing = {"roots"};
             c.status = match->scan.roots.empty() ? ComparisonStatus::reproduced : ComparisonStatus::differs;
             c.note = match->scan.roots.empty() ? "no root in the interval" : "sphkern finds roots in the interval";
             results.comparison.push_back(c);
@@ -61,22 +91,17 @@ void compare_with_reference(const Study& study, StudyResults& results)
                 c.computed = r;
         if (!c.computed || std::abs(c.computed->k - k) > 0.05) {
             c.computed.reset();
-            c.status = row.find("erratum") ? ComparisonStatus::erratum : ComparisonStatus::differs;
+            c.differing = {"k"};
             c.note = std::string("no root of eps_") + function_name(function) + " near this k";
         } else {
-            bool within = std::abs(c.computed->k - k) <= results.tolerance;
-            for (const char* key : {"eps_rho", "eps_gradp"}) {
-                const auto& v = row.at(key).value();
-                if (!v.is_number() || row.find(std::string("erratum_") + key)) continue;
-                double computed = std::string(key) == "eps_rho" ? c.computed->values.eps_rho : c.computed->values.eps_gradp;
-                within = within && std::abs(computed - v.get<double>()) <= results.tolerance;
-            }
-            c.status = row.find("erratum") ? ComparisonStatus::erratum
-                       : within           ? ComparisonStatus::reproduced
-                                          : ComparisonStatus::differs;
+            compare_values(row, *c.computed, results.tolerance, c);
         }
+        c.status = comparison_status(row, c.differing);
         if (auto e = row.find("erratum")) c.note = e->string();
-        if (auto e = row.find("erratum_eps_gradp")) c.note = "eps_gradP: " + e->string();
+        if (auto e = row.find("erratum_eps_gradp"); e && c.status == ComparisonStatus::erratum)
+            c.note = "eps_gradP: " + e->string();
+        if (auto e = row.find("erratum_eps_rho"); e && c.status == ComparisonStatus::erratum)
+            c.note = "eps_rho: " + e->string();
         results.comparison.push_back(c);
     }
 }

@@ -1,8 +1,10 @@
 #include "study/report.hpp"
 
 #include "study/particles_outputs.hpp"
+#include "analysis/resolution_axis.hpp"
+#include "support/provenance.hpp"
 
-#include "support/install_paths.hpp"
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -26,11 +28,30 @@ std::string number(const nlohmann::json& v, int decimals = 5)
 std::string fixed(double v, int decimals = 5)
 {
     if (std::abs(v) >= 1e3) return fmt::format("{:.3g}", v);
+    if (std::abs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0; // no "-0.00000"
     return fmt::format("{:.{}f}", v, decimals);
 }
 
-// The method document where this sphkern finds its data (installed, or the source tree's).
-std::string method_document() { return (data_folder("docs") / "method.md").string(); }
+// The method document: a copy travels with every results folder (method_document_path()),
+// so the link is relative and holds wherever the folder is moved or sent.
+std::string method_document() { return "[method.md](method.md)"; }
+
+// The value of k on the study's axis, for the tables: "" on the k axis (nh is the N_H column).
+std::string on_axis(const Study& study, double k, const StudyCase& c)
+{
+    if (study.axis != "eta") return "";
+    return fmt::format(" (eta {:.4f})", eta_of_k(k, c.a_p, c.dimension));
+}
+
+std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& intervals, const StudyCase& c)
+{
+    if (study.axis != "eta" || intervals.empty()) return "";
+    std::string s;
+    for (const auto& i : intervals)
+        s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", eta_of_k(i.from, c.a_p, c.dimension),
+                         eta_of_k(i.to, c.a_p, c.dimension));
+    return " = eta " + s;
+}
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
 
@@ -59,6 +80,17 @@ std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
     return groups;
 }
 
+// "erratum: eps_gradP differs": the status and what made it.
+std::string status_text(const ComparisonRow& r)
+{
+    std::string s = status_name(r.status);
+    if (r.differing.empty()) return s;
+    std::string what;
+    for (const auto& d : r.differing)
+        what += (what.empty() ? "" : ", ") + (d == "eps_gradp" ? std::string("eps_gradP") : d);
+    return s + ": " + what + " differ" + (r.differing.size() == 1 ? "s" : "");
+}
+
 } // namespace
 
 std::string replication_markdown(const StudyResults& results)
@@ -66,8 +98,9 @@ std::string replication_markdown(const StudyResults& results)
     if (results.comparison.empty()) return {};
     const auto& ref = results.reference;
     std::string s = fmt::format(
-        "## Replication of the reference table\n\n{}: lattice {}, a_p = {}, mode \"{}\". A row is reproduced when k "
-        "and both errors agree within {}.\n\n",
+        "## Replication of the reference table\n\n{}: lattice {}, a_p = {}, mode \"{}\". A row is reproduced only "
+        "when k and every error value the reference prints agree within {}; otherwise its status names what differs "
+        "(an erratum: the reference itself is in error there, see the note).\n\n",
         ref.value("source", "reference"), ref.value("lattice", "?"), ref.value("volume_coefficient", "?"),
         ref.value("mode", "?"), results.tolerance);
     s += "| kernel | zero of | k (paper) | k (sphkern) | Δk | eps_rho (paper) | eps_rho (sphkern) | eps_gradP (paper) "
@@ -79,7 +112,7 @@ std::string replication_markdown(const StudyResults& results)
         const auto& p = r.reference;
         if (!r.function) {
             s += fmt::format("| {} | - | no root | {} | | | | | | {} | {} |\n", r.kernel,
-                             r.status == ComparisonStatus::reproduced ? "no root" : "roots found", status_name(r.status),
+                             r.status == ComparisonStatus::reproduced ? "no root" : "roots found", status_text(r),
                              r.note);
             continue;
         }
@@ -89,19 +122,20 @@ std::string replication_markdown(const StudyResults& results)
             s += fmt::format("| {} | {} | {} | {:.5f} | {:+.1e} | {} | {} | {} | {} | {} | {} |\n", r.kernel,
                              eps_name(*r.function), number(p["k"]), r.computed->k, r.computed->k - p["k"].get<double>(),
                              number(p["eps_rho"]), fixed(r.computed->values.eps_rho), gradp_paper,
-                             fixed(r.computed->values.eps_gradp), status_name(r.status), r.note);
+                             fixed(r.computed->values.eps_gradp), status_text(r), r.note);
         else
             s += fmt::format("| {} | {} | {} | - | | {} | | {} | | {} | {} |\n", r.kernel, eps_name(*r.function),
-                             number(p["k"]), number(p["eps_rho"]), gradp_paper, status_name(r.status), r.note);
+                             number(p["k"]), number(p["eps_rho"]), gradp_paper, status_text(r), r.note);
     }
-    s += fmt::format("\n{} of {} rows reproduced; {} row(s) marked as errata of the paper; {} differ.\n\n", reproduced,
-                     results.comparison.size(), errata, results.comparison.size() - reproduced - errata);
+    s += fmt::format("\n{} of {} rows reproduced; {} row(s) differ where the reference is in error (errata); {} differ "
+                     "otherwise.\n\n",
+                     reproduced, results.comparison.size(), errata, results.comparison.size() - reproduced - errata);
     return s;
 }
 
 std::string verdicts_markdown(const Study& study, const StudyResults& results)
 {
-    std::string s = fmt::format("## Condition (22): |eps_rho| <= {} and |eps_gradP| <= {} for some {} in [{}, {}]\n\n",
+    std::string s = fmt::format("## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
                                 study.epsilon, study.epsilon, study.axis, study.k_min, study.k_max);
     if (study.axis != "k")
         s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
@@ -131,7 +165,8 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
         for (const auto& g : groups) {
             auto it = std::find_if(g.begin(), g.end(), [&](const StudyCase* c) { return c->kernel_label == kernel; });
             s += it == g.end() ? " |"
-                 : (*it)->acceptance.passes() ? fmt::format(" **pass** k={:.3f} |", (*it)->acceptance.best_k)
+                 : (*it)->acceptance.passes() ? fmt::format(" **pass** k={:.3f}{} |", (*it)->acceptance.best_k,
+                                                            on_axis(study, (*it)->acceptance.best_k, **it))
                                               : fmt::format(" fail ({:.2g}) |", (*it)->acceptance.best_error);
         }
         s += "\n";
@@ -139,18 +174,25 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
     s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
     for (const auto& g : groups) {
         std::string windows;
-        if (study.axis != "k")
-            for (const auto* c : g)
-                windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
-                                       c->k_min, c->k_max);
+        if (study.axis != "k") {
+            const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
+                return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
+            });
+            if (same) windows = fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
+            else
+                for (const auto* c : g)
+                    windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
+                                           c->k_min, c->k_max);
+        }
         s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
                          g[0]->ap_name, g[0]->a_p, windows) +
-             "| kernel | verdict | k where (22) holds | best k | max(|eps_rho|, |eps_gradP|) at best k | every direction |\n"
+             "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
              "|---|---|---|---|---|---|\n";
         for (const auto* c : g)
-            s += fmt::format("| {} | {} | {} | {:.4f} | {:.2e} | {} {} |\n", c->kernel_label,
+            s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
                              c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
-                             c->acceptance.best_k, c->acceptance.best_error,
+                             intervals_on_axis(study, c->acceptance.intervals, *c), c->acceptance.best_k,
+                             on_axis(study, c->acceptance.best_k, *c), c->acceptance.best_error,
                              c->acceptance_every.passes() ? "pass" : "fail", intervals_text(c->acceptance_every));
         s += "\n";
         // Several sites: each on its own, so that a site that fails is seen.
@@ -176,13 +218,16 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
 
 namespace {
 
-std::string header_markdown(const Study& study)
+std::string header_markdown(const Study& study, const nlohmann::json& inputs)
 {
-    std::string s = fmt::format("# {}\n\nsphkern {}, study `{}`: {} in [{}, {}], {} samples per curve, epsilon = {}.\n"
+    const std::string sha = inputs.value("study", nlohmann::json::object()).value("sha256", std::string());
+    std::string s = fmt::format("# {}\n\n{}; study `{}`{}: {} in [{:.6g}, {:.6g}], {} samples per curve, epsilon = "
+                                "{:.6g}. results.json records the inputs in full and how they were run.\n"
                                 "Errors are the bulk relative errors of {} section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
-                                study.title, SPHKERN_VERSION, study.file, study.axis, study.k_min, study.k_max, study.samples,
-                                study.epsilon, method_document());
+                                study.title, version_text(), std::filesystem::path(study.file).filename().string(),
+                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", study.axis, study.k_min,
+                                study.k_max, study.samples, study.epsilon, method_document());
     s += "Modes: ";
     for (const auto& m : study.modes) {
         s += fmt::format("**{}** ", m.name);
@@ -238,7 +283,7 @@ std::string explanations_markdown(const StudyResults& results)
     return s;
 }
 
-std::string roots_markdown(const StudyResults& results)
+std::string roots_markdown(const Study& study, const StudyResults& results)
 {
     std::string s;
     s += "## Roots and jumps\n\n";
@@ -248,8 +293,8 @@ std::string roots_markdown(const StudyResults& results)
         for (const auto* c : g) {
             if (c->scan.roots.empty()) s += fmt::format("| {} | no root | | | | | |\n", c->kernel_label);
             for (const auto& r : c->scan.roots)
-                s += fmt::format("| {} | {} | {:.5f} | {} | {} | {} | {:.4f} |\n", c->kernel_label, eps_name(r.function),
-                                 r.k, fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
+                s += fmt::format("| {} | {} | {:.5f}{} | {} | {} | {} | {:.4f} |\n", c->kernel_label, eps_name(r.function),
+                                 r.k, on_axis(study, r.k, *c), fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
                                  r.support_radius);
             for (const auto& j : c->scan.jumps)
                 s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c->kernel_label,
@@ -322,10 +367,13 @@ std::string figures_markdown(const std::vector<std::string>& figures)
 {
     std::string s;
     if (!figures.empty()) {
-        s += "## Figures\n\nErrors against k: eps_rho solid, eps_gradP dashed, one colour per a_p, the band |eps| <= "
-             "epsilon shaded (as the paper's Figs. 4 to 6). Stability: min omega^2 of each branch against k, the k where "
-             "condition (22) holds shaded green, the stable k marked blue at the bottom; dispersion curves: omega^2 of "
-             "each branch along the high-symmetry path at the k named in the panel.\n\n";
+        s += "## Figures\n\nErrors against k: the density error solid, the pressure-gradient error dashed, one "
+             "colour per a_p, the band |error| <= epsilon shaded (as the paper's Figs. 4 to 6), on a symmetric "
+             "logarithmic axis (linear within epsilon / 10 of zero, logarithmic beyond), so that every curve stays "
+             "in its panel. Stability: min omega^2 of each branch against k on a symmetric logarithmic axis "
+             "(linear within 1e-5), the k where condition (22) holds shaded green, the stable k as a blue bar at the "
+             "bottom with a red mark on every unstable sample; dispersion curves: omega^2 of each branch along the "
+             "high-symmetry path at the k named in the panel (linear within 1e-3). Each panel has its own legend.\n\n";
         for (const auto& f : figures) s += fmt::format("![{}]({})\n\n", f, f);
     }
     return s;
@@ -363,13 +411,40 @@ std::string stability_markdown(const StudyResults& results)
     return s + "\n";
 }
 
+// The terms the tables use, in the report itself so that it reads on its own.
+std::string glossary_markdown()
+{
+    return "## Glossary\n\n"
+           "| term | meaning |\n|---|---|\n"
+           "| d | the nearest-neighbour distance of the lattice, the unit of length |\n"
+           "| h, k | the smoothing length and the smoothing coefficient k = h / d |\n"
+           "| R, H | the kernel's support in units of h, and the support radius H = R h; H/d = R k |\n"
+           "| a_p | the volume coefficient: a particle's volume is V = a_p d^D (voronoi: the volume per site; ball: "
+           "the inscribed ball; cube: d^D; or a number) |\n"
+           "| eta | h / V^(1/D): the resolution on a scale common to every lattice and a_p |\n"
+           "| N_H (nh) | the number of neighbours inside the support radius H, the particle itself excluded |\n"
+           "| eps_rho, eps_gradP | the relative errors of the SPH density and of the hydrostatic pressure gradient "
+           "along gravity for a particle at rest on a lattice site (method.md section 2) |\n"
+           "| condition (22) | \\|eps_rho\\| <= epsilon and \\|eps_gradP\\| <= epsilon: the paper's test of a kernel, "
+           "lattice and a_p |\n"
+           "| every direction | condition (22) with the largest \\|eigenvalue\\| of the gradient-error tensor in place "
+           "of \\|eps_gradP\\| |\n"
+           "| mode | how the sums are formed: default, every shell inside the support with the kernel cut at R; a "
+           "fixed-shell mode (the paper's), listed shells only, some formulas continued past R |\n"
+           "| root, jump | a k where an error crosses zero continuously; a k where it changes sign by a step (a "
+           "shell entering the support) or across a pole |\n"
+           "| omega^2, branch | the squared frequency of a plane wave in (c/d)^2 (negative: it grows, the lattice "
+           "is unstable), one per polarisation |\n\n";
+}
+
 } // namespace
 
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
 {
-    return header_markdown(study) + replication_markdown(results) + explanations_markdown(results) +
-           roots_markdown(results) + verdicts_markdown(study, results) + surface_markdown(results) +
-           sweeps_markdown(results) + stability_markdown(results) + particles_markdown(results) + figures_markdown(figures);
+    return header_markdown(study, results.inputs) + glossary_markdown() + replication_markdown(results) + explanations_markdown(results) +
+           roots_markdown(study, results) + verdicts_markdown(study, results) + surface_markdown(results) +
+           sweeps_markdown(results) + stability_markdown(results) + particles_markdown(results) +
+           figures_markdown(figures);
 }
 
 } // namespace sphkern

@@ -4,6 +4,7 @@
 #include "study/particles_outputs.hpp"
 #include "stability/stability_json.hpp"
 #include "support/chunked_writer.hpp"
+#include "support/provenance.hpp"
 
 #include <cmath>
 
@@ -52,8 +53,10 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
         if (std::isfinite(v)) w.print("{}", v);
         else w.text("null");
     };
-    w.print("{{\n \"sphkern_version\": {},\n \"study_file\": {},\n \"study\": {},\n \"cases\": [",
-            nlohmann::json(SPHKERN_VERSION).dump(), nlohmann::json(study.file).dump(), study.document.dump());
+    w.print("{{\n \"sphkern_version\": {},\n \"provenance\": {},\n \"study_file\": {},\n \"study\": {},\n "
+            "\"inputs\": {},\n \"cases\": [",
+            nlohmann::json(SPHKERN_VERSION).dump(), provenance().dump(), nlohmann::json(study.file).dump(),
+            study.document.dump(), results.inputs.dump());
     for (std::size_t i = 0; i < results.cases.size(); ++i) {
         const auto& c = results.cases[i];
         nlohmann::json explanations = nlohmann::json::array();
@@ -99,6 +102,8 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
         comparison.push_back({{"reference", r.reference},
                               {"function", r.function ? nlohmann::json(function_name(*r.function)) : nlohmann::json("none")},
                               {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
+                              {"compared", r.compared},
+                              {"differs_in", r.differing},
                               {"status", status_name(r.status)},
                               {"note", r.note}});
     nlohmann::json surface = nlohmann::json::array();

@@ -64,6 +64,8 @@ struct ComparisonRow {
     std::string kernel;
     std::optional<ErrorFunction> function; // the error the row zeroes; empty: the paper finds no root
     std::optional<Root> computed;          // the matching root in the compared mode
+    std::vector<std::string> compared;      // the values compared: "k", "eps_rho", "eps_gradp"
+    std::vector<std::string> differing;     // those outside the tolerance ("roots": a root where none is printed)
     ComparisonStatus status = ComparisonStatus::differs;
     std::string note;
 };
@@ -116,6 +118,7 @@ struct StudyResults {
     std::vector<ParticlesCase> particles;
     double tolerance = 1e-4;
     nlohmann::json reference; // the whole reference table, if any
+    nlohmann::json inputs;    // the study file, lattices and kernels in full (study_provenance.hpp)
 };
 
 } // namespace sphkern

@@ -3,6 +3,7 @@
 #include "study/reference_comparison.hpp"
 #include "study/sections/sections.hpp"
 #include "study/study_inputs.hpp"
+#include "study/study_provenance.hpp"
 
 namespace sphkern {
 
@@ -10,6 +11,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
 {
     const StudyInputs inputs = load_study_inputs(study, registry);
     StudyResults results;
+    results.inputs = study_inputs_json(study, inputs);
     run_bulk_section(study, inputs, results);
     run_surface_section(study, inputs, results);
     run_sweep_section(study, registry, inputs, results);

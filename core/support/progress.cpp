@@ -1,24 +1,58 @@
 #include "support/progress.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace sphkern {
 
-Progress::Progress(std::string what, std::size_t total)
-    : what_(std::move(what)), total_(total), enabled_(::isatty(STDERR_FILENO) == 1)
+namespace {
+
+// "about 12 s left" from the mean time per step so far.
+std::string estimate(double elapsed, std::size_t done, std::size_t total)
 {
+    if (done == 0 || done >= total) return "";
+    const double left = elapsed / double(done) * double(total - done);
+    return left < 90 ? fmt::format(", about {:.0f} s left", std::ceil(left))
+                     : fmt::format(", about {:.0f} min left", std::ceil(left / 60));
+}
+
+} // namespace
+
+Progress::Progress(std::string what, std::size_t total)
+    : what_(std::move(what)), total_(total), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()),
+      last_line_(start_)
+{
+    if (const char* seconds = std::getenv("SPHKERN_PROGRESS_SECONDS")) {
+        char* end = nullptr;
+        const double value = std::strtod(seconds, &end);
+        if (end != seconds && *end == '\0' && std::isfinite(value) && value >= 0) first_after_ = every_ = value;
+    }
 }
 
 Progress::~Progress()
 {
-    if (enabled_ && done_ > 0) std::fprintf(stderr, "\r\033[K");
+    if (terminal_ && done_ > 0) std::fprintf(stderr, "\r\033[K");
 }
 
 void Progress::step(const std::string& item)
 {
     ++done_;
-    if (enabled_) std::fprintf(stderr, "\r\033[K%s: %zu/%zu %s", what_.c_str(), done_, total_, item.c_str());
+    const auto now = Clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (terminal_) {
+        std::fprintf(stderr, "\r\033[K%s: %zu/%zu %s%s", what_.c_str(), done_, total_, item.c_str(),
+                     estimate(elapsed, done_, total_).c_str());
+        return;
+    }
+    if (elapsed < first_after_ || std::chrono::duration<double>(now - last_line_).count() < every_) return;
+    last_line_ = now;
+    spdlog::info("{}: {}/{} done (last: {}), {:.0f} s so far{}", what_, done_, total_, item, elapsed,
+                 estimate(elapsed, done_, total_));
 }
 
 } // namespace sphkern

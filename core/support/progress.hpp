@@ -1,6 +1,10 @@
-// Progress of long work on stderr, shown only when stderr is a terminal.
+// Progress of long work on stderr. On a terminal one line rewritten in place; otherwise
+// (a log file, a pipe) a plain log line every 5 s once the work has taken 2 s, with what
+// is done and an estimate of the rest. SPHKERN_PROGRESS_SECONDS sets both times (0: a
+// line at every step).
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 
@@ -13,9 +17,12 @@ public:
     void step(const std::string& item);
 
 private:
+    using Clock = std::chrono::steady_clock;
     std::string what_;
     std::size_t total_, done_ = 0;
-    bool enabled_;
+    bool terminal_;
+    double first_after_ = 2, every_ = 5; // seconds
+    Clock::time_point start_, last_line_;
 };
 
 } // namespace sphkern

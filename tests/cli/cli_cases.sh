@@ -4,6 +4,7 @@
 # Usage: cli_cases.sh SPHKERN BROKEN_PLUGIN_DIR DATA_DIR
 set -u
 sphkern=$(realpath "$1") broken=$(realpath "$2") data=$(realpath "$3")
+examples=$(realpath "$(dirname "$0")/../../lattices/examples")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SPHKERN_PLUGIN_TIMEOUT=2
@@ -217,6 +218,13 @@ expect 3 's_range.json: /sweeps/0/range: expected \[min, max\] with min < max' -
 study s_ok '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false}'
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10"
 expect 5 'out10: already exists; use --force' -- run "$work/s_ok.json" -o "$work/out10"
+# run --reproduce: a results file, and nothing else with it.
+expect 0 '^$' -- run --reproduce "$work/out10/results.json"
+expect 3 'nowhere.json' -- run --reproduce "$work/nowhere.json"
+lattice notresults '{"cases": []}'
+expect 3 'notresults.json: /: missing required key "study_file"' -- run --reproduce "$work/notresults.json"
+expect 2 'excludes' -- run "$work/s_ok.json" --reproduce "$work/out10/results.json"
+expect 2 '--format svg,gif: "gif" is not a figure format, expected svg, png or pdf' -- run "$work/s_ok.json" --format svg,gif -o "$work/out15"
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
 # A failed run leaves no output folder behind, partial or not.
 [[ -z $(ls -A "$work" | grep -E '^out([1-9]|1[1-4])$|partial') ]] && passed=$((passed + 1)) || {
@@ -238,6 +246,10 @@ check() { # check DESCRIPTION CONDITION...: one catalogue case decided by a shel
 signal_when() { # signal_when READY "SIG [SIG...]" -- ARGS...
     local ready=$1 signals=$2
     shift 3
+    # The previous call's log must not answer for this one: the child truncates the file only
+    # once it runs, and a signal sent before sphkern installs its handlers is lost (SIGINT is
+    # ignored in a background job) or kills it with the default action.
+    rm -f "$work/signal.out" "$work/signal.err"
     "$sphkern" --log-level debug "$@" >"$work/signal.out" 2>"$work/signal.err" &
     local pid=$! i
     for ((i = 0; i < 400; i++)); do
@@ -403,7 +415,7 @@ expect 3 'no\\nline.json: no such file' -- shells "$work/no
 line.json" --radius 2
 
 # Several sites: indices out of range, empty lists, terminations that do not exist.
-honeycomb="$data/lattices/honeycomb.json"
+honeycomb="$examples/honeycomb.json"
 expect 3 '--site: site 2 does not exist; lattice honeycomb has sites 0 to 1' -- roots cubic_bspline "$honeycomb" --site 2
 expect 3 'site 7 does not exist; lattice honeycomb has sites 0 to 1' -- surface cubic_bspline "$honeycomb" --k 1.2 --site 7
 expect 3 'termination 2 does not exist; lattice honeycomb has 2 plane type\(s\) normal to this gravity, 0 to 1' -- \
@@ -473,7 +485,7 @@ expect 2 'wavevector 1,2: 2 components, expected 3' -- stability cubic_bspline f
 expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability cubic_bspline fcc --k 1.2 --gamma 0
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
-expect 3 'do not see one SPH density' -- stability cubic_bspline "$data/lattices/lieb.json" --k 1.2
+expect 3 'do not see one SPH density' -- stability cubic_bspline "$examples/lieb.json" --k 1.2
 expect 2 '--path: Value 1 not in range 2 to 100000' -- stability cubic_bspline fcc --k 1.2 --path 1
 expect 2 '--gamma -1 is not allowed, expected a number in \(0, 1e6\]' -- roots cubic_bspline fcc --stability --gamma -1
 check "roots --stability: the stable intervals of stability --kmin/--kmax, and their overlap with (22)" python3 -c "
@@ -508,7 +520,7 @@ import json; r = json.load(open('$work/elsewhere/out/results.json'))
 assert {c['lattice'] for c in r['cases']} == {'mine'}, r['cases'][0]['lattice']
 assert len(r['cases']) == 2"
 # In a study the same lattice is reported as not available, and the study completes.
-study s_lieb "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"$data/lattices/lieb.json\", \"square\"], \"stability\": {\"k\": {\"steps\": 10}}}"
+study s_lieb "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"$examples/lieb.json\", \"square\"], \"stability\": {\"k\": {\"steps\": 10}}}"
 "$sphkern" run "$work/s_lieb.json" --no-plots -o "$work/out_lieb" >/dev/null 2>&1
 check "study with lieb: not available, square scanned" grep -q 'not available: the sites of lattice lieb do not see one SPH density' "$work/out_lieb/report.md"
 check "study with lieb: square has stable intervals" python3 -c "

@@ -2,21 +2,51 @@
 # The default study writes a complete results folder and prints the replication table.
 set -eu
 sphkern=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$sphkern" run -o "$work/out" >"$work/stdout"
-for f in report.md results.json curves.csv; do test -s "$work/out/$f"; done
+SPHKERN_PROGRESS_SECONDS=0 "$sphkern" run -o "$work/out" >"$work/stdout" 2>"$work/stderr"
+for f in report.md results.json curves.csv method.md; do test -s "$work/out/$f"; done
+# Progress as plain lines when stderr is a file (here at every step: SPHKERN_PROGRESS_SECONDS=0).
+grep -Eq '^sphkern: info: study potapov2021: 1/[0-9]+ done .*s so far, about [0-9]+ (s|min) left$' "$work/stderr"
+# The report links the method document copied beside it, never a path of this machine.
+grep -q '\[method.md\](method.md)' "$work/out/report.md"
+if grep -q "$root" "$work/out/report.md"; then echo "report.md names a path of this machine" >&2; exit 1; fi
+cmp "$work/out/method.md" "$root/share/docs/method.md"
 if command -v gnuplot >/dev/null; then
     test -s "$work/out/plots/triangular-paper.svg"
     grep -q 'plots/triangular-default.svg' "$work/out/report.md"
 fi
-grep -q '20 of 21 rows reproduced' "$work/stdout"
 python3 -c "
-import json, sys
+import hashlib, json, re, sys
 r = json.load(open('$work/out/results.json'))
 assert r['sphkern_version'] and r['study']['name'] == 'potapov2021'
 assert len(r['cases']) == 8 * 3 * 2, len(r['cases'])
-assert sum(c['status'] == 'reproduced' for c in r['comparison']) == 20
+# A row is reproduced only when every compared value agrees; the README and the method
+# document state the count this table gives.
+rows = r['comparison']
+reproduced = sum(c['status'] == 'reproduced' for c in rows)
+assert all((c['status'] == 'reproduced') == (not c['differs_in']) for c in rows), rows
+composite = [c for c in rows if c['reference']['kernel'] == 'composite']
+assert [c['status'] for c in composite] == ['erratum', 'erratum'] and composite[1]['differs_in'] == ['eps_gradp'], composite
+assert abs(composite[1]['computed']['eps_gradp'] + 1) < 1e-12, composite[1]
+assert reproduced == 19, reproduced
+stdout = open('$work/stdout').read()
+assert f'{reproduced} of {len(rows)} rows reproduced' in stdout, stdout[:2000]
+assert f'{reproduced} of the {len(rows)} rows of Table 1 are reproduced' in open('$root/README.md').read()
+assert f'{reproduced} of its {len(rows)} rows are reproduced' in open('$root/share/docs/method.md').read()
+# Provenance and the inputs in full, the hashes against Python's own SHA-256.
+p = r['provenance']
+assert p['sphkern_version'] == r['sphkern_version'] and p['command_line'][1:] == ['run', '-o', '$work/out'], p
+assert re.fullmatch(r'\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ', p['date_utc']) and p['host']['threads'] >= 1, p
+inputs = r['inputs']
+study_bytes = open(r['study_file'], 'rb').read()
+assert inputs['study']['sha256'] == hashlib.sha256(study_bytes).hexdigest() and inputs['study']['text'] == study_bytes.decode()
+assert [l['name'] for l in inputs['lattices']] == ['triangular'] and inputs['lattices'][0]['definition']['dimension'] == 2
+assert len(inputs['kernels']) == 8
+for k in inputs['kernels']:
+    assert k['sha256'] == hashlib.sha256(open(k['file'], 'rb').read()).hexdigest(), k
+    assert k['abi'].startswith('2.'), k
 assert len(r['surface']) == 8 * 3 and all(len(s['layers']) >= 4 for s in r['surface'])
 st = r['stability']
 assert len(st) == 8 and all(len(s['k']) == 101 and len(s['branch_minima'][0]) == 2 for s in st), len(st)
@@ -33,6 +63,22 @@ if command -v gnuplot >/dev/null; then
     test -s "$work/out/plots/triangular-stability.svg"
     test -s "$work/out/plots/triangular-dispersion.svg"
 fi
+# The results file alone runs the study again; a changed number is found.
+"$sphkern" run --reproduce "$work/out/results.json" >"$work/reproduce" 2>"$work/reproduce.err"
+grep -Eq '^reproduced: all [0-9]+ numbers of .*results.json agree within a relative 1e-9$' "$work/reproduce"
+altered=$(python3 -c "
+import json
+r = json.load(open('$work/out/results.json'))
+i = next(i for i, c in enumerate(r['cases']) if c['roots'])
+r['cases'][i]['roots'][0]['k'] += 1e-6
+json.dump(r, open('$work/altered.json', 'w'))
+print(f'/cases/{i}/roots/0/k')
+")
+status=0
+"$sphkern" run --reproduce "$work/altered.json" >"$work/reproduce" 2>/dev/null || status=$?
+test "$status" -eq 1
+grep -q '^not reproduced: 1 of [0-9]* numbers' "$work/reproduce"
+grep -q "^  $altered: recorded" "$work/reproduce"
 "$sphkern" run lattices-3d --no-plots -o "$work/out3d" >/dev/null
 python3 -c "
 import json
@@ -85,8 +131,19 @@ for kernel in ("cubic_bspline", "wendland_c2"):
     assert all(p["statistics"]["e0"]["std"] > 1e-3 for p in disturbed)
 print("particles section: lattice limit and disorder as expected")
 CHECK
+# A --json document carries its provenance and, where the command has them, its inputs.
+"$sphkern" eps cubic_bspline fcc --k 1.2 --json >"$work/eps.json"
+"$sphkern" kernels --json >"$work/kernels.json"
+python3 -c "
+import hashlib, json
+e = json.load(open('$work/eps.json'))
+assert e['provenance']['command_line'][1:] == ['eps', 'cubic_bspline', 'fcc', '--k', '1.2', '--json'], e['provenance']
+k, l = e['inputs']['kernels'][0], e['inputs']['lattices'][0]
+assert k['name'] == 'cubic_bspline' and k['sha256'] == hashlib.sha256(open(k['file'], 'rb').read()).hexdigest()
+assert l['definition'] == json.load(open(l['file'])) and l['sha256'] == hashlib.sha256(open(l['file'], 'rb').read()).hexdigest()
+assert all(item['provenance']['sphkern_version'] for item in json.load(open('$work/kernels.json')))
+"
 # Every results.json written here, and the shipped studies, against their JSON Schemas.
-root=$(cd "$(dirname "$0")/../.." && pwd)
 python3 "$root/tests/cli/validate_study_schemas.py" "$root/share/schemas" "$root/share/studies" "$sphkern" \
     "$work/out/results.json" "$work/out3d/results.json" "$work/design/results.json" "$work/particles/results.json"
 echo "1 passed, 0 failed"

@@ -21,15 +21,20 @@ plugin="$work/example/morris_quintic_359.so"
 # Hidden visibility: the entry is the only exported symbol of ours.
 nm -D --defined-only "$plugin" | grep -q ' T sphkern_kernel_entry$'
 ! nm -D --defined-only "$plugin" | grep -q ' t \| T w$'
-"$work/prefix/bin/sphkern" check --plugin "$plugin" --json >"$work/check.json"
+# Its 3D constant 3/(359 pi) is off by 120/(359/3) - 1 = 0.279%: a wrong constant fails (exit 1), with the factor.
+status=0
+"$work/prefix/bin/sphkern" check --plugin "$plugin" --json >"$work/check.json" || status=$?
+test "$status" -eq 1
 python3 -c "
 import json
 r = json.load(open('$work/check.json'))
 assert isinstance(r, list) and len(r) == 1, r
 r = r[0]
 assert r['kernel'] == 'morris_quintic_359', r['kernel']
-assert abs(r['normalization']['3'] - 1.00279) < 5e-6, r['normalization']
-assert abs(r['normalization']['2'] - 1) < 1e-9 and r['verdict'] == 'warn'
+assert abs(r['normalization']['3'] - 360 / 359) < 1e-9, r['normalization']
+assert abs(r['normalization']['2'] - 1) < 1e-9 and r['verdict'] == 'fail'
+n3 = [c for c in r['checks'] if c['check'] == 'normalization' and c['dimension'] == 3][0]
+assert n3['status'] == 'fail' and 'divide the 3D constant by 1.00278' in n3['hint'], n3
 "
 # The installed Python module finds the installed kernels, and loads the plugin built with the SDK.
 if [[ -d "$build/python" ]]; then

@@ -12,7 +12,7 @@ schema = json.loads((folder / "lattice.schema.json").read_text())
 jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
 passed = failed = 0
-for path in sorted(folder.glob("*.json")):
+for path in sorted(folder.glob("*.json")) + sorted(folder.glob("examples/*.json")):
     if path.name == "lattice.schema.json":
         continue
     errors = list(validator.iter_errors(json.loads(path.read_text())))

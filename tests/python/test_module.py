@@ -17,8 +17,13 @@ LATTICES = [entry["name"] for entry in sphkern.lattices()]
 
 
 def cli_json(*args):
+    """The command's document without its provenance and inputs (the module's have neither)."""
     done = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True, check=True)
-    return json.loads(done.stdout)
+    document = json.loads(done.stdout)
+    for item in document if isinstance(document, list) else [document]:
+        assert item.pop("provenance")["sphkern_version"] == sphkern.__version__
+        item.pop("inputs", None)
+    return document
 
 
 def cli_error(*args):

@@ -9,6 +9,8 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <cstdlib>
 
 namespace sphkern::test {
@@ -24,6 +26,14 @@ inline KernelRegistry& shipped_kernels()
 }
 
 inline Kernel shipped_kernel(const std::string& name) { return Kernel(shipped_kernels().find(name)); }
+
+// A lattice file by name: the examples shipped with sphkern (lattices/examples), else the
+// test data (tests/data/lattices).
+inline std::string lattice_file(const std::string& name)
+{
+    const std::string example = SPHKERN_SOURCE_DIR "/lattices/examples/" + name + ".json";
+    return std::filesystem::exists(example) ? example : SPHKERN_SOURCE_DIR "/tests/data/lattices/" + name + ".json";
+}
 
 struct BruteForce {
     double eps_rho, eps_gradp;

@@ -143,7 +143,7 @@ TEST_CASE("on an unperturbed periodic lattice block every particle has the latti
     const auto kernel = shipped_kernel("cubic_bspline");
     for (const std::string name : {"triangular", "square", "fcc", "bcc", "hcp", "sc", "honeycomb"}) {
         CAPTURE(name);
-        const auto lattice = name == "honeycomb" ? load_lattice(SPHKERN_SOURCE_DIR "/tests/data/lattices/honeycomb.json")
+        const auto lattice = name == "honeycomb" ? load_lattice(SPHKERN_SOURCE_DIR "/lattices/examples/honeycomb.json")
                                                  : load_lattice(name);
         const double k = 1.13;
         LatticeBlockSpec spec;

@@ -74,6 +74,53 @@ TEST_CASE("a valid but unnormalised plugin fails the check")
     CHECK(result["normalization"]["2"].get<double>() == doctest::Approx(M_PI / 2).epsilon(1e-12));
 }
 
+TEST_CASE("a wrong normalisation constant fails with the factor to divide by")
+{
+    Kernel kernel(load_kernel_plugin(broken("unnormalised")));
+    auto result = check_kernel_isolated(kernel, 30);
+    for (const auto& c : result["checks"])
+        if (c["check"] == "normalization") {
+            CAPTURE(c.dump());
+            CHECK(c["status"] == "fail");
+            // pi / 2 = 1.570796327 to ten digits.
+            CHECK(c["hint"].get<std::string>().find("divide the 2D constant by 1.570796327") != std::string::npos);
+        }
+}
+
+TEST_CASE("the truncated super-Gaussian warns with the loss at R, not with a wrong constant")
+{
+    // Its formulas are normalised over all space; truncated at R = 3 they keep 1.0002 to 1.0033 (method.md, errata).
+    auto result = check_kernel(test::shipped_kernel("super_gaussian"));
+    int seen = 0;
+    for (const auto& c : result["checks"])
+        if (c["check"] == "normalization") {
+            CAPTURE(c.dump());
+            CHECK(c["status"] == "warn");
+            CHECK(c["hint"].get<std::string>().find("cutting the formula at R changes its integral") != std::string::npos);
+            ++seen;
+        }
+    CHECK(seen == 3);
+}
+
+TEST_CASE("every warning or failure of check carries a hint")
+{
+    std::vector<Kernel> kernels;
+    for (const auto& p : test::shipped_kernels().plugins()) kernels.emplace_back(p);
+    for (const char* name : {"unnormalised", "wrong_derivative", "hidden_jump", "missing_breakpoint", "over_declared_support"})
+        kernels.emplace_back(load_kernel_plugin(broken(name)));
+    int flagged = 0;
+    for (const auto& kernel : kernels) {
+        auto result = check_kernel_isolated(kernel, 60);
+        for (const auto& c : result["checks"]) {
+            if (c["status"] == "ok") continue;
+            CAPTURE(c.dump());
+            ++flagged;
+            CHECK(!c.value("hint", std::string()).empty());
+        }
+    }
+    CHECK(flagged > 10);
+}
+
 TEST_CASE("unknown kernel names suggest the closest")
 {
     CHECK_THROWS_WITH_AS(test::shipped_kernels().find("cubic_bsplin"), doctest::Contains("did you mean \"cubic_bspline\""),

@@ -15,8 +15,6 @@ using sphkern::test::shipped_kernel;
 
 namespace {
 
-const std::string data = SPHKERN_SOURCE_DIR "/tests/data/lattices/";
-
 struct BruteSite {
     double eps_rho;
     Eigen::Matrix3d tensor; // E
@@ -59,7 +57,7 @@ TEST_CASE("every site's errors, tensor and first moment equal a brute-force sum"
     int compared = 0;
     bool nonzero_first_moment = false, anisotropic = false;
     for (const std::string name : {"kagome", "lieb", "honeycomb", "diamond", "skewed_pair", "hcp"}) {
-        auto lattice = name == "hcp" ? load_lattice("hcp") : load_lattice(data + name + ".json");
+        auto lattice = name == "hcp" ? load_lattice("hcp") : load_lattice(test::lattice_file(name));
         const double a_p = lattice.volume_coefficient("voronoi");
         for (const char* kernel_name : {"cubic_bspline", "wendland_c4", "super_gaussian"}) {
             Kernel kernel = shipped_kernel(kernel_name);

@@ -18,13 +18,11 @@ struct LayerValue {
     double eps_rho, eps_gradp;
 };
 
-const std::string data = SPHKERN_SOURCE_DIR "/tests/data/lattices/";
-
 Lattice test_lattice(const std::string& name)
 {
     for (const auto& shipped : shipped_lattice_names())
         if (shipped == name) return load_lattice(name);
-    return load_lattice(data + name + ".json");
+    return load_lattice(test::lattice_file(name));
 }
 
 // A particle of motif site s at `depth` below a free surface normal to e, summed point by
