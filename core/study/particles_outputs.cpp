@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace sphkern {
@@ -29,7 +31,7 @@ std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source
 
 std::string file_name(const std::string& label)
 {
-    std::string name = "particles";
+    std::string name = "particles-";
     for (char c : label) {
         const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.';
         if (keep) name += c;
@@ -80,14 +82,17 @@ void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
             e0_plot += fmt::format("{}$c{} using 1:2 {}", i ? ", " : "", i, style);
             gradp_plot += fmt::format("{}$c{} using 1:3 {}", i ? ", " : "", i, style);
         }
+        double lo = INFINITY, hi = 0;
+        for (const auto* c : cases)
+            for (const auto& p : c->points) lo = std::min(lo, p.nh), hi = std::max(hi, p.nh);
         const std::string body = fmt::format(
             "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
-            "set logscale xy\nset grid\nset xlabel 'neighbour number N_H (dimensionless)'\n"
+            "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\nset xlabel 'neighbour number N_H (dimensionless)'\n"
             "set key outside right top noenhanced\n"
             "set title 'density of a constant field'\nset ylabel 'RMS of e0 (relative)'\nplot {}\n"
             "set title 'hydrostatic pressure gradient'\nset ylabel 'RMS of eps_gradp (relative)' noenhanced\nplot {}\n"
             "unset multiplot\n",
-            data, source, e0_plot, gradp_plot);
+            data, source, lo / 1.1, hi * 1.1, e0_plot, gradp_plot);
         draw(file_name(source), 1400, 560, body);
     }
 }
