@@ -95,6 +95,23 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
                                    : parse_direction(options.gravity, lattice.dimension, "--gravity");
 }
 
+std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options)
+{
+    std::vector<OutputTarget> given;
+    for (const auto& target : options)
+        if (command.count(target.option) > 0) given.push_back(target);
+    return given;
+}
+
+std::vector<std::string> read_inputs(const std::string& source, const std::string& kernel,
+                                     const std::vector<std::string>& plugins)
+{
+    std::vector<std::string> files = plugins;
+    for (const auto& spec : {source, kernel})
+        if (std::filesystem::exists(spec)) files.push_back(spec);
+    return files;
+}
+
 std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max)
 {
     std::vector<double> values;

@@ -6,6 +6,7 @@
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "support/output_targets.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -49,6 +50,12 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& opti
 
 // "a,b[,c]": between `min` and `max` finite numbers; Error(usage) naming `option` otherwise.
 std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max);
+
+// The output options a command was given (an option given as '' too, for the check to refuse).
+std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options);
+// The files a command reads, named on its command line: a source or lattice, a kernel file, plugins.
+std::vector<std::string> read_inputs(const std::string& source, const std::string& kernel,
+                                     const std::vector<std::string>& plugins);
 
 // Prints `document` to stdout, pretty and complete.
 // Prints a --json document with its "provenance" (an array: each element) and, when

@@ -4,6 +4,7 @@
 
 #include "block/particle_block.hpp"
 #include "support/atomic_file.hpp"
+#include "support/output_targets.hpp"
 #include "support/chunked_writer.hpp"
 #include "support/error.hpp"
 
@@ -90,7 +91,9 @@ Action add_block_command(CLI::App& app)
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
-    return [options] {
+    return [options, command] {
+        check_output_targets(given_outputs(*command, {{"--vtk", options->vtk}, {"--csv", options->csv}}),
+                             read_inputs(options->lattice, options->kernel, options->plugins));
         auto lattice = load_lattice(options->lattice);
         BlockOptions block;
         block.cells = parse_size(options->size, lattice.dimension);

@@ -6,6 +6,7 @@
 #include "particles/particles_memory.hpp"
 #include "particles/sources/particle_source.hpp"
 #include "support/atomic_file.hpp"
+#include "support/output_targets.hpp"
 #include "support/error.hpp"
 #include "support/results_output.hpp"
 #include "support/sha256.hpp"
@@ -146,20 +147,6 @@ void add_options(CLI::App& c, ParticlesOptions& o)
     add_json_option(c, o);
 }
 
-// An output never replaces the particle file just read, nor the other output.
-void refuse_output_over_input(const ParticlesOptions& o)
-{
-    auto same = [](const std::string& a, const std::string& b) {
-        std::error_code ec;
-        return a == b || std::filesystem::equivalent(a, b, ec);
-    };
-    for (const auto* out : {&o.csv, &o.vtk})
-        if (!out->empty() && same(*out, o.source))
-            throw Error(ExitCode::output, *out + ": is the particle file being read; choose another output file");
-    if (!o.csv.empty() && same(o.csv, o.vtk))
-        throw Error(ExitCode::output, "--csv and --vtk name the same file " + o.csv + "; give two files");
-}
-
 // The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.
 nlohmann::json particle_inputs(const ParticlesOptions& o, const Kernel& kernel)
 {
@@ -184,9 +171,8 @@ Action add_particles_command(CLI::App& app)
     return [options, command] {
         const auto& o = *options;
         set_memory_limit_gib(o.memory_limit);
-        if ((command->count("--csv") && o.csv.empty()) || (command->count("--vtk") && o.vtk.empty()))
-            throw Error(ExitCode::usage, "--csv and --vtk need a file name");
-        refuse_output_over_input(o);
+        check_output_targets(given_outputs(*command, {{"--csv", o.csv}, {"--vtk", o.vtk}}),
+                             read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const ParticleSet set = load_particles(source_of(o));

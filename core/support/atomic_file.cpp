@@ -35,10 +35,10 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
         ::unlink(partial.c_str());
         unregister_staging_path(partial);
     };
-    // mkstemp makes it private; an ordinary file gets the umask's permissions.
+    // mkstemp makes it private; a new file gets the umask's permissions, a replaced one keeps its own.
     mode_t mask = ::umask(0);
     ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
+    ::fchmod(fd, ::lstat(target.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~mask));
     ::close(fd);
     try {
         std::ofstream out(partial, std::ios::binary | std::ios::trunc);

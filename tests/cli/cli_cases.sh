@@ -540,6 +540,29 @@ check "check --json: an array, with the spectrum" python3 -c "import json; d = j
 "$sphkern" check --plugin "$broken/wrong_derivative.so" >"$work/wrong.txt" || true
 check "check names the likely cause of a wrong derivative" grep -q 'hint (1D derivative)' "$work/wrong.txt"
 
+# Outputs never replace an input of the run, nor each other, nor a file the user may not write.
+cp "$(dirname "$0")/../../lattices/fcc.json" "$work/in.json"
+expect 5 '--csv .*in.json: is a file this run reads' -- block cubic_bspline "$work/in.json" --k 1.2 --size 4,4,4 --csv "$work/in.json"
+check "block: the lattice file read survives --csv aimed at it" cmp -s "$work/in.json" "$(dirname "$0")/../../lattices/fcc.json"
+expect 5 '--csv .*two.out: --vtk names the same file' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --vtk "$work/two.out" --csv "$work/./two.out"
+expect 2 '--csv needs a file name' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --csv ''
+expect 2 '--vtk needs a file name' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --vtk ''
+printf 'kept\n' >"$work/readonly.csv"
+chmod 444 "$work/readonly.csv"
+if [[ $(id -u) -eq 0 ]] && command -v setpriv >/dev/null; then
+    # As another user, as the shell would judge it: a read-only file is not replaced.
+    chmod 777 "$work"
+    out=$(setpriv --reuid=65534 --regid=65534 --clear-groups "$sphkern" block cubic_bspline fcc --k 1.2 --size 4,4,4 \
+        --csv "$work/readonly.csv" 2>&1 >/dev/null)
+    check "a read-only file is refused for a user who may not write it: $out" grep -q 'is read-only for this user' <<<"$out"
+    check "the read-only file is intact" grep -qx kept "$work/readonly.csv"
+    chmod 700 "$work"
+fi
+expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --csv "$work/mode.csv"
+chmod 640 "$work/mode.csv"
+expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --csv "$work/mode.csv"
+check "a replaced output keeps its permissions" test "$(stat -c %a "$work/mode.csv")" = 640
+
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
 expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
@@ -558,7 +581,7 @@ expect 2 'give one of --eta, --nh, --k' -- particles cubic_bspline fcc --size 8,
 expect 2 '--volume cells: expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
 expect 3 'sweep range 2 1: expected 0 < A < B' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
 expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2 --csv "$work/p.csv"
-expect 2 '--csv and --vtk need a file name' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
+expect 2 '--csv needs a file name' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
 expect 3 '--gravity' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
 expect 3 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
 printf 'x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n' >"$work/free.csv"
@@ -568,9 +591,9 @@ expect 3 'free.csv: --volume file needs masses and densities' -- particles cubic
 printf 'x,y,h\n0.1,0.2,0.1\n0.5,0.7,0.1\n' >"$work/withh.csv"
 expect 3 'the file.s smoothing lengths need a convention: --support-per-h X' -- particles cubic_bspline "$work/withh.csv" --box 1,1
 expect 2 '--support-per-h maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
-expect 5 'is the particle file being read' -- particles cubic_bspline "$work/withh.csv" --box 1,1 --support-per-h 2 --csv "$work/withh.csv"
+expect 5 'is a file this run reads' -- particles cubic_bspline "$work/withh.csv" --box 1,1 --support-per-h 2 --csv "$work/withh.csv"
 check "particles: the input survives an output aimed at it" grep -q '0.5,0.7,0.1' "$work/withh.csv"
-expect 5 '--csv and --vtk name the same file' -- particles cubic_bspline fcc --size 8,8,8 --csv "$work/same" --vtk "$work/same"
+expect 5 'names the same file' -- particles cubic_bspline fcc --size 8,8,8 --csv "$work/same" --vtk "$work/same"
 expect 3 'not a particle file; expected' -- particles cubic_bspline "$work/free.xyz"
 printf 'garbage' >"$work/fake.h5"
 expect 3 'fake.h5: not an HDF5 file' -- particles cubic_bspline "$work/fake.h5"
