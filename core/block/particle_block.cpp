@@ -7,6 +7,7 @@
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -102,9 +103,8 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.timings.evaluation = seconds_since(t0);
     for (std::size_t i = 0; i < count; ++i)
         if (!std::isfinite(result.eps_rho[i]) || !std::isfinite(result.eps_gradp[i]))
-            throw Error(kernel_fault_code(kernel), "kernel " + kernel.label() + " gives a non-finite error at particle " +
-                                                       std::to_string(i) + " of the block (k = " + std::to_string(options.k) +
-                                                       "); no result is given");
+            fail_non_finite_sum(kernel, dim, options.k, "particle " + std::to_string(i) + " of the block",
+                                fmt::format("k = {:.6g}", options.k));
     return result;
 }
 

@@ -38,7 +38,8 @@ std::map<std::string, double> parse_sets(const std::vector<std::string>& sets)
         double v = eq == std::string::npos ? 0 : std::strtod(s.c_str() + eq + 1, &end);
         if (eq == std::string::npos || eq == 0 || eq + 1 == s.size() || !end || *end != '\0' || !std::isfinite(v))
             throw Error(ExitCode::usage, "--set " + s + ": expected NAME=VALUE with a finite number");
-        values[s.substr(0, eq)] = v;
+        if (!values.emplace(s.substr(0, eq), v).second)
+            throw Error(ExitCode::usage, "--set " + s.substr(0, eq) + " is given twice; give each parameter once");
     }
     return values;
 }

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace sphkern::cli {
 
@@ -19,7 +20,7 @@ Action add_surface_command(CLI::App& app)
         std::string kernel, lattice, form = "sum";
         double k = 0;
         int layers = 4;
-        int termination = -1;
+        std::optional<int> termination;
         std::vector<std::string> sets;
         EvaluationOptions evaluation;
     };
@@ -34,7 +35,8 @@ Action add_surface_command(CLI::App& app)
     command->add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
     command->add_option("--site", options->evaluation.site, "Motif site on the top layer")->capture_default_str();
     command->add_option("--termination", options->termination,
-                        "Which plane type is on top (an index from the listed terminations; default: --site's)");
+                        "Which plane type is on top (an index from the listed terminations; default: --site's)")
+        ->check(CLI::NonNegativeNumber);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
@@ -46,7 +48,7 @@ Action add_surface_command(CLI::App& app)
         double a_p = lattice.volume_coefficient(options->evaluation.ap);
         auto profile = surface_profile(kernel, lattice, options->evaluation.site, a_p,
                                        gravity_of(lattice, options->evaluation), options->k, options->layers, form,
-                                       options->termination < 0 ? std::nullopt : std::optional<int>(options->termination));
+                                       options->termination);
         if (options->json) {
             print_json(surface_document(kernel, lattice, options->k, a_p, form, profile), command_inputs(&kernel, &lattice));
             return 0;

@@ -48,7 +48,9 @@ int main(int argc, char** argv)
     record_command_line(argc, argv);
     app.require_subcommand(1);
     std::string log_level = "info";
-    app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")->capture_default_str();
+    app.add_option("--log-level", log_level, "trace, debug, info, warn, error or off")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
     std::vector<std::pair<CLI::App*, cli::Action>> commands;
     auto add = [&](cli::Action (*add_command)(CLI::App&)) {
@@ -70,6 +72,13 @@ int main(int argc, char** argv)
     add(cli::add_spectrum_command);
     add(cli::add_particles_command);
     add(cli::add_studies_command);
+
+    // An empty value ('') is never a number, a name or a file: refused before CLI11 reads it as 0.
+    const CLI::Validator non_empty([](std::string& value) { return value.empty() ? std::string("an empty value") : std::string(); },
+                                   "", "non-empty");
+    for (auto* command : app.get_subcommands({}))
+        for (auto* option : command->get_options())
+            if (option->get_type_size() != 0 && !option->get_positional()) option->check(non_empty);
 
     try {
         app.parse(argc, argv);

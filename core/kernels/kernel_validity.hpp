@@ -18,4 +18,10 @@ void require_usable_kernel(const Kernel& kernel, int dim, double k);
 // Names the kernel, its parameters, q and k: `what` is "W" or "dW/dr".
 [[noreturn]] void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, int dim, double k);
 
+// A sum of kernel values came out non-finite at `where`: the kernel's fault if W or W' is
+// non-finite on [0, R] at this k (Error with its fault code), else the scale's (k or h so
+// small or large that the sum overflows: Error(input) naming `scale`).
+[[noreturn]] void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where,
+                                      const std::string& scale);
+
 } // namespace sphkern

@@ -233,9 +233,8 @@ struct Sweep {
         out.eps_gradp_sum[i] = out.eps_gradp[i] + 2 * in.depth * e1v.dot(g);
         out.neighbours[i] = static_cast<int>(n);
         if (!std::isfinite(out.e0[i]) || !std::isfinite(out.eps_gradp[i]) || !std::isfinite(out.eps_rho[i]))
-            throw Error(kernel_fault_code(kernel), fmt::format("kernel {} gives a non-finite sum at particle {} of {} (h = {:g}); "
-                                                               "no result is given",
-                                                               kernel.label(), i, set.name, h));
+            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", i, set.name),
+                                fmt::format("h = {:.6g}", h));
     }
 };
 

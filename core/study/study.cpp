@@ -191,7 +191,7 @@ namespace {
 void check_study_budget(const Study& study, const JsonNode& root)
 {
     auto refuse = [&](const std::string& what, double amount, double limit) {
-        root.error(fmt::format("the study asks for {} = {:.4g}, more than the limit of {:.4g}; make it smaller", what,
+        root.error(fmt::format("the study asks for {} = {:.0f}, more than the limit of {:.0f}; make it smaller", what,
                                amount, limit));
     };
     const double cases = double(study.kernels.size()) * double(study.lattices.size()) *

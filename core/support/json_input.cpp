@@ -139,6 +139,9 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& name)
         fail_input(name + ": " + std::to_string(text.size()) + " bytes, more than the limit of " +
                    std::to_string(max_json_bytes) + " for a JSON input");
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail_input(name + ": file is empty, expected JSON");
+    // JSON is text: a NUL byte (and whatever follows it) is not part of any document.
+    if (const auto nul = text.find('\0'); nul != std::string::npos)
+        fail_input(name + ": a NUL byte at offset " + std::to_string(nul) + "; expected JSON text");
     if (nesting_depth(text) > max_json_depth)
         fail_input(name + ": JSON nested deeper than " + std::to_string(max_json_depth) + " levels");
     // Refuses a key given twice in one object (nlohmann would keep the last silently).
