@@ -1,5 +1,7 @@
 #include "kernels/expression_kernel.hpp"
 
+#include "support/printable_text.hpp"
+
 #include "support/error.hpp"
 #include "support/json_input.hpp"
 
@@ -162,8 +164,8 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     kernel->source = std::filesystem::absolute(file).lexically_normal().string();
     kernel->from_expression = true;
     kernel->name = identifier(root.at("name"));
-    kernel->title = root.find("title") ? root.at("title").string() : kernel->name;
-    kernel->reference = root.find("reference") ? root.at("reference").text() : "";
+    kernel->title = root.find("title") ? printable_text(root.at("title").string()) : kernel->name;
+    kernel->reference = root.find("reference") ? printable_text(root.at("reference").text()) : "";
     kernel->support = e.support = root.at("support").number_in(1e-3, 100);
     auto dims = root.at("dimensions");
     dims.expect_array(1, 3);

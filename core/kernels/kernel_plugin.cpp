@@ -1,5 +1,7 @@
 #include "kernels/kernel_plugin.hpp"
 
+#include "support/printable_text.hpp"
+
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
@@ -303,14 +305,14 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     plugin->name = d->name;
     if (plugin->name != kernel_name) // the file changed between the probe and now
         throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");
-    plugin->title = d->title;
-    plugin->reference = d->reference;
+    plugin->title = printable_text(d->title);
+    plugin->reference = printable_text(d->reference);
     plugin->support = d->support;
     for (int dim = 1; dim <= 3; ++dim)
         if (d->dimensions & SPHKERN_DIM(dim)) plugin->dimensions.push_back(dim);
     for (uint32_t i = 0; i < d->parameter_count; ++i) {
         const auto& p = d->parameters[i];
-        plugin->parameters.push_back({p.name, p.description, p.default_value, p.min_value, p.max_value});
+        plugin->parameters.push_back({p.name, printable_text(p.description), p.default_value, p.min_value, p.max_value});
     }
     plugin->breakpoints.assign(d->breakpoints, d->breakpoints + d->breakpoint_count);
     plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;

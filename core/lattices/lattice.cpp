@@ -1,5 +1,7 @@
 #include "lattices/lattice.hpp"
 
+#include "support/printable_text.hpp"
+
 #include "support/file_spec.hpp"
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
@@ -86,7 +88,7 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
     if (lattice.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
         lattice.name.size() > 64)
         name_node.error("expected a name of up to 64 characters of [a-z0-9_-]");
-    lattice.title = root.find("title") ? root.at("title").string() : lattice.name;
+    lattice.title = root.find("title") ? printable_text(root.at("title").string()) : lattice.name;
     lattice.dimension = static_cast<int>(root.at("dimension").integer_in(2, 3));
     const int dim = lattice.dimension;
 

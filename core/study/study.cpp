@@ -1,5 +1,7 @@
 #include "study/study.hpp"
 
+#include "support/printable_text.hpp"
+
 #include "analysis/resolution_axis.hpp"
 
 #include "analysis/results_json.hpp"
@@ -237,7 +239,7 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     study.name = root.at("name").string();
     if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
         root.at("name").error("expected a name of [a-z0-9_-]");
-    study.title = root.find("title") ? root.at("title").string() : study.name;
+    study.title = root.find("title") ? printable_text(root.at("title").string()) : study.name;
 
     auto kernels = root.at("kernels");
     kernels.expect_array(1, 1000);

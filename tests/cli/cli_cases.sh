@@ -572,6 +572,21 @@ expect 3 'k = 1e-300 is outside what kernel cubic_bspline can be evaluated at' -
 printf '{"name": "t", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]]}\0garbage' >"$work/nul.json"
 expect 3 'nul.json: a NUL byte at offset 75; expected JSON text' -- shells "$work/nul.json" --radius 2
 
+# Text from plugins and data files reaches the terminal and JSON printable and valid.
+"$sphkern" kernels --plugin "$broken/hostile_text.so" >"$work/hostile.txt" 2>&1
+"$sphkern" kernels --json --plugin "$broken/hostile_text.so" >"$work/hostile.json" 2>&1
+check "plugin text: no escape byte reaches the terminal" python3 -c "
+t = open('$work/hostile.txt', 'rb').read()
+assert b'\\x1b' not in t and b'\\\\x1b[2J' in t, t[-200:]"
+check "plugin text: kernels --json stays valid, invalid UTF-8 replaced" python3 -c "
+import json; d = [k for k in json.load(open('$work/hostile.json')) if k['name'] == 'hostile_text'][0]
+assert d['title'] == 'bad \\ufffd\\ufffd title', d['title']
+assert d['reference'].startswith('\\\\x1b[2J'), d['reference']"
+lattice escaped '{"name": "esc", "title": "\u001b[31mred", "dimension": 2, "basis": [[1, 0], [0, 1]], "motif": [[0, 0]]}'
+"$sphkern" lattices "$work/escaped.json" >"$work/escaped.txt"
+check "lattice title: printed without its escape byte" python3 -c "
+t = open('$work/escaped.txt', 'rb').read(); assert b'\\x1b' not in t and b'\\\\x1b[31mred' in t, t"
+
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
 expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
