@@ -298,7 +298,7 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
         throw Error(ExitCode::plugin, name + ": invalid kernel descriptor: " + reason);
     const auto* d = &descriptor.fields;
     // The library's constructors ran in this process: take the signals and stdout back.
-    install_interrupt_handlers();
+    restore_interrupt_handlers();
     check_results_output();
     auto plugin = std::make_shared<KernelDefinition>();
     plugin->source = std::filesystem::absolute(file).lexically_normal().string();

@@ -5,6 +5,7 @@
 #include "particles/particle_report.hpp"
 #include "particles/particle_set.hpp"
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -160,7 +161,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         "Consistency errors of a kernel on particles at `positions` (N x 2 or N x 3), as `sphkern particles --json` "
         "prints them, plus per-particle numpy arrays e0, eps_rho, eps_gradp, eps_gradp_sum, e1, m1, E, neighbours, "
         "h and volume. h: sphkern's h (support R h), a number or one per particle; or eta, or nh (default eta 1.2). "
-        "volume: \"uniform\" (needs box), \"voronoi\" (needs box) or an array.");
+        "volume: \"uniform\" (needs box), \"voronoi\" (needs box) or an array.",
+        py::call_guard<InterruptScope>());
 }
 
 } // namespace sphkern

@@ -20,6 +20,7 @@
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
+#include "support/interruption.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -206,27 +207,29 @@ PYBIND11_MODULE(sphkern, m)
         }
     });
 
+    // Every call runs with sphkern's signal handlers, Python's own before and after it.
+    const auto guard = py::call_guard<InterruptScope>();
     bind_particles(m, &kernel_of, &to_python);
     m.def("kernels", [] {
         std::lock_guard lock(registry_mutex);
         nlohmann::json list = nlohmann::json::array();
         for (const auto& p : registry().plugins()) list.push_back(kernel_json(*p));
         return to_python(list);
-    }, "Every kernel, as `sphkern kernels --json` lists them.");
+    }, "Every kernel, as `sphkern kernels --json` lists them.", guard);
     m.def("lattices", [] {
         nlohmann::json list = nlohmann::json::array();
         for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
         return to_python(list);
-    }, "The shipped lattices, as `sphkern lattices --json` lists them.");
+    }, "The shipped lattices, as `sphkern lattices --json` lists them.", guard);
     m.def("load_plugin", [](const std::string& path) {
         std::lock_guard lock(registry_mutex);
         return to_python(kernel_json(*registry().find(path)));
-    }, py::arg("path"), "Loads a plugin library or an expression kernel file, probed as the command line probes it.");
+    }, py::arg("path"), "Loads a plugin library or an expression kernel file, probed as the command line probes it.", guard);
     m.def("load_lattice", [](const std::string& path) { return to_python(lattice_json(read_lattice(path))); },
-          py::arg("path"), "Reads and validates a lattice file.");
+          py::arg("path"), "Reads and validates a lattice file.", guard);
     m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
           py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
-          "eps_rho, eps_gradp, eps_lateral and nh (numpy arrays shaped like k) of a kernel on a lattice.");
+          "eps_rho, eps_gradp, eps_lateral and nh (numpy arrays shaped like k) of a kernel on a lattice.", guard);
     m.def("roots",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
@@ -256,14 +259,14 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
           py::arg("axis") = "k", py::arg("details") = false,
           "The roots in k of eps_rho and eps_gradp (a list of dicts); details=True gives the whole document of "
-          "`sphkern roots --json`: roots, jumps and the condition (22) intervals.");
+          "`sphkern roots --json`: roots, jumps and the condition (22) intervals.", guard);
     m.def("shells",
           [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
               auto lattice = load_lattice(lattice_spec);
               return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
           },
           py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
-          "Neighbour shells of a site, as `sphkern shells --json`.");
+          "Neighbour shells of a site, as `sphkern shells --json`.", guard);
     m.def("surface",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
              int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
@@ -277,7 +280,7 @@ PYBIND11_MODULE(sphkern, m)
           },
           py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.");
+          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.", guard);
     m.def("stability",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
              const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
@@ -322,7 +325,7 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
           py::arg("threads") = 0, py::arg("params") = py::none(),
           "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
-          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan.");
+          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan.", guard);
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
@@ -356,7 +359,7 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
           py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
           py::arg("site") = 0, py::arg("params") = py::none(),
-          "Every (k, parameter) where both errors vanish, as `sphkern design --json`.");
+          "Every (k, parameter) where both errors vanish, as `sphkern design --json`.", guard);
 
     py::class_<KernelHandle>(m, "Kernel", "A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q.")
         .def_property_readonly("name", &KernelHandle::name)

@@ -5,6 +5,8 @@
 #include <atomic>
 #include <csignal>
 #include <cstring>
+#include <exception>
+#include <mutex>
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/syscall.h>
@@ -72,9 +74,12 @@ void remove_staged_paths()
     }
 }
 
+// The command line owns its process: a second signal ends it. A library host keeps its process.
+std::atomic<bool> owns_process{false};
+
 extern "C" void on_signal(int sig)
 {
-    if (received.exchange(sig) != 0) { // a second signal: clean up and stop at once
+    if (received.exchange(sig) != 0 && owns_process.load()) { // a second signal: clean up and stop at once
         remove_staged_paths();
         struct sigaction plain {};
         plain.sa_handler = SIG_DFL;
@@ -83,15 +88,53 @@ extern "C" void on_signal(int sig)
     }
 }
 
-} // namespace
+constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
 
-void install_interrupt_handlers()
+void take_signals(struct sigaction* saved)
 {
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = 0; // no SA_RESTART: a blocking wait returns EINTR and checks the flag
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &action, nullptr);
+    for (int i = 0; i < 3; ++i) ::sigaction(handled[i], &action, saved ? &saved[i] : nullptr);
+}
+
+// The library host's scopes: how many calls are inside one, and the host's handlers to give back.
+std::mutex scope_mutex;
+int scopes = 0;
+struct sigaction host_handlers[3];
+
+} // namespace
+
+void install_interrupt_handlers()
+{
+    owns_process = true;
+    take_signals(nullptr);
+}
+
+void restore_interrupt_handlers()
+{
+    std::lock_guard lock(scope_mutex);
+    if (owns_process.load() || scopes > 0) take_signals(nullptr);
+}
+
+InterruptScope::InterruptScope() : exceptions_(std::uncaught_exceptions())
+{
+    std::lock_guard lock(scope_mutex);
+    if (scopes++ > 0 || owns_process.load()) return;
+    received = 0;
+    take_signals(host_handlers);
+}
+
+InterruptScope::~InterruptScope()
+{
+    std::lock_guard lock(scope_mutex);
+    if (--scopes > 0 || owns_process.load()) return;
+    for (int i = 0; i < 3; ++i) ::sigaction(handled[i], &host_handlers[i], nullptr);
+    const int sig = received.exchange(0);
+    // SIGINT that ended the call is already the call's error; any other arrival goes to the host.
+    const bool reported = sig == SIGINT && std::uncaught_exceptions() > exceptions_;
+    if (sig != 0 && !reported) ::raise(sig);
 }
 
 bool interrupted() { return received.load() != 0; }

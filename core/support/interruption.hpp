@@ -8,8 +8,30 @@
 
 namespace sphkern {
 
-// Installs the handlers (again, after a plugin may have replaced them).
+// Installs the handlers for a program that owns its process (the command line): from now on
+// a second signal ends it at once.
 void install_interrupt_handlers();
+
+// Takes the handlers back after a library's constructors may have replaced them, where
+// sphkern has them: in the command line, or inside an InterruptScope. Elsewhere (a Python
+// interpreter between calls) the host's handlers stay.
+void restore_interrupt_handlers();
+
+// For a library host (the Python module), around one call: SIGINT, SIGTERM and SIGHUP set
+// sphkern's flag, so that long work stops at its next check with Error(interrupted); afterwards
+// the host's own handlers are back and the flag is clear. A signal that arrived and did not
+// already end the call with that error is raised again for the host's handlers (Python then
+// raises KeyboardInterrupt or terminates, as it would have). Calls in several threads share one scope.
+class InterruptScope {
+public:
+    InterruptScope();
+    ~InterruptScope();
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+
+private:
+    int exceptions_;
+};
 
 // Throws Error(interrupted) once one of the signals has arrived.
 void throw_if_interrupted();
