@@ -303,8 +303,11 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     auto plugin = std::make_shared<KernelDefinition>();
     plugin->source = std::filesystem::absolute(file).lexically_normal().string();
     plugin->name = d->name;
-    if (plugin->name != kernel_name) // the file changed between the probe and now
+    if (plugin->name != kernel_name) { // the file changed between the probe and now, or the cache was stale
+        PluginProbeCache::instance().forget(file);
+        PluginProbeCache::instance().save();
         throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");
+    }
     plugin->title = printable_text(d->title);
     plugin->reference = printable_text(d->reference);
     plugin->support = d->support;

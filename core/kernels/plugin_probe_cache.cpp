@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // A new sphkern may validate differently: its cache is its own.
-constexpr const char* cache_format = "sphkern " SPHKERN_VERSION " plugin probes 1";
+constexpr const char* cache_format = "sphkern " SPHKERN_VERSION " plugin probes 2";
 
 std::string key_of(const fs::path& file)
 {
@@ -54,8 +54,8 @@ PluginProbeCache::PluginProbeCache()
         if (document.value("format", "") != cache_format) return;
         for (const auto& [path, e] : document.at("plugins").items())
             entries_[path] = {e.at("size").get<long long>(), e.at("mtime_ns").get<long long>(),
-                              e.at("inode").get<unsigned long long>(), e.at("device").get<unsigned long long>(),
-                              e.at("name").get<std::string>()};
+                              e.at("ctime_ns").get<long long>(), e.at("inode").get<unsigned long long>(),
+                              e.at("device").get<unsigned long long>(), e.at("name").get<std::string>()};
     } catch (const std::exception& e) { // a corrupt cache is only a missed shortcut
         spdlog::debug("ignoring the plugin probe cache {}: {}", file.string(), e.what());
         entries_.clear();
@@ -69,6 +69,7 @@ std::optional<PluginProbeCache::Entry> PluginProbeCache::describe(const fs::path
     Entry e;
     e.size = st.st_size;
     e.mtime_ns = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+    e.ctime_ns = static_cast<long long>(st.st_ctim.tv_sec) * 1000000000LL + st.st_ctim.tv_nsec;
     e.inode = st.st_ino;
     e.device = st.st_dev;
     return e;
@@ -94,6 +95,12 @@ void PluginProbeCache::record(const fs::path& file, const std::string& kernel_na
     changed_ = true;
 }
 
+void PluginProbeCache::forget(const fs::path& file)
+{
+    std::lock_guard lock(mutex_);
+    if (entries_.erase(key_of(file)) > 0) changed_ = true;
+}
+
 void PluginProbeCache::save()
 {
     std::lock_guard lock(mutex_);
@@ -101,8 +108,8 @@ void PluginProbeCache::save()
     if (!changed_ || file.empty()) return;
     nlohmann::json plugins = nlohmann::json::object();
     for (const auto& [path, e] : entries_)
-        plugins[path] = {{"size", e.size}, {"mtime_ns", e.mtime_ns}, {"inode", e.inode}, {"device", e.device},
-                         {"name", e.name}};
+        plugins[path] = {{"size", e.size},   {"mtime_ns", e.mtime_ns}, {"ctime_ns", e.ctime_ns},
+                         {"inode", e.inode}, {"device", e.device},     {"name", e.name}};
     try {
         std::error_code ec;
         fs::create_directories(file.parent_path(), ec);

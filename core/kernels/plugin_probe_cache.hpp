@@ -1,6 +1,7 @@
 // Remembers which plugin files passed the probe, so that a command does not fork a
-// child for every plugin every time. An entry holds the file's size, modification time,
-// inode and device: a changed file is probed again. The cache lives in
+// child for every plugin every time. An entry holds the file's size, modification and
+// status-change times, inode and device: a changed file is probed again (a file rewritten in
+// place with its old size and mtime still has a new ctime, which no user can set back). The cache lives in
 // $XDG_CACHE_HOME/sphkern (or ~/.cache/sphkern); a missing, unreadable or corrupt
 // cache is ignored, and a cache that cannot be written is not an error.
 #pragma once
@@ -21,6 +22,8 @@ public:
     // The kernel name of `file` if it passed the probe and has not changed since.
     std::optional<std::string> passed(const std::filesystem::path& file);
     void record(const std::filesystem::path& file, const std::string& kernel_name);
+    // Drops the entry of `file` (its kernel turned out to be another one): the next use probes it.
+    void forget(const std::filesystem::path& file);
     void save(); // writes the file if something was recorded
 
     // Where the cache is kept (empty if neither XDG_CACHE_HOME nor HOME is set).
@@ -29,12 +32,13 @@ public:
 private:
     PluginProbeCache();
     struct Entry {
-        long long size = 0, mtime_ns = 0;
+        long long size = 0, mtime_ns = 0, ctime_ns = 0;
         unsigned long long inode = 0, device = 0;
         std::string name;
         bool operator==(const Entry& o) const
         {
-            return size == o.size && mtime_ns == o.mtime_ns && inode == o.inode && device == o.device;
+            return size == o.size && mtime_ns == o.mtime_ns && ctime_ns == o.ctime_ns && inode == o.inode &&
+                   device == o.device;
         }
     };
     static std::optional<Entry> describe(const std::filesystem::path& file);

@@ -253,7 +253,7 @@ signal_when() { # signal_when READY "SIG [SIG...]" -- ARGS...
     "$sphkern" --log-level debug "$@" >"$work/signal.out" 2>"$work/signal.err" &
     local pid=$! i
     for ((i = 0; i < 400; i++)); do
-        grep -qE -- "$ready" "$work/signal.err" && break
+        grep -qsE -- "$ready" "$work/signal.err" && break
         kill -0 $pid 2>/dev/null || break
         sleep 0.05
     done
@@ -465,6 +465,11 @@ check "and then not again" test "$(probes eps sign_flip fcc --k 1.2 --plugin "$w
 cp "$broken/nan_band.so" "$work/copy.so"
 check "a changed plugin file is probed again" test "$(probes eps nan_band fcc --k 1.2 --plugin "$work/copy.so")" -eq 1
 expect 4 'kernel nan_band .*: W is not finite' -- eps nan_band fcc --k 1.4184397163120568 --plugin "$work/copy.so"
+# Rewritten in place with its old size and modification time: only the ctime tells, and it does.
+stamp=$(stat -c %y "$work/copy.so")
+cp "$work/copy.so" "$work/copy.bytes" && cat "$work/copy.bytes" >"$work/copy.so" && touch -d "$stamp" "$work/copy.so"
+check "a plugin rewritten in place with its old size and mtime is probed again" \
+    test "$(probes eps nan_band fcc --k 1.2 --plugin "$work/copy.so")" -eq 1
 printf '{"format": "sphkern' >"$work/cache/sphkern/plugin-probes.json"
 expect 0 '^$' -- eps cubic_bspline fcc --k 1.2
 check "a corrupt cache is rewritten" python3 -c "import json; json.load(open('$work/cache/sphkern/plugin-probes.json'))"
