@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <system_error>
@@ -94,6 +95,9 @@ int main(int argc, char** argv)
     spdlog::set_level(spdlog::level::from_str(log_level));
 
     install_interrupt_handlers();
+    // Past a file-size limit (ulimit -f) a write fails with EFBIG, an error that names the
+    // file and removes what was staged, instead of a signal that kills without a word.
+    std::signal(SIGXFSZ, SIG_IGN);
     separate_results_from_stdout();
     try {
         for (auto& [command, action] : commands)

@@ -104,7 +104,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
         point.h_min = *lo, point.h_max = *hi;
         answer.threads = measures.threads;
-        if (specs.size() > 1) spdlog::info("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
+        if (specs.size() > 1) spdlog::debug("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
         answer.points.push_back(std::move(point));
         if (specs.size() == 1) answer.h = std::move(h), answer.measures = std::move(measures);
     }

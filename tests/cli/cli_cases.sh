@@ -592,6 +592,16 @@ lattice escaped '{"name": "esc", "title": "\u001b[31mred", "dimension": 2, "basi
 check "lattice title: printed without its escape byte" python3 -c "
 t = open('$work/escaped.txt', 'rb').read(); assert b'\\x1b' not in t and b'\\\\x1b[31mred' in t, t"
 
+# A file-size limit (ulimit -f): the write fails with one line and exit 5, nothing is left.
+mkdir -p "$work/fsz"
+(ulimit -f 64; "$sphkern" block cubic_bspline fcc --k 1.2 --size 20,20,20 --csv "$work/fsz/big.csv" 2>"$work/fsz.err")
+status=$?
+check "ulimit -f: exit $status, $(cat "$work/fsz.err")" test $status -eq 5 -a "$(grep -c . "$work/fsz.err")" -eq 1
+check "ulimit -f: nothing left behind" test -z "$(ls -A "$work/fsz")"
+(ulimit -f 64; "$sphkern" run "$work/s_ok.json" -o "$work/fsz/out" 2>"$work/fsz.err" >/dev/null)
+status=$?
+check "ulimit -f on a study: exit $status, no folder" test $status -eq 5 -a -z "$(ls -A "$work/fsz")"
+
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
 expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
