@@ -1,5 +1,7 @@
 #include "analysis/surface_profile.hpp"
 
+#include "support/interruption.hpp"
+
 #include "lattices/lattice_points.hpp"
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
@@ -160,9 +162,11 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
     std::vector<double> bulk_density(static_cast<std::size_t>(sites));
     for (int s = 0; s < sites; ++s) bulk_density[static_cast<std::size_t>(s)] = density_of(s, 0, true, nullptr);
     std::vector<std::vector<double>> density(planes.size(), std::vector<double>(static_cast<std::size_t>(sites)));
-    for (std::size_t p = 0; p < planes.size(); ++p)
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+        throw_if_interrupted(); // thousands of planes at a large k: a signal stops between them
         for (int s : profile.planes.types[static_cast<std::size_t>(planes[p].type)].sites)
             density[p][static_cast<std::size_t>(s)] = density_of(s, planes[p].depth, false, nullptr);
+    }
     auto density_at = [&](int s, double depth) {
         int p = plane_at(depth);
         return p < 0 ? bulk_density[static_cast<std::size_t>(s)] : density[static_cast<std::size_t>(p)][static_cast<std::size_t>(s)];
@@ -202,6 +206,7 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
         if (static_cast<int>(p) >= min_layers && std::all_of(complete.begin(), complete.end(), [](bool c) { return c; }))
             break;
         if (planes[p].depth > reported_depth + 1e-9) complete[static_cast<std::size_t>(planes[p].type)] = true;
+        throw_if_interrupted();
         LayerErrors layer;
         layer.n = static_cast<int>(p);
         layer.depth = planes[p].depth;

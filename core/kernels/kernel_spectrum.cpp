@@ -1,5 +1,7 @@
 #include "kernels/kernel_spectrum.hpp"
 
+#include "support/interruption.hpp"
+
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 
@@ -12,6 +14,7 @@ std::vector<std::pair<double, double>> spectrum_curve(const Kernel& kernel, int 
 {
     std::vector<std::pair<double, double>> curve;
     for (int i = 0; i <= n; ++i) {
+        if ((i & 63) == 0) throw_if_interrupted(); // each point is a quadrature: a signal stops the curve
         const double kh = kh_max * i / n;
         curve.emplace_back(kh, kernel.fourier(kh, dim, k));
     }

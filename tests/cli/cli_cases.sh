@@ -282,6 +282,10 @@ check "second SIGINT: exit $status, left: $(leftovers out_long)" test $status -e
 signal_when 'evaluating a block' TERM -- block cubic_bspline fcc --k 1.2 --size 160,160,160 --csv "$work/block.csv"
 check "block stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "block stopped writes no csv" test -z "$(leftovers block.csv)"
+signal_when 'running spectrum' INT -- spectrum wendland_c2 --dim 3 --points 100000 --max 1000
+check "spectrum stopped by SIGINT: exit $status in $elapsed ms, $err" test $status -eq 130
+signal_when 'running surface' TERM -- surface cubic_bspline fcc --k 30 --layers 2000
+check "surface stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 signal_when 'particles and [0-9]+ ghosts on' TERM -- particles cubic_bspline fcc --size 120,120,120 --k 1.3 --csv "$work/psig.csv"
 check "particles stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "particles stopped writes no csv" test -z "$(leftovers psig.csv)"
