@@ -1,6 +1,7 @@
 // sphkern.particles: the particle-set measures on numpy arrays. Positions are copied once
 // (into the engine's own layout); the per-particle results come back as numpy arrays.
 #include "particles_binding.hpp"
+#include "python_arrays.hpp"
 
 #include "particles/particle_report.hpp"
 #include "particles/particle_set.hpp"
@@ -19,16 +20,9 @@ namespace sphkern {
 
 namespace {
 
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
 std::vector<double> per_particle(const py::object& value, std::size_t n, const char* what)
 {
-    DoubleArray a;
-    try {
-        a = value.cast<DoubleArray>();
-    } catch (const py::cast_error&) {
-        fail_input(fmt::format("{}: expected a number or an array of {} numbers", what, n));
-    }
+    const DoubleArray a = real_array(value, what, fmt::format("a number or an array of {} numbers", n));
     if (a.ndim() == 0 || (a.ndim() == 1 && a.size() == 1)) return std::vector<double>(n, *a.data());
     if (a.ndim() != 1 || static_cast<std::size_t>(a.size()) != n)
         fail_input(fmt::format("{}: expected a number or an array of {} numbers", what, n));
@@ -37,12 +31,7 @@ std::vector<double> per_particle(const py::object& value, std::size_t n, const c
 
 ParticleSet set_of(const py::object& positions, const py::object& box)
 {
-    DoubleArray p;
-    try {
-        p = positions.cast<DoubleArray>();
-    } catch (const py::cast_error&) {
-        fail_input("positions: expected an array of shape (N, 2) or (N, 3)");
-    }
+    const DoubleArray p = real_array(positions, "positions", "an array of shape (N, 2) or (N, 3)");
     if (p.ndim() != 2 || (p.shape(1) != 2 && p.shape(1) != 3))
         fail_input("positions: expected an array of shape (N, 2) or (N, 3)");
     ParticleSet set;

@@ -12,6 +12,7 @@
 #include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
 #include "particles_binding.hpp"
+#include "python_arrays.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
@@ -108,11 +109,10 @@ void check_k(double k, const char* what)
         throw Error(ExitCode::usage, fmt::format("{} = {} is not allowed, expected a number in (0, 100]", what, k));
 }
 
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const DoubleArray& k,
+py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params)
 {
+    const DoubleArray k = real_array(k_values, "k", "a number or an array of numbers");
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     const double ap = ap_of(lattice, a_p);

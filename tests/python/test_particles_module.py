@@ -61,7 +61,15 @@ def test_volumes_and_h_as_arrays_and_2d():
      "volume: expected a number or an array of 50 numbers"),
     ({"positions": np.array([[0.1, 0.2], [0.1, 0.2], [0.5, 0.5]]), "box": [1, 1], "h": 0.1},
      "particles 0 and 1 are at the same position"),
+    ({"positions": np.zeros((4, 2)) + 1j}, "positions: complex numbers; expected real numbers"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1 + 0.5j},
+     "h: complex numbers; expected real numbers"),
 ])
 def test_bad_input_raises_value_error(kwargs, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
         sphkern.particles("cubic_bspline", **kwargs)
+
+
+def test_complex_k_is_refused():
+    with pytest.raises(ValueError, match="k: complex numbers; expected real numbers"):
+        sphkern.eps("cubic_bspline", "fcc", 1.2 + 0.1j)
