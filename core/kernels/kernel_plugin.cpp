@@ -1,6 +1,7 @@
 #include "kernels/kernel_plugin.hpp"
 
 #include "support/printable_text.hpp"
+#include "support/resource_errors.hpp"
 
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
@@ -10,6 +11,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cerrno>
 #include <boost/dll/library_info.hpp>
 #include <boost/dll/shared_library.hpp>
 #include <fmt/format.h>
@@ -54,6 +56,7 @@ std::shared_ptr<boost::dll::shared_library> open_library(const std::filesystem::
             boost::dll::fs::path(file.string()),
             boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
     } catch (const std::exception& e) {
+        if (errno == EMFILE || errno == ENFILE) fail_resource(errno, file.string() + ": cannot be opened");
         throw Error(ExitCode::plugin, file.string() + ": not a loadable shared library: " + e.what());
     }
 }

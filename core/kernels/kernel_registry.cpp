@@ -1,5 +1,7 @@
 #include "kernels/kernel_registry.hpp"
 
+#include "support/resource_errors.hpp"
+
 #include "kernels/expression_kernel.hpp"
 #include "kernels/kernel_blend.hpp"
 #include "kernels/plugin_probe_cache.hpp"
@@ -79,6 +81,10 @@ KernelRegistry KernelRegistry::discover(const std::vector<fs::path>& explicit_fi
         for (const auto& entry : fs::directory_iterator(folder, ec))
             if ((entry.path().extension() == ".so" || entry.path().extension() == ".json") && !entry.is_directory(ec))
                 files.push_back(entry.path());
+        // A folder that cannot be listed is not an empty folder: a limit is said, anything else warned.
+        if (ec && is_resource_error(ec.value())) fail_resource(ec.value(), folder.string() + ": cannot be listed");
+        if (ec) spdlog::warn("{}: cannot be listed: {}", folder.string(), ec.message());
+        ec.clear();
         std::sort(files.begin(), files.end());
         for (const auto& file : files)
             if (std::find(named.begin(), named.end(), fs::weakly_canonical(file, ec)) == named.end())
@@ -112,7 +118,7 @@ void KernelRegistry::learn_names()
             try {
                 unknown[i]->name = probe_kernel_plugin(unknown[i]->file);
             } catch (const Error& e) {
-                if (e.code() == ExitCode::interrupted) throw;
+                if (e.code() != ExitCode::plugin) throw; // an interrupt or a limit of the machine: no plugin's fault
                 failures[i] = e.what();
             }
         }

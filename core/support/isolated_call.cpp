@@ -1,5 +1,7 @@
 #include "support/isolated_call.hpp"
 
+#include "support/resource_errors.hpp"
+
 #include "support/interruption.hpp"
 
 #include <algorithm>
@@ -35,12 +37,18 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
                                                         double timeout_seconds)
 {
     int fds[2];
-    if (::pipe(fds) != 0) return IsolatedFailure{std::string("cannot create a pipe: ") + std::strerror(errno)};
+    // A limit of the machine is no fault of the work: named as what it is.
+    if (::pipe(fds) != 0) {
+        if (is_resource_error(errno)) fail_resource(errno, "cannot create a pipe for a child process");
+        return IsolatedFailure{std::string("cannot create a pipe: ") + std::strerror(errno)};
+    }
     pid_t pid = ::fork();
     if (pid < 0) {
+        const int error = errno;
         ::close(fds[0]);
         ::close(fds[1]);
-        return IsolatedFailure{std::string("cannot fork: ") + std::strerror(errno)};
+        if (is_resource_error(error)) fail_resource(error, "cannot start a child process");
+        return IsolatedFailure{std::string("cannot fork: ") + std::strerror(error)};
     }
     if (pid == 0) {
         ::close(fds[0]);

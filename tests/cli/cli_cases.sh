@@ -606,6 +606,16 @@ check "ulimit -f: nothing left behind" test -z "$(ls -A "$work/fsz")"
 status=$?
 check "ulimit -f on a study: exit $status, no folder" test $status -eq 5 -a -z "$(ls -A "$work/fsz")"
 
+# Limits of the machine are named, never blamed on a plugin or a kernel.
+out=$( (ulimit -n 4; "$sphkern" kernels 2>&1 >/dev/null); echo "exit $?")
+check "ulimit -n 4: $out" grep -qz 'too many open files (the limit is 4, ulimit -n).*exit 3' <<<"$out"
+if [[ $(id -u) -eq 0 ]] && command -v setpriv >/dev/null; then
+    mkdir -p "$work/nobody-cache" && chmod 777 "$work/nobody-cache"
+    out=$(XDG_CACHE_HOME="$work/nobody-cache" setpriv --reuid=65534 --regid=65534 --clear-groups \
+        bash -c "ulimit -u 1; exec '$sphkern' check cubic_bspline" 2>&1 >/dev/null; echo "exit $?")
+    check "ulimit -u 1: $out" grep -qzE 'cannot start.*exit 3' <<<"$out"
+fi
+
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
 expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
