@@ -15,9 +15,8 @@ class NeighbourGrid {
 public:
     // Bins are reach / stencil_reach wide and a bin's candidates lie within stencil_reach
     // bins along each axis. Smaller bins hold fewer candidates (5 x 5 x 5 bins of half a reach
-    // hold (5/2)^3 reach^3, 3 x 3 x 3 of one reach 27 reach^3), but in more and shorter runs:
-    // on a Poisson set at N_H = 44 one reach is the faster (1.7 s against 2.2 s for 10^6
-    // particles on one core, share/docs/BENCHMARKS.md).
+    // hold (5/2)^3 reach^3, 3 x 3 x 3 of one reach 27 reach^3), but in more and shorter runs,
+    // which cost more than the candidates they save on the sets measured.
     static constexpr std::size_t stencil_reach = 1;
 
     // `reach`: the largest support radius of any particle. Throws Error(input) for a periodic
