@@ -1,5 +1,7 @@
 #include "study/report.hpp"
 
+#include "analysis/code_conventions.hpp"
+#include "stability/recommended_k.hpp"
 #include "support/install_paths.hpp"
 
 #include <fmt/format.h>
@@ -329,6 +331,35 @@ std::string figures_markdown(const std::vector<std::string>& figures)
     return s;
 }
 
+// One recommended k per kernel, lattice and a_p, and the same resolution in other codes' conventions.
+std::string recommended_markdown(const StudyResults& results)
+{
+    std::string s = "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
+                    "faster than the horizon, with its margin in k and N_H, and the same resolution in the conventions of "
+                    "other codes (" + method_document() + " section 10).\n\n| lattice | kernel | a_p | k | N_H |";
+    for (const auto& c : code_conventions()) s += fmt::format(" {} {} |", c.name, c.quantity);
+    s += "\n|---|---|---|---|---|";
+    for (std::size_t i = 0; i < code_conventions().size(); ++i) s += "---|";
+    s += "\n";
+    for (const auto& c : results.stability)
+        for (const auto& o : c.overlap) {
+            const auto& r = o.recommended;
+            if (!r.found) {
+                s += fmt::format("| {} | {} | {} | none: no k is both accurate and stable | |", c.lattice,
+                                 c.kernel_label, o.ap_name);
+                for (std::size_t i = 0; i < code_conventions().size(); ++i) s += " |";
+                s += "\n";
+                continue;
+            }
+            s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
+                             r.k, r.margin, r.at_window_edge ? std::string(" (") + window_edge_note + ")" : "",
+                             r.neighbours, r.neighbours_from, r.neighbours_to);
+            for (double v : o.in_conventions) s += fmt::format(" {:.4g} |", v);
+            s += "\n";
+        }
+    return s + "\n";
+}
+
 std::string stability_markdown(const StudyResults& results)
 {
     if (results.stability.empty()) return {};
@@ -358,7 +389,7 @@ std::string stability_markdown(const StudyResults& results)
         s += fmt::format("| {} | [{:.4f}, {:.4f}] | {} | {} | {:.4f} |\n", c.kernel_label, c.over_k.samples.front().k,
                          c.over_k.samples.back().k, intervals_text(c.over_k.stable, "none"), both, c.path_k);
     }
-    return s + "\n";
+    return s + "\n" + recommended_markdown(results);
 }
 
 } // namespace
