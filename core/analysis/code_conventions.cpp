@@ -34,7 +34,15 @@ double swift_gamma(const Kernel& kernel, int dim)
     // The variance per dimension in units of h^2, at a k where the kernel does not depend on k.
     const double k = 1;
     const double variance = kernel_integral(kernel, dim, k, 2).first / kernel_integral(kernel, dim, k).first / dim;
-    return kernel.support() / (2 * std::sqrt(variance));
+    return variance > 0 ? kernel.support() / (2 * std::sqrt(variance)) : NAN;
+}
+
+std::string convention_undefined(const CodeConvention& convention, const Kernel& kernel, int dim)
+{
+    if (convention.name == "swift" && !std::isfinite(swift_gamma(kernel, dim)))
+        return fmt::format("not defined: {}'s second moment in {}D is not positive, so SWIFT's kernel gamma is not",
+                           kernel.name(), dim);
+    return {};
 }
 
 double in_convention(const CodeConvention& convention, const Kernel& kernel, int dim, double a_p, double k)

@@ -25,10 +25,14 @@ const std::vector<CodeConvention>& code_conventions();
 // Throws Error(usage) naming `what` for a name not in code_conventions().
 const CodeConvention& code_convention(const std::string& name, const std::string& what);
 
-// SWIFT's kernel gamma H / (2 sigma) of the kernel in `dim` dimensions (by quadrature).
+// SWIFT's kernel gamma H / (2 sigma) of the kernel in `dim` dimensions (by quadrature); NaN
+// when the kernel's second moment is not positive (the 2D super-Gaussian's is -1).
 double swift_gamma(const Kernel& kernel, int dim);
 
-// The value of `convention` at k, with a_p the volume coefficient (V = a_p d^D).
+// The value of `convention` at k, with a_p the volume coefficient (V = a_p d^D); NaN where
+// the convention is not defined for the kernel (see swift_gamma).
 double in_convention(const CodeConvention& convention, const Kernel& kernel, int dim, double a_p, double k);
+// Why a convention is not defined for a kernel, empty when it is.
+std::string convention_undefined(const CodeConvention& convention, const Kernel& kernel, int dim);
 
 } // namespace sphkern

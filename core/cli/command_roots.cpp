@@ -116,16 +116,19 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
                                        options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
         if (options.stability) document["stability"] = stability;
-        if (at_window_edge(analysis.all_along.best_k, options.k_min, options.k_max))
-            document["best_k_note"] = window_edge_note;
         if (!options.convention.empty()) {
             const auto& c = code_convention(options.convention, "--convention");
             auto in = [&](const nlohmann::json& k) { return converted_json(c, kernel, lattice.dimension, a_p, k); };
-            nlohmann::json conv = {{"name", c.name}, {"quantity", c.quantity},
-                                   {"best_k", in(analysis.all_along.best_k)},
-                                   {"accurate", in(intervals_json(analysis.all_along.intervals))}};
-            if (recommended.found)
-                conv.update({{"recommended", in(recommended.k)}, {"recommended_interval", in(stability["recommended"]["interval"])}});
+            nlohmann::json conv = {{"name", c.name}, {"quantity", c.quantity}};
+            if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty()) {
+                conv["undefined"] = why;
+            } else {
+                conv.update({{"best_k", in(analysis.all_along.best_k)},
+                             {"accurate", in(intervals_json(analysis.all_along.intervals))}});
+                if (recommended.found)
+                    conv.update({{"recommended", in(recommended.k)},
+                                 {"recommended_interval", in(stability["recommended"]["interval"])}});
+            }
             document["convention"] = conv;
         }
         collected->push_back(document);
@@ -145,6 +148,8 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     auto print_convention = [&] {
         if (options.convention.empty()) return;
         const auto& c = code_convention(options.convention, "--convention");
+        if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty())
+            return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
         auto in = [&](double k) { return in_convention(c, kernel, lattice.dimension, a_p, k); };
         std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
                                     c.quantity, in(analysis.all_along.best_k));

@@ -6,12 +6,6 @@
 
 namespace sphkern {
 
-bool at_window_edge(double k, double window_min, double window_max)
-{
-    const double slack = 1e-9 * (window_max - window_min);
-    return k <= window_min + slack || k >= window_max - slack;
-}
-
 RecommendedK recommend_k(const std::vector<KInterval>& both, double window_min, double window_max,
                          const HydrostaticErrors& errors)
 {

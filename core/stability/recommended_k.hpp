@@ -26,11 +26,6 @@ struct RecommendedK {
 RecommendedK recommend_k(const std::vector<KInterval>& both, double window_min, double window_max,
                          const HydrostaticErrors& errors);
 
-// The flag text of a value at the edge of the window.
-inline constexpr const char* window_edge_note = "at the window edge; widen --kmin/--kmax";
-// Whether k is at the edge of [window_min, window_max] (to 1e-9 of its width).
-bool at_window_edge(double k, double window_min, double window_max);
-
 nlohmann::json recommended_json(const RecommendedK& r);
 std::string recommended_text(const RecommendedK& r);
 

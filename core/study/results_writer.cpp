@@ -39,8 +39,8 @@ nlohmann::json stability_json(const StabilityCase& c)
     }
     for (const auto& o : c.overlap) {
         auto recommended = recommended_json(o.recommended);
-        for (std::size_t i = 0; i < o.in_conventions.size(); ++i)
-            recommended["conventions"][code_conventions()[i].name] = o.in_conventions[i];
+        for (std::size_t i = 0; i < o.in_conventions.size(); ++i) // a convention undefined for the kernel is left out
+            if (std::isfinite(o.in_conventions[i])) recommended["conventions"][code_conventions()[i].name] = o.in_conventions[i];
         overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
                            {"accurate_and_stable", intervals_json(o.both)}, {"recommended", recommended}});
     }
