@@ -95,7 +95,7 @@ bool may_hide_a_change(const StabilitySample& a, const StabilitySample& b, const
         for (double t : {0.0, q == 0 ? -1 / (horizon * horizon) : 0.0}) {
             const double da = margins(a)[q] - t, db = margins(b)[q] - t;
             if (!std::isfinite(da) || !std::isfinite(db) || (da > 0) != (db > 0)) continue;
-            if (std::abs(da) + std::abs(db) <= 2 * slope[q] * (b.k - a.k)) return true;
+            if (std::abs(da) + std::abs(db) < 2 * slope[q] * (b.k - a.k)) return true;
         }
     return false;
 }

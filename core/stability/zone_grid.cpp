@@ -5,6 +5,7 @@
 #include <boost/math/tools/minima.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sphkern {
@@ -38,15 +39,19 @@ ZoneGrid::ZoneGrid(const Dispersion& dispersion, const Eigen::Matrix3d& b, int n
 {
     std::size_t total = 1;
     for (int a = 0; a < D_; ++a) total *= static_cast<std::size_t>(n_);
-    // One representative per orbit: the smallest index among the images.
-    std::vector<std::size_t> representative(total);
+    // One representative per orbit: the first point met, whose images take its value (each
+    // operation is a symmetry on its own, so this holds even if the set is not closed).
+    std::vector<std::size_t> representative(total, total);
     std::vector<std::size_t> orbits;
     for (std::size_t i = 0; i < total; ++i) {
+        if (representative[i] != total) continue;
+        representative[i] = i;
+        orbits.push_back(i);
         const Eigen::Vector3i m = centred(i, n_, D_);
-        std::size_t smallest = i;
-        for (const auto& s : symmetries) smallest = std::min(smallest, index_of(s * m, n_, D_));
-        representative[i] = smallest;
-        if (smallest == i) orbits.push_back(i);
+        for (const auto& s : symmetries) {
+            const std::size_t j = index_of(s * m, n_, D_);
+            if (representative[j] == total) representative[j] = i;
+        }
     }
     evaluated_ = orbits.size();
     const int branches = dispersion.branches();
@@ -84,21 +89,24 @@ std::pair<double, std::size_t> ZoneGrid::branch_minimum(int branch) const
 
 std::vector<std::size_t> ZoneGrid::valleys(int count) const
 {
+    // Neighbour offsets in index space, per axis: -stride, 0, +stride, wrapped at the ends.
+    const std::size_t n = static_cast<std::size_t>(n_);
+    std::array<std::size_t, 3> stride{1, n, n * n};
     std::vector<std::size_t> floors;
     const std::size_t gamma = gamma_index();
-    const int neighbours = D_ == 3 ? 27 : D_ == 2 ? 9 : 3;
+    std::array<std::size_t, 3> c{0, 0, 0};
     for (std::size_t i = 0; i < lowest_.size(); ++i) {
+        for (int a = 0; a < D_; ++a) c[a] = i / stride[a] % n;
         if (i == gamma) continue;
-        const Eigen::Vector3i m = centred(i, n_, D_);
         bool floor = true;
-        for (int offset = 0; offset < neighbours && floor; ++offset) {
-            Eigen::Vector3i step = Eigen::Vector3i::Zero();
-            for (int a = 0, o = offset; a < D_; ++a, o /= 3) step[a] = o % 3 - 1;
-            floor = lowest_[index_of(m + step, n_, D_)] >= lowest_[i];
+        for (int offset = 0; offset < (D_ == 3 ? 27 : D_ == 2 ? 9 : 3) && floor; ++offset) {
+            std::size_t j = 0;
+            for (int a = 0, o = offset; a < D_; ++a, o /= 3) j += (c[a] + n + static_cast<std::size_t>(o % 3) - 1) % n * stride[a];
+            floor = lowest_[j] >= lowest_[i];
         }
         if (floor) floors.push_back(i);
     }
-    std::sort(floors.begin(), floors.end(), [&](std::size_t a, std::size_t c) { return lowest_[a] < lowest_[c]; });
+    std::sort(floors.begin(), floors.end(), [&](std::size_t a, std::size_t b) { return lowest_[a] < lowest_[b]; });
     std::vector<std::size_t> distinct;
     for (std::size_t i : floors) {
         if (static_cast<int>(distinct.size()) == count) break;

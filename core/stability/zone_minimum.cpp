@@ -42,7 +42,8 @@ void line_minima(const Dispersion& dispersion, const ReciprocalLattice& reciproc
         for (int i = 0; i <= samples; ++i) v[static_cast<std::size_t>(i)] = at(static_cast<double>(i) / samples);
         for (int i = 1; i < samples; ++i) {
             const auto u = static_cast<std::size_t>(i);
-            if (v[u] > v[u - 1] || v[u] > v[u + 1]) continue;
+            // A valley: no higher than either neighbour and lower than one (not a flat stretch).
+            if (v[u] > v[u - 1] || v[u] > v[u + 1] || (v[u] == v[u - 1] && v[u] == v[u + 1])) continue;
             std::uintmax_t iterations = 60;
             const double step = 1.0 / samples;
             auto [t, value] = boost::math::tools::brent_find_minima(at, (i - 1) * step, (i + 1) * step, 30, iterations);
@@ -52,14 +53,38 @@ void line_minima(const Dispersion& dispersion, const ReciprocalLattice& reciproc
     }
 }
 
-// One grid: its minimum and its valleys, refined.
-void grid_minima(const Dispersion& dispersion, const Eigen::Matrix3d& b, const ZoneGrid& grid, Found& found)
+// Whether fractions f lie within `radius` (on every axis, periodically) of a symmetric
+// image of a point refined before: a refinement from there has already searched that spot.
+bool already_searched(const Eigen::Vector3d& f, const std::vector<Eigen::Vector3d>& searched,
+                      const std::vector<Eigen::Matrix3i>& symmetries, double radius)
+{
+    for (const auto& p : searched)
+        for (const auto& s : symmetries) {
+            Eigen::Vector3d d = f - s.cast<double>() * p;
+            for (int a = 0; a < 3; ++a) d[a] -= std::round(d[a]);
+            if (d.cwiseAbs().maxCoeff() < radius) return true;
+        }
+    return false;
+}
+
+// One grid: its minimum and its valleys, refined unless an earlier grid searched there.
+void grid_minima(const Dispersion& dispersion, const Eigen::Matrix3d& b, const ZoneGrid& grid,
+                 const std::vector<Eigen::Matrix3i>& symmetries, std::vector<Eigen::Vector3d>& searched, Found& found)
 {
     const double reach = 1.0 / grid.per_axis();
+    auto refine_from = [&](std::size_t i, double value, int sweeps) {
+        const Eigen::Vector3d f = grid.fraction(i);
+        if (already_searched(f, searched, symmetries, 1.5 * reach)) return;
+        const auto refined = refine_branch(dispersion, b, 0, f, value, reach, sweeps);
+        searched.push_back(f);
+        searched.push_back(refined.first);
+        found.offer(refined, i != grid.gamma_index());
+    };
     const auto [value, at] = grid.branch_minimum(0);
-    found.offer(refine_branch(dispersion, b, 0, grid.fraction(at), value, reach, 4), at != grid.gamma_index());
-    for (std::size_t i : grid.valleys(zone_valleys))
-        found.offer(refine_branch(dispersion, b, 0, grid.fraction(i), grid.lowest(i), reach, 3), true);
+    refine_from(at, value, 4);
+    for (std::size_t i : grid.valleys(zone_valleys)) refine_from(i, grid.lowest(i), 3);
+    // The grid's own minimum counts even where it was not refined again.
+    found.offer({grid.fraction(at), value}, at != grid.gamma_index());
 }
 
 } // namespace
@@ -74,15 +99,16 @@ ZoneMinimum lowest_branch_minimum(const Dispersion& dispersion, const Reciprocal
     const auto symmetries = zone_symmetries(dispersion, reciprocal);
     ZoneMinimum result;
     Found lines;
-    line_minima(dispersion, reciprocal, 4 * start, 0.5 / start, lines);
+    line_minima(dispersion, reciprocal, 2 * start, 0.5 / start, lines);
     // Grids up to four times the default start (a larger start is used alone, unverified).
     const int largest = std::max(start, 4 * zone_start_grid(D));
     double previous = INFINITY;
+    Found level = lines; // every minimum found so far: a finer grid can only lower it
+    std::vector<Eigen::Vector3d> searched;
     for (int n = start; n <= largest; n *= 2) {
         throw_if_interrupted();
         result.last.emplace(dispersion, reciprocal.vectors, n, symmetries, threads);
-        Found level = lines;
-        grid_minima(dispersion, reciprocal.vectors, *result.last, level);
+        grid_minima(dispersion, reciprocal.vectors, *result.last, symmetries, searched, level);
         result.omega2 = level.value;
         result.fraction = level.fraction;
         result.floor = level.floor;
