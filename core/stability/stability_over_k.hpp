@@ -1,7 +1,7 @@
 // Stability against k: the verdict of the Brillouin-zone scan (one scanner, the same at
-// every k whoever asks) at evenly spaced k; between samples of one verdict whose margins come
-// close enough to a threshold, more k are looked at (a narrow window may hide there), and
-// every change of verdict is bisected to 1e-6 in k.
+// every k whoever asks) at evenly spaced k; between stable (weak) samples whose margins come
+// close enough to zero (the horizon), more k are looked at (a narrow unstable window may hide
+// there), and every change of verdict is bisected to 1e-6 in k.
 #pragma once
 
 #include "analysis/acceptance.hpp"
@@ -14,10 +14,10 @@
 
 namespace sphkern {
 
-// Between two samples of one verdict, midpoints are looked at (down to 1/16 of the spacing)
-// where a margin (the valley floor away from Γ when stable, else the lowest omega^2; the
-// long-wave minimum) could reach a threshold (0, -1/horizon^2) changing with k no faster than
-// twice the steepest slope between samples.
+// Between two stable samples (two weak ones), midpoints are looked at (down to 1/16 of the
+// spacing) where a margin (the valley floor away from Γ and the long-wave minimum; the lowest
+// omega^2) could reach its threshold (0; -1/horizon^2) changing with k no faster than twice
+// the steepest slope between the samples nearby.
 // Edges between verdicts are bisected to this width in k.
 inline constexpr double stability_k_tolerance = 1e-6;
 

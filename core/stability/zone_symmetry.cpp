@@ -2,24 +2,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <utility>
 
 namespace sphkern {
 
 namespace {
 
-// Every D x D matrix with entries -1, 0, 1 (the rest of the 3 x 3 is the identity).
-std::vector<Eigen::Matrix3i> candidates(int D)
+// The D x D integer matrices with entries -1, 0, 1 (the rest of the 3 x 3 the identity) that
+// keep the reciprocal lattice's metric B^T B: its orthogonal maps in that basis. They depend
+// only on the basis, so they are found once per basis (3^9 candidates in 3D) and kept.
+std::vector<Eigen::Matrix3i> orthogonal_maps(const Eigen::Matrix3d& full, int D)
 {
-    std::vector<Eigen::Matrix3i> all;
+    static std::mutex mutex;
+    static std::vector<std::pair<Eigen::Matrix3d, std::vector<Eigen::Matrix3i>>> known;
+    std::lock_guard lock(mutex);
+    for (const auto& [basis, maps] : known)
+        if (basis == full) return maps;
+    const Eigen::Matrix3d metric = full.transpose() * full;
+    std::vector<Eigen::Matrix3i> maps;
     int count = 1;
     for (int i = 0; i < D * D; ++i) count *= 3;
     for (int code = 0; code < count; ++code) {
         Eigen::Matrix3i n = Eigen::Matrix3i::Identity();
         int c = code;
         for (int i = 0; i < D * D; ++i, c /= 3) n(i / D, i % D) = c % 3 - 1;
-        all.push_back(n);
+        const Eigen::Matrix3d m = n.cast<double>();
+        if ((m.transpose() * metric * m - metric).norm() <= 1e-9 * metric.norm()) maps.push_back(n);
     }
-    return all;
+    known.emplace_back(full, maps);
+    return maps;
 }
 
 bool same_spectrum(const std::vector<double>& a, const std::vector<double>& b)
@@ -39,7 +51,6 @@ std::vector<Eigen::Matrix3i> zone_symmetries(const Dispersion& dispersion, const
     const Eigen::Matrix3d b = reciprocal.vectors;
     Eigen::Matrix3d full = b;
     for (int a = D; a < 3; ++a) full.col(a) = Eigen::Vector3d::Unit(a);
-    const Eigen::Matrix3d to_fractions = full.inverse();
     // Two generic wave vectors (no symmetry maps one onto itself), away from long waves.
     const std::vector<Eigen::Vector3d> probes{Eigen::Vector3d(0.1234, 0.2718, 0.3141),
                                               Eigen::Vector3d(0.3770, -0.1610, 0.0917)};
@@ -50,10 +61,8 @@ std::vector<Eigen::Matrix3i> zone_symmetries(const Dispersion& dispersion, const
         reference.push_back(dispersion.omega2(full * g));
     }
     std::vector<Eigen::Matrix3i> found{Eigen::Matrix3i::Identity()};
-    for (const auto& n : candidates(D)) {
+    for (const auto& n : orthogonal_maps(full, D)) {
         if (n == Eigen::Matrix3i::Identity()) continue;
-        const Eigen::Matrix3d r = full * n.cast<double>() * to_fractions; // Cartesian
-        if (!(r.transpose() * r).isApprox(Eigen::Matrix3d::Identity(), 1e-9)) continue;
         bool keeps = true;
         for (std::size_t p = 0; p < probes.size() && keeps; ++p) {
             Eigen::Vector3d g = probes[p];
