@@ -44,6 +44,15 @@ std::vector<std::pair<double, double>> acoustic_ratios(const Dispersion& dispers
     return r;
 }
 
+// The lowest omega^2 / kappa^2 of the acoustic branches at kappa n from the eigenvalues alone:
+// at long waves they are the D nearest zero (O(kappa^2)), the optical ones stay O(1) away.
+double lowest_acoustic(const Dispersion& dispersion, const Eigen::Vector3d& n, double kappa)
+{
+    auto w = dispersion.omega2(kappa * n);
+    std::sort(w.begin(), w.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    return *std::min_element(w.begin(), w.begin() + dispersion.dimension()) / (kappa * kappa);
+}
+
 } // namespace
 
 int default_grid(int dimension) { return zone_start_grid(dimension); }
@@ -126,8 +135,7 @@ LongWaveMinimum long_wave_minimum(const Dispersion& dispersion)
             const Eigen::MatrixXd m = dispersion.long_wave_matrix(n).topLeftCorner(D, D);
             return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues()[0];
         }
-        const double small = acoustic_ratios(dispersion, n, 1e-3).front().first,
-                     larger = acoustic_ratios(dispersion, n, 2e-3).front().first;
+        const double small = lowest_acoustic(dispersion, n, 1e-3), larger = lowest_acoustic(dispersion, n, 2e-3);
         return (4 * small - larger) / 3;
     };
     // omega^2(kappa) = omega^2(-kappa): half the directions suffice.
