@@ -319,7 +319,8 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
           py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
           "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
-          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan.");
+          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan; `horizon` "
+          "(d/c) separates weak instabilities from unstable ones.");
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,

@@ -367,14 +367,16 @@ std::string stability_markdown(const StudyResults& results)
         "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
         "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
         "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10). "
+        "A mode that grows more slowly than the horizon ({:g} d/c: growth time 1 / sqrt(-omega^2)) is weak: such k are "
+        "not in the stable k, but count as stable where they meet condition (22). "
         "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        results.stability.front().gamma, method_document());
+        results.stability.front().gamma, method_document(), results.stability.front().over_k.horizon);
     std::string lattice;
     for (const auto& c : results.stability) {
         if (c.lattice != lattice) {
             s += lattice.empty() ? "" : "\n";
             lattice = c.lattice;
-            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable k | dispersion curves at k |\n"
+            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
                              "|---|---|---|---|---|\n", lattice);
         }
         if (!c.refused.empty()) {

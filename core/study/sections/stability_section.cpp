@@ -31,6 +31,7 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         c.lattice = lattice.name;
         c.kernel_label = kernel.label();
         c.gamma = spec.gamma;
+        c.over_k.horizon = spec.horizon; // also for a lattice that is refused
         // The bulk cases of the first automatic mode: their windows and condition (22).
         std::vector<const StudyCase*> accurate;
         for (const auto& b : results.cases)
