@@ -127,9 +127,13 @@ TEST_CASE("the k once reported stable in three unstable intervals are unstable, 
             CAPTURE(c.kernel);
             CAPTURE(c.lattice);
             CAPTURE(k);
-            CHECK_FALSE(independently_stable(kernel, lattice, k, lattice.sites() > 1 ? 16 : 24));
-            const auto scan = scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma_53), reciprocal, 0, 1, false);
+            const Dispersion d(kernel, lattice, k, gamma_53);
+            const double independent = independent_minimum(d, reciprocal.vectors, lattice.sites() > 1 ? 16 : 24);
+            CHECK(independent < -unstable_threshold);
+            const auto scan = scan_brillouin_zone(d, reciprocal, 0, 1, false);
             CHECK_FALSE(scan.stable);
+            // The depth too: not shallower than the independent minimum (to 1e-3 of it).
+            CHECK(scan.lowest().omega2 <= independent * (1 - 1e-3));
         }
         // The scan over k: none of these k is in a stable interval.
         const auto over_k = stability_over_k(kernel, lattice, c.ks.front() - 0.01, c.ks.back() + 0.01, 4, gamma_53, 0, 1);
