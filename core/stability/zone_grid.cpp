@@ -120,8 +120,7 @@ std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion, c
                                                  Eigen::Vector3d f, double value, double reach, int sweeps)
 {
     const auto br = static_cast<std::size_t>(branch);
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
-        const double before = value;
+    for (int sweep = 0; sweep < sweeps; ++sweep)
         for (int axis = 0; axis < dispersion.dimension(); ++axis) {
             auto along = [&](double x) {
                 Eigen::Vector3d g = f;
@@ -132,9 +131,6 @@ std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion, c
             auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - reach, f[axis] + reach, 20, iterations);
             if (fx < value) value = fx, f[axis] = x;
         }
-        // A sweep that no longer moves the value: settled (a valley along a diagonal takes many).
-        if (before - value <= 1e-12 * std::abs(value) + 1e-16) break;
-    }
     return {f, value};
 }
 

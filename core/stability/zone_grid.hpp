@@ -39,8 +39,7 @@ private:
 };
 
 // Coordinate-wise Brent minimisation of one branch from fractions f, within `reach` on each
-// axis, over the axes until a sweep no longer lowers the value (at most `sweeps` times);
-// returns the fractions and the value found.
+// axis, `sweeps` times over the axes; returns the fractions and the value found.
 std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion, const Eigen::Matrix3d& reciprocal_vectors,
                                                  int branch, Eigen::Vector3d f, double value, double reach, int sweeps);
 

@@ -48,7 +48,7 @@ void line_minima(const Dispersion& dispersion, const ReciprocalLattice& reciproc
             const double step = 1.0 / samples;
             auto [t, value] = boost::math::tools::brent_find_minima(at, (i - 1) * step, (i + 1) * step, 30, iterations);
             const Eigen::Vector3d f = to_fractions * (from + t * (to - from));
-            found.offer(refine_branch(dispersion, b, 0, f, value, reach, 30), true);
+            found.offer(refine_branch(dispersion, b, 0, f, value, reach, 2), true);
         }
     }
 }
@@ -81,8 +81,8 @@ void grid_minima(const Dispersion& dispersion, const Eigen::Matrix3d& b, const Z
         found.offer(refined, i != grid.gamma_index());
     };
     const auto [value, at] = grid.branch_minimum(0);
-    refine_from(at, value, 30);
-    for (std::size_t i : grid.valleys(zone_valleys)) refine_from(i, grid.lowest(i), 30);
+    refine_from(at, value, 4);
+    for (std::size_t i : grid.valleys(zone_valleys)) refine_from(i, grid.lowest(i), 3);
     // The grid's own minimum counts even where it was not refined again.
     found.offer({grid.fraction(at), value}, at != grid.gamma_index());
 }
