@@ -7,6 +7,12 @@
 
 namespace sphkern {
 
+bool at_window_edge(double k, double window_min, double window_max)
+{
+    const double slack = 1e-9 * (window_max - window_min);
+    return k <= window_min + slack || k >= window_max - slack;
+}
+
 std::string direction_name(Direction direction) { return direction == Direction::gravity ? "gravity" : "every direction"; }
 
 double acceptance_error(const HydrostaticErrors& site, double k, const AcceptanceRule& rule)

@@ -16,6 +16,11 @@ struct KInterval {
     double from, to;
 };
 
+// A best k, a root or an interval's end on the edge of the window may go on outside it.
+inline constexpr const char* window_edge_note = "at the window edge; widen --kmin/--kmax";
+// Whether k is at the edge of [window_min, window_max] (to 1e-9 of its width).
+bool at_window_edge(double k, double window_min, double window_max);
+
 struct Acceptance {
     std::vector<KInterval> intervals; // where condition (22) holds
     double best_k = 0;                // k minimising the largest error

@@ -3,12 +3,14 @@
 #include "support/results_output.hpp"
 
 #include "analysis/acceptance.hpp"
+#include "analysis/code_conventions.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/results_json.hpp"
 #include "stability/dispersion.hpp"
+#include "stability/recommended_k.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -31,9 +33,19 @@ struct RootsOptions : CommonOptions {
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
     bool stability = false;
-    double gamma = 5.0 / 3.0;
+    double gamma = 5.0 / 3.0, horizon = default_horizon;
     int steps = 100;
+    std::string convention;
 };
+
+// k, an interval of k, in a code's convention.
+nlohmann::json converted_json(const CodeConvention& c, const Kernel& kernel, int dim, double a_p, const nlohmann::json& k)
+{
+    if (k.is_number()) return in_convention(c, kernel, dim, a_p, k.get<double>());
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& x : k) list.push_back(converted_json(c, kernel, dim, a_p, x));
+    return list;
+}
 
 std::string intervals_text(const std::vector<KInterval>& intervals)
 {
@@ -81,14 +93,20 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     // The stable k of the same window, and where condition (22) at every site holds there too.
     nlohmann::json stability;
     std::vector<KInterval> stable, both;
+    RecommendedK recommended;
     if (options.stability) {
         try {
             const auto scan = stability_over_k(kernel, lattice, options.k_min, options.k_max, options.steps, options.gamma,
-                                               default_grid(lattice.dimension) / 3, 1);
-            stable = scan.stable;
+                                               0, 1, options.horizon);
+            stable = scan.usable;
             both = accurate_and_stable(analysis.all_along.intervals, scan);
-            stability = {{"gamma", options.gamma}, {"stable_intervals", intervals_json(stable)},
+            stability = {{"gamma", options.gamma}, {"horizon", options.horizon},
+                         {"stable_intervals", intervals_json(scan.stable)},
+                         {"stable_at_horizon", intervals_json(scan.usable)},
                          {"accurate_and_stable", intervals_json(both)}};
+            recommended = recommend_k(both, options.k_min, options.k_max,
+                                      *sites[static_cast<std::size_t>(options.evaluation.site)]);
+            stability["recommended"] = recommended_json(recommended);
         } catch (const Error& e) {
             if (e.code() != ExitCode::input) throw;
             stability = {{"gamma", options.gamma}, {"refused", e.what()}};
@@ -98,6 +116,21 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
                                        options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
         if (options.stability) document["stability"] = stability;
+        if (!options.convention.empty()) {
+            const auto& c = code_convention(options.convention, "--convention");
+            auto in = [&](const nlohmann::json& k) { return converted_json(c, kernel, lattice.dimension, a_p, k); };
+            nlohmann::json conv = {{"name", c.name}, {"quantity", c.quantity}};
+            if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty()) {
+                conv["undefined"] = why;
+            } else {
+                conv.update({{"best_k", in(analysis.all_along.best_k)},
+                             {"accurate", in(intervals_json(analysis.all_along.intervals))}});
+                if (recommended.found)
+                    conv.update({{"recommended", in(recommended.k)},
+                                 {"recommended_interval", in(stability["recommended"]["interval"])}});
+            }
+            document["convention"] = conv;
+        }
         collected->push_back(document);
         return;
     }
@@ -107,8 +140,32 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
             fmt::print(results_file(), "stability (gamma = {:.6g}): not available: {}\n", options.gamma,
                        stability["refused"].get<std::string>());
         else
-            fmt::print(results_file(), "stable (gamma = {:.6g}) for k in{}\n  accurate (condition (22), every site) and stable:{}\n",
-                       options.gamma, intervals_text(stable), intervals_text(both));
+            fmt::print(results_file(), "stable (gamma = {:.6g}; no mode grows faster than {:g} d/c) for k in{}\n  accurate "
+                                       "(condition (22), every site) and stable:{}\n  {}\n",
+                       options.gamma, options.horizon, intervals_text(stable), intervals_text(both),
+                       recommended_text(recommended));
+    };
+    auto print_convention = [&] {
+        if (options.convention.empty()) return;
+        const auto& c = code_convention(options.convention, "--convention");
+        if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty())
+            return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
+        auto in = [&](double k) { return in_convention(c, kernel, lattice.dimension, a_p, k); };
+        std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
+                                    c.quantity, in(analysis.all_along.best_k));
+        for (const auto& i : analysis.all_along.intervals)
+            s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", c.quantity, in(i.from), in(i.to));
+        if (recommended.found)
+            s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", c.quantity, in(recommended.k),
+                             in(recommended.widest.from), in(recommended.widest.to));
+        fmt::print(results_file(), "{}\n", s);
+    };
+    auto print_tail = [&] {
+        if (at_window_edge(analysis.all_along.best_k, options.k_min, options.k_max))
+            fmt::print(results_file(), "best k of condition (22) = {:.6f}: {}\n", analysis.all_along.best_k,
+                       window_edge_note);
+        print_stability();
+        print_convention();
     };
     const std::string lateral = options.lateral ? ", lateral error included" : "";
     fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}{}\n", kernel.label(), lattice.name, a_p,
@@ -118,7 +175,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     print_scan(chosen.scan);
     fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", options.epsilon, lateral, acceptance_text(chosen.along));
     fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
-    if (sites.size() == 1) return print_stability();
+    if (sites.size() == 1) return print_tail();
     for (const auto& s : analysis.sites) {
         if (s.site == options.evaluation.site) continue;
         fmt::print(results_file(), "site {}:\n", s.site);
@@ -128,7 +185,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     }
     fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
                acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
-    print_stability();
+    print_tail();
 }
 
 } // namespace
@@ -150,6 +207,11 @@ Action add_roots_command(CLI::App& app)
     command->add_option("--gamma", options->gamma, "With --stability: adiabatic index")->capture_default_str();
     command->add_option("--steps", options->steps, "With --stability: k intervals of the scan")->capture_default_str()
         ->check(CLI::Range(1, 2000));
+    command->add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
+                                                             "dualsphysics (coefh), swift (eta), gadget (N_ngb), "
+                                                             "splishsplash (H/r_p)");
+    command->add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
+                                                       "count as stable (weak)")->capture_default_str();
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -159,6 +221,8 @@ Action add_roots_command(CLI::App& app)
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
         check_gamma(options->gamma, "--gamma");
+        check_horizon(options->horizon, "--horizon");
+        if (!options->convention.empty()) code_convention(options->convention, "--convention");
         auto registry = discover_kernels(*options);
         std::vector<Lattice> lattices;
         if (options->lattice == "all")

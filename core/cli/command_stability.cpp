@@ -5,6 +5,7 @@
 
 #include "stability/brillouin_zone.hpp"
 #include "stability/stability_json.hpp"
+#include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 
@@ -49,6 +50,50 @@ std::string vector_text(const nlohmann::json& v)
     return "(" + s + ")";
 }
 
+// "stable", or "UNSTABLE: growth time 12.3 d/c, transverse mode at kappa = (...) / d" (or weak).
+std::string verdict_text(const nlohmann::json& d)
+{
+    const std::string verdict = d["verdict"].get<std::string>();
+    if (verdict == "stable") return verdict;
+    std::string s = fmt::format("{} (horizon {:g} d/c): ", verdict == "unstable" ? "UNSTABLE" : "weak",
+                                d["horizon"].get<double>());
+    if (!d.contains("growth_time")) return s + "only long waves grow (omega^2 / kappa^2 < 0), ever more slowly as kappa -> 0";
+    return s + fmt::format("growth time {:.4g} d/c, {} mode at kappa = {} / d (unfolded {})", d["growth_time"].get<double>(),
+                           d["mode"]["kind"].get<std::string>(), vector_text(d["at"]),
+                           vector_text(d["mode"]["unfolded_wavevector"]));
+}
+
+template <class Options>
+void print_over_k(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
+                  const Options& options)
+{
+    auto intervals = [&](const nlohmann::json& list) {
+        std::string s;
+        for (const auto& i : list) s += fmt::format(" [{:.6f}, {:.6f}]", i[0].get<double>(), i[1].get<double>());
+        return s.empty() ? fmt::format(" none of [{}, {}]", options.k_min, options.k_max) : s;
+    };
+    fmt::print(results_file(), "{} on {}, gamma = {:.6g}: stable for k in{}\n", kernel, lattice, options.gamma,
+               intervals(document["stable_intervals"]));
+    fmt::print(results_file(), "  no mode grows faster than the horizon ({:g} d/c) for k in{}\n", options.horizon,
+               intervals(document["stable_at_horizon"]));
+    fmt::print(results_file(), "  {:>10} {:>14} {:>9} {:>12} {}\n", "k", "min omega^2", "verdict", "growth time",
+               "mode");
+    for (const auto& p : document["samples"]) {
+        const bool grows = p.contains("growth_time");
+        fmt::print(results_file(), "  {:>10.6f} {:>14.6g} {:>9} {:>12} {}\n", p["k"].get<double>(),
+                   p["min_omega2"].get<double>(), p["verdict"].get<std::string>(),
+                   grows ? fmt::format("{:.4g}", p["growth_time"].get<double>()) : "",
+                   grows ? p["mode"]["kind"].get<std::string>() : "");
+    }
+    if (!document["between"].empty())
+        fmt::print(results_file(), "  k looked at between the samples, where a change could hide: {}\n",
+                   document["between"].size());
+    for (const auto& p : document["between"])
+        if (p["verdict"] != "stable")
+            fmt::print(results_file(), "  {:>10.6f} {:>14.6g} {:>9}\n", p["k"].get<double>(),
+                       p["min_omega2"].get<double>(), p["verdict"].get<std::string>());
+}
+
 } // namespace
 
 Action add_stability_command(CLI::App& app)
@@ -57,7 +102,7 @@ Action add_stability_command(CLI::App& app)
                                                     "scan, long-wave sound speed");
     struct Options : CommonOptions {
         std::string kernel, lattice, wavevector;
-        double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0;
+        double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
         int grid = 0, threads = 0, steps = 50, path = 0;
         std::vector<std::string> sets;
     };
@@ -78,8 +123,11 @@ Action add_stability_command(CLI::App& app)
                                                                      "path: about this many points")
                             ->check(CLI::Range(2, 100000));
     path_option->excludes(kmin_option)->excludes(kmax_option);
-    command->add_option("--grid", options->grid, "Scan points per reciprocal axis (default 24 in 3D, 96 in 2D)")
+    command->add_option("--grid", options->grid, "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
+                                                 "in 2D; doubled until the minimum settles)")
         ->check(CLI::Range(2, 400));
+    command->add_option("--horizon", options->horizon, "Growth time in d/c: slower instabilities are weak")
+        ->capture_default_str();
     command->add_option("--threads", options->threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -96,6 +144,7 @@ Action add_stability_command(CLI::App& app)
             throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100] (or give "
                                                      "--kmin and --kmax)", options->k));
         check_gamma(options->gamma, "--gamma");
+        check_horizon(options->horizon, "--horizon");
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
@@ -140,36 +189,28 @@ Action add_stability_command(CLI::App& app)
         const int threads = options->threads > 0 ? options->threads
                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         if (over_k) {
-            // Coarser than one scan: the lowest branch is refined from the grid minimum at every k.
-            const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension) / 3;
             auto document = stability_over_k_document(kernel, lattice, options->k_min, options->k_max, options->steps,
-                                                      options->gamma, grid, threads);
+                                                      options->gamma, options->grid, threads, options->horizon);
             if (options->json) {
                 print_json(document);
                 return 0;
             }
-            fmt::print(results_file(), "{} on {}, gamma = {:.6g}: stable for k in", kernel.label(), lattice.name,
-                       options->gamma);
-            if (document["stable_intervals"].empty()) fmt::print(results_file(), " none of [{}, {}]", options->k_min, options->k_max);
-            for (const auto& i : document["stable_intervals"])
-                fmt::print(results_file(), " [{:.6f}, {:.6f}]", i[0].get<double>(), i[1].get<double>());
-            fmt::print(results_file(), "\n  {:>10} {:>14} {:>8}\n", "k", "min omega^2", "stable");
-            for (const auto& p : document["samples"])
-                fmt::print(results_file(), "  {:>10.6f} {:>14.6g} {:>8}\n", p["k"].get<double>(), p["min_omega2"].get<double>(),
-                           p["stable"].get<bool>() ? "yes" : "no");
+            print_over_k(document, kernel.label(), lattice.name, *options);
             return 0;
         }
-        const int grid = options->grid > 0 ? options->grid : default_grid(lattice.dimension);
-        auto document = stability_document(kernel, lattice, options->k, options->gamma, grid, threads);
+        auto document = stability_document(kernel, lattice, options->k, options->gamma, options->grid, threads,
+                                           options->horizon);
         if (options->json) {
             print_json(document);
             return 0;
         }
         fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}: {}\n", kernel.label(),
                    lattice.name, document["bravais"].get<std::string>(), options->k, options->gamma,
-                   document["stable"].get<bool>() ? "stable" : "UNSTABLE");
-        fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone ({} grid points, refined):\n",
-                   document["grid_points"].get<int>());
+                   verdict_text(document));
+        const auto& zone = document["zone_scan"];
+        fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
+                                   "branch {}):\n", zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),
+                   zone["converged"].get<bool>() ? "settled within the tolerance" : "NOT settled");
         for (const auto& m : document["branches"])
             fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",
                        m["branch"].get<int>(), m["min_omega2"].get<double>(), vector_text(m["at"]),

@@ -284,8 +284,9 @@ PYBIND11_MODULE(sphkern, m)
     m.def("stability",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
              const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
-             int path, int threads, const py::object& params) {
+             int path, int threads, double horizon, const py::object& params) {
               check_gamma(gamma, "gamma");
+              check_horizon(horizon, "horizon");
               if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
               if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
               if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
@@ -299,8 +300,7 @@ PYBIND11_MODULE(sphkern, m)
                   const double lo = kmin.cast<double>(), hi = kmax.cast<double>();
                   check_k_interval(lo, hi, "kmin/kmax");
                   py::gil_scoped_release unlocked;
-                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma,
-                                                       grid ? grid : default_grid(lattice.dimension) / 3, cores);
+                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma, grid, cores, horizon);
               } else {
                   if (k.is_none()) fail_input("k: expected a number (or kmin and kmax)");
                   const double at = k.cast<double>();
@@ -314,8 +314,7 @@ PYBIND11_MODULE(sphkern, m)
                       document = dispersion_path_document(kernel, lattice, at, gamma, path);
                   } else {
                       py::gil_scoped_release unlocked;
-                      document = stability_document(kernel, lattice, at, gamma,
-                                                    grid ? grid : default_grid(lattice.dimension), cores);
+                      document = stability_document(kernel, lattice, at, gamma, grid, cores, horizon);
                   }
               }
               return to_python(document);
@@ -323,9 +322,10 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
           py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
-          py::arg("threads") = 0, py::arg("params") = py::none(),
+          py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
           "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
-          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan.", guard);
+          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan; `horizon` "
+          "(d/c) separates weak instabilities from unstable ones.", guard);
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,

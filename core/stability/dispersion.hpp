@@ -52,6 +52,9 @@ public:
     // Its eigenvalues, ascending.
     std::vector<double> omega2(const Eigen::Vector3d& kappa) const;
     DispersionModes modes(const Eigen::Vector3d& kappa) const;
+    // Where site s sits relative to site 0 within a cell, in units of d.
+    Eigen::Vector3d site_offset(int s) const { return offsets_[static_cast<std::size_t>(s)]; }
+    const Eigen::Matrix3d& basis() const { return basis_; } // the cell's vectors (columns), in units of d
 
     // One site only: T / kappa^2 in the long-wave limit along the unit direction n,
     // T = m sum_j H (n.x_j)^2 / 2, over rho0 (the continuum makes it n n^T). With eps_rho

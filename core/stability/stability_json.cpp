@@ -5,6 +5,9 @@
 #include "stability/dispersion_path.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
+#include "stability/zone_minimum.hpp"
+
+#include <cmath>
 
 
 namespace sphkern {
@@ -38,7 +41,33 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> symmetry_directions(const R
     return directions;
 }
 
+nlohmann::json zone_scan_json(const StabilityScan& scan)
+{
+    return {{"grid", scan.grid}, {"grids", scan.levels}, {"converged", scan.converged}, {"change", scan.change},
+            {"tolerance", {{"absolute", zone_tolerance_absolute}, {"relative", zone_tolerance_relative}}}};
+}
+
 } // namespace
+
+nlohmann::json mode_json(const ModeCharacter& mode, int dim)
+{
+    return {{"kind", mode_kind_name(mode.kind)}, {"unfolded_wavevector", vector_json(mode.unfolded, dim)},
+            {"in_phase", mode.in_phase}, {"longitudinal", mode.longitudinal}};
+}
+
+nlohmann::json stability_sample_json(const StabilitySample& s, int dim)
+{
+    nlohmann::json entry = {{"k", s.k}, {"min_omega2", s.branch_minima.front()}, {"stable", s.stable},
+                            {"verdict", verdict_name(s.verdict)}, {"longitudinal", s.longitudinal},
+                            {"branch_minima", s.branch_minima}};
+    if (std::isfinite(s.floor)) entry["valley_floor"] = s.floor;
+    if (std::isfinite(s.growth_time)) {
+        entry["growth_time"] = s.growth_time;
+        entry["at"] = vector_json(s.at, dim);
+        entry["mode"] = mode_json(s.mode, dim);
+    }
+    return entry;
+}
 
 nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
                                    const Eigen::Vector3d& kappa)
@@ -65,7 +94,7 @@ nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice,
 }
 
 nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int grid,
-                                  int threads)
+                                  int threads, double horizon)
 {
     const Dispersion dispersion(kernel, lattice, k, gamma);
     const auto reciprocal = reciprocal_lattice(lattice);
@@ -77,11 +106,16 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
     for (int i = 0; i < D; ++i) b.push_back(vector_json(reciprocal.vectors.col(i), D));
     document["reciprocal_vectors"] = b;
     document["grid_points"] = scan.grid_points;
+    document["zone_scan"] = zone_scan_json(scan);
     document["stable"] = scan.stable;
+    document["horizon"] = horizon;
+    document["verdict"] = verdict_name(scan.verdict(horizon));
+    if (std::isfinite(scan.growth_time())) document["growth_time"] = scan.growth_time();
     document["min_omega2"] = scan.lowest().omega2;
     document["at"] = vector_json(scan.lowest().kappa, D);
     document["branch"] = scan.lowest().branch;
     document["longitudinal"] = scan.lowest().longitudinal;
+    document["mode"] = mode_json(scan.mode, D);
     nlohmann::json branches = nlohmann::json::array();
     for (const auto& m : scan.minima)
         branches.push_back({{"branch", m.branch}, {"min_omega2", m.omega2}, {"at", vector_json(m.kappa, D)},
@@ -115,19 +149,21 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
 }
 
 nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                                         int steps, double gamma, int grid, int threads)
+                                         int steps, double gamma, int grid, int threads, double horizon)
 {
-    const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads);
+    const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads, horizon);
     auto document = header(kernel, lattice, k_min, gamma);
     document.erase("k");
     document["k_range"] = {k_min, k_max};
     document["bravais"] = scan.bravais;
-    nlohmann::json samples = nlohmann::json::array();
-    for (const auto& s : scan.samples)
-        samples.push_back({{"k", s.k}, {"min_omega2", s.branch_minima.front()}, {"stable", s.stable},
-                           {"longitudinal", s.longitudinal}, {"branch_minima", s.branch_minima}});
+    document["horizon"] = horizon;
+    nlohmann::json samples = nlohmann::json::array(), between = nlohmann::json::array();
+    for (const auto& s : scan.samples) samples.push_back(stability_sample_json(s, lattice.dimension));
+    for (const auto& s : scan.between) between.push_back(stability_sample_json(s, lattice.dimension));
     document["samples"] = samples;
+    document["between"] = between;
     document["stable_intervals"] = intervals_json(scan.stable);
+    document["stable_at_horizon"] = intervals_json(scan.usable);
     return document;
 }
 

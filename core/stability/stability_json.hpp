@@ -5,6 +5,7 @@
 
 #include "kernels/kernel.hpp"
 #include "stability/dispersion_path.hpp"
+#include "stability/stability_over_k.hpp"
 #include "lattices/lattice.hpp"
 
 #include <Eigen/Dense>
@@ -15,13 +16,18 @@ namespace sphkern {
 nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
                                    const Eigen::Vector3d& kappa);
 
+// `grid`: the first zone grid per axis (0: the default); `horizon` in d/c.
 nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int grid,
-                                  int threads);
+                                  int threads, double horizon);
 
-// min omega^2 over the Brillouin zone at `steps` + 1 k in [k_min, k_max] and the
-// stable k intervals (from grid to grid point; each edge refined by bisection to 1e-6).
+// The verdict at `steps` + 1 k in [k_min, k_max] (and where the scan looked between them),
+// the stable k intervals and those stable at the horizon (each edge bisected to 1e-6).
 nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                                         int steps, double gamma, int grid, int threads);
+                                         int steps, double gamma, int grid, int threads, double horizon);
+
+// One k of a scan over k; a mode's kind.
+nlohmann::json stability_sample_json(const StabilitySample& sample, int dim);
+nlohmann::json mode_json(const ModeCharacter& mode, int dim);
 
 // omega^2 of every branch along the high-symmetry path, about `points` samples.
 nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points);

@@ -1,143 +1,119 @@
 #include "stability/stability_scan.hpp"
 
-#include "support/parallel_for.hpp"
+#include "stability/zone_minimum.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
 
 #include <boost/math/tools/minima.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <mutex>
+#include <tuple>
 
 namespace sphkern {
 
 namespace {
 
-// Distinct valleys refined besides the grid minimum.
-constexpr int valley_candidates = 3;
-
-// The grid's local minima (periodic neighbours, ties allowed) other than Γ, lowest first,
-// one per value: symmetric copies of a valley are refined once.
-std::vector<std::size_t> valley_floors(const std::vector<double>& value, int n, int D, int count)
+// omega^2 / kappa^2 and the longitudinal fraction of the D acoustic modes at kappa n (those
+// whose sites move most nearly in phase; all of them for one site), ascending. Unstable
+// optical modes may lie below them.
+std::vector<std::pair<double, double>> acoustic_ratios(const Dispersion& dispersion, const Eigen::Vector3d& n,
+                                                       double kappa)
 {
-    std::vector<std::size_t> floors;
-    const std::size_t total = value.size();
-    auto coordinate = [&](std::size_t index, int axis) {
-        for (int a = 0; a < axis; ++a) index /= static_cast<std::size_t>(n);
-        return static_cast<int>(index % static_cast<std::size_t>(n));
-    };
-    const std::size_t gamma = [&] { // fraction 0 on every axis: grid coordinate n / 2
-        std::size_t index = 0;
-        for (int a = D - 1; a >= 0; --a) index = index * static_cast<std::size_t>(n) + static_cast<std::size_t>(n / 2);
-        return index;
-    }();
-    for (std::size_t i = 0; i < total; ++i) {
-        if (i == gamma) continue;
-        bool floor = true;
-        for (int offset = 0; offset < (D == 3 ? 27 : D == 2 ? 9 : 3) && floor; ++offset) {
-            std::size_t j = 0, stride = 1;
-            int o = offset;
-            for (int a = 0; a < D; ++a) {
-                const int c = (coordinate(i, a) + (o % 3) - 1 + n) % n;
-                o /= 3;
-                j += static_cast<std::size_t>(c) * stride;
-                stride *= static_cast<std::size_t>(n);
-            }
-            floor = value[j] >= value[i];
+    const int D = dispersion.dimension();
+    const auto modes = dispersion.modes(kappa * n);
+    std::vector<std::pair<double, int>> in_phase;
+    for (int b = 0; b < dispersion.branches(); ++b) {
+        double together = 0;
+        for (int a = 0; a < D; ++a) {
+            std::complex<double> sum = 0;
+            for (int site = 0; site < dispersion.sites(); ++site) sum += modes.modes[b][D * site + a];
+            together += std::norm(sum);
         }
-        if (floor) floors.push_back(i);
+        in_phase.emplace_back(-together, b);
     }
-    std::sort(floors.begin(), floors.end(), [&](std::size_t a, std::size_t c) { return value[a] < value[c]; });
-    std::vector<std::size_t> distinct;
-    for (std::size_t i : floors) {
-        if (static_cast<int>(distinct.size()) == count) break;
-        if (!distinct.empty() && std::abs(value[i] - value[distinct.back()]) <= 1e-9 * std::abs(value[i])) continue;
-        distinct.push_back(i);
+    std::sort(in_phase.begin(), in_phase.end());
+    std::vector<std::pair<double, double>> r;
+    for (int i = 0; i < D; ++i) {
+        const int b = in_phase[static_cast<std::size_t>(i)].second;
+        r.emplace_back(modes.omega2[b] / (kappa * kappa), modes.longitudinal[b]);
     }
-    return distinct;
+    std::sort(r.begin(), r.end());
+    return r;
+}
+
+// The lowest omega^2 / kappa^2 of the acoustic branches at kappa n from the eigenvalues alone:
+// at long waves they are the D nearest zero (O(kappa^2)), the optical ones stay O(1) away.
+double lowest_acoustic(const Dispersion& dispersion, const Eigen::Vector3d& n, double kappa)
+{
+    auto w = dispersion.omega2(kappa * n);
+    std::sort(w.begin(), w.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    return *std::min_element(w.begin(), w.begin() + dispersion.dimension()) / (kappa * kappa);
 }
 
 } // namespace
 
-int default_grid(int dimension) { return dimension == 3 ? 24 : dimension == 2 ? 96 : 512; }
+int default_grid(int dimension) { return zone_start_grid(dimension); }
 
-StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int per_axis,
+std::string verdict_name(Verdict verdict)
+{
+    return verdict == Verdict::stable ? "stable" : verdict == Verdict::weak ? "weak" : "unstable";
+}
+
+void check_horizon(double horizon, const std::string& what)
+{
+    if (!std::isfinite(horizon) || horizon <= 0 || horizon > 1e12)
+        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a growth time in (0, 1e12] (in d/c)",
+                                                 what, horizon));
+}
+
+double StabilityScan::growth_time() const
+{
+    const double w = lowest().omega2;
+    return w < -unstable_threshold ? 1 / std::sqrt(-w) : INFINITY;
+}
+
+Verdict StabilityScan::verdict(double horizon) const
+{
+    if (stable) return Verdict::stable;
+    return growth_time() < horizon ? Verdict::unstable : Verdict::weak;
+}
+
+StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int start_grid,
                                   int threads, bool refine_all)
 {
-    const int D = dispersion.dimension(), branches = dispersion.branches();
-    const int n = std::max(2, per_axis + per_axis % 2);
-    std::size_t total = 1;
-    for (int i = 0; i < D; ++i) total *= static_cast<std::size_t>(n);
-    const Eigen::Matrix3d& b = reciprocal.vectors;
-    auto fraction_of = [&](std::size_t index) {
-        Eigen::Vector3d f = Eigen::Vector3d::Zero();
-        for (int i = 0; i < D; ++i) {
-            f[i] = -0.5 + static_cast<double>(index % n) / n;
-            index /= n;
-        }
-        return f;
-    };
-    // The lowest grid value of each branch, per thread, then merged; the lowest branch on
-    // every grid point, for its local minima.
-    struct Best {
-        std::vector<double> value;
-        std::vector<Eigen::Vector3d> at;
-    };
-    std::vector<Best> best(static_cast<std::size_t>(std::max(1, threads)),
-                           Best{std::vector<double>(branches, INFINITY), std::vector<Eigen::Vector3d>(branches)});
-    std::vector<double> lowest(total);
-    ParallelFor pool;
-    pool.run(total, threads, [&](int t, std::size_t begin, std::size_t end) {
-        auto& mine = best[static_cast<std::size_t>(t)];
-        for (std::size_t i = begin; i < end && (i % 256 || pool.keep_going()); ++i) {
-            const Eigen::Vector3d f = fraction_of(i);
-            const auto w = dispersion.omega2(b * f);
-            lowest[i] = w[0];
-            for (int br = 0; br < branches; ++br)
-                if (w[br] < mine.value[br]) mine.value[br] = w[br], mine.at[br] = f;
-        }
-    });
-    // Coordinate-wise Brent from a grid point, within one grid step on each axis.
-    auto refine = [&](int br, Eigen::Vector3d f, double value, int sweeps) {
-        for (int sweep = 0; sweep < sweeps; ++sweep)
-            for (int axis = 0; axis < D; ++axis) {
-                auto along = [&](double x) {
-                    Eigen::Vector3d g = f;
-                    g[axis] = x;
-                    return dispersion.omega2(b * g)[br];
-                };
-                std::uintmax_t iterations = 60;
-                auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - 1.0 / n, f[axis] + 1.0 / n, 20,
-                                                                    iterations);
-                if (fx < value) value = fx, f[axis] = x;
-            }
-        return std::pair{f, value};
-    };
+    auto zone = lowest_branch_minimum(dispersion, reciprocal, start_grid, threads);
+    const ZoneGrid& grid = *zone.last;
     StabilityScan scan;
-    scan.grid_points = static_cast<int>(total);
-    for (int br = 0; br < branches; ++br) {
-        std::size_t winner = 0;
-        for (std::size_t t = 1; t < best.size(); ++t)
-            if (best[t].value[br] < best[winner].value[br]) winner = t;
-        auto [f, value] = refine(br, best[winner].at[br], best[winner].value[br], refine_all || br == 0 ? 6 : 0);
-        // The lowest branch: also its lowest grid valleys away from Γ, where an instability
-        // starts as a valley floor crosses zero (the grid minimum may still be Γ then).
-        if (br == 0)
-            for (std::size_t i : valley_floors(lowest, n, D, valley_candidates)) {
-                auto [g, v] = refine(0, fraction_of(i), lowest[i], 3);
-                if (v < value) f = g, value = v;
-            }
+    scan.grid = grid.per_axis();
+    scan.grid_points = static_cast<int>(grid.size());
+    scan.levels = zone.levels;
+    scan.converged = zone.converged;
+    scan.change = zone.change;
+    scan.floor = zone.floor;
+    const Eigen::Matrix3d& b = reciprocal.vectors;
+    for (int br = 0; br < dispersion.branches(); ++br) {
         BranchMinimum m;
         m.branch = br;
+        Eigen::Vector3d f = zone.fraction;
+        double value = zone.omega2;
+        if (br > 0) {
+            const auto [v, at] = grid.branch_minimum(br);
+            std::tie(f, value) = refine_branch(dispersion, b, br, grid.fraction(at), v, 1.0 / grid.per_axis(),
+                                               refine_all ? 6 : 0);
+        }
         m.kappa = fold_to_first_zone(reciprocal, b * f);
         const auto modes = dispersion.modes(m.kappa);
-        m.omega2 = modes.omega2[br];
-        m.longitudinal = modes.longitudinal[br];
+        m.omega2 = br == 0 ? value : modes.omega2[static_cast<std::size_t>(br)];
+        m.longitudinal = modes.longitudinal[static_cast<std::size_t>(br)];
         scan.minima.push_back(m);
         if (m.omega2 < -unstable_threshold) scan.stable = false;
     }
     std::stable_sort(scan.minima.begin(), scan.minima.end(),
                      [](const BranchMinimum& a, const BranchMinimum& c) { return a.omega2 < c.omega2; });
+    scan.mode = mode_character(dispersion, reciprocal, scan.lowest().kappa, scan.lowest().branch);
     scan.long_wave = long_wave_minimum(dispersion);
     if (scan.long_wave.omega2_over_kappa2 < -unstable_threshold) scan.stable = false;
     return scan;
@@ -159,8 +135,7 @@ LongWaveMinimum long_wave_minimum(const Dispersion& dispersion)
             const Eigen::MatrixXd m = dispersion.long_wave_matrix(n).topLeftCorner(D, D);
             return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m, Eigen::EigenvaluesOnly).eigenvalues()[0];
         }
-        const double small = dispersion.omega2(1e-3 * n).front() / 1e-6,
-                     larger = dispersion.omega2(2e-3 * n).front() / 4e-6;
+        const double small = lowest_acoustic(dispersion, n, 1e-3), larger = lowest_acoustic(dispersion, n, 2e-3);
         return (4 * small - larger) / 3;
     };
     // omega^2(kappa) = omega^2(-kappa): half the directions suffice.
@@ -194,30 +169,8 @@ SoundSpeed long_wave_sound_speed(const Dispersion& dispersion, const Eigen::Vect
     const int D = dispersion.dimension();
     SoundSpeed s;
     s.direction = direction.normalized();
-    // The acoustic modes are the D whose sites move in phase (all of them for one site);
-    // unstable optical modes may lie below them.
-    auto ratio = [&](double kappa) {
-        const auto modes = dispersion.modes(kappa * s.direction);
-        std::vector<std::pair<double, int>> in_phase;
-        for (int b = 0; b < dispersion.branches(); ++b) {
-            double together = 0;
-            for (int a = 0; a < D; ++a) {
-                std::complex<double> sum = 0;
-                for (int site = 0; site < dispersion.sites(); ++site) sum += modes.modes[b][D * site + a];
-                together += std::norm(sum);
-            }
-            in_phase.emplace_back(-together, b);
-        }
-        std::sort(in_phase.begin(), in_phase.end());
-        std::vector<std::pair<double, double>> r; // (omega^2 / kappa^2, longitudinal) of the acoustic modes
-        for (int i = 0; i < D; ++i) {
-            const int b = in_phase[static_cast<std::size_t>(i)].second;
-            r.emplace_back(modes.omega2[b] / (kappa * kappa), modes.longitudinal[b]);
-        }
-        std::sort(r.begin(), r.end());
-        return r;
-    };
-    const auto small = ratio(1e-3), larger = ratio(2e-3);
+    const auto small = acoustic_ratios(dispersion, s.direction, 1e-3),
+               larger = acoustic_ratios(dispersion, s.direction, 2e-3);
     double most = -1;
     for (int b = 0; b < D; ++b) {
         // omega^2 / kappa^2 = c^2 + O(kappa^2): Richardson.

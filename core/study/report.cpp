@@ -1,7 +1,10 @@
 #include "study/report.hpp"
 
 #include "study/particles_outputs.hpp"
+#include "analysis/code_conventions.hpp"
 #include "analysis/resolution_axis.hpp"
+#include "stability/recommended_k.hpp"
+#include "support/install_paths.hpp"
 #include "support/provenance.hpp"
 
 #include <filesystem>
@@ -379,6 +382,35 @@ std::string figures_markdown(const std::vector<std::string>& figures)
     return s;
 }
 
+// One recommended k per kernel, lattice and a_p, and the same resolution in other codes' conventions.
+std::string recommended_markdown(const StudyResults& results)
+{
+    std::string s = "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
+                    "faster than the horizon, with its margin in k and N_H, and the same resolution in the conventions of "
+                    "other codes (" + method_document() + " section 10).\n\n| lattice | kernel | a_p | k | N_H |";
+    for (const auto& c : code_conventions()) s += fmt::format(" {} {} |", c.name, c.quantity);
+    s += "\n|---|---|---|---|---|";
+    for (std::size_t i = 0; i < code_conventions().size(); ++i) s += "---|";
+    s += "\n";
+    for (const auto& c : results.stability)
+        for (const auto& o : c.overlap) {
+            const auto& r = o.recommended;
+            if (!r.found) {
+                s += fmt::format("| {} | {} | {} | none: no k is both accurate and stable | |", c.lattice,
+                                 c.kernel_label, o.ap_name);
+                for (std::size_t i = 0; i < code_conventions().size(); ++i) s += " |";
+                s += "\n";
+                continue;
+            }
+            s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
+                             r.k, r.margin, r.at_window_edge ? std::string(" (") + window_edge_note + ")" : "",
+                             r.neighbours, r.neighbours_from, r.neighbours_to);
+            for (double v : o.in_conventions) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " not defined |";
+            s += "\n";
+        }
+    return s + "\n";
+}
+
 std::string stability_markdown(const StudyResults& results)
 {
     if (results.stability.empty()) return {};
@@ -386,14 +418,16 @@ std::string stability_markdown(const StudyResults& results)
         "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
         "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
         "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10). "
+        "A mode that grows more slowly than the horizon ({:g} d/c: growth time 1 / sqrt(-omega^2)) is weak: such k are "
+        "not in the stable k, but count as stable where they meet condition (22). "
         "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        results.stability.front().gamma, method_document());
+        results.stability.front().gamma, method_document(), results.stability.front().over_k.horizon);
     std::string lattice;
     for (const auto& c : results.stability) {
         if (c.lattice != lattice) {
             s += lattice.empty() ? "" : "\n";
             lattice = c.lattice;
-            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable k | dispersion curves at k |\n"
+            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
                              "|---|---|---|---|---|\n", lattice);
         }
         if (!c.refused.empty()) {
@@ -408,7 +442,7 @@ std::string stability_markdown(const StudyResults& results)
         s += fmt::format("| {} | [{:.4f}, {:.4f}] | {} | {} | {:.4f} |\n", c.kernel_label, c.over_k.samples.front().k,
                          c.over_k.samples.back().k, intervals_text(c.over_k.stable, "none"), both, c.path_k);
     }
-    return s + "\n";
+    return s + "\n" + recommended_markdown(results);
 }
 
 // The terms the tables use, in the report itself so that it reads on its own.

@@ -1,5 +1,6 @@
 #include "study/results_writer.hpp"
 
+#include "analysis/code_conventions.hpp"
 #include "analysis/results_json.hpp"
 #include "study/particles_outputs.hpp"
 #include "stability/stability_json.hpp"
@@ -27,17 +28,28 @@ nlohmann::json stability_json(const StabilityCase& c)
         return entry;
     }
     nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
+                   verdicts = nlohmann::json::array(), growth = nlohmann::json::array(), kinds = nlohmann::json::array(),
                    overlap = nlohmann::json::array();
     for (const auto& s : c.over_k.samples) {
         ks.push_back(s.k);
         minima.push_back(s.branch_minima);
         stable.push_back(s.stable);
+        verdicts.push_back(verdict_name(s.verdict));
+        const bool grows = std::isfinite(s.growth_time);
+        growth.push_back(grows ? nlohmann::json(s.growth_time) : nlohmann::json());
+        kinds.push_back(grows ? nlohmann::json(mode_kind_name(s.mode.kind)) : nlohmann::json());
     }
-    for (const auto& o : c.overlap)
+    for (const auto& o : c.overlap) {
+        auto recommended = recommended_json(o.recommended);
+        for (std::size_t i = 0; i < o.in_conventions.size(); ++i) // a convention undefined for the kernel is left out
+            if (std::isfinite(o.in_conventions[i])) recommended["conventions"][code_conventions()[i].name] = o.in_conventions[i];
         overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
-                           {"accurate_and_stable", intervals_json(o.both)}});
+                           {"accurate_and_stable", intervals_json(o.both)}, {"recommended", recommended}});
+    }
     entry.update({{"bravais", c.over_k.bravais}, {"k", ks}, {"branch_minima", minima}, {"stable", stable},
-                  {"stable_intervals", intervals_json(c.over_k.stable)}, {"overlap", overlap},
+                  {"horizon", c.over_k.horizon}, {"verdict", verdicts}, {"growth_time", growth}, {"mode", kinds},
+                  {"stable_intervals", intervals_json(c.over_k.stable)},
+                  {"stable_at_horizon", intervals_json(c.over_k.usable)}, {"overlap", overlap},
                   {"dispersion", {{"k", c.path_k}, {"path", dispersion_path_json(c.path)}}}});
     return entry;
 }

@@ -164,7 +164,7 @@ StudySurface read_surface(const JsonNode& node)
 
 StudyStability read_stability(const JsonNode& node)
 {
-    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points"});
+    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points", "horizon"});
     StudyStability stability;
     if (auto gamma = node.find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
     if (auto k = node.find("k")) {
@@ -179,6 +179,7 @@ StudyStability read_stability(const JsonNode& node)
     if (auto grid = node.find("grid")) stability.grid = static_cast<int>(grid->integer_in(2, 200));
     if (auto k = node.find("dispersion_k")) stability.path_k = k_or_best(*k);
     if (auto points = node.find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
+    if (auto horizon = node.find("horizon")) stability.horizon = horizon->number_in(1e-6, 1e12);
     return stability;
 }
 

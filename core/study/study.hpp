@@ -59,9 +59,10 @@ struct StudyStability {
     double gamma = 5.0 / 3.0;
     std::optional<double> k_min, k_max; // empty: the study's window in k, over its volume coefficients
     int steps = 100;                    // k samples - 1
-    int grid = 0;                       // points per reciprocal axis; 0: 8 in 3D, 32 in 2D
+    int grid = 0;                       // first zone grid per reciprocal axis; 0: 8 in 3D, 32 in 2D
     std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
     int path_points = 120;
+    double horizon = 100;               // growth time in d/c: slower instabilities are weak (default_horizon)
 };
 
 // A study's total work, bounded before it starts (see check in parse_study).

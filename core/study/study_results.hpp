@@ -9,6 +9,7 @@
 #include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
 #include "stability/dispersion_path.hpp"
+#include "stability/recommended_k.hpp"
 #include "stability/stability_over_k.hpp"
 #include "study/study_particles.hpp"
 
@@ -96,6 +97,8 @@ struct SweepCase {
 struct StabilityOverlap {
     std::string ap_name;
     std::vector<KInterval> accurate, both;
+    RecommendedK recommended; // the centre of the widest of `both`
+    std::vector<double> in_conventions; // the recommended k in each of code_conventions(), when found
 };
 
 struct StabilityCase {

@@ -503,11 +503,41 @@ run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_o
 r = run('roots', 'cubic_bspline', 'fcc', '--stability', '--steps', '50')[0]
 s = run('stability', 'cubic_bspline', 'fcc', '--kmin', '0.75', '--kmax', '1.25', '--steps', '50')
 assert r['stability']['stable_intervals'] == s['stable_intervals'], (r['stability'], s['stable_intervals'])
+assert r['stability']['stable_at_horizon'] == s['stable_at_horizon'], (r['stability'], s['stable_at_horizon'])
 inside = lambda k, v: any(a < k < b for a, b in v)
 for i in range(1, 500):
     k = 0.75 + 0.5 * i / 500
-    both = inside(k, r['all_sites']['acceptance']['intervals']) and inside(k, s['stable_intervals'])
-    assert both == inside(k, r['stability']['accurate_and_stable']), k"
+    both = inside(k, r['all_sites']['acceptance']['intervals']) and inside(k, s['stable_at_horizon'])
+    assert both == inside(k, r['stability']['accurate_and_stable']), k
+rec = r['stability']['recommended']
+widest = max(r['stability']['accurate_and_stable'], key=lambda i: i[1] - i[0])
+assert rec['found'] and abs(rec['k'] - (widest[0] + widest[1]) / 2) < 1e-12 and rec['interval'] == widest, rec"
+expect 2 '--horizon -1 is not allowed, expected a growth time in \(0, 1e12\]' -- stability cubic_bspline fcc --k 1.2 --horizon -1
+expect 2 '--horizon 0 is not allowed' -- roots cubic_bspline fcc --stability --horizon 0
+expect 2 '--convention nosuch: unknown convention, expected one of pysph, dualsphysics, swift, gadget, splishsplash' -- roots cubic_bspline fcc --convention nosuch
+study s_horizon '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"horizon": -1}}'
+expect 3 's_horizon.json: /stability/horizon: ' -- run "$work/s_horizon.json" -o "$work/out12"
+check "stability --k gives every sampled k of --kmin/--kmax the same verdict and minimum" python3 -c "
+import json, subprocess
+run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_output=True, check=True, text=True).stdout)
+s = run('stability', 'wendland_c2', 'hcp', '--kmin', '1.8965', '--kmax', '1.8975', '--steps', '4')
+for p in s['samples']:
+    one = run('stability', 'wendland_c2', 'hcp', '--k', repr(p['k']))
+    assert (one['verdict'], one['stable'], one['min_omega2']) == (p['verdict'], p['stable'], p['min_omega2']), (p, one['verdict'])
+assert not s['stable_intervals'] and all(not p['stable'] for p in s['samples'])"
+check "roots: a best k on the window's edge is flagged, in text and JSON" python3 -c "
+import json, subprocess
+out = subprocess.run(['$sphkern', 'roots', 'wendland_c2', 'hcp'], capture_output=True, check=True, text=True).stdout
+assert 'at the window edge; widen --kmin/--kmax' in out, out
+d = json.loads(subprocess.run(['$sphkern', 'roots', 'wendland_c2', 'hcp', '--json'], capture_output=True, check=True, text=True).stdout)[0]
+assert d['best_k_note'] == 'at the window edge; widen --kmin/--kmax', d.get('best_k_note')"
+check "roots --convention swift: not defined for the 2D super-Gaussian, whose second moment is negative" bash -c \
+    "'$sphkern' roots super_gaussian triangular --convention swift | grep -q 'second moment in 2D is not positive'"
+check "roots --convention gadget: N_ngb of the best k is 4 pi / 3 (R k)^3 / V" python3 -c "
+import json, subprocess, math
+d = json.loads(subprocess.run(['$sphkern', 'roots', 'cubic_bspline', 'sc', '--convention', 'gadget', '--json'], capture_output=True, check=True, text=True).stdout)[0]
+k = d['all_sites']['acceptance']['best_k']
+assert abs(d['convention']['best_k'] - 4 * math.pi / 3 * (2 * k) ** 3) < 1e-9 * d['convention']['best_k'], d['convention']"
 expect 2 '--kmin excludes --path' -- stability cubic_bspline fcc --kmin 1 --kmax 1.2 --path 10
 expect 2 '--wavevector and --path: give one of them' -- stability cubic_bspline fcc --k 1.2 --path 10 --wavevector 1,0,0
 check "stability --path starts at Γ with omega^2 = 0 and ends at R" python3 -c "

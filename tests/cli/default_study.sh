@@ -53,10 +53,21 @@ assert len(st) == 8 and all(len(s['k']) == 101 and len(s['branch_minima'][0]) ==
 for s in st:  # a sample is stable exactly when it lies in a stable interval
     for k, ok in zip(s['k'], s['stable']):
         assert ok == any(a <= k <= b for a, b in s['stable_intervals']), (s['kernel'], k)
+    for k, v in zip(s['k'], s['verdict']):  # stable at the horizon: every verdict but unstable
+        assert (v != 'unstable') == any(a <= k <= b for a, b in s['stable_at_horizon']), (s['kernel'], k, v)
     for o in s['overlap']:
         for a, b in o['accurate_and_stable']:
-            assert any(x <= a and b <= y for x, y in o['accurate']) and any(x <= a and b <= y for x, y in s['stable_intervals'])
+            assert any(x <= a and b <= y for x, y in o['accurate']) and any(x <= a and b <= y for x, y in s['stable_at_horizon'])
+        rec = o['recommended']
+        if o['accurate_and_stable']:
+            widest = max(o['accurate_and_stable'], key=lambda i: i[1] - i[0])
+            # SWIFT's gamma is not defined for the 2D super-Gaussian (its second moment is -1)
+            names = {'pysph', 'dualsphysics', 'gadget', 'splishsplash'} | ({'swift'} if s['kernel'] != 'super_gaussian' else set())
+            assert rec['found'] and rec['interval'] == widest and set(rec['conventions']) == names, rec
+        else:
+            assert not rec['found'], rec
 "
+grep -q '### Recommended k' "$work/out/report.md"
 grep -q '## Free-surface profiles' "$work/out/report.md"
 grep -q '## Linear stability' "$work/out/report.md"
 if command -v gnuplot >/dev/null; then

@@ -108,10 +108,22 @@ def test_stability_documents_equal_the_command_lines():
     for kwargs, message in [({"wavevector": [1, 0]}, "wavevector: 2 components, expected 3 for a 3D lattice"),
                             ({"kmin": 0.8}, "kmin and kmax go together, without k, wavevector or path"),
                             ({"wavevector": [1, 0, 0], "path": 10}, "wavevector and path: give one of them"),
-                            ({"gamma": -1}, "gamma -1 is not allowed, expected a number in (0, 1e6]")]:
+                            ({"gamma": -1}, "gamma -1 is not allowed, expected a number in (0, 1e6]"),
+                            ({"horizon": -1}, "horizon -1 is not allowed, expected a growth time in (0, 1e12] (in d/c)")]:
         with pytest.raises(ValueError) as raised:
             sphkern.stability("cubic_bspline", "fcc", 1.2, **kwargs)
         assert str(raised.value) == message
+
+
+def test_stability_verdicts_horizon_and_window_edge():
+    # morris_quintic on fcc at k = 0.892: a transverse mode grows in about 330 d/c.
+    slow = sphkern.stability("morris_quintic", "fcc", 0.892)
+    assert slow["verdict"] == "weak" and slow["mode"]["kind"] == "transverse" and 300 < slow["growth_time"] < 360
+    assert sphkern.stability("morris_quintic", "fcc", 0.892, horizon=1000)["verdict"] == "unstable"
+    close(sphkern.stability("morris_quintic", "fcc", kmin=0.88, kmax=0.9, steps=4, horizon=50),
+          cli_json("stability", "morris_quintic", "fcc", "--kmin", "0.88", "--kmax", "0.9", "--steps", "4", "--horizon", "50"))
+    # The best k of condition (22) on the window's edge is flagged.
+    assert sphkern.roots("wendland_c2", "hcp", details=True)["best_k_note"] == "at the window edge; widen --kmin/--kmax"
 
 
 def test_kernel_functions_are_vectorised_and_equal_the_plugin():

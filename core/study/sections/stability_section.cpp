@@ -2,6 +2,7 @@
 // curves along the high-symmetry path, and where they overlap condition (22).
 #include "study/sections/sections.hpp"
 
+#include "analysis/code_conventions.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -30,6 +31,7 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         c.lattice = lattice.name;
         c.kernel_label = kernel.label();
         c.gamma = spec.gamma;
+        c.over_k.horizon = spec.horizon; // also for a lattice that is refused
         // The bulk cases of the first automatic mode: their windows and condition (22).
         std::vector<const StudyCase*> accurate;
         for (const auto& b : results.cases)
@@ -50,9 +52,8 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         }
         c.path_k = spec.path_k ? *spec.path_k : !accurate.empty() ? accurate.front()->acceptance.best_k
                                                                    : 0.5 * (k_min + k_max);
-        const int grid = spec.grid > 0 ? spec.grid : default_grid(lattice.dimension) / 3;
         try {
-            c.over_k = stability_over_k(kernel, lattice, k_min, k_max, spec.steps, spec.gamma, grid, 1);
+            c.over_k = stability_over_k(kernel, lattice, k_min, k_max, spec.steps, spec.gamma, spec.grid, 1, spec.horizon);
             const Dispersion at(kernel, lattice, c.path_k, spec.gamma);
             c.path = dispersion_along_path(at, reciprocal_lattice(lattice), spec.path_points);
         } catch (const Error& e) {
@@ -60,8 +61,17 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
             c.refused = e.what(); // a lattice whose sites are no common equilibrium
         }
         if (c.refused.empty())
-            for (const auto* b : accurate)
-                c.overlap.push_back({b->ap_name, b->acceptance.intervals, accurate_and_stable(b->acceptance.intervals, c.over_k)});
+            for (const auto* b : accurate) {
+                StabilityOverlap o{b->ap_name, b->acceptance.intervals, accurate_and_stable(b->acceptance.intervals, c.over_k), {}, {}};
+                const HydrostaticErrors errors(kernel, lattice, b->sites.empty() ? 0 : b->sites.front(), b->a_p,
+                                               lattice.gravity, std::max(k_max, b->k_max));
+                o.recommended = recommend_k(o.both, b->k_min, b->k_max, errors);
+                if (o.recommended.found)
+                    for (const auto& convention : code_conventions())
+                        o.in_conventions.push_back(
+                            in_convention(convention, kernel, lattice.dimension, b->a_p, o.recommended.k));
+                c.overlap.push_back(std::move(o));
+            }
         std::lock_guard lock(progress_mutex);
         progress.step(kernel.name() + " on " + lattice.name);
     };
