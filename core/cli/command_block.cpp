@@ -6,6 +6,7 @@
 #include "support/atomic_file.hpp"
 #include "support/output_targets.hpp"
 #include "support/chunked_writer.hpp"
+#include "support/vtk_points.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -41,12 +42,8 @@ void write_vtk(std::ostream& out, const BlockResult& r)
 {
     ChunkedWriter w(out);
     const std::size_t n = r.particles();
-    w.print("# vtk DataFile Version 3.0\nsphkern block: eps_rho and eps_gradp per particle\nASCII\nDATASET POLYDATA\n");
-    w.print("POINTS {} double\n", n);
-    for (std::size_t i = 0; i < n; ++i) w.print("{:.17g} {:.17g} {:.17g}\n", r.x[i], r.y[i], r.z[i]);
-    w.print("VERTICES {} {}\n", n, 2 * n);
-    for (std::size_t i = 0; i < n; ++i) w.print("1 {}\n", i);
-    w.print("POINT_DATA {}\nSCALARS eps_rho double 1\nLOOKUP_TABLE default\n", n);
+    write_vtk_points(w, "sphkern block: eps_rho and eps_gradp per particle", n, r.x.data(), r.y.data(), r.z.data());
+    w.print("SCALARS eps_rho double 1\nLOOKUP_TABLE default\n");
     for (double v : r.eps_rho) w.print("{:.17g}\n", v);
     w.print("SCALARS eps_gradp double 1\nLOOKUP_TABLE default\n");
     for (double v : r.eps_gradp) w.print("{:.17g}\n", v);

@@ -1,6 +1,7 @@
 #include "particles/particle_report.hpp"
 
 #include "support/chunked_writer.hpp"
+#include "support/vtk_points.hpp"
 
 #include <fmt/format.h>
 
@@ -131,12 +132,7 @@ void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const Part
     const auto& m = *answer.measures;
     const std::size_t n = set.size();
     ChunkedWriter out(stream);
-    out.print("# vtk DataFile Version 3.0\nsphkern particles: consistency errors per particle\nASCII\nDATASET POLYDATA\n");
-    out.print("POINTS {} double\n", n);
-    for (std::size_t i = 0; i < n; ++i) out.print("{:.17g} {:.17g} {:.17g}\n", set.x[i], set.y[i], set.z[i]);
-    out.print("VERTICES {} {}\n", n, 2 * n);
-    for (std::size_t i = 0; i < n; ++i) out.print("1 {}\n", i);
-    out.print("POINT_DATA {}\n", n);
+    write_vtk_points(out, "sphkern particles: consistency errors per particle", n, set.x.data(), set.y.data(), set.z.data());
     auto scalars = [&](const char* name, auto value) {
         out.print("SCALARS {} double 1\nLOOKUP_TABLE default\n", name);
         for (std::size_t i = 0; i < n; ++i) out.print("{:.17g}\n", static_cast<double>(value(i)));
