@@ -4,6 +4,7 @@
 #include "particles/neighbour_grid.hpp"
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
+#include "support/progress.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -29,28 +31,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// A plain line on stderr every few seconds of a long sweep, terminal or not: how far, and
-// an estimate of the rest.
-class ProgressLines {
-public:
-    ProgressLines(std::string what, std::size_t total) : what_(std::move(what)), total_(total) {}
-    void report(std::size_t done)
-    {
-        const double elapsed = seconds_since(start_);
-        if (elapsed - last_ < 3 || done == 0 || done >= total_) return;
-        last_ = elapsed;
-        const double fraction = static_cast<double>(done) / static_cast<double>(total_);
-        spdlog::info("{}: {:.0f}% of the sums after {:.0f} s, about {:.0f} s to go", what_, 100 * fraction, elapsed,
-                     elapsed * (1 - fraction) / fraction);
-    }
-
-private:
-    std::string what_;
-    std::size_t total_;
-    Clock::time_point start_ = Clock::now();
-    double last_ = 0;
-};
 
 // One particle's neighbours: displacement, distance, q, V_j, m_j, W and W'; and the scratch
 // of its candidates (r^2 of a run, the points inside the support).
@@ -273,12 +253,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     auto t0 = Clock::now();
     // Bin by bin: the candidates of a bin are gathered once for all its particles.
     ParallelFor pass;
-    ProgressLines progress(set.name, grid.bins());
     pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         std::vector<Run> runs;
         Neighbours nb;
+        // The first thread's share stands for the whole: every thread has as many bins.
+        std::optional<Progress> progress;
+        if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            if (thread == 0 && (b & 255) == 0) progress.report((b - begin) * static_cast<std::size_t>(out.threads));
+            if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} bins", b - begin + 1));
             runs.clear();
             grid.for_each_run_of_bin(b, [&](std::size_t first, std::size_t last) {
                 if (last > first) runs.push_back({first, last});
