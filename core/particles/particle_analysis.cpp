@@ -97,6 +97,12 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume);
         MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, request.threads};
         auto measures = measure_particles(kernel, oriented, inputs);
+        // A particle that sees no other has no SPH sums to judge: h is too small for the set.
+        for (std::size_t i = 0; i < measures.size(); ++i)
+            if (measures.neighbours[i] == 0)
+                fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
+                                       "larger h (--eta, --nh) or a denser set",
+                                       set.name, i, h[i]));
         ParticlePoint point = summarise_point(measures, dim, request.histogram_bins);
         const double h_mean = std::accumulate(h.begin(), h.end(), 0.0) / n;
         point.eta = h_mean / unit;

@@ -673,6 +673,8 @@ printf 'x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n' >"$work/free.csv"
 expect 3 'free.csv: uniform volumes need a box' -- particles cubic_bspline "$work/free.csv"
 expect 3 'free.csv: Voronoi volumes need a periodic box' -- particles cubic_bspline "$work/free.csv" --volume voronoi
 expect 3 'free.csv: --volume file needs masses and densities' -- particles cubic_bspline "$work/free.csv" --volume file
+printf 'x,y,m,rho\n0.1,0.2,1,1\n0.5,0.7,1,1\n0.9,0.1,1,1\n' >"$work/lonely.csv"
+expect 3 'lonely.csv: particle 0 has no neighbour inside its support' -- particles cubic_bspline "$work/lonely.csv" --eta 0.1
 printf 'x,y,h\n0.1,0.2,0.1\n0.5,0.7,0.1\n' >"$work/withh.csv"
 expect 3 'the file.s smoothing lengths need a convention: --support-per-h X' -- particles cubic_bspline "$work/withh.csv" --box 1,1
 expect 2 '--support-per-h maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
