@@ -137,10 +137,11 @@ def test_every_format_gives_the_statistics_of_the_csv(tmp_path):
     for unstructured in (False, True):
         close(run(str(tmp_path / f"set-{unstructured}.vtk"), "--support-per-h", str(GAMMA), *box), reference32, 1e-13)
 
-    # GADGET: float32 coordinates, masses from the MassTable, h is the support radius.
-    write_gadget(tmp_path / "gadget.hdf5", x, h, m, rho)
+    # GADGET: float32 coordinates, masses from the MassTable, its SmoothingLength is the support radius.
+    support = GAMMA * h
+    write_gadget(tmp_path / "gadget.hdf5", x, support, m, rho)
     f32 = lambda a: a.astype(np.float32).astype(np.float64)
-    write_csv(tmp_path / "gadget.csv", f32(x), f32(h), np.full(N, m[0]), f32(rho))
+    write_csv(tmp_path / "gadget.csv", f32(x), f32(support), np.full(N, m[0]), f32(rho))
     close(run(str(tmp_path / "gadget.hdf5"), "--support-per-h", "1"),
           run(str(tmp_path / "gadget.csv"), "--support-per-h", "1", *box), 1e-13)
 
