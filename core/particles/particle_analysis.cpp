@@ -7,12 +7,13 @@
 
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 namespace sphkern {
 
 namespace {
 
-void check_request(const ParticleSet& set, const ParticleRequest& request)
+void check_request(const ParticleRequest& request)
 {
     if (request.threads < 0 || request.threads > 1024)
         fail_input(fmt::format("--threads {}: expected 0 (every core) to 1024", request.threads));
@@ -28,7 +29,6 @@ void check_request(const ParticleSet& set, const ParticleRequest& request)
         fail_input(fmt::format("--rho0 {}: expected a positive number", *request.rho0));
     if (!std::isfinite(request.depth) || request.depth < 0 || request.depth > 1e6)
         fail_input(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
-    (void)set;
 }
 
 std::vector<double> magnitudes(const std::vector<std::array<double, 3>>& v)
@@ -61,9 +61,16 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
 
 } // namespace
 
+const Summary& ParticlePoint::statistic(const std::string& name) const
+{
+    for (const auto& [key, s] : statistics)
+        if (key == name) return s;
+    throw std::logic_error("no statistic " + name);
+}
+
 ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request)
 {
-    check_request(set, request);
+    check_request(request);
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
     answer.volume = request.volume.value_or(default_volume_model(set));

@@ -42,6 +42,7 @@ struct ParticlePoint {
     std::vector<std::pair<std::string, Histogram>> histograms;
     double seconds = 0;
     std::size_t pairs = 0;
+    const Summary& statistic(const std::string& name) const; // std::logic_error for a name not computed
 };
 
 struct ParticleAnswer {

@@ -236,7 +236,6 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     kernel.require_dimension(set.dimension, set.name);
     const double h_max = *std::max_element(inputs.h.begin(), inputs.h.end());
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
-    auto started = Clock::now();
     const NeighbourGrid grid(set, kernel.support() * h_max);
     std::vector<double> mass = inputs.mass;
     if (mass.empty())
@@ -248,7 +247,6 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     out.e0.resize(n), out.eps_rho.resize(n), out.eps_gradp.resize(n), out.eps_gradp_sum.resize(n);
     out.e1.resize(n), out.m1.resize(n), out.E.resize(n), out.neighbours.resize(n);
     out.threads = inputs.threads > 0 ? inputs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    out.grid_seconds = seconds_since(started);
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     // Bin by bin: the candidates of a bin are gathered once for all its particles.

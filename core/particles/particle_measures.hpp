@@ -30,7 +30,6 @@ struct ParticleMeasures {
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid
-    double grid_seconds = 0;
     std::size_t size() const { return e0.size(); }
 };
 

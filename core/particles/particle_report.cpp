@@ -37,13 +37,6 @@ nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
     return dim == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
 }
 
-const Summary& statistic(const ParticlePoint& p, const char* name)
-{
-    for (const auto& [key, s] : p.statistics)
-        if (key == name) return s;
-    throw std::logic_error(std::string("no statistic ") + name);
-}
-
 // A sweep as the curves of the literature: one row per eta (N_H), the RMS of each error.
 void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
 {
@@ -51,8 +44,8 @@ void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
                "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
     for (const auto& p : answer.points)
         fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
-                   p.nh, p.mean_neighbours, statistic(p, "e0").mean, statistic(p, "e0").rms, statistic(p, "eps_gradp").rms,
-                   statistic(p, "eps_gradp_sum").rms, statistic(p, "|e1|").rms, statistic(p, "||E||_F").rms);
+                   p.nh, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms, p.statistic("eps_gradp").rms,
+                   p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms, p.statistic("||E||_F").rms);
 }
 
 } // namespace

@@ -11,13 +11,6 @@ namespace sphkern {
 
 namespace {
 
-const Summary& statistic(const ParticlePoint& p, const std::string& name)
-{
-    for (const auto& [key, s] : p.statistics)
-        if (key == name) return s;
-    throw std::logic_error("no statistic " + name);
-}
-
 // The sources in the order of the study, each with its cases.
 std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source(const StudyResults& results)
 {
@@ -58,9 +51,9 @@ std::string particles_markdown(const StudyResults& results)
         for (const auto* c : cases)
             for (const auto& p : c->points)
                 s += fmt::format("| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
-                                 c->kernel_label, p.nh, p.eta, p.mean_neighbours, statistic(p, "e0").mean,
-                                 statistic(p, "e0").rms, statistic(p, "eps_gradp").rms, statistic(p, "eps_gradp_sum").rms,
-                                 statistic(p, "|e1|").rms);
+                                 c->kernel_label, p.nh, p.eta, p.mean_neighbours, p.statistic("e0").mean,
+                                 p.statistic("e0").rms, p.statistic("eps_gradp").rms, p.statistic("eps_gradp_sum").rms,
+                                 p.statistic("|e1|").rms);
         s += "\n";
     }
     return s;
@@ -74,7 +67,7 @@ void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
         for (std::size_t i = 0; i < cases.size(); ++i) {
             data += fmt::format("$c{} << EOD\n", i);
             for (const auto& p : cases[i]->points)
-                data += fmt::format("{:.10g} {:.10g} {:.10g}\n", p.nh, statistic(p, "e0").rms, statistic(p, "eps_gradp").rms);
+                data += fmt::format("{:.10g} {:.10g} {:.10g}\n", p.nh, p.statistic("e0").rms, p.statistic("eps_gradp").rms);
             data += "EOD\n";
             const char* colour = colours[i % 8];
             const std::string style = fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour,
