@@ -79,6 +79,8 @@ Action add_design_command(CLI::App& app);
 Action add_stability_command(CLI::App& app);
 Action add_spectrum_command(CLI::App& app);
 Action add_particles_command(CLI::App& app);
+Action add_relax_command(CLI::App& app);
+Action add_pairing_command(CLI::App& app);
 Action add_studies_command(CLI::App& app);
 
 } // namespace sphkern::cli

@@ -1,15 +1,14 @@
 // `sphkern particles`: the consistency errors of a kernel on any particle set (a lattice
 // block, a Poisson set or a file), per particle and as statistics.
 #include "cli/command.hpp"
+#include "cli/source_options.hpp"
 
 #include "particles/particle_report.hpp"
 #include "particles/particles_memory.hpp"
-#include "particles/sources/particle_source.hpp"
 #include "support/atomic_file.hpp"
 #include "support/output_targets.hpp"
 #include "support/error.hpp"
 #include "support/results_output.hpp"
-#include "support/sha256.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -20,69 +19,15 @@ namespace sphkern::cli {
 
 namespace {
 
-struct ParticlesOptions : CommonOptions {
-    std::string kernel, source, size, box, gravity, volume, array, csv, vtk;
+struct ParticlesOptions : CommonOptions, SourceOptions {
+    std::string kernel, gravity, volume, csv, vtk;
     std::vector<std::string> sets;
     std::vector<double> eta_range, nh_range;
-    double sigma = 0, depth = 1, memory_limit = 0;
+    double depth = 1, memory_limit = 0;
     std::optional<double> eta, nh, k, support_per_h, rho0;
-    unsigned long long seed = 1, count = 0;
-    int dim = 0, steps = 10, threads = 0;
+    int steps = 10, threads = 0;
     std::size_t histogram = 0;
 };
-
-ParticleSource source_of(const ParticlesOptions& o)
-{
-    ParticleSource source;
-    source.spec = o.source;
-    source.kind = source_kind(o.source);
-    if (source.kind != SourceKind::lattice && !o.size.empty())
-        throw Error(ExitCode::usage, "--size cuts a lattice into a block; " + o.source + " is not a lattice");
-    if (source.kind != SourceKind::poisson && o.count)
-        throw Error(ExitCode::usage, "--count is for poisson sets");
-    if (source.kind == SourceKind::lattice) {
-        if (o.size.empty()) throw Error(ExitCode::usage, "a lattice source needs --size N1,N2[,N3] (cells of the periodic block)");
-        const auto cells = parse_number_list("--size", o.size, 2, 3);
-        for (std::size_t a = 0; a < cells.size(); ++a) {
-            if (cells[a] != std::floor(cells[a]) || cells[a] < 1 || cells[a] > 1e6)
-                throw Error(ExitCode::usage, "--size " + o.size + ": expected positive whole numbers of cells");
-            source.block.cells[a] = static_cast<long long>(cells[a]);
-        }
-        if (cells.size() == 2) source.block.cells[2] = 1;
-        source.block.sigma = o.sigma;
-        source.block.seed = o.seed;
-        const int dim = load_lattice(o.source).dimension;
-        if (static_cast<int>(cells.size()) != dim)
-            throw Error(ExitCode::usage, "--size " + o.size + ": the lattice is " + std::to_string(dim) + "D, give " +
-                                             std::to_string(dim) + " sizes");
-    } else if (o.sigma != 0) {
-        throw Error(ExitCode::usage, "--sigma disturbs a lattice; " + o.source + " is not a lattice");
-    }
-    if (source.kind == SourceKind::poisson) {
-        if (!o.count) throw Error(ExitCode::usage, "a poisson set needs --count N");
-        source.poisson.count = o.count;
-        source.poisson.dimension = o.dim ? o.dim : 3;
-        source.poisson.seed = o.seed;
-        if (!o.box.empty()) {
-            const auto sides = parse_number_list("--box", o.box, 1, 3);
-            for (int a = 0; a < 3; ++a)
-                source.poisson.box[a] = sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
-            if (sides.size() != 1 && static_cast<int>(sides.size()) != source.poisson.dimension)
-                throw Error(ExitCode::usage, "--box " + o.box + ": give one side or one per dimension");
-        }
-    }
-    if (source.kind == SourceKind::file) {
-        source.file.array = o.array;
-        if (o.dim) source.file.dimension = o.dim;
-        if (!o.box.empty()) {
-            const auto sides = parse_number_list("--box", o.box, 2, 3);
-            source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
-        }
-    } else if (!o.array.empty()) {
-        throw Error(ExitCode::usage, "--array chooses a PySPH particle array; " + o.source + " is not a file");
-    }
-    return source;
-}
 
 ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
 {
@@ -116,16 +61,7 @@ ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
 void add_options(CLI::App& c, ParticlesOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
-    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk)")
-        ->required();
-    c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
-    c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
-    c.add_option("--seed", o.seed, "Lattice and poisson: the random seed")->capture_default_str();
-    c.add_option("--count", o.count, "Poisson: number of particles");
-    c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate")
-        ->check(CLI::IsMember({2, 3}));
-    c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
-    c.add_option("--array", o.array, "PySPH file: the particle array");
+    add_source_options(c, o);
     c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2 without a file h)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
@@ -147,20 +83,6 @@ void add_options(CLI::App& c, ParticlesOptions& o)
     add_json_option(c, o);
 }
 
-// The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.
-nlohmann::json particle_inputs(const ParticlesOptions& o, const Kernel& kernel)
-{
-    const auto kind = source_kind(o.source);
-    std::optional<Lattice> lattice;
-    if (kind == SourceKind::lattice) lattice = load_lattice(o.source);
-    nlohmann::json inputs = command_inputs(&kernel, lattice ? &*lattice : nullptr);
-    nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
-                             {"count", o.count}, {"box", o.box}, {"array", o.array}};
-    if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
-    inputs["particles"] = source;
-    return inputs;
-}
-
 } // namespace
 
 Action add_particles_command(CLI::App& app)
@@ -179,7 +101,7 @@ Action add_particles_command(CLI::App& app)
         const ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
-        if (o.json) print_json(particle_answer_json(kernel, set, answer), particle_inputs(o, kernel));
+        if (o.json) print_json(particle_answer_json(kernel, set, answer), source_inputs(o, kernel));
         else print_particle_answer(results_file(), kernel, set, answer);
         return 0;
     };

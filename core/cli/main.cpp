@@ -72,6 +72,8 @@ int main(int argc, char** argv)
     add(cli::add_stability_command);
     add(cli::add_spectrum_command);
     add(cli::add_particles_command);
+    add(cli::add_relax_command);
+    add(cli::add_pairing_command);
     add(cli::add_studies_command);
 
     // An empty value ('') is never a number, a name or a file: refused before CLI11 reads it as 0.

@@ -1,7 +1,7 @@
 #include "particles/particle_measures.hpp"
 
 #include "kernels/kernel_validity.hpp"
-#include "particles/neighbour_grid.hpp"
+#include "particles/neighbour_gather.hpp"
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
 #include "support/progress.hpp"
@@ -31,65 +31,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// One particle's neighbours: displacement, distance, q, V_j, m_j, W and W'; and the scratch
-// of its candidates (r^2 of a run, the points inside the support).
-struct Neighbours {
-    std::vector<double> r2, dx, dy, dz, r, q, volume, mass, w, dw;
-    std::vector<std::uint32_t> index;
-    std::size_t count = 0;
-    void reserve(std::size_t n)
-    {
-        if (dx.size() >= n) return;
-        const std::size_t size = std::max(n, 2 * dx.size());
-        for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &volume, &mass, &w, &dw}) v->resize(size);
-        index.resize(size);
-    }
-};
-
-// r2 of every point of a run: no branch, so that it vectorises.
-SPHKERN_VECTOR_CLONES void squared_distances(const double* __restrict x, const double* __restrict y,
-                                             const double* __restrict z, std::size_t n, double xi, double yi, double zi,
-                                             double* __restrict r2)
-{
-    for (std::size_t c = 0; c < n; ++c) {
-        const double dx = x[c] - xi, dy = y[c] - yi, dz = z[c] - zi;
-        r2[c] = dx * dx + dy * dy + dz * dz;
-    }
-}
-
-// Appends the points first + c of a run with r2[c] <= reach2 to `index` (one comparison, no branch).
-std::size_t append_inside(const double* __restrict r2, std::size_t n, double reach2, std::uint32_t first,
-                          std::uint32_t* __restrict index)
-{
-    std::size_t m = 0;
-    for (std::size_t c = 0; c < n; ++c) {
-        index[m] = first + static_cast<std::uint32_t>(c);
-        m += r2[c] <= reach2;
-    }
-    return m;
-}
-
-// The neighbours' displacements, distances, volumes and masses, gathered by index.
-SPHKERN_VECTOR_CLONES void gather_neighbours(const double* __restrict x, const double* __restrict y,
-                                             const double* __restrict z, const double* __restrict volume,
-                                             const double* __restrict mass, const std::uint32_t* __restrict index,
-                                             std::size_t n, double xi, double yi, double zi, double* __restrict dx,
-                                             double* __restrict dy, double* __restrict dz, double* __restrict r,
-                                             double* __restrict v, double* __restrict m)
-{
-    for (std::size_t j = 0; j < n; ++j) {
-        const std::uint32_t s = index[j];
-        dx[j] = x[s] - xi, dy[j] = y[s] - yi, dz[j] = z[s] - zi;
-        r[j] = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
-        v[j] = volume[s], m[j] = mass[s];
-    }
-}
-
-SPHKERN_VECTOR_CLONES void scaled(const double* __restrict r, std::size_t n, double factor, double* __restrict q)
-{
-    for (std::size_t j = 0; j < n; ++j) q[j] = r[j] * factor;
-}
 
 // The sums over one particle's neighbours, in eight lanes of partial sums added in a fixed
 // order at the end: the loop vectorises, and the result does not depend on the thread count.
@@ -128,10 +69,6 @@ SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const dou
     }
 }
 
-struct Run {
-    std::size_t begin, end;
-};
-
 struct Sweep {
     const Kernel& kernel;
     const ParticleSet& set;
@@ -139,52 +76,18 @@ struct Sweep {
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order
 
-    [[noreturn]] void fail_duplicate(std::size_t p, std::size_t s) const
-    {
-        const auto a = grid.source(p), b = grid.source(s);
-        fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set.name,
-                               std::min(a, b), std::max(a, b), grid.x()[p], grid.y()[p], grid.z()[p]));
-    }
-
-    // The points of `runs` inside the support of point p, the point itself left out.
-    void gather(std::size_t p, const std::vector<Run>& runs, double reach2, Neighbours& nb) const
-    {
-        const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
-        std::size_t m = 0;
-        for (const auto& run : runs) {
-            const std::size_t n = run.end - run.begin;
-            nb.reserve(m + n);
-            squared_distances(grid.x() + run.begin, grid.y() + run.begin, grid.z() + run.begin, n, xi, yi, zi,
-                              nb.r2.data());
-            m += append_inside(nb.r2.data(), n, reach2, static_cast<std::uint32_t>(run.begin), nb.index.data() + m);
-        }
-        gather_neighbours(grid.x(), grid.y(), grid.z(), volume.data(), mass.data(), nb.index.data(), m, xi, yi, zi,
-                          nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.volume.data(), nb.mass.data());
-        // The particle itself is the one neighbour at r = 0; another one there is a duplicate.
-        std::size_t self = m;
-        for (std::size_t j = 0; j < m; ++j)
-            if (nb.r[j] == 0) {
-                if (nb.index[j] != p) fail_duplicate(p, nb.index[j]);
-                self = j;
-            }
-        if (self == m) throw std::logic_error("a particle is not among its own candidates");
-        // Out of the list: the last neighbour takes its place.
-        for (auto* v : {&nb.dx, &nb.dy, &nb.dz, &nb.r, &nb.volume, &nb.mass}) (*v)[self] = (*v)[m - 1];
-        nb.count = m - 1;
-    }
-
-    void measure(std::size_t p, const std::vector<Run>& runs, Neighbours& nb, ParticleMeasures& out) const
+    void measure(std::size_t p, const std::vector<PointRun>& runs, Neighbours& nb, ParticleMeasures& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
         const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h;
-        gather(p, runs, reach * reach * (1 + 2 * support_edge), nb);
+        gather_neighbours(grid, p, runs, reach * reach * (1 + 2 * support_edge), volume.data(), mass.data(), set.name, nb);
         const std::size_t n = nb.count;
-        scaled(nb.r.data(), n, 1 / h, nb.q.data());
+        scale_distances(nb.r.data(), n, 1 / h, nb.q.data());
         kernel.w_batch(nb.q.data(), nb.w.data(), n, dim, k);
         kernel.dw_batch(nb.q.data(), nb.dw.data(), n, dim, k);
         double t[sums];
-        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.volume.data(), nb.mass.data(),
+        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.a.data(), nb.b.data(),
                        nb.w.data(), nb.dw.data(), n, t);
         const double w0 = kernel.w(0, dim, k);
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
@@ -252,17 +155,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     // Bin by bin: the candidates of a bin are gathered once for all its particles.
     ParallelFor pass;
     pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        std::vector<Run> runs;
+        std::vector<PointRun> runs;
         Neighbours nb;
         // The first thread's share stands for the whole: every thread has as many bins.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} bins", b - begin + 1));
-            runs.clear();
-            grid.for_each_run_of_bin(b, [&](std::size_t first, std::size_t last) {
-                if (last > first) runs.push_back({first, last});
-            });
+            runs_of_bin(grid, b, runs);
             for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
                 if (!grid.is_ghost(p)) sweep.measure(p, runs, nb, out);
         }

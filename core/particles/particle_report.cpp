@@ -11,6 +11,24 @@ namespace sphkern {
 
 namespace {
 
+nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
+{
+    return dim == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
+}
+
+// A sweep as the curves of the literature: one row per eta (N_H), the RMS of each error.
+void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
+{
+    fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "eta", "N_H", "neighbours",
+               "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
+    for (const auto& p : answer.points)
+        fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
+                   p.nh, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms, p.statistic("eps_gradp").rms,
+                   p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms, p.statistic("||E||_F").rms);
+}
+
+} // namespace
+
 nlohmann::json summary_json(const Summary& s)
 {
     return {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min}, {"max", s.max},
@@ -31,24 +49,6 @@ nlohmann::json point_json(const ParticlePoint& p)
     }
     return point;
 }
-
-nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
-{
-    return dim == 2 ? nlohmann::json{v.x(), v.y()} : nlohmann::json{v.x(), v.y(), v.z()};
-}
-
-// A sweep as the curves of the literature: one row per eta (N_H), the RMS of each error.
-void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
-{
-    fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "eta", "N_H", "neighbours",
-               "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
-    for (const auto& p : answer.points)
-        fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
-                   p.nh, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms, p.statistic("eps_gradp").rms,
-                   p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms, p.statistic("||E||_F").rms);
-}
-
-} // namespace
 
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer)
 {

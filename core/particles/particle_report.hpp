@@ -10,6 +10,8 @@
 
 namespace sphkern {
 
+nlohmann::json summary_json(const Summary& summary);
+nlohmann::json point_json(const ParticlePoint& point); // eta, N_H, neighbours and the statistics of one h
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer);
 void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer);
 

@@ -38,6 +38,8 @@ void check_positive(const std::vector<double>& values, const ParticleSet& set, c
                                    values[i]));
 }
 
+} // namespace
+
 void wrap_into_box(ParticleSet& set)
 {
     Eigen::Matrix3d cell = set.box->edges;
@@ -58,8 +60,6 @@ void wrap_into_box(ParticleSet& set)
         set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = set.dimension == 2 ? 0.0 : p.z();
     }
 }
-
-} // namespace
 
 void validate_particle_set(ParticleSet& set)
 {

@@ -41,4 +41,8 @@ struct ParticleSet {
 // naming the set, the field and the particle id.
 void validate_particle_set(ParticleSet& set);
 
+// Moves every particle of a set with a box into it (by whole edges). Throws Error(input) for
+// a particle more than one box outside: that is a wrong box, not rounding.
+void wrap_into_box(ParticleSet& set);
+
 } // namespace sphkern

@@ -1,0 +1,122 @@
+// `sphkern relax`: a particle set relaxed in its periodic box (SPH pressure with damping, or
+// particle shifting), the glass it makes judged and written for `sphkern particles`.
+#include "cli/command.hpp"
+#include "cli/source_options.hpp"
+
+#include "particles/formats/particle_writers.hpp"
+#include "particles/particles_memory.hpp"
+#include "particles/poisson_reference.hpp"
+#include "relax/relax_report.hpp"
+#include "support/atomic_file.hpp"
+#include "support/error.hpp"
+#include "support/results_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+namespace sphkern::cli {
+
+namespace {
+
+struct RelaxOptions : CommonOptions, SourceOptions {
+    std::string kernel, method = "pressure", output, history;
+    std::vector<std::string> sets;
+    std::optional<double> eta, nh, k;
+    RelaxSettings settings;
+    double memory_limit = 0, rdf_max = 3;
+    std::size_t rdf_bins = 60;
+};
+
+void add_options(CLI::App& c, RelaxOptions& o)
+{
+    c.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
+    add_source_options(c, o);
+    c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2)");
+    c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
+    c.add_option("--k", o.k, "Lattice: h = k d");
+    c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
+        ->capture_default_str();
+    auto& s = o.settings;
+    c.add_option("--steps", s.steps, "At most this many steps")->capture_default_str();
+    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)")->capture_default_str();
+    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")->capture_default_str();
+    c.add_option("--dt", s.time_step, "pressure: time step in units of h / c")->capture_default_str();
+    c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h")->capture_default_str();
+    c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij")->capture_default_str();
+    c.add_option("--max-move", s.max_move, "shift: largest move of a step, in units of h")->capture_default_str();
+    c.add_option("--threads", s.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings")->capture_default_str();
+    c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins")->capture_default_str();
+    c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
+    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout) or .csv");
+    c.add_option("--history", o.history, "Write the history of the run as CSV");
+    add_set_option(c, o.sets);
+    add_plugin_option(c, o);
+    add_json_option(c, o);
+}
+
+// One h for every particle: relaxation is fixed-h SPH.
+double relax_h(const RelaxOptions& o, const ParticleSet& set, const Kernel& kernel)
+{
+    if (o.eta.has_value() + o.nh.has_value() + o.k.has_value() > 1) throw Error(ExitCode::usage, "give one of --eta, --nh and --k");
+    SmoothingSpec spec{SmoothingRule::eta, o.eta.value_or(1.2), 0};
+    if (o.nh) spec = {SmoothingRule::nh, *o.nh, 0};
+    if (o.k) spec = {SmoothingRule::k, *o.k, 0};
+    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with --box", set.name));
+    const double mean_volume = set.box->volume(set.dimension) / static_cast<double>(set.size());
+    return smoothing_lengths(set, kernel, spec, mean_volume).front();
+}
+
+RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
+{
+    const ParticleSet& set = run.state.set;
+    RelaxedSet judged;
+    const double l = std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
+    judged.eta = run.h / l;
+    judged.nh = neighbour_number(judged.eta, kernel.support(), set.dimension);
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::eta, judged.eta, 0};
+    request.volume = VolumeModel::uniform;
+    request.threads = o.settings.threads;
+    judged.measures = analyse_particles(kernel, set, request);
+    judged.quality = glass_quality(set, o.rdf_max, o.rdf_bins, o.settings.threads > 0 ? o.settings.threads : 2);
+    judged.poisson_rms_e0 = poisson_rms_e0(kernel, set.dimension, run.h / run.spacing, judged.eta, set.size());
+    return judged;
+}
+
+} // namespace
+
+Action add_relax_command(CLI::App& app)
+{
+    auto* command = app.add_subcommand("relax", "Relax a particle set into a glass and judge it");
+    auto options = std::make_shared<RelaxOptions>();
+    add_options(*command, *options);
+    return [options, command] {
+        auto& o = *options;
+        set_memory_limit_gib(o.memory_limit);
+        o.settings.method = parse_relax_method(o.method);
+        check_relax_settings(o.settings);
+        check_output_targets(given_outputs(*command, {{"--output", o.output}, {"--history", o.history}}),
+                             read_inputs(o.source, o.kernel, o.plugins));
+        if (!o.output.empty()) check_particle_output_name(o.output);
+        auto registry = discover_kernels(o);
+        auto kernel = make_kernel(registry, o.kernel, o.sets);
+        ParticleSet set = load_particles(source_of(o));
+        const double h = relax_h(o, set, kernel);
+        if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
+        const RelaxResult run = relax_particles(kernel, std::move(set), h, o.settings);
+        const RelaxedSet judged = judge(kernel, run, o);
+        if (!o.output.empty())
+            write_particle_file(o.output, run.state.set,
+                                {std::vector<double>(run.state.set.size(), h), kernel.support(), run.state.model.mass});
+        if (!o.history.empty()) write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run); });
+        if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));
+        else print_relax(results_file(), kernel, o.settings, run, judged);
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

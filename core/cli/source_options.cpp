@@ -1,0 +1,92 @@
+#include "cli/source_options.hpp"
+
+#include "cli/command.hpp"
+#include "support/error.hpp"
+#include "support/sha256.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace sphkern::cli {
+
+void add_source_options(CLI::App& c, SourceOptions& o)
+{
+    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk)")
+        ->required();
+    c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
+    c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
+    c.add_option("--seed", o.seed, "Lattice and poisson: the random seed")->capture_default_str();
+    c.add_option("--count", o.count, "Poisson: number of particles");
+    c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate")
+        ->check(CLI::IsMember({2, 3}));
+    c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
+    c.add_option("--array", o.array, "PySPH file: the particle array");
+}
+
+ParticleSource source_of(const SourceOptions& o)
+{
+    ParticleSource source;
+    source.spec = o.source;
+    source.kind = source_kind(o.source);
+    if (source.kind != SourceKind::lattice && !o.size.empty())
+        throw Error(ExitCode::usage, "--size cuts a lattice into a block; " + o.source + " is not a lattice");
+    if (source.kind != SourceKind::poisson && o.count)
+        throw Error(ExitCode::usage, "--count is for poisson sets");
+    if (source.kind == SourceKind::lattice) {
+        if (o.size.empty()) throw Error(ExitCode::usage, "a lattice source needs --size N1,N2[,N3] (cells of the periodic block)");
+        const auto cells = parse_number_list("--size", o.size, 2, 3);
+        for (std::size_t a = 0; a < cells.size(); ++a) {
+            if (cells[a] != std::floor(cells[a]) || cells[a] < 1 || cells[a] > 1e6)
+                throw Error(ExitCode::usage, "--size " + o.size + ": expected positive whole numbers of cells");
+            source.block.cells[a] = static_cast<long long>(cells[a]);
+        }
+        if (cells.size() == 2) source.block.cells[2] = 1;
+        source.block.sigma = o.sigma;
+        source.block.seed = o.seed;
+        const int dim = load_lattice(o.source).dimension;
+        if (static_cast<int>(cells.size()) != dim)
+            throw Error(ExitCode::usage, "--size " + o.size + ": the lattice is " + std::to_string(dim) + "D, give " +
+                                             std::to_string(dim) + " sizes");
+    } else if (o.sigma != 0) {
+        throw Error(ExitCode::usage, "--sigma disturbs a lattice; " + o.source + " is not a lattice");
+    }
+    if (source.kind == SourceKind::poisson) {
+        if (!o.count) throw Error(ExitCode::usage, "a poisson set needs --count N");
+        source.poisson.count = o.count;
+        source.poisson.dimension = o.dim ? o.dim : 3;
+        source.poisson.seed = o.seed;
+        if (!o.box.empty()) {
+            const auto sides = parse_number_list("--box", o.box, 1, 3);
+            for (int a = 0; a < 3; ++a)
+                source.poisson.box[a] = sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
+            if (sides.size() != 1 && static_cast<int>(sides.size()) != source.poisson.dimension)
+                throw Error(ExitCode::usage, "--box " + o.box + ": give one side or one per dimension");
+        }
+    }
+    if (source.kind == SourceKind::file) {
+        source.file.array = o.array;
+        if (o.dim) source.file.dimension = o.dim;
+        if (!o.box.empty()) {
+            const auto sides = parse_number_list("--box", o.box, 2, 3);
+            source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
+        }
+    } else if (!o.array.empty()) {
+        throw Error(ExitCode::usage, "--array chooses a PySPH particle array; " + o.source + " is not a file");
+    }
+    return source;
+}
+
+nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel)
+{
+    const auto kind = source_kind(o.source);
+    std::optional<Lattice> lattice;
+    if (kind == SourceKind::lattice) lattice = load_lattice(o.source);
+    nlohmann::json inputs = command_inputs(&kernel, lattice ? &*lattice : nullptr);
+    nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
+                             {"count", o.count}, {"box", o.box}, {"array", o.array}};
+    if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
+    inputs["particles"] = source;
+    return inputs;
+}
+
+} // namespace sphkern::cli

@@ -1,0 +1,30 @@
+// The command-line options that name a particle set (a lattice block, poisson or a file),
+// shared by `particles` and `relax`.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "particles/sources/particle_source.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace sphkern::cli {
+
+struct SourceOptions {
+    std::string source, size, box, array;
+    double sigma = 0;
+    unsigned long long seed = 1, count = 0;
+    int dim = 0;
+};
+
+void add_source_options(CLI::App& command, SourceOptions& options);
+
+// Error(usage) for options that do not fit the kind of source.
+ParticleSource source_of(const SourceOptions& options);
+
+// The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.
+nlohmann::json source_inputs(const SourceOptions& options, const Kernel& kernel);
+
+} // namespace sphkern::cli

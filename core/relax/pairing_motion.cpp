@@ -1,0 +1,187 @@
+#include "relax/pairing_motion.hpp"
+
+#include "particles/sources/lattice_particles.hpp"
+#include "relax/glass_quality.hpp"
+#include "relax/relaxation.hpp"
+#include "stability/brillouin_zone.hpp"
+#include "stability/dispersion.hpp"
+#include "stability/mode_kind.hpp"
+#include "stability/stability_over_k.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace sphkern {
+
+namespace {
+
+void check_request(const PairingRequest& r)
+{
+    if (!std::isfinite(r.k_min) || !std::isfinite(r.k_max) || r.k_min <= 0 || r.k_max < r.k_min || r.k_max > 100)
+        fail_input(fmt::format("--kmin {:g} --kmax {:g}: expected 0 < kmin <= kmax <= 100", r.k_min, r.k_max));
+    if (r.samples < 1 || r.samples > 1000) fail_input(fmt::format("--samples {}: expected 1 to 1000", r.samples));
+    if (r.samples > 1 && r.k_max == r.k_min) fail_input("--samples: several samples need kmin < kmax");
+    if (!std::isfinite(r.noise) || r.noise <= 0 || r.noise > 0.01)
+        fail_input(fmt::format("--noise {:g}: expected a number in (0, 0.01] (units of d; the motion starts linear)", r.noise));
+    if (!std::isfinite(r.duration) || r.duration <= 0 || r.duration > 1e4)
+        fail_input(fmt::format("--duration {:g}: expected a number in (0, 10000] (units of d / c)", r.duration));
+    check_horizon(r.horizon, "--horizon");
+}
+
+// Cells along each axis: the smallest even number whose block is more than twice the support wide.
+int block_cells(const Lattice& lattice, double reach)
+{
+    const Eigen::Matrix3d inverse = lattice.basis.inverse();
+    int cells = 4;
+    for (int a = 0; a < lattice.dimension; ++a) {
+        const double width = 1 / inverse.row(a).norm(); // between the cell's faces along axis a
+        cells = std::max(cells, 2 * static_cast<int>(std::ceil(reach * (1 + 1e-6) / width)));
+    }
+    return cells;
+}
+
+// The lowest omega^2 over the wave vectors a periodic block of `cells` cells per axis carries.
+double block_minimum(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int dim, int cells)
+{
+    double lowest = INFINITY;
+    const int n3 = dim == 3 ? cells : 1;
+    for (int m1 = 0; m1 < cells; ++m1)
+        for (int m2 = 0; m2 < cells; ++m2)
+            for (int m3 = 0; m3 < n3; ++m3) {
+                if (m1 == 0 && m2 == 0 && m3 == 0) continue; // a uniform shift
+                const Eigen::Vector3d f(m1, m2, m3);
+                const Eigen::Vector3d kappa = reciprocal.vectors * f / cells;
+                lowest = std::min(lowest, dispersion.omega2(kappa).front());
+            }
+    return lowest;
+}
+
+// x - site by the minimum image of the block's box.
+double displacement_rms(const ParticleSet& set, const ParticleSet& sites)
+{
+    Eigen::Matrix3d cell = set.box->edges;
+    if (set.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    double sum = 0;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        Eigen::Vector3d f = inverse * (set.position(i) - sites.position(i));
+        for (int a = 0; a < set.dimension; ++a) f[a] -= std::round(f[a]);
+        sum += (cell * f).squaredNorm();
+    }
+    return std::sqrt(sum / static_cast<double>(set.size()));
+}
+
+double paired_fraction(const ParticleSet& set, int threads)
+{
+    const double l = std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
+    const auto nearest = nearest_distances(set, threads);
+    return static_cast<double>(std::count_if(nearest.begin(), nearest.end(), [&](double r) { return r < 0.5 * l; })) /
+           static_cast<double>(set.size());
+}
+
+// The slope of ln(rms) against time over the samples where it grew from 3x its start to 0.05 d.
+double fitted_rate(const std::vector<std::pair<double, double>>& series, double start)
+{
+    double st = 0, sy = 0, stt = 0, sty = 0, n = 0;
+    for (const auto& [t, rms] : series) {
+        if (rms < 3 * start || rms > 0.05) continue;
+        const double y = std::log(rms);
+        st += t, sy += y, stt += t * t, sty += t * y, n += 1;
+    }
+    if (n < 3) return 0;
+    const double denominator = n * stt - st * st;
+    return denominator > 0 ? (n * sty - st * sy) / denominator : 0;
+}
+
+std::string outcome_of(const PairingPoint& p)
+{
+    if (p.paired_end >= 0.05 && p.paired_end > p.paired_start) return "paired";
+    if (p.rms_max > 10 * p.rms_start) return "grew";
+    if (p.rms_end < 0.5 * p.rms_start) return "returned";
+    return "held";
+}
+
+// What the linear answer predicts for the run: return (stable), growth into the nonlinear
+// regime (the predicted damped growth carries the noise past 0.1 d: pairs for a longitudinal
+// mode), growth by more than 10x, or too little growth to tell.
+std::string expected_of(const PairingPoint& p, const PairingRequest& r)
+{
+    if (p.omega2 >= -unstable_threshold) return "returned";
+    const double growth = p.predicted_rate * r.duration;
+    if (r.noise * std::exp(growth) >= 0.1) return p.kind == "longitudinal" ? "paired" : "grew";
+    if (growth >= std::log(10.0)) return "grew";
+    return "either";
+}
+
+bool agrees(const std::string& expected, const std::string& outcome)
+{
+    if (expected == "either") return true;
+    if (expected == "grew") return outcome == "grew" || outcome == "paired";
+    return expected == outcome;
+}
+
+PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, const PairingRequest& r)
+{
+    PairingPoint p;
+    p.k = k;
+    const Dispersion dispersion(kernel, lattice, k, r.gamma);
+    const ReciprocalLattice reciprocal = reciprocal_lattice(lattice);
+    const StabilitySample sample = stability_sample(dispersion, reciprocal, 0, std::max(1, r.threads), r.horizon);
+    p.verdict = sample.verdict;
+    p.cells = block_cells(lattice, kernel.support() * k);
+    // The motion can only grow the wave vectors the block carries: the prediction uses those.
+    p.omega2 = std::min(0.0, block_minimum(dispersion, reciprocal, lattice.dimension, p.cells));
+    if (p.omega2 < -unstable_threshold) {
+        p.growth_time = 1 / std::sqrt(-p.omega2);
+        p.kind = mode_kind_name(sample.mode.kind);
+        const double b = r.damping / k; // c / h in units of c / d
+        p.predicted_rate = -b / 2 + std::sqrt(b * b / 4 - p.omega2);
+    } else {
+        p.growth_time = std::numeric_limits<double>::infinity();
+    }
+    LatticeBlockSpec spec;
+    spec.cells = {p.cells, p.cells, lattice.dimension == 3 ? p.cells : 1};
+    const ParticleSet sites = lattice_particles(lattice, spec, std::numeric_limits<std::size_t>::max());
+    spec.sigma = r.noise, spec.seed = r.seed;
+    ParticleSet start = lattice_particles(lattice, spec, std::numeric_limits<std::size_t>::max());
+    p.particles = start.size();
+    RelaxSettings settings;
+    settings.method = RelaxMethod::pressure;
+    settings.time_step = r.time_step, settings.damping = r.damping, settings.gamma = r.gamma, settings.threads = r.threads;
+    settings.steps = std::max(1, static_cast<int>(std::ceil(r.duration / (r.time_step * k))));
+    std::vector<std::pair<double, double>> series;
+    p.rms_start = displacement_rms(start, sites);
+    p.paired_start = paired_fraction(start, r.threads);
+    const RelaxResult run = relax_particles(kernel, std::move(start), k, settings, [&](const RelaxState& s, const RelaxStep& step) {
+        series.emplace_back(step.time, displacement_rms(s.set, sites));
+    });
+    p.rms_end = series.back().second;
+    for (const auto& point : series) p.rms_max = std::max(p.rms_max, point.second);
+    p.paired_end = paired_fraction(run.state.set, r.threads);
+    p.measured_rate = fitted_rate(series, p.rms_start);
+    p.outcome = outcome_of(p);
+    p.expected = expected_of(p, r);
+    p.agrees = agrees(p.expected, p.outcome);
+    return p;
+}
+
+} // namespace
+
+std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request)
+{
+    check_request(request);
+    std::vector<PairingPoint> points;
+    for (int i = 0; i < request.samples; ++i) {
+        const double k = request.samples == 1 ? request.k_min
+                                              : request.k_min + (request.k_max - request.k_min) * i / (request.samples - 1);
+        points.push_back(run_one(kernel, lattice, k, request));
+    }
+    return points;
+}
+
+} // namespace sphkern

@@ -1,0 +1,32 @@
+// How a particle set is relaxed (share/docs/method.md section 12): the SPH pressure force
+// with a velocity damping, integrated kick-drift-kick, or particle shifting along the
+// gradient of sum_j V_j W_ij; and when to stop. Units: lengths in the set's spacing d (a
+// lattice's, else the mean spacing V^(1/D)), speeds in the sound speed c, times in d/c.
+#pragma once
+
+#include <string>
+
+namespace sphkern {
+
+enum class RelaxMethod { pressure, shift };
+RelaxMethod parse_relax_method(const std::string& name); // Error(usage) for another name
+const char* relax_method_name(RelaxMethod method);
+
+struct RelaxSettings {
+    RelaxMethod method = RelaxMethod::pressure;
+    int steps = 200;         // at most this many steps
+    double tolerance = 0;    // stop once the RMS displacement of a step is below tolerance * h (0: never)
+    // pressure: P = rho0 c^2 / gamma (rho / rho0)^gamma, the model of `stability`.
+    double gamma = 5.0 / 3.0;
+    double time_step = 0.2;  // in h / c
+    double damping = 0.5;    // dv/dt = a - damping (c / h) v
+    // shift: dx_i = -alpha h^2 sum_j V_j grad_i W_ij, at most max_move * h a step.
+    double alpha = 0.1;
+    double max_move = 0.1;
+    int threads = 0;         // 0: every core
+};
+
+// Throws Error(input) naming the option (its command-line name) for a value out of range.
+void check_relax_settings(const RelaxSettings& settings);
+
+} // namespace sphkern

@@ -1,0 +1,169 @@
+#include "relax/relaxation.hpp"
+
+#include "support/error.hpp"
+#include "support/interruption.hpp"
+#include "support/progress.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <thread>
+
+namespace sphkern {
+
+double length_unit(const ParticleSet& set)
+{
+    if (set.spacing > 0) return set.spacing;
+    return std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
+}
+
+namespace {
+
+// RMS e0 and |e1| of the sums just computed.
+void record_errors(const RelaxState& s, RelaxStep& step)
+{
+    const std::size_t n = s.set.size();
+    double e0 = 0, e1 = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = s.forces.density[i] / s.model.mass * s.model.volume - 1;
+        e0 += d * d;
+        e1 += (s.forces.gx[i] * s.forces.gx[i] + s.forces.gy[i] * s.forces.gy[i] + s.forces.gz[i] * s.forces.gz[i]) *
+              s.model.h * s.model.h;
+    }
+    step.rms_e0 = std::sqrt(e0 / static_cast<double>(n));
+    step.rms_e1 = std::sqrt(e1 / static_cast<double>(n));
+}
+
+// Moves particle i by (dx, dy, dz) and returns the squared length of the move.
+double move(RelaxState& s, std::size_t i, double dx, double dy, double dz)
+{
+    s.set.x[i] += dx, s.set.y[i] += dy;
+    s.ux[i] += dx, s.uy[i] += dy;
+    if (s.set.dimension == 3) s.set.z[i] += dz, s.uz[i] += dz;
+    return dx * dx + dy * dy + (s.set.dimension == 3 ? dz * dz : 0.0);
+}
+
+void finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
+{
+    wrap_into_box(s.set);
+    step.rms_move = std::sqrt(sum2 / static_cast<double>(s.set.size())) / s.model.h;
+    step.max_move = std::sqrt(max2) / s.model.h;
+}
+
+// Kick (exact damping over half a step, then the force), used twice a step.
+void kick(RelaxState& s, double half_dt, double damping_factor)
+{
+    const bool three = s.set.dimension == 3;
+    for (std::size_t i = 0; i < s.set.size(); ++i) {
+        s.vx[i] = s.vx[i] * damping_factor + s.forces.ax[i] * half_dt;
+        s.vy[i] = s.vy[i] * damping_factor + s.forces.ay[i] * half_dt;
+        s.vz[i] = three ? s.vz[i] * damping_factor + s.forces.az[i] * half_dt : 0.0;
+    }
+}
+
+void pressure_step(const Kernel& kernel, RelaxState& s, double dt, double damping, RelaxStep& step)
+{
+    const double factor = std::exp(-damping * dt / 2);
+    kick(s, dt / 2, factor);
+    double sum2 = 0, max2 = 0;
+    for (std::size_t i = 0; i < s.set.size(); ++i) {
+        const double m2 = move(s, i, s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt);
+        sum2 += m2, max2 = std::max(max2, m2);
+    }
+    finish_moves(s, step, sum2, max2);
+    compute_forces(kernel, s.set, s.model, s.forces);
+    kick(s, dt / 2, factor);
+    double kinetic = 0;
+    for (std::size_t i = 0; i < s.set.size(); ++i) kinetic += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+    step.kinetic = kinetic / 2 / static_cast<double>(s.set.size()) / (s.model.c * s.model.c);
+}
+
+// dx_i = -alpha h^2 sum_j V grad_i W_ij, shortened to max_move h where it is longer.
+void shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settings, RelaxStep& step)
+{
+    const double h = s.model.h, limit = settings.max_move * h;
+    double sum2 = 0, max2 = 0;
+    for (std::size_t i = 0; i < s.set.size(); ++i) {
+        double dx = -settings.alpha * h * h * s.forces.gx[i], dy = -settings.alpha * h * h * s.forces.gy[i],
+               dz = -settings.alpha * h * h * s.forces.gz[i];
+        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+        if (length > limit) dx *= limit / length, dy *= limit / length, dz *= limit / length;
+        const double m2 = move(s, i, dx, dy, dz);
+        sum2 += m2, max2 = std::max(max2, m2);
+    }
+    finish_moves(s, step, sum2, max2);
+    compute_forces(kernel, s.set, s.model, s.forces);
+}
+
+RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings, double d)
+{
+    RelaxState s;
+    const std::size_t n = set.size();
+    const int dim = set.dimension;
+    s.model.h = h;
+    s.model.volume = set.box->volume(dim) / static_cast<double>(n);
+    s.model.mass = s.model.volume; // unit reference density: results do not depend on it
+    s.model.c = d;                 // one d per unit time: times come out in d / c
+    s.model.gamma = settings.gamma;
+    s.model.k = h / d;
+    s.model.pressure = settings.method == RelaxMethod::pressure;
+    s.model.threads = settings.threads > 0 ? settings.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    s.set = std::move(set);
+    // rho0: the mean SPH density of the start, where P / rho = c^2 / gamma (on a lattice, every particle's).
+    ForceModel density_only = s.model;
+    density_only.pressure = false;
+    compute_forces(kernel, s.set, density_only, s.forces);
+    double total = 0;
+    for (double rho : s.forces.density) total += rho;
+    s.model.rho0 = total / static_cast<double>(n);
+    if (s.model.pressure) compute_forces(kernel, s.set, s.model, s.forces);
+    for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ux, &s.uy, &s.uz}) v->assign(n, 0.0);
+    return s;
+}
+
+} // namespace
+
+RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
+                            const std::function<void(const RelaxState&, const RelaxStep&)>& observe)
+{
+    check_relax_settings(settings);
+    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with --box", set.name));
+    kernel.require_dimension(set.dimension, set.name);
+    RelaxResult result;
+    result.spacing = length_unit(set);
+    result.h = h;
+    if (!std::isfinite(h) || h <= 0) fail_input(fmt::format("{}: h = {:g} is not positive", set.name, h));
+    result.state = start_state(kernel, std::move(set), h, settings, result.spacing);
+    RelaxState& s = result.state;
+    // c is one d per unit time: a time step of time_step h / c is time_step h / d units of d / c.
+    const double dt = settings.time_step * h / result.spacing;
+    result.dt = settings.method == RelaxMethod::pressure ? dt : 0;
+    const double damping = settings.damping / h * result.spacing; // c / h in units of 1 / time
+    RelaxStep start;
+    record_errors(s, start);
+    result.history.push_back(start);
+    if (observe) observe(s, start);
+    Progress progress(s.set.name + ": relaxation", static_cast<std::size_t>(settings.steps));
+    result.stop = "steps";
+    for (int n = 1; n <= settings.steps; ++n) {
+        throw_if_interrupted();
+        RelaxStep step;
+        step.step = n;
+        if (settings.method == RelaxMethod::pressure) pressure_step(kernel, s, dt, damping, step);
+        else shift_step(kernel, s, settings, step);
+        step.time = settings.method == RelaxMethod::pressure ? n * result.dt : 0;
+        record_errors(s, step);
+        result.history.push_back(step);
+        if (observe) observe(s, step);
+        progress.step(fmt::format("step {}: RMS move {:.3g} h, RMS e0 {:.3g}", n, step.rms_move, step.rms_e0));
+        if (settings.tolerance > 0 && step.rms_move < settings.tolerance) {
+            result.stop = "tolerance";
+            break;
+        }
+    }
+    return result;
+}
+
+} // namespace sphkern

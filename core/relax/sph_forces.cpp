@@ -1,0 +1,115 @@
+#include "relax/sph_forces.hpp"
+
+#include "kernels/kernel_validity.hpp"
+#include "particles/neighbour_gather.hpp"
+#include "support/error.hpp"
+#include "support/parallel_for.hpp"
+
+#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphkern {
+
+double ForceField::pressure(double density, const ForceModel& model) const
+{
+    return model.rho0 * model.c * model.c / model.gamma * std::pow(density / model.rho0, model.gamma);
+}
+
+namespace {
+
+SPHKERN_VECTOR_CLONES double sum_of(const double* __restrict w, std::size_t n)
+{
+    double total = 0;
+    for (std::size_t j = 0; j < n; ++j) total += w[j];
+    return total;
+}
+
+// f_j = W'(q_j) / (r_j h^(D+1)): grad_i W_ij = -f_j (x_j - x_i). Returns the sums of f dx
+// (the gradient, up to -1) and of f dx (pi_i + pi_j) (the force, up to m).
+struct PairSums {
+    double g[3] = {0, 0, 0}, a[3] = {0, 0, 0};
+};
+SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const double* __restrict dy,
+                                         const double* __restrict dz, const double* __restrict r,
+                                         const double* __restrict dw, const double* __restrict pi, std::size_t n,
+                                         double scale, double pi_i)
+{
+    double gx = 0, gy = 0, gz = 0, ax = 0, ay = 0, az = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+        const double f = dw[j] * scale / r[j], fp = f * (pi_i + pi[j]);
+        gx += f * dx[j], gy += f * dy[j], gz += f * dz[j];
+        ax += fp * dx[j], ay += fp * dy[j], az += fp * dz[j];
+    }
+    PairSums s;
+    s.g[0] = gx, s.g[1] = gy, s.g[2] = gz, s.a[0] = ax, s.a[1] = ay, s.a[2] = az;
+    return s;
+}
+
+// Calls visit(p, neighbours) for every particle of the set, bin by bin on `threads` threads.
+template <class Visit>
+void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const std::vector<double>& a,
+                       const std::vector<double>& b, int threads, const Visit& visit)
+{
+    const double reach2 = reach * reach * (1 + 2 * support_edge);
+    ParallelFor pass;
+    pass.run(grid.bins(), threads, [&](int, std::size_t begin, std::size_t end) {
+        std::vector<PointRun> runs;
+        Neighbours nb;
+        for (std::size_t bin = begin; bin < end && pass.keep_going(); ++bin) {
+            runs_of_bin(grid, bin, runs);
+            for (std::size_t p = grid.bin_begin(bin); p < grid.bin_begin(bin + 1); ++p) {
+                if (grid.is_ghost(p)) continue;
+                gather_neighbours(grid, p, runs, reach2, a.data(), b.data(), set.name, nb);
+                visit(p, nb);
+            }
+        }
+    });
+}
+
+} // namespace
+
+void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, ForceField& out)
+{
+    const int dim = set.dimension;
+    const std::size_t n = set.size();
+    const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
+    const NeighbourGrid grid(set, reach);
+    const std::vector<double> zeros(grid.points(), 0.0);
+    out.density.assign(n, 0.0);
+    const double w0 = kernel.w(0, dim, model.k);
+    for_each_particle(grid, set, reach, zeros, zeros, model.threads, [&](std::size_t p, Neighbours& nb) {
+        scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
+        kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
+        const std::size_t i = grid.source(p);
+        out.density[i] = model.mass * (w0 + sum_of(nb.w.data(), nb.count)) / hd;
+        if (!std::isfinite(out.density[i]))
+            fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
+                                fmt::format("h = {:.6g}", model.h));
+    });
+    // pi_j = P_j / rho_j^2 in point order, for the force.
+    std::vector<double> pi(n, 0.0);
+    if (model.pressure)
+        for (std::size_t i = 0; i < n; ++i) pi[i] = out.pressure(out.density[i], model) / (out.density[i] * out.density[i]);
+    const std::vector<double> pi_points = grid.gather(pi);
+    for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
+    for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
+    const double scale = 1 / (hd * model.h); // W' = dW/dq: dW/dr = W' / h^(D+1)
+    for_each_particle(grid, set, reach, pi_points, zeros, model.threads, [&](std::size_t p, Neighbours& nb) {
+        scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
+        kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
+        const std::size_t i = grid.source(p);
+        const PairSums s = pair_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.dw.data(), nb.a.data(),
+                                     nb.count, scale, pi[i]);
+        out.gx[i] = -model.volume * s.g[0], out.gy[i] = -model.volume * s.g[1], out.gz[i] = -model.volume * s.g[2];
+        if (model.pressure)
+            out.ax[i] = model.mass * s.a[0], out.ay[i] = model.mass * s.a[1], out.az[i] = model.mass * s.a[2];
+        if (!std::isfinite(out.gx[i] + out.gy[i] + out.gz[i]) || (model.pressure && !std::isfinite(out.ax[i] + out.ay[i] + out.az[i])))
+            fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
+                                fmt::format("h = {:.6g}", model.h));
+    });
+}
+
+} // namespace sphkern

@@ -1,0 +1,272 @@
+// Relaxation: the SPH sums against a brute-force O(N^2) sum over periodic images, the
+// pressure force on a lattice plane wave against the dispersion matrix of section 10, the
+// energy of the undamped motion, determinism across thread counts, the written files read
+// back, g(r) and the Poisson reference against independent values.
+#include "helpers.hpp"
+#include "particles/formats/particle_files.hpp"
+#include "particles/formats/particle_writers.hpp"
+#include "particles/poisson_reference.hpp"
+#include "particles/sources/lattice_particles.hpp"
+#include "particles/sources/poisson_particles.hpp"
+#include "relax/glass_quality.hpp"
+#include "relax/relaxation.hpp"
+#include "stability/brillouin_zone.hpp"
+#include "stability/dispersion.hpp"
+#include "support/error.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+using namespace sphkern;
+using sphkern::test::shipped_kernel;
+
+namespace {
+
+const std::size_t plenty = 100'000'000;
+
+ParticleSet poisson_set(std::size_t n, int dim, double side, std::uint64_t seed)
+{
+    PoissonSpec spec;
+    spec.count = n, spec.dimension = dim, spec.seed = seed;
+    spec.box = Eigen::Vector3d(side, side, side);
+    return poisson_particles(spec, plenty);
+}
+
+ParticleSet lattice_block(const std::string& name, long long cells, double sigma = 0)
+{
+    LatticeBlockSpec spec;
+    const Lattice lattice = load_lattice(name);
+    spec.cells = {cells, cells, lattice.dimension == 3 ? cells : 1};
+    spec.sigma = sigma;
+    return lattice_particles(lattice, spec, plenty);
+}
+
+// rho_i, sum_j V grad_i W_ij and a_i written out from the definitions over all periodic images.
+struct BruteSums {
+    double density;
+    Eigen::Vector3d gradient, acceleration;
+};
+
+std::vector<BruteSums> brute_sums(const Kernel& kernel, const ParticleSet& set, const ForceModel& m)
+{
+    const int dim = set.dimension;
+    const double hd = std::pow(m.h, dim);
+    std::vector<BruteSums> out(set.size(), {0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+    auto for_pairs = [&](auto&& visit) {
+        for (std::size_t i = 0; i < set.size(); ++i)
+            for (std::size_t j = 0; j < set.size(); ++j)
+                for (int a = -1; a <= 1; ++a)
+                    for (int b = -1; b <= 1; ++b)
+                        for (int c = (dim == 3 ? -1 : 0); c <= (dim == 3 ? 1 : 0); ++c) {
+                            const Eigen::Vector3d r = set.position(i) - set.position(j) - set.box->edges * Eigen::Vector3d(a, b, c);
+                            const double d = r.norm();
+                            if (d / m.h > kernel.support()) continue;
+                            visit(i, j, r, d);
+                        }
+    };
+    for_pairs([&](std::size_t i, std::size_t, const Eigen::Vector3d&, double d) {
+        out[i].density += m.mass * kernel.w(d / m.h, dim, m.k) / hd;
+    });
+    auto pi = [&](std::size_t i) {
+        const double rho = out[i].density;
+        return m.rho0 * m.c * m.c / m.gamma * std::pow(rho / m.rho0, m.gamma) / (rho * rho);
+    };
+    for_pairs([&](std::size_t i, std::size_t j, const Eigen::Vector3d& r, double d) {
+        if (d == 0) return;
+        const Eigen::Vector3d grad = kernel.dw(d / m.h, dim, m.k) / (hd * m.h) * r / d; // grad_i W_ij
+        out[i].gradient += m.volume * grad;
+        out[i].acceleration -= m.mass * (pi(i) + pi(j)) * grad;
+    });
+    return out;
+}
+
+ForceModel model_for(const ParticleSet& set, double h, double k)
+{
+    ForceModel m;
+    m.h = h, m.k = k;
+    m.volume = set.box->volume(set.dimension) / static_cast<double>(set.size());
+    m.mass = 2.5 * m.volume, m.rho0 = 2.4, m.c = 1.3, m.gamma = 7, m.threads = 2;
+    return m;
+}
+
+} // namespace
+
+TEST_CASE("the relaxation sums agree with a brute-force sum over periodic images")
+{
+    for (const char* name : {"cubic_bspline", "wendland_c2"})
+        for (int dim : {2, 3}) {
+            CAPTURE(name);
+            CAPTURE(dim);
+            const Kernel kernel = shipped_kernel(name);
+            const ParticleSet set = poisson_set(dim == 3 ? 300 : 200, dim, 1.0, 7);
+            const double l = std::pow(1.0 / static_cast<double>(set.size()), 1.0 / dim);
+            const ForceModel m = model_for(set, 1.3 * l, 1.3);
+            ForceField field;
+            compute_forces(kernel, set, m, field);
+            const auto brute = brute_sums(kernel, set, m);
+            double worst = 0;
+            for (std::size_t i = 0; i < set.size(); ++i) {
+                const Eigen::Vector3d g(field.gx[i], field.gy[i], field.gz[i]), a(field.ax[i], field.ay[i], field.az[i]);
+                worst = std::max(worst, std::abs(field.density[i] - brute[i].density) / brute[i].density);
+                worst = std::max(worst, (g - brute[i].gradient).norm() / (1 + brute[i].gradient.norm()));
+                worst = std::max(worst, (a - brute[i].acceleration).norm() / (1 + brute[i].acceleration.norm()));
+            }
+            CHECK(worst < 1e-12);
+        }
+}
+
+TEST_CASE("the pressure force on a lattice plane wave is -omega^2 times the displacement of section 10")
+{
+    // fcc with (111) layers in the xy plane: a wave vector along z is a threefold axis, where
+    // one mode is purely longitudinal and its omega^2 is an eigenvalue of the dispersion matrix.
+    const Kernel kernel = shipped_kernel("cubic_bspline");
+    const Lattice fcc = load_lattice("fcc");
+    const double k = 1.3, gamma = 5.0 / 3.0, amplitude = 1e-7;
+    const long long cells = 8;
+    ParticleSet set = lattice_block("fcc", cells);
+    const Eigen::Vector3d kappa = reciprocal_lattice(fcc).vectors.col(2) * 3.0 / static_cast<double>(cells);
+    REQUIRE(kappa.normalized().z() == doctest::Approx(1).epsilon(1e-12));
+    for (std::size_t i = 0; i < set.size(); ++i) set.z[i] += amplitude * std::cos(kappa.dot(set.position(i)));
+    wrap_into_box(set);
+    ForceModel m;
+    m.h = k, m.k = k, m.gamma = gamma, m.c = 1, m.threads = 2;
+    m.volume = set.box->volume(3) / static_cast<double>(set.size()), m.mass = m.volume;
+    // rho0 of the lattice at rest: there P / rho = c^2 / gamma.
+    const ParticleSet rest = lattice_block("fcc", cells);
+    ForceField field;
+    ForceModel density_only = m;
+    density_only.pressure = false;
+    compute_forces(kernel, rest, density_only, field);
+    m.rho0 = field.density[0];
+    compute_forces(kernel, set, m, field);
+    const Dispersion dispersion(kernel, fcc, k, gamma);
+    const DispersionModes modes = dispersion.modes(kappa);
+    double expected = NAN;
+    for (std::size_t b = 0; b < modes.omega2.size(); ++b)
+        if (modes.longitudinal[b] > 1 - 1e-9) expected = modes.omega2[b];
+    REQUIRE(std::isfinite(expected));
+    double worst = 0;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        const double phase = std::cos(kappa.dot(rest.position(i)));
+        if (std::abs(phase) < 0.5) continue;
+        const double measured = -field.az[i] / (amplitude * phase);
+        worst = std::max(worst, std::abs(measured - expected) / std::abs(expected));
+        CHECK(std::abs(field.ax[i]) < 1e-9 * amplitude);
+    }
+    CHECK(worst < 1e-5);
+}
+
+TEST_CASE("undamped pressure motion keeps its energy, and a run does not depend on the thread count")
+{
+    const Kernel kernel = shipped_kernel("wendland_c2");
+    RelaxSettings s;
+    s.method = RelaxMethod::pressure;
+    s.damping = 0, s.steps = 60, s.time_step = 0.05, s.gamma = 5.0 / 3.0, s.threads = 1;
+    const ParticleSet start = lattice_block("sc", 6, 0.05);
+    // E = sum m v^2 / 2 + sum m u(rho), u = c^2 / (gamma (gamma - 1)) (rho / rho0)^(gamma - 1): du/drho = P / rho^2.
+    auto energy = [&](const RelaxState& st) {
+        double e = 0;
+        for (std::size_t i = 0; i < st.set.size(); ++i) {
+            const double v2 = st.vx[i] * st.vx[i] + st.vy[i] * st.vy[i] + st.vz[i] * st.vz[i];
+            const double u = st.model.c * st.model.c / (s.gamma * (s.gamma - 1)) *
+                             std::pow(st.forces.density[i] / st.model.rho0, s.gamma - 1);
+            e += st.model.mass * (v2 / 2 + u);
+        }
+        return e;
+    };
+    std::vector<double> energies, kinetic;
+    const RelaxResult one = relax_particles(kernel, start, 1.4, s, [&](const RelaxState& st, const RelaxStep& step) {
+        energies.push_back(energy(st));
+        kinetic.push_back(step.kinetic * st.model.mass * static_cast<double>(st.set.size()));
+    });
+    const double kinetic_max = *std::max_element(kinetic.begin(), kinetic.end());
+    REQUIRE(kinetic_max > 0);
+    double drift = 0;
+    for (double e : energies) drift = std::max(drift, std::abs(e - energies.front()));
+    CHECK(drift < 1e-3 * kinetic_max);
+    s.threads = 2;
+    const RelaxResult two = relax_particles(kernel, start, 1.4, s);
+    CHECK(one.state.set.x == two.state.set.x);
+    CHECK(one.state.set.z == two.state.set.z);
+}
+
+TEST_CASE("relaxation refuses what it cannot do")
+{
+    const Kernel kernel = shipped_kernel("wendland_c2");
+    ParticleSet free = poisson_set(100, 3, 1.0, 1);
+    free.box.reset();
+    CHECK_THROWS_AS(relax_particles(kernel, free, 0.3, RelaxSettings{}), Error);
+    const ParticleSet small = lattice_block("sc", 4);
+    CHECK_THROWS_AS(relax_particles(kernel, small, 1.5, RelaxSettings{}), Error); // support 3 d in a 4 d box
+    RelaxSettings bad;
+    bad.time_step = 0.9;
+    CHECK_THROWS_AS(relax_particles(kernel, lattice_block("sc", 8), 1.2, bad), Error);
+    bad = RelaxSettings{};
+    bad.steps = 0;
+    CHECK_THROWS_AS(check_relax_settings(bad), Error);
+    CHECK_THROWS_AS(require_rectangular_box(lattice_block("fcc", 4), "a file"), Error);
+}
+
+TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
+{
+    const ParticleSet set = poisson_set(500, 3, 2.0, 3);
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "sphkern-relax-files";
+    std::filesystem::create_directories(folder);
+    ParticleOutput output{std::vector<double>(set.size(), 0.31), 2.0, 0.016};
+    for (const char* name : {"glass.h5", "glass.csv"}) {
+        CAPTURE(name);
+        write_particle_file(folder / name, set, output);
+        const ParticleSet back = read_particle_file(folder / name, {});
+        REQUIRE(back.size() == set.size());
+        CHECK(back.x == set.x);
+        CHECK(back.z == set.z);
+        CHECK(back.h == output.h);
+        CHECK(back.mass == std::vector<double>(set.size(), output.mass));
+        if (std::string(name) == "glass.h5") {
+            CHECK(back.support_per_h == 2.0);
+            REQUIRE(back.box);
+            CHECK(back.box->edges.diagonal() == Eigen::Vector3d(2, 2, 2));
+        }
+    }
+    std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("g(r) is 1 for a Poisson set and peaks at the nearest-neighbour distance of a lattice")
+{
+    const ParticleSet poisson = poisson_set(20000, 3, 1.0, 11);
+    const GlassQuality random = glass_quality(poisson, 3, 30, 2);
+    double mean = 0;
+    for (std::size_t b = 5; b < random.rdf.g.size(); ++b) mean += random.rdf.g[b];
+    mean /= static_cast<double>(random.rdf.g.size() - 5);
+    CHECK(mean == doctest::Approx(1).epsilon(0.01));
+    // The nearest-neighbour distance of a Poisson set in 3D: mean Gamma(4/3) (3 / (4 pi n))^(1/3).
+    CHECK(random.nearest.mean == doctest::Approx(std::tgamma(4.0 / 3.0) * std::cbrt(3 / (4 * std::numbers::pi))).epsilon(0.01));
+    // P(nearest < 0.5 l) = 1 - exp(-4 pi / 3 0.5^3).
+    CHECK(random.paired == doctest::Approx(1 - std::exp(-4 * std::numbers::pi / 3 * 0.125)).epsilon(0.05));
+    const ParticleSet fcc = lattice_block("fcc", 8);
+    const GlassQuality crystal = glass_quality(fcc, 2, 80, 2);
+    const double l = std::cbrt(fcc.box->volume(3) / static_cast<double>(fcc.size()));
+    CHECK(crystal.rdf.peak_r == doctest::Approx(1 / l).epsilon(0.02));
+    CHECK(crystal.nearest.min == doctest::Approx(1 / l).epsilon(1e-12));
+    CHECK(crystal.paired == 0);
+}
+
+TEST_CASE("the Poisson reference integrates W^2 as an independent midpoint rule does")
+{
+    for (const char* name : {"cubic_bspline", "wendland_c2", "morris_quintic"})
+        for (int dim : {2, 3}) {
+            CAPTURE(name);
+            const Kernel kernel = shipped_kernel(name);
+            const int n = 200000;
+            const double dq = kernel.support() / n;
+            double sum = 0;
+            for (int i = 0; i < n; ++i) {
+                const double q = (i + 0.5) * dq, w = kernel.w(q, dim, 1.2);
+                sum += w * w * (dim == 3 ? 4 * std::numbers::pi * q * q : 2 * std::numbers::pi * q) * dq;
+            }
+            CHECK(kernel_square_integral(kernel, dim, 1.2) == doctest::Approx(sum).epsilon(1e-8));
+        }
+}
