@@ -10,7 +10,6 @@
 #include "particles/sources/poisson_particles.hpp"
 #include "relax/glass_quality.hpp"
 #include "relax/relaxation.hpp"
-#include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
 #include "support/error.hpp"
 
@@ -127,7 +126,10 @@ TEST_CASE("the pressure force on a lattice plane wave is -omega^2 times the disp
     const double k = 1.3, gamma = 5.0 / 3.0, amplitude = 1e-7;
     const long long cells = 8;
     ParticleSet set = lattice_block("fcc", cells);
-    const Eigen::Vector3d kappa = reciprocal_lattice(fcc).vectors.col(2) * 3.0 / static_cast<double>(cells);
+    // b3 = 2 pi (a1 x a2) / (a3 . a1 x a2) is along z; 3/8 of it is periodic in the block of 8 cells.
+    const Eigen::Vector3d a1 = fcc.basis.col(0), a2 = fcc.basis.col(1), a3 = fcc.basis.col(2);
+    const Eigen::Vector3d b3 = 2 * std::numbers::pi * a1.cross(a2) / a3.dot(a1.cross(a2));
+    const Eigen::Vector3d kappa = b3 * 3.0 / static_cast<double>(cells);
     REQUIRE(kappa.normalized().z() == doctest::Approx(1).epsilon(1e-12));
     for (std::size_t i = 0; i < set.size(); ++i) set.z[i] += amplitude * std::cos(kappa.dot(set.position(i)));
     wrap_into_box(set);
@@ -154,7 +156,7 @@ TEST_CASE("the pressure force on a lattice plane wave is -omega^2 times the disp
         if (std::abs(phase) < 0.5) continue;
         const double measured = -field.az[i] / (amplitude * phase);
         worst = std::max(worst, std::abs(measured - expected) / std::abs(expected));
-        CHECK(std::abs(field.ax[i]) < 1e-9 * amplitude);
+        CHECK(std::abs(field.ax[i]) < 1e-6 * std::abs(field.az[i])); // the wave is longitudinal
     }
     CHECK(worst < 1e-5);
 }
@@ -177,16 +179,21 @@ TEST_CASE("undamped pressure motion keeps its energy, and a run does not depend 
         }
         return e;
     };
-    std::vector<double> energies, kinetic;
-    const RelaxResult one = relax_particles(kernel, start, 1.4, s, [&](const RelaxState& st, const RelaxStep& step) {
-        energies.push_back(energy(st));
-        kinetic.push_back(step.kinetic * st.model.mass * static_cast<double>(st.set.size()));
-    });
-    const double kinetic_max = *std::max_element(kinetic.begin(), kinetic.end());
-    REQUIRE(kinetic_max > 0);
-    double drift = 0;
-    for (double e : energies) drift = std::max(drift, std::abs(e - energies.front()));
-    CHECK(drift < 1e-3 * kinetic_max);
+    // Kick-drift-kick keeps the energy of these forces up to O(dt^2): halving the step quarters
+    // the largest change. Forces that did not derive from E would leave a drift at any step.
+    std::vector<double> drifts;
+    RelaxResult one;
+    for (double dt : {0.04, 0.02, 0.01}) {
+        s.time_step = dt;
+        std::vector<double> energies;
+        one = relax_particles(kernel, start, 1.4, s, [&](const RelaxState& st, const RelaxStep&) { energies.push_back(energy(st)); });
+        double drift = 0;
+        for (double e : energies) drift = std::max(drift, std::abs(e - energies.front()));
+        drifts.push_back(drift);
+    }
+    CHECK(drifts[1] / drifts[0] == doctest::Approx(0.25).epsilon(0.1));
+    CHECK(drifts[2] / drifts[1] == doctest::Approx(0.25).epsilon(0.1));
+    CHECK(one.history.back().kinetic > 0);
     s.threads = 2;
     const RelaxResult two = relax_particles(kernel, start, 1.4, s);
     CHECK(one.state.set.x == two.state.set.x);
