@@ -46,14 +46,16 @@ std::string particles_markdown(const StudyResults& results)
         "N_H = c_D (R h)^D / V (Dehnen & Aly 2012).\n\n";
     for (const auto& [source, cases] : by_source(results)) {
         s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n| kernel | N_H | eta | neighbours | mean e0 | RMS e0 | "
-                         "RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|\n",
+                         "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|---|\n",
                          source, cases.front()->particles, cases.front()->dimension, volume_model_name(cases.front()->volume));
         for (const auto* c : cases)
-            for (const auto& p : c->points)
-                s += fmt::format("| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
+            for (std::size_t j = 0; j < c->points.size(); ++j) {
+                const auto& p = c->points[j];
+                s += fmt::format("| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
                                  c->kernel_label, p.nh, p.eta, p.mean_neighbours, p.statistic("e0").mean,
-                                 p.statistic("e0").rms, p.statistic("eps_gradp").rms, p.statistic("eps_gradp_sum").rms,
-                                 p.statistic("|e1|").rms);
+                                 p.statistic("e0").rms, c->poisson_rms_e0[j], p.statistic("eps_gradp").rms,
+                                 p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms);
+            }
         s += "\n";
     }
     return s;
@@ -66,13 +68,17 @@ void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
         std::string data, e0_plot, gradp_plot;
         for (std::size_t i = 0; i < cases.size(); ++i) {
             data += fmt::format("$c{} << EOD\n", i);
-            for (const auto& p : cases[i]->points)
-                data += fmt::format("{:.10g} {:.10g} {:.10g}\n", p.nh, p.statistic("e0").rms, p.statistic("eps_gradp").rms);
+            for (std::size_t j = 0; j < cases[i]->points.size(); ++j) {
+                const auto& p = cases[i]->points[j];
+                data += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", p.nh, p.statistic("e0").rms,
+                                    p.statistic("eps_gradp").rms, cases[i]->poisson_rms_e0[j]);
+            }
             data += "EOD\n";
             const char* colour = colours[i % 8];
             const std::string style = fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour,
                                                   cases[i]->kernel_label);
-            e0_plot += fmt::format("{}$c{} using 1:2 {}", i ? ", " : "", i, style);
+            e0_plot += fmt::format("{}$c{} using 1:2 {}, $c{} using 1:4 with lines dt 2 lw 1 lc rgb '{}' notitle", i ? ", " : "",
+                                   i, style, i, colour);
             gradp_plot += fmt::format("{}$c{} using 1:3 {}", i ? ", " : "", i, style);
         }
         double lo = INFINITY, hi = 0;
@@ -82,7 +88,8 @@ void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
             "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
             "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\nset xlabel 'neighbour number N_H (dimensionless)'\n"
             "set key outside right top noenhanced\n"
-            "set title 'density of a constant field'\nset ylabel 'RMS of e0 (relative)'\nplot {}\n"
+            "set title 'density of a constant field (dashed: a Poisson set of as many particles)'\n"
+            "set ylabel 'RMS of e0 (relative)'\nplot {}\n"
             "set title 'hydrostatic pressure gradient'\nset ylabel 'RMS of eps_gradp (relative)' noenhanced\nplot {}\n"
             "unset multiplot\n",
             data, source, lo / 1.1, hi * 1.1, e0_plot, gradp_plot);
@@ -95,12 +102,14 @@ nlohmann::json particles_results_json(const StudyResults& results)
     nlohmann::json list = nlohmann::json::array();
     for (const auto& c : results.particles) {
         nlohmann::json points = nlohmann::json::array();
-        for (const auto& p : c.points) {
+        for (std::size_t j = 0; j < c.points.size(); ++j) {
+            const auto& p = c.points[j];
             nlohmann::json statistics = nlohmann::json::object();
             for (const auto& [key, s] : p.statistics)
                 statistics[key] = {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min},
                                    {"max", s.max},   {"p1", s.p1},   {"p50", s.p50}, {"p99", s.p99}};
-            points.push_back({{"nh", p.nh}, {"eta", p.eta}, {"mean_neighbours", p.mean_neighbours}, {"statistics", statistics}});
+            points.push_back({{"nh", p.nh}, {"eta", p.eta}, {"mean_neighbours", p.mean_neighbours},
+                              {"poisson_rms_e0", c.poisson_rms_e0[j]}, {"statistics", statistics}});
         }
         list.push_back({{"source", c.source}, {"kernel", c.kernel_label}, {"dimension", c.dimension},
                         {"particles", c.particles}, {"volume", volume_model_name(c.volume)}, {"points", points}});

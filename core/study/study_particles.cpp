@@ -15,6 +15,24 @@ std::uint64_t seed_of(const JsonNode& node)
     return seed ? static_cast<std::uint64_t>(seed->integer_in(0, 1LL << 53)) : 1;
 }
 
+StudyRelax read_relax(const JsonNode& node)
+{
+    node.expect_keys({"kernel", "nh", "eta", "steps", "method"});
+    StudyRelax r;
+    r.json_path = node.path();
+    r.kernel = node.at("kernel").string();
+    if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
+    if (auto eta = node.find("eta")) r.smoothing = {SmoothingRule::eta, eta->number_in(0.1, 100), 0};
+    if (auto nh = node.find("nh")) r.smoothing = {SmoothingRule::nh, nh->number_in(1, 1e5), 0};
+    if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(1, 100000));
+    if (auto method = node.find("method")) {
+        const std::string name = method->string();
+        if (name != "pressure" && name != "shift") method->error("expected \"pressure\" or \"shift\"");
+        r.settings.method = parse_relax_method(name);
+    }
+    return r;
+}
+
 StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)
 {
     node.expect_object();
@@ -24,7 +42,7 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
     s.json_path = node.path();
     auto& src = s.source;
     if (auto lattice = node.find("lattice")) {
-        node.expect_keys({"lattice", "size", "sigma", "seed"});
+        node.expect_keys({"lattice", "size", "sigma", "seed", "relax"});
         src.kind = SourceKind::lattice;
         src.spec = resolve_beside(lattice->string(), study_file, {".json"});
         const auto size = node.at("size");
@@ -40,7 +58,7 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
         src.block.seed = seed_of(node);
         s.label = fmt::format("{}, {} cells, sigma = {:g} d", lattice->string(), cells, src.block.sigma);
     } else if (auto poisson = node.find("poisson")) {
-        node.expect_keys({"poisson", "count", "seed", "box"});
+        node.expect_keys({"poisson", "count", "seed", "box", "relax"});
         src.kind = SourceKind::poisson;
         src.spec = "poisson";
         src.poisson.dimension = static_cast<int>(poisson->integer_in(2, 3));
@@ -53,7 +71,7 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
         }
         s.label = fmt::format("poisson, {}D, {} particles", src.poisson.dimension, src.poisson.count);
     } else {
-        node.expect_keys({"file", "box", "array", "dim"});
+        node.expect_keys({"file", "box", "array", "dim", "relax"});
         src.kind = SourceKind::file;
         const auto name = node.at("file").string();
         src.spec = resolve_beside(name, study_file, {".h5", ".hdf5", ".csv", ".vtk"});
@@ -66,6 +84,12 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
         if (auto array = node.find("array")) src.file.array = array->string();
         if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(2, 3));
         s.label = name;
+    }
+    if (auto relax = node.find("relax")) {
+        s.relax = read_relax(*relax);
+        s.label += fmt::format(", relaxed ({}, {} = {:g}, {} steps)", s.relax->kernel,
+                               s.relax->smoothing.rule == SmoothingRule::nh ? "N_H" : "eta", s.relax->smoothing.value,
+                               s.relax->settings.steps);
     }
     return s;
 }

@@ -4,6 +4,7 @@
 
 #include "particles/particle_analysis.hpp"
 #include "particles/sources/particle_source.hpp"
+#include "relax/relax_settings.hpp"
 #include "support/json_input.hpp"
 
 #include <filesystem>
@@ -13,11 +14,21 @@
 
 namespace sphkern {
 
+// A source relaxed into a glass before it is measured: by one of the study's kernels at one
+// N_H (or eta), for a number of steps.
+struct StudyRelax {
+    std::string kernel;
+    SmoothingSpec smoothing{SmoothingRule::nh, 100, 0};
+    RelaxSettings settings;
+    std::string json_path;
+};
+
 struct StudyParticleSource {
     std::string label;     // "fcc, sigma = 0.1 d, 20x20x20", "poisson, 3D, 20000", the file
     std::string json_path;
     ParticleSource source;
     std::size_t sizes = 0; // a lattice's cell counts given: must match its dimension
+    std::optional<StudyRelax> relax;
 };
 
 struct StudyParticles {
@@ -33,11 +44,13 @@ struct ParticlesCase {
     std::size_t particles = 0;
     VolumeModel volume = VolumeModel::uniform;
     std::vector<ParticlePoint> points;
+    std::vector<double> poisson_rms_e0; // per point: a Poisson set of as many particles at that h
 };
 
 // Reads the section: {"sources": [...], "nh" or "eta": {"min", "max", "steps"}, "volume"};
 // each source one of {"lattice", "size", "sigma", "seed"}, {"poisson": D, "count", "seed",
-// "box"} or {"file", "box", "array", "dim"}, relative files beside the study.
+// "box"} or {"file", "box", "array", "dim"}, relative files beside the study; any of them with
+// "relax": {"kernel", "nh" or "eta", "steps", "method"}.
 StudyParticles read_study_particles(const JsonNode& node, const std::filesystem::path& study_file);
 
 // An upper bound of the particles the section evaluates, over all sources and h (the budget).
