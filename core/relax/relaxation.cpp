@@ -5,6 +5,7 @@
 #include "support/progress.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -145,6 +146,8 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
     record_errors(s, start);
     result.history.push_back(start);
     if (observe) observe(s, start);
+    spdlog::debug("{}: relaxing {} particles, h = {:.6g}, method {}", s.set.name, s.set.size(), h,
+                  relax_method_name(settings.method));
     Progress progress(s.set.name + ": relaxation", static_cast<std::size_t>(settings.steps));
     result.stop = "steps";
     for (int n = 1; n <= settings.steps; ++n) {

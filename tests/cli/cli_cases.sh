@@ -289,6 +289,9 @@ check "surface stopped by SIGTERM: exit $status in $elapsed ms, $err" test $stat
 signal_when 'particles and [0-9]+ ghosts on' TERM -- particles cubic_bspline fcc --size 120,120,120 --k 1.3 --csv "$work/psig.csv"
 check "particles stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "particles stopped writes no csv" test -z "$(leftovers psig.csv)"
+signal_when 'relaxing [0-9]+ particles' TERM -- relax wendland_c2 poisson --count 200000 --nh 100 --steps 1000 --output "$work/rsig.h5"
+check "relax stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
+check "relax stopped writes no file" test -z "$(leftovers rsig.h5)"
 signal_when 'running design' INT -- design wendland_c2_shape fcc --param beta --kmin 0.5 --kmax 8
 check "design stopped by SIGINT: exit $status in $elapsed ms, $err" test $status -eq 130
 # A plugin that ignores SIGINT and hangs in its probe: sphkern stops the probe itself.
@@ -692,6 +695,36 @@ lines = open('$work/p.csv').read().splitlines()
 assert lines[0] == 'id,x,y,z,h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,e1_z,m1_x,m1_y,m1_z', lines[0]
 assert len(lines) == 1 + 8 * 8 * 8"
 check "particles --vtk: point data for every particle" grep -q '^POINT_DATA 512$' "$work/p.vtk"
+
+# relax and pairing: every setting out of range is one line and exit 3 (a usage slip 2).
+expect 3 '--steps 0: expected 1 to 10000000 steps' -- relax wendland_c2 poisson --count 500 --steps 0
+expect 3 '--tolerance -1: expected a number in \[0, 1\]' -- relax wendland_c2 poisson --count 500 --tolerance -1
+expect 3 '--dt 0.9: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --dt 0.9
+expect 3 '--damping -1: expected a number in \[0, 100\]' -- relax wendland_c2 poisson --count 500 --damping -1
+expect 3 '--alpha 0: expected a number in \(0, 10\]' -- relax wendland_c2 poisson --count 500 --method shift --alpha 0
+expect 3 '--max-move 1: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --method shift --max-move 1
+expect 3 '--gamma 0: expected a number in \(0, 1000\]' -- relax wendland_c2 poisson --count 500 --gamma 0
+expect 2 '--method jiggle: expected pressure or shift' -- relax wendland_c2 poisson --count 500 --method jiggle
+expect 2 'give one of --eta, --nh and --k' -- relax wendland_c2 poisson --count 500 --eta 1.2 --nh 50
+expect 3 'free.csv: relaxation needs a periodic box' -- relax wendland_c2 "$work/free.csv"
+expect 3 'less than twice the support radius' -- relax wendland_c2 sc --size 4,4,4 --k 1.5
+expect 2 'expected a name ending in .h5, .hdf5 or .csv' -- relax wendland_c2 poisson --count 500 --output "$work/glass.txt"
+expect 3 'a parallelepiped, not a rectangular box' -- relax wendland_c2 fcc --size 8,8,8 --k 1.2 --output "$work/glass.h5"
+expect 5 'names the same file' -- relax wendland_c2 poisson --count 500 --output "$work/g.csv" --history "$work/g.csv"
+expect 0 '^$' -- relax wendland_c2 poisson --count 3000 --nh 60 --steps 20 --output "$work/glass.h5" --history "$work/history.csv"
+check "relax --history: the documented columns, one row per step and the start" python3 -c "
+lines = open('$work/history.csv').read().splitlines()
+assert lines[0] == 'step,time,rms_move,max_move,rms_e0,rms_e1,kinetic', lines[0]
+assert len(lines) == 1 + 21"
+expect 0 '^$' -- particles wendland_c2 "$work/glass.h5" --nh 60
+check "particles reads the glass relax wrote, with its h (support per h from the file)" bash -c "'$sphkern' particles wendland_c2 '$work/glass.h5' | grep -q '3000 particles'"
+expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc
+expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 --kmin 1
+expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
+expect 3 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
+expect 3 '--samples 0: expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
+expect 3 '--duration -1: expected a number' -- pairing cubic_bspline fcc --k 1.2 --duration -1
+expect 3 'expected 0 < kmin <= kmax <= 100' -- pairing cubic_bspline fcc --kmin 2 --kmax 1
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
