@@ -36,12 +36,13 @@ struct PairingPoint {
     double growth_time = 0;        // 1 / sqrt(-omega2), d / c; infinite when stable
     std::string kind;              // of the fastest mode: longitudinal, transverse, optical ("" when stable)
     double predicted_rate = 0;     // of the damped motion, -b/2 + sqrt(b^2/4 - omega2), c / d (0 when stable)
+    double predicted_factor = 0;   // the linear RMS displacement at the end over the start, every block mode damped or grown
     // The motion.
     double rms_start = 0, rms_end = 0, rms_max = 0; // displacement from the sites, d
     double paired_start = 0, paired_end = 0;
     double measured_rate = 0;      // fitted where the RMS displacement grew from 3x its start to 0.05 d; 0 if it did not
     std::string outcome;           // returned, held, grew, paired
-    std::string expected;          // returned, grew or paired ("either" for a weak verdict)
+    std::string expected;          // returned, grew or paired, from predicted_factor ("either": too little change to tell)
     bool agrees = false;
 };
 

@@ -109,6 +109,7 @@ nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const 
                         {"growth_time", finite_or_null(p.growth_time)},
                         {"kind", p.kind},
                         {"predicted_rate", p.predicted_rate},
+                        {"predicted_factor", p.predicted_factor},
                         {"measured_rate", p.measured_rate},
                         {"rms_start", p.rms_start},
                         {"rms_end", p.rms_end},
@@ -135,20 +136,20 @@ void print_pairing(std::FILE* out, const Kernel& kernel, const Lattice& lattice,
 {
     fmt::print(out, "{} on {}: noise {:g} d, {:g} d/c of motion, damping {:g} c/h, gamma {:.4g}\n", kernel.label(),
                lattice.name, request.noise, request.duration, request.damping, request.gamma);
-    fmt::print(out, "{:>8} {:>9} {:>10} {:>11} {:>12} {:>10} {:>10} {:>10} {:>10} {:>9} {:>9} {:>6}\n", "k", "verdict",
-               "tau [d/c]", "kind", "block omega2", "predicted", "measured", "rms end/0", "paired", "expected", "outcome",
-               "agree");
+    fmt::print(out, "{:>8} {:>9} {:>10} {:>12} {:>12} {:>10} {:>10} {:>11} {:>10} {:>8} {:>9} {:>9} {:>6}\n", "k",
+               "verdict", "tau [d/c]", "kind", "block omega2", "rate lin.", "measured", "rms/0 lin.", "measured",
+               "paired", "expected", "outcome", "agree");
     int agreeing = 0;
     for (const auto& p : points) {
         agreeing += p.agrees;
-        fmt::print(out, "{:>8.4f} {:>9} {:>10} {:>11} {:>12.4e} {:>10.4f} {:>10.4f} {:>10.3g} {:>10.4f} {:>9} {:>9} {:>6}\n",
+        fmt::print(out, "{:>8.4f} {:>9} {:>10} {:>12} {:>12.4e} {:>10.4f} {:>10.4f} {:>11.3g} {:>10.3g} {:>8.4f} {:>9} {:>9} {:>6}\n",
                    p.k, verdict_name(p.verdict), std::isfinite(p.growth_time) ? fmt::format("{:.3g}", p.growth_time) : "-",
-                   p.kind.empty() ? "-" : p.kind, p.omega2, p.predicted_rate, p.measured_rate, p.rms_end / p.rms_start,
-                   p.paired_end, p.expected, p.outcome, p.agrees ? "yes" : "NO");
+                   p.kind.empty() ? "-" : p.kind, p.omega2, p.predicted_rate, p.measured_rate, p.predicted_factor,
+                   p.rms_end / p.rms_start, p.paired_end, p.expected, p.outcome, p.agrees ? "yes" : "NO");
     }
-    fmt::print(out, "{} of {} k agree. Rule: a k whose block has no omega^2 < 0 must return (RMS displacement halves); "
-                    "growth that the damped linear rate carries past 0.1 d must pair (longitudinal) or grow; growth by "
-                    "10x must show; slower growth is not judged.\n",
+    fmt::print(out, "{} of {} k agree. Rule: from the linear RMS displacement at the end (every mode of the block "
+                    "damped or grown from the noise): past 0.1 d the particles must pair (a longitudinal mode) or grow; "
+                    "grown 10x, they must grow; at most halved, they must return (halve); between, nothing is judged.\n",
                agreeing, points.size());
 }
 
