@@ -57,13 +57,16 @@ void write_attribute(hid_t object, const char* name, hid_t type, const std::vect
     check(H5Awrite(attr.get(), type, values.data()), name);
 }
 
+// Writes the dataset; `support_per_h` > 0 is stated on it as an attribute.
 template <class T>
-void write_dataset(hid_t group, const char* name, hid_t type, const std::vector<T>& values, hsize_t columns)
+void write_dataset(hid_t group, const char* name, hid_t type, const std::vector<T>& values, hsize_t columns,
+                   double support_per_h = 0)
 {
     const hsize_t shape[2] = {values.size() / columns, columns};
     Id space(H5Screate_simple(columns == 1 ? 1 : 2, shape, nullptr), H5Sclose, name);
     Id set(H5Dcreate2(group, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, name);
     check(H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), name);
+    if (support_per_h > 0) write_attribute(set.get(), "support_per_h", H5T_NATIVE_DOUBLE, std::vector<double>{support_per_h});
 }
 
 void write_header(hid_t file, const ParticleSet& set)
@@ -88,7 +91,7 @@ void write_particles(hid_t file, const ParticleSet& set, const ParticleOutput& o
     for (std::size_t i = 0; i < n; ++i) coordinates[3 * i] = set.x[i], coordinates[3 * i + 1] = set.y[i], coordinates[3 * i + 2] = set.z[i];
     write_dataset(group.get(), "Coordinates", H5T_NATIVE_DOUBLE, coordinates, 3);
     write_dataset(group.get(), "Masses", H5T_NATIVE_DOUBLE, std::vector<double>(n, output.mass), 1);
-    write_dataset(group.get(), "SmoothingLengths", H5T_NATIVE_DOUBLE, output.h, 1);
+    write_dataset(group.get(), "SmoothingLengths", H5T_NATIVE_DOUBLE, output.h, 1, output.support_per_h);
     std::vector<unsigned long long> ids(n);
     for (std::size_t i = 0; i < n; ++i) ids[i] = i + 1;
     write_dataset(group.get(), "ParticleIDs", H5T_NATIVE_ULLONG, ids, 1);

@@ -22,7 +22,8 @@ struct ParticleOutput {
 void require_rectangular_box(const ParticleSet& set, const std::string& what);
 
 // /Header (BoxSize, Dimension, NumPart_Total, NumPart_ThisFile, MassTable, NumFilesPerSnapshot),
-// /HydroScheme "Kernel gamma", /PartType0 Coordinates, Masses, SmoothingLengths, ParticleIDs.
+// /HydroScheme "Kernel gamma", /PartType0 Coordinates, Masses, SmoothingLengths (with the
+// attribute "support_per_h" = R), ParticleIDs.
 // Written whole into memory, then to `file` atomically.
 void write_swift_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);
 
