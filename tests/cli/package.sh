@@ -35,4 +35,7 @@ for d in $documents; do
         grep -qx "$prefix/$f" "$work/files" || { echo "the package lacks $prefix/$f" >&2; exit 1; }
     done
 done
+# ... and the links between the installed documents resolve.
+dpkg-deb -x "$deb" "$work/root"
+/usr/bin/python3 "$source_dir/tests/cli/docs_links.py" "$work/root$prefix/share/doc/sphkern" >/dev/null
 echo "package $(basename "$deb"): $(grep -c . "$work/files") entries"
