@@ -8,7 +8,9 @@ line is the exit status expected (default 0); in a console block the lines after
 stands for lines left out, inside a line for any text), so figures shown that way are checked. Each fenced python block runs as a script
 against the built module, when there is one. A block whose info string has the word
 "excerpt" (```sh excerpt) is only shown: a line needing files that are not there, or one
-that runs too long for the suite. Any other command outside an excerpt is an error.
+that runs too long for the suite. Any other command outside an excerpt is an error. A block
+with the word file=NAME in its info string (```json file=my-lattice.json) is written to NAME
+in the scratch folder first, so that the commands after it can read it.
 Usage: docs_commands.py SOURCE_DIR SPHKERN DOCUMENT [PYTHON_MODULE_DIR]"""
 import os
 import re
@@ -86,6 +88,9 @@ with tempfile.TemporaryDirectory() as scratch:
             os.symlink(entry, Path(scratch) / entry.name)
     for info, start, body in blocks(text):
         language = info[0] if info else ""
+        for word in info:
+            if word.startswith("file=") and re.fullmatch(r"[\w.-]+", word[5:]):
+                (Path(scratch) / word[5:]).write_text("\n".join(body) + "\n")
         if "excerpt" in info:
             excerpts += 1
             continue
