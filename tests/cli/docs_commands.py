@@ -83,8 +83,8 @@ name = document.relative_to(root)
 env = dict(os.environ, PYTHONPATH=module) if module else dict(os.environ)
 problems, ran, excerpts = [], 0, 0
 with tempfile.TemporaryDirectory() as scratch:
-    for entry in root.iterdir():
-        if not entry.name.startswith(".") and entry.name not in ("build", "README.md"):
+    for entry in root.iterdir():  # the sources, not build trees or results a user ran there
+        if not entry.name.startswith((".", "build", "sphkern-results")):
             os.symlink(entry, Path(scratch) / entry.name)
     for info, start, body in blocks(text):
         language = info[0] if info else ""
