@@ -67,7 +67,8 @@ page += [".SH EXIT STATUS",
          ".SH FILES", "The shipped kernels, lattices, studies and documents are installed under the prefix: "
          "\\fIlib/.../sphkern/plugins\\fR, \\fIshare/sphkern\\fR and \\fIshare/doc/sphkern\\fR (README.md, "
          "method.md, examples).",
-         ".SH SEE ALSO", "The README and share/docs/method.md of sphkern."]
+         ".SH SEE ALSO", "The README of sphkern, share/docs/cli.md (every command and option, with examples), "
+         "the guides in share/docs and share/docs/method.md, installed in \\fIshare/doc/sphkern\\fR."]
 with open(man_file, "w") as f:
     f.write("\n".join(page) + "\n")
 

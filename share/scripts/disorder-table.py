@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The README's disorder table: RMS e0 and eps_gradp of the cubic B-spline at h = 1.2 d on a
-periodic fcc block disturbed by Gaussian noise of growing sigma, and on a Poisson set with the
-same neighbour number. Usage: share/scripts/disorder-table.py [build/sphkern]"""
+"""The disorder table of share/docs/guide-particles.md: RMS e0 and eps_gradp of the cubic
+B-spline at h = 1.2 d on a periodic fcc block disturbed by Gaussian noise of growing sigma, and
+on a Poisson set with the same neighbour number. Usage: share/scripts/disorder-table.py [build/sphkern]"""
 import json
 import subprocess
 import sys

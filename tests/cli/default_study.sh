@@ -22,8 +22,8 @@ import hashlib, json, re, sys
 r = json.load(open('$work/out/results.json'))
 assert r['sphkern_version'] and r['study']['name'] == 'potapov2021'
 assert len(r['cases']) == 8 * 3 * 2, len(r['cases'])
-# A row is reproduced only when every compared value agrees; the README and the method
-# document state the count this table gives.
+# A row is reproduced only when every compared value agrees; the README, the guide to
+# choosing k and the method document state the count this table gives.
 rows = r['comparison']
 reproduced = sum(c['status'] == 'reproduced' for c in rows)
 assert all((c['status'] == 'reproduced') == (not c['differs_in']) for c in rows), rows
@@ -34,6 +34,7 @@ assert reproduced == 19, reproduced
 stdout = open('$work/stdout').read()
 assert f'{reproduced} of {len(rows)} rows reproduced' in stdout, stdout[:2000]
 assert f'{reproduced} of the {len(rows)} rows of Table 1 are reproduced' in open('$root/README.md').read()
+assert f'{reproduced} of the {len(rows)} rows of Table 1 are reproduced' in open('$root/share/docs/guide-choosing-k.md').read()
 assert f'{reproduced} of its {len(rows)} rows are reproduced' in open('$root/share/docs/method.md').read()
 # Provenance and the inputs in full, the hashes against Python's own SHA-256.
 p = r['provenance']

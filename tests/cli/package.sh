@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Debian package: cpack builds it from this build tree; its metadata and its file
-# list hold the program, the plugins, the data, the example lattices, the documents, the
-# man page and the bash completion.
+# list hold the program, the plugins, the data, the example lattices, the documents (the
+# README and every document of share/docs it links), the man page and the bash completion.
 # Usage: package.sh BUILD_DIR
 set -eu
 build=$1
@@ -26,4 +26,16 @@ for f in bin/sphkern share/man/man1/sphkern.1 share/bash-completion/completions/
     grep -qx "$prefix/$f" "$work/files" || { echo "the package lacks $prefix/$f" >&2; exit 1; }
 done
 grep -Eq "^$prefix/lib/([a-z0-9_-]+/)?sphkern/plugins/cubic_bspline.so$" "$work/files"
+# Every document of share/docs, beside the README that links it and in the data folder.
+source_dir=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt")
+documents=$(cd "$source_dir/share/docs" && ls -- *.md)
+test "$(wc -w <<<"$documents")" -ge 10
+for d in $documents; do
+    for f in share/doc/sphkern/share/docs/$d share/sphkern/docs/$d; do
+        grep -qx "$prefix/$f" "$work/files" || { echo "the package lacks $prefix/$f" >&2; exit 1; }
+    done
+done
+# ... and the links between the installed documents resolve.
+dpkg-deb -x "$deb" "$work/root"
+/usr/bin/python3 "$source_dir/tests/cli/docs_links.py" "$work/root$prefix/share/doc/sphkern" >/dev/null
 echo "package $(basename "$deb"): $(grep -c . "$work/files") entries"
