@@ -13,8 +13,6 @@ bool at_window_edge(double k, double window_min, double window_max)
     return k <= window_min + slack || k >= window_max - slack;
 }
 
-std::string direction_name(Direction direction) { return direction == Direction::gravity ? "gravity" : "every direction"; }
-
 double acceptance_error(const HydrostaticErrors& site, double k, const AcceptanceRule& rule)
 {
     ErrorValues v = site.at(k);

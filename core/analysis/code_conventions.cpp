@@ -1,6 +1,6 @@
 #include "analysis/code_conventions.hpp"
 
-#include "kernels/kernel_check.hpp"
+#include "kernels/kernel_integrals.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>

@@ -60,12 +60,10 @@ public:
     std::vector<double> breakpoints(double k_min, double k_max) const;
 
     const std::vector<Shell>& terms() const { return terms_; }
-    const std::vector<Shell>& lattice_shells_in_reach() const { return all_shells_; }
     const Kernel& kernel() const { return kernel_; }
     int site() const { return site_; }
     int dimension() const { return dim_; }
     double a_p() const { return a_p_; }
-    bool continues_past_support() const { return mode_.continue_past_support; }
 
     // The contribution of one shell term to (eps_rho, eps_gradP) at k.
     std::pair<double, double> shell_contribution(const Shell& shell, double k) const;

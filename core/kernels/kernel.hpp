@@ -57,7 +57,6 @@ public:
     bool inside(double q) const { return q <= support() * (1 + support_edge); }
     double w_truncated(double q, int dim, double k) const { return inside(q) ? w(q, dim, k) : 0.0; }
     double dw_truncated(double q, int dim, double k) const { return inside(q) ? dw(q, dim, k) : 0.0; }
-    double d2w_truncated(double q, int dim, double k) const { return inside(q) ? d2w(q, dim, k) : 0.0; }
 
     // "name" or "name(a=0.3)" for reports.
     std::string label() const;

@@ -1,5 +1,7 @@
 #include "kernels/kernel_check.hpp"
 
+#include "kernels/kernel_integrals.hpp"
+
 #include "kernels/fourier_transform.hpp"
 #include "kernels/kernel_spectrum.hpp"
 #include "kernels/second_derivative.hpp"
@@ -16,11 +18,8 @@ namespace sphkern {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 // The k at which k-dependent formulas (a separate derivative) are checked.
 constexpr double check_k = 1.0;
-
-double sphere_area(int dim) { return dim == 1 ? 2.0 : dim == 2 ? 2 * pi : 4 * pi; }
 
 std::string format(double v, int digits = 10)
 {
@@ -43,14 +42,6 @@ struct Checks {
         worst = std::max(worst, status);
     }
 };
-
-std::vector<double> piece_edges(const Kernel& kernel)
-{
-    std::vector<double> edges = {0.0};
-    for (double b : kernel.definition().breakpoints) edges.push_back(b);
-    edges.push_back(kernel.support());
-    return edges;
-}
 
 // A provided W'' against a sixth-order difference of dW/dr; without one, say how it is made.
 void check_second_derivative(const Kernel& kernel, int dim, const std::vector<double>& edges, Checks& checks)
@@ -190,20 +181,6 @@ void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
 
 } // namespace
 
-std::pair<double, double> kernel_integral(const Kernel& kernel, int dim, double k, int radial_power)
-{
-    double total = 0, error = 0;
-    auto edges = piece_edges(kernel);
-    for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
-        double piece_error = 0;
-        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-            [&](double q) { return kernel.w(q, dim, k) * std::pow(q, dim - 1 + radial_power); }, edges[i],
-            edges[i + 1], 15, 1e-15, &piece_error);
-        error += piece_error;
-    }
-    return {sphere_area(dim) * total, sphere_area(dim) * error};
-}
-
 nlohmann::json check_kernel(const Kernel& kernel)
 {
     const double R = kernel.support();
@@ -237,15 +214,8 @@ nlohmann::json check_kernel(const Kernel& kernel)
         // The moment of the gradient: integral of x . grad W over D-space = -D for a
         // normalised kernel that vanishes at R (by parts); it sees a wrong dW/dr and a
         // jump at R, which the normalisation alone cannot.
-        double moment = 0;
-        {
-            auto moment_edges = piece_edges(kernel);
-            for (std::size_t i = 0; i + 1 < moment_edges.size(); ++i)
-                moment += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-                    [&](double q) { return kernel.dw(q, dim, check_k) * std::pow(q, dim); }, moment_edges[i],
-                    moment_edges[i + 1], 15, 1e-15);
-            moment *= sphere_area(dim);
-        }
+        const double moment =
+            radial_integral(kernel, dim, [&](double q) { return kernel.dw(q, dim, check_k) * q; }).first;
         // A jump of W at R leaves out the surface term of the integration by parts.
         const double surface = sphere_area(dim) * std::pow(R, dim) * kernel.w(R * (1 - 1e-12), dim, check_k);
         const double expected = -dim * integral + surface;

@@ -20,7 +20,4 @@ nlohmann::json check_kernel(const Kernel& kernel);
 // The same in a child process with a time bound: a crash or hang is an Error(plugin).
 nlohmann::json check_kernel_isolated(const Kernel& kernel, double timeout_seconds);
 
-// The integral of the truncated kernel over D-space, with the quadrature's error estimate.
-std::pair<double, double> kernel_integral(const Kernel& kernel, int dim, double k, int radial_power = 0);
-
 } // namespace sphkern

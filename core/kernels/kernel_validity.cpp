@@ -1,6 +1,6 @@
 #include "kernels/kernel_validity.hpp"
 
-#include "kernels/kernel_check.hpp"
+#include "kernels/kernel_integrals.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 // h^(D+2) d2W/dr2 of a kernel without its own formula, from its dW/dr: a sixth-order
 // central difference (Boost.Math) away from breakpoints, a sixth-order one-sided
-// difference on the side of q next to one. Relative accuracy about 1e-11 on the
-// shipped kernels (tests/unit/test_second_derivative.cpp).
+// difference on the side of q next to one. tests/unit/test_kernel_extensions.cpp checks it
+// against W'' written by hand to 1e-8, on breakpoints too.
 #pragma once
 
 namespace sphkern {

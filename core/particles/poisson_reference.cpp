@@ -1,21 +1,14 @@
 #include "particles/poisson_reference.hpp"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include "kernels/kernel_integrals.hpp"
 
 #include <cmath>
-#include <numbers>
 
 namespace sphkern {
 
 double kernel_square_integral(const Kernel& kernel, int dim, double k)
 {
-    auto radial = [&](double q) {
-        const double w = kernel.w(q, dim, k);
-        return w * w * (dim == 3 ? 4 * std::numbers::pi * q * q : 2 * std::numbers::pi * q);
-    };
-    // Kernels are piecewise: 15 levels of bisection find their joints to far below the
-    // tolerance asked.
-    return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(radial, 0.0, kernel.support(), 15, 1e-12);
+    return radial_integral(kernel, dim, [&](double q) { return std::pow(kernel.w(q, dim, k), 2); }).first;
 }
 
 double poisson_rms_e0(const Kernel& kernel, int dim, double k, double eta, std::size_t n)

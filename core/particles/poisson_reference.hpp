@@ -10,7 +10,7 @@
 
 namespace sphkern {
 
-// ∫ w(q)^2 d^D q over the support (adaptive Gauss-Kronrod on the radial integral).
+// ∫ w(q)^2 d^D q over the support.
 double kernel_square_integral(const Kernel& kernel, int dim, double k);
 
 // The RMS of e0 over a Poisson set of n particles at h = eta V^(1/D): sqrt(Var + mean^2).

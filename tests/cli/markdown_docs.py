@@ -30,9 +30,9 @@ def blocks(text):
     return out
 
 
-def prose(text):
-    """The lines outside fenced blocks, with inline code spans blanked; (number, line)."""
-    out, inside = [], None
+def outside_fences(text):
+    """(number, line) of every line outside fenced blocks."""
+    inside = None
     for number, line in enumerate(text.splitlines(), 1):
         match = FENCE.match(line)
         if inside is None and match:
@@ -40,8 +40,13 @@ def prose(text):
         elif inside is not None and line.startswith(inside):
             inside = None
         elif inside is None:
-            out.append((number, re.sub(r"(`+)(?:(?!\1).)+\1", lambda m: " " * len(m.group(0)), line)))
-    return out
+            yield number, line
+
+
+def prose(text):
+    """The lines outside fenced blocks, with inline code spans blanked; (number, line)."""
+    return [(number, re.sub(r"(`+)(?:(?!\1).)+\1", lambda m: " " * len(m.group(0)), line))
+            for number, line in outside_fences(text)]
 
 
 def slug(heading):
@@ -65,17 +70,11 @@ def anchors(text):
 
 def headings(text):
     """(level, title as written, line number) of every heading outside fenced blocks."""
-    out, inside = [], None
-    for number, line in enumerate(text.splitlines(), 1):
-        match = FENCE.match(line)
-        if inside is None and match:
-            inside = match.group(1)
-        elif inside is not None and line.startswith(inside):
-            inside = None
-        elif inside is None:
-            heading = re.match(r"^(#{1,6})\s+(.*?)\s*$", line)
-            if heading:
-                out.append((len(heading.group(1)), heading.group(2), number))
+    out = []
+    for number, line in outside_fences(text):
+        heading = re.match(r"^(#{1,6})\s+(.*?)\s*$", line)
+        if heading:
+            out.append((len(heading.group(1)), heading.group(2), number))
     return out
 
 

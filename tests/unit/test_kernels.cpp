@@ -2,6 +2,7 @@
 // against its formula written out here independently.
 #include "helpers.hpp"
 #include "kernels/kernel_check.hpp"
+#include "kernels/kernel_integrals.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,0 +1,25 @@
+// Integrals of a kernel over its support, piece by piece between its breakpoints (adaptive
+// Gauss-Kronrod on each piece, so that no joint spoils the convergence).
+#pragma once
+
+#include "kernels/kernel.hpp"
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace sphkern {
+
+// The area of the unit sphere in D dimensions: 2, 2 pi, 4 pi.
+double sphere_area(int dim);
+
+// 0, the kernel's breakpoints, R.
+std::vector<double> piece_edges(const Kernel& kernel);
+
+// The D-dimensional integral of a radial function f(q) over the support, and an error estimate.
+std::pair<double, double> radial_integral(const Kernel& kernel, int dim, const std::function<double(double)>& f);
+
+// ∫ W(q) q^radial_power d^D q over the support (1 for a normalised kernel), and an error estimate.
+std::pair<double, double> kernel_integral(const Kernel& kernel, int dim, double k, int radial_power = 0);
+
+} // namespace sphkern
