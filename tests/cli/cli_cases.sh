@@ -519,7 +519,7 @@ study s_horizon '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"]
 expect 3 's_horizon.json: /stability/horizon: ' -- run "$work/s_horizon.json" -o "$work/out12"
 # The smoothing-length model: fixed or adaptive, nothing else.
 expect 2 '--h-model "grad-h" is not a smoothing-length model, expected fixed or adaptive' -- stability cubic_bspline fcc --k 1.2 --h-model grad-h
-expect 2 '--h-model "" is not a smoothing-length model' -- roots cubic_bspline fcc --stability --h-model ""
+expect 2 '--h-model "Adaptive" is not a smoothing-length model' -- roots cubic_bspline fcc --stability --h-model Adaptive
 study s_hmodel '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"h_model": "variable"}}'
 expect 3 's_hmodel.json: /stability/h_model: expected "fixed" or "adaptive"' -- run "$work/s_hmodel.json" -o "$work/out_hmodel"
 check "stability --h-model adaptive gives eta and the grad-h factor in the JSON" \
