@@ -43,7 +43,8 @@ nlohmann::json roots_document(const Kernel& kernel, const Lattice& lattice, doub
     document["sites"] = list;
     document["all_sites"] = {{"acceptance", acceptance_json(a.all_along, epsilon)},
                              {"acceptance_every_direction", acceptance_json(a.all_every, epsilon)}};
-    if (at_window_edge(a.all_along.best_k, k_min, k_max)) document["best_k_note"] = window_edge_note;
+    document["best_k_at_window_edge"] = at_window_edge(a.all_along.best_k, k_min, k_max);
+    if (document["best_k_at_window_edge"]) document["best_k_note"] = window_edge_note;
     return document;
 }
 

@@ -11,6 +11,8 @@
 #include "analysis/results_json.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/recommended_k.hpp"
+#include "stability/roots_convention.hpp"
+#include "stability/roots_stability.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -36,16 +38,8 @@ struct RootsOptions : CommonOptions {
     double gamma = 5.0 / 3.0, horizon = default_horizon;
     int steps = 100;
     std::string convention;
+    std::string h_model = "fixed";
 };
-
-// k, an interval of k, in a code's convention.
-nlohmann::json converted_json(const CodeConvention& c, const Kernel& kernel, int dim, double a_p, const nlohmann::json& k)
-{
-    if (k.is_number()) return in_convention(c, kernel, dim, a_p, k.get<double>());
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& x : k) list.push_back(converted_json(c, kernel, dim, a_p, x));
-    return list;
-}
 
 std::string intervals_text(const std::vector<KInterval>& intervals)
 {
@@ -91,58 +85,33 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     const auto analysis = analyse_roots(all, options.k_min, options.k_max, options.epsilon, options.lateral);
     const auto& chosen = analysis.sites[static_cast<std::size_t>(options.evaluation.site)];
     // The stable k of the same window, and where condition (22) at every site holds there too.
-    nlohmann::json stability;
-    std::vector<KInterval> stable, both;
-    RecommendedK recommended;
+    RootsStability stability;
     if (options.stability) {
-        try {
-            const auto scan = stability_over_k(kernel, lattice, options.k_min, options.k_max, options.steps, options.gamma,
-                                               0, 1, options.horizon);
-            stable = scan.usable;
-            both = accurate_and_stable(analysis.all_along.intervals, scan);
-            stability = {{"gamma", options.gamma}, {"horizon", options.horizon},
-                         {"stable_intervals", intervals_json(scan.stable)},
-                         {"stable_at_horizon", intervals_json(scan.usable)},
-                         {"accurate_and_stable", intervals_json(both)}};
-            recommended = recommend_k(both, options.k_min, options.k_max,
-                                      *sites[static_cast<std::size_t>(options.evaluation.site)]);
-            stability["recommended"] = recommended_json(recommended);
-        } catch (const Error& e) {
-            if (e.code() != ExitCode::input) throw;
-            stability = {{"gamma", options.gamma}, {"refused", e.what()}};
-        }
+        const RootsStabilityOptions model{options.gamma, options.horizon, options.steps,
+                                          parse_h_model(options.h_model, "--h-model")};
+        stability = roots_stability(kernel, lattice, options.k_min, options.k_max, model, analysis.all_along.intervals,
+                                    *sites[static_cast<std::size_t>(options.evaluation.site)]);
     }
+    const auto& recommended = stability.recommended;
     if (options.json) {
         auto document = roots_document(kernel, lattice, a_p, options.k_min, options.k_max, options.epsilon,
                                        options.lateral, options.evaluation.site, analysis, axis, window_min, window_max);
-        if (options.stability) document["stability"] = stability;
-        if (!options.convention.empty()) {
-            const auto& c = code_convention(options.convention, "--convention");
-            auto in = [&](const nlohmann::json& k) { return converted_json(c, kernel, lattice.dimension, a_p, k); };
-            nlohmann::json conv = {{"name", c.name}, {"quantity", c.quantity}};
-            if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty()) {
-                conv["undefined"] = why;
-            } else {
-                conv.update({{"best_k", in(analysis.all_along.best_k)},
-                             {"accurate", in(intervals_json(analysis.all_along.intervals))}});
-                if (recommended.found)
-                    conv.update({{"recommended", in(recommended.k)},
-                                 {"recommended_interval", in(stability["recommended"]["interval"])}});
-            }
-            document["convention"] = conv;
-        }
+        if (options.stability) document["stability"] = stability.json;
+        if (!options.convention.empty())
+            document["convention"] = roots_convention_json(code_convention(options.convention, "--convention"), kernel,
+                                                           lattice.dimension, a_p, analysis.all_along, recommended);
         collected->push_back(document);
         return;
     }
     auto print_stability = [&] {
         if (!options.stability) return;
-        if (stability.contains("refused"))
-            fmt::print(results_file(), "stability (gamma = {:.6g}): not available: {}\n", options.gamma,
-                       stability["refused"].get<std::string>());
+        if (stability.refused())
+            fmt::print(results_file(), "stability (gamma = {:.6g}, {} h): not available: {}\n", options.gamma,
+                       options.h_model, stability.json["refused"].get<std::string>());
         else
-            fmt::print(results_file(), "stable (gamma = {:.6g}; no mode grows faster than {:g} d/c) for k in{}\n  accurate "
-                                       "(condition (22), every site) and stable:{}\n  {}\n",
-                       options.gamma, options.horizon, intervals_text(stable), intervals_text(both),
+            fmt::print(results_file(), "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
+                                       "accurate (condition (22), every site) and stable:{}\n  {}\n",
+                       options.gamma, options.h_model, options.horizon, intervals_text(stability.stable), intervals_text(stability.both),
                        recommended_text(recommended));
     };
     auto print_convention = [&] {
@@ -212,6 +181,9 @@ Action add_roots_command(CLI::App& app)
                                                              "splishsplash (H/r_p)");
     command->add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
                                                        "count as stable (weak)")->capture_default_str();
+    command->add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = eta (m/rho)^(1/D), "
+                                                       "grad-h terms); k is the equilibrium h = k d in both")
+        ->capture_default_str();
     add_evaluation_options(*command, options->evaluation);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -222,6 +194,7 @@ Action add_roots_command(CLI::App& app)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
         check_gamma(options->gamma, "--gamma");
         check_horizon(options->horizon, "--horizon");
+        parse_h_model(options->h_model, "--h-model");
         if (!options->convention.empty()) code_convention(options->convention, "--convention");
         auto registry = discover_kernels(*options);
         std::vector<Lattice> lattices;

@@ -63,6 +63,14 @@ std::string verdict_text(const nlohmann::json& d)
                            vector_text(d["mode"]["unfolded_wavevector"]));
 }
 
+// "fixed", or "adaptive (eta 1.23, Omega 1.001)": the equilibrium h is k d in both.
+std::string h_model_text(const nlohmann::json& d)
+{
+    if (!d.contains("eta")) return d["h_model"].get<std::string>();
+    return fmt::format("adaptive (eta {:.6g}, grad-h factor {:.6g})", d["eta"].get<double>(),
+                       d["grad_h_factor"].get<double>());
+}
+
 template <class Options>
 void print_over_k(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
                   const Options& options)
@@ -72,8 +80,8 @@ void print_over_k(const nlohmann::json& document, const std::string& kernel, con
         for (const auto& i : list) s += fmt::format(" [{:.6f}, {:.6f}]", i[0].get<double>(), i[1].get<double>());
         return s.empty() ? fmt::format(" none of [{}, {}]", options.k_min, options.k_max) : s;
     };
-    fmt::print(results_file(), "{} on {}, gamma = {:.6g}: stable for k in{}\n", kernel, lattice, options.gamma,
-               intervals(document["stable_intervals"]));
+    fmt::print(results_file(), "{} on {}, gamma = {:.6g}, {} h: stable for k in{}\n", kernel, lattice, options.gamma,
+               options.h_model, intervals(document["stable_intervals"]));
     fmt::print(results_file(), "  no mode grows faster than the horizon ({:g} d/c) for k in{}\n", options.horizon,
                intervals(document["stable_at_horizon"]));
     fmt::print(results_file(), "  {:>10} {:>14} {:>9} {:>12} {}\n", "k", "min omega^2", "verdict", "growth time",
@@ -101,7 +109,7 @@ Action add_stability_command(CLI::App& app)
     auto* command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
                                                     "scan, long-wave sound speed");
     struct Options : CommonOptions {
-        std::string kernel, lattice, wavevector;
+        std::string kernel, lattice, wavevector, h_model = "fixed";
         double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
         int grid = 0, threads = 0, steps = 50, path = 0;
         std::vector<std::string> sets;
@@ -128,6 +136,9 @@ Action add_stability_command(CLI::App& app)
         ->check(CLI::Range(2, 400));
     command->add_option("--horizon", options->horizon, "Growth time in d/c: slower instabilities are weak")
         ->capture_default_str();
+    command->add_option("--h-model", options->h_model, "Smoothing length: fixed (h = k d) or adaptive (h = eta "
+                                                       "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
+        ->capture_default_str();
     command->add_option("--threads", options->threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
@@ -145,13 +156,15 @@ Action add_stability_command(CLI::App& app)
                                                      "--kmin and --kmax)", options->k));
         check_gamma(options->gamma, "--gamma");
         check_horizon(options->horizon, "--horizon");
+        const HModel h_model = parse_h_model(options->h_model, "--h-model");
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
         if (!options->wavevector.empty() && options->path > 0)
             throw Error(ExitCode::usage, "--wavevector and --path: give one of them");
         if (options->path > 0) {
-            auto document = dispersion_path_document(kernel, lattice, options->k, options->gamma, options->path);
+            auto document = dispersion_path_document(kernel, lattice, options->k, options->gamma, options->path,
+                                                     h_model);
             if (options->json) {
                 print_json(document);
                 return 0;
@@ -161,8 +174,8 @@ Action add_stability_command(CLI::App& app)
             for (const auto& p : path["points"])
                 labels += fmt::format("{}{} ({:.4f})", labels.empty() ? "" : " - ", p["label"].get<std::string>(),
                                       p["at"].get<double>());
-            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}: omega^2 in (c/d)^2 along {}\n", kernel.label(),
-                       lattice.name, options->k, options->gamma, labels);
+            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h: omega^2 in (c/d)^2 along {}\n",
+                       kernel.label(), lattice.name, options->k, options->gamma, options->h_model, labels);
             for (std::size_t i = 0; i < path["position"].size(); ++i) {
                 fmt::print(results_file(), "  {:>10.6f}", path["position"][i].get<double>());
                 for (const auto& w : path["omega2"][i]) fmt::print(results_file(), " {:>14.8g}", w.get<double>());
@@ -172,13 +185,13 @@ Action add_stability_command(CLI::App& app)
         }
         if (!options->wavevector.empty()) {
             const auto kappa = parse_wavevector(options->wavevector, lattice.dimension);
-            auto document = dispersion_document(kernel, lattice, options->k, options->gamma, kappa);
+            auto document = dispersion_document(kernel, lattice, options->k, options->gamma, kappa, h_model);
             if (options->json) {
                 print_json(document);
                 return 0;
             }
-            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, kappa = {} / d\n", kernel.label(), lattice.name,
-                       options->k, options->gamma, vector_text(document["wavevector"]));
+            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h, kappa = {} / d\n", kernel.label(),
+                       lattice.name, options->k, options->gamma, options->h_model, vector_text(document["wavevector"]));
             fmt::print(results_file(), "  {:>6} {:>16} {:>13}\n", "branch", "omega^2 (c/d)^2", "longitudinal");
             int b = 0;
             for (const auto& m : document["modes"])
@@ -190,7 +203,7 @@ Action add_stability_command(CLI::App& app)
                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         if (over_k) {
             auto document = stability_over_k_document(kernel, lattice, options->k_min, options->k_max, options->steps,
-                                                      options->gamma, options->grid, threads, options->horizon);
+                                                      options->gamma, options->grid, threads, options->horizon, h_model);
             if (options->json) {
                 print_json(document);
                 return 0;
@@ -199,14 +212,14 @@ Action add_stability_command(CLI::App& app)
             return 0;
         }
         auto document = stability_document(kernel, lattice, options->k, options->gamma, options->grid, threads,
-                                           options->horizon);
+                                           options->horizon, h_model);
         if (options->json) {
             print_json(document);
             return 0;
         }
-        fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}: {}\n", kernel.label(),
-                   lattice.name, document["bravais"].get<std::string>(), options->k, options->gamma,
-                   verdict_text(document));
+        fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}, {} h: {}\n",
+                   kernel.label(), lattice.name, document["bravais"].get<std::string>(), options->k, options->gamma,
+                   h_model_text(document), verdict_text(document));
         const auto& zone = document["zone_scan"];
         fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
                                    "branch {}):\n", zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),

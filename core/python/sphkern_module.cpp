@@ -17,6 +17,8 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "stability/dispersion.hpp"
+#include "stability/roots_convention.hpp"
+#include "stability/roots_stability.hpp"
 #include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
@@ -233,8 +235,15 @@ PYBIND11_MODULE(sphkern, m)
     m.def("roots",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
-             bool lateral, const std::string& axis_text, bool details) {
+             bool lateral, const std::string& axis_text, bool details, bool stability, double gamma, int steps,
+             double horizon, const std::string& h_model, const py::object& convention) {
               const Axis axis = parse_axis(axis_text, "axis");
+              check_gamma(gamma, "gamma");
+              check_horizon(horizon, "horizon");
+              if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
+              const RootsStabilityOptions model{gamma, horizon, steps, parse_h_model(h_model, "h_model")};
+              const CodeConvention* code =
+                  convention.is_none() ? nullptr : &code_convention(convention.cast<std::string>(), "convention");
               if (axis == Axis::k) check_k_interval(kmin, kmax, "kmin/kmax");
               if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) fail_input("epsilon must be in (0, 1)");
               auto lattice = load_lattice(lattice_spec);
@@ -249,17 +258,33 @@ PYBIND11_MODULE(sphkern, m)
                   auto sites = errors_per_site(kernel, lattice, every_site(lattice), ap, g, k_hi);
                   std::vector<const HydrostaticErrors*> all;
                   for (const auto& s : sites) all.push_back(s.get());
-                  document = roots_document(kernel, lattice, ap, k_lo, k_hi, epsilon, lateral, site,
-                                            analyse_roots(all, k_lo, k_hi, epsilon, lateral), axis, kmin, kmax);
+                  const auto analysis = analyse_roots(all, k_lo, k_hi, epsilon, lateral);
+                  document = roots_document(kernel, lattice, ap, k_lo, k_hi, epsilon, lateral, site, analysis, axis,
+                                            kmin, kmax);
+                  RootsStability stable;
+                  if (stability) {
+                      stable = roots_stability(kernel, lattice, k_lo, k_hi, model, analysis.all_along.intervals,
+                                               *sites[static_cast<std::size_t>(site)]);
+                      document["stability"] = stable.json;
+                  }
+                  if (code)
+                      document["convention"] = roots_convention_json(*code, kernel, lattice.dimension, ap,
+                                                                     analysis.all_along, stable.recommended);
               }
-              return to_python(details ? document : document["roots"]);
+              return to_python(details || stability || code ? document : document["roots"]);
           },
           py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
           py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
-          py::arg("axis") = "k", py::arg("details") = false,
+          py::arg("axis") = "k", py::arg("details") = false, py::arg("stability") = false,
+          py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100, py::arg("horizon") = default_horizon,
+          py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
           "The roots in k of eps_rho and eps_gradp (a list of dicts); details=True gives the whole document of "
-          "`sphkern roots --json`: roots, jumps and the condition (22) intervals.", guard);
+          "`sphkern roots --json`: roots, jumps and the condition (22) intervals, best_k_at_window_edge. "
+          "stability=True (with gamma, steps, horizon, h_model 'fixed' or 'adaptive') adds `stability`: the stable k, "
+          "their overlap with condition (22) and the recommended k (`at_window_edge`, as `roots --stability`); "
+          "convention='pysph', 'dualsphysics', 'swift', 'gadget' or 'splishsplash' adds `convention` "
+          "(as `roots --convention`). With either, the whole document is returned.", guard);
     m.def("shells",
           [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
               auto lattice = load_lattice(lattice_spec);
@@ -284,7 +309,8 @@ PYBIND11_MODULE(sphkern, m)
     m.def("stability",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
              const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
-             int path, int threads, double horizon, const py::object& params) {
+             int path, int threads, double horizon, const py::object& params, const std::string& h_model_text) {
+              const HModel h_model = parse_h_model(h_model_text, "h_model");
               check_gamma(gamma, "gamma");
               check_horizon(horizon, "horizon");
               if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
@@ -300,7 +326,8 @@ PYBIND11_MODULE(sphkern, m)
                   const double lo = kmin.cast<double>(), hi = kmax.cast<double>();
                   check_k_interval(lo, hi, "kmin/kmax");
                   py::gil_scoped_release unlocked;
-                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma, grid, cores, horizon);
+                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma, grid, cores, horizon,
+                                                       h_model);
               } else {
                   if (k.is_none()) fail_input("k: expected a number (or kmin and kmax)");
                   const double at = k.cast<double>();
@@ -309,12 +336,12 @@ PYBIND11_MODULE(sphkern, m)
                       if (path) fail_input("wavevector and path: give one of them");
                       const auto kappa = checked_wavevector(wavevector.cast<std::vector<double>>(), lattice.dimension,
                                                             "wavevector");
-                      document = dispersion_document(kernel, lattice, at, gamma, kappa);
+                      document = dispersion_document(kernel, lattice, at, gamma, kappa, h_model);
                   } else if (path) {
-                      document = dispersion_path_document(kernel, lattice, at, gamma, path);
+                      document = dispersion_path_document(kernel, lattice, at, gamma, path, h_model);
                   } else {
                       py::gil_scoped_release unlocked;
-                      document = stability_document(kernel, lattice, at, gamma, grid, cores, horizon);
+                      document = stability_document(kernel, lattice, at, gamma, grid, cores, horizon, h_model);
                   }
               }
               return to_python(document);
@@ -323,9 +350,11 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
           py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
+          py::arg("h_model") = "fixed",
           "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
           "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan; `horizon` "
-          "(d/c) separates weak instabilities from unstable ones.", guard);
+          "(d/c) separates weak instabilities from unstable ones; h_model 'fixed' or 'adaptive' (h = eta "
+          "(m/rho)^(1/D) with the grad-h terms; k is the equilibrium h = k d in both).", guard);
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,

@@ -29,8 +29,8 @@ Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int di
     return kappa;
 }
 
-Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma)
-    : dim_(lattice.dimension), k_(k), gamma_(gamma)
+Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h_model)
+    : dim_(lattice.dimension), k_(k), gamma_(gamma), h_model_(h_model)
 {
     if (!std::isfinite(gamma) || gamma <= 0)
         fail_input(fmt::format("gamma = {} is not allowed, expected a finite number > 0", gamma));
@@ -41,6 +41,9 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     const double R = kernel.support();
     const double h = k, hd = std::pow(h, dim_);
     std::vector<double> densities;
+    const bool adaptive = h_model == HModel::adaptive;
+    const HDerivatives self = h_derivatives(0, kernel.w(0, dim_, k), 0, 0, h, dim_);
+    double Z = mass_ * self.dw_dh, Z2 = mass_ * self.d2w_dh2; // site 0: sum m dW/dh, sum m d2W/dh2
     neighbours_.resize(static_cast<std::size_t>(lattice.sites()));
     basis_ = lattice.basis;
     const Eigen::Matrix3d to_cells = basis_.inverse();
@@ -52,7 +55,7 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     for (int s = 0; s < lattice.sites(); ++s) {
         auto& list = neighbours_[static_cast<std::size_t>(s)];
         double density = mass_ * kernel.w(0, dim_, k) / hd;
-        Eigen::Vector3d first = Eigen::Vector3d::Zero();
+        Eigen::Vector3d first = Eigen::Vector3d::Zero(), first_h = Eigen::Vector3d::Zero();
         for_each_lattice_point_of_site(lattice.basis, dim_, lattice.motif, s, R * h * (1 + support_edge),
                                        [&](const Eigen::Vector3d& x, int t) {
             const double r = x.norm(), q = r / h;
@@ -78,6 +81,12 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
             if ((back - x).norm() > 1e-9 * std::max(1.0, x.norm())) integer_cells_ = false;
             n.gradient = -mass_ * dw * e;
             n.hessian = mass_ * (d2w * e * e.transpose() + (dw / r) * (Eigen::Matrix3d::Identity() - e * e.transpose()));
+            if (adaptive) {
+                const HDerivatives dh = h_derivatives(q, w * hd, dw * hd * h, d2w * hd * h * h, h, dim_);
+                n.h_gradient = -mass_ * dh.dgrad_dh * e;
+                first_h += n.h_gradient;
+                if (s == 0) Z += mass_ * dh.dw_dh, Z2 += mass_ * dh.d2w_dh2;
+            }
             density += mass_ * w;
             first += n.gradient;
             list.push_back(n);
@@ -88,12 +97,18 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
                                    "not vanish at rest (first moment {:.3g}), so the lattice is no equilibrium to "
                                    "linearise about; stability needs sites whose neighbourhoods cancel",
                                    s, lattice.name, first.norm() * h / density));
+        if (first_h.norm() > 1e-9 * density / (h * h))
+            fail_input(fmt::format("site {} of lattice {} is not a centre of symmetry: the h-derivative of its first "
+                                   "moment does not vanish ({:.3g}), so adaptive h moves it at rest; stability with "
+                                   "adaptive h needs sites whose neighbourhoods cancel at every h",
+                                   s, lattice.name, first_h.norm() * h * h / density));
         densities.push_back(density);
     }
     for (int a = 0; a < 3; ++a) cell_span_[a] = cell_max[a] - cell_min_[a] + 1;
     for (auto& q : hessian_moments_) q.setZero();
     for (const auto& nb : neighbours_[0]) {
         gradient_moment_ += nb.gradient * nb.x.transpose();
+        h_gradient_moment_ += nb.h_gradient * nb.x.transpose();
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b) hessian_moments_[static_cast<std::size_t>(3 * a + b)] += 0.5 * nb.x[a] * nb.x[b] * nb.hessian;
     }
@@ -104,8 +119,15 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
                                    "times rho0 at k = {}): one pressure cannot hold them at rest, so stability is "
                                    "defined only for lattices whose sites are equivalent",
                                    lattice.name, density_ / mass_, s, densities[s] / mass_, k));
-    c_gradient_ = (1 - 2 / gamma) / (density_ * density_);
-    c_hessian_ = 2 / (gamma * density_);
+    coefficients_ = dispersion_coefficients(h_model, gamma, density_, h, dim_, Z, Z2);
+    c_gradient_ = coefficients_.gradient;
+    c_cross_ = coefficients_.cross;
+    c_hessian_ = coefficients_.hessian;
+}
+
+double Dispersion::eta() const
+{
+    return k_ / std::pow(mass_ / density_, 1.0 / dim_);
 }
 
 bool Dispersion::fast_phases(const Eigen::Vector3d& kappa) const
@@ -138,6 +160,8 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
     // Per site pair, in fixed-size sums: A_st (a vector) and the block of B0 - B, summed as
     // H (1 - e) within a site so that long waves lose no digits to cancellation.
     std::vector<Eigen::Vector3cd> A(static_cast<std::size_t>(n * n), Eigen::Vector3cd::Zero());
+    std::vector<Eigen::Vector3cd> Ah(A); // of the h-derivatives of the gradients (adaptive h)
+    const bool adaptive = h_model_ == HModel::adaptive;
     std::vector<Eigen::Matrix3cd> B(static_cast<std::size_t>(n * n), Eigen::Matrix3cd::Zero());
     const bool fast = fast_phases(kappa);
     const auto table = fast ? cell_phases(kappa) : std::vector<std::complex<double>>{};
@@ -157,6 +181,7 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
                 one_minus_cos = 2 * half * half;
             }
             A[pair] += e * nb.gradient;
+            if (adaptive) Ah[pair] += e * nb.h_gradient;
             if (nb.site == s) {
                 B[pair] += std::complex<double>(one_minus_cos, -e.imag()) * nb.hessian;
             } else {
@@ -165,13 +190,19 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
             }
         }
     Eigen::MatrixXcd columns = Eigen::MatrixXcd::Zero(D * n, n), M = Eigen::MatrixXcd::Zero(D * n, D * n);
+    Eigen::MatrixXcd h_columns = Eigen::MatrixXcd::Zero(D * n, n);
     for (int s = 0; s < n; ++s)
         for (int t = 0; t < n; ++t) {
             const auto pair = static_cast<std::size_t>(s * n + t);
             columns.block(D * s, t, D, 1) = A[pair].head(D);
+            h_columns.block(D * s, t, D, 1) = Ah[pair].head(D);
             M.block(D * s, D * t, D, D) = c_hessian_ * B[pair].topLeftCorner(D, D);
         }
     M += c_gradient_ * columns * columns.adjoint();
+    if (adaptive) {
+        const Eigen::MatrixXcd cross = columns * h_columns.adjoint();
+        M -= c_cross_ * (cross + cross.adjoint());
+    }
     return M;
 }
 
@@ -180,23 +211,27 @@ std::vector<double> Dispersion::omega2(const Eigen::Vector3d& kappa) const
     if (sites() == 1) {
         // One site: A = -i S and B0 - B = T are real; a fixed-size solver, no allocation.
         Eigen::Matrix3d S3 = Eigen::Matrix3d::Zero();
-        Eigen::Vector3d S = Eigen::Vector3d::Zero();
+        Eigen::Vector3d S = Eigen::Vector3d::Zero(), Sh = Eigen::Vector3d::Zero();
+        const bool adaptive = h_model_ == HModel::adaptive;
         Eigen::Matrix3d T = Eigen::Matrix3d::Zero();
         if (fast_phases(kappa)) {
             const auto table = cell_phases(kappa);
             for (const auto& nb : neighbours_[0]) {
                 const auto e = phase_of(nb, table);
                 S += e.imag() * nb.gradient;
+                if (adaptive) Sh += e.imag() * nb.h_gradient;
                 T += (1 - e.real()) * nb.hessian;
             }
         } else {
             for (const auto& nb : neighbours_[0]) {
                 const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
                 S += std::sin(phase) * nb.gradient;
+                if (adaptive) Sh += std::sin(phase) * nb.h_gradient;
                 T += 2 * half * half * nb.hessian;
             }
         }
         S3 = c_gradient_ * S * S.transpose() + c_hessian_ * T;
+        if (adaptive) S3 -= c_cross_ * (S * Sh.transpose() + Sh * S.transpose());
         if (dim_ == 2) {
             Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
             solver.computeDirect(S3.topLeftCorner<2, 2>().eval(), Eigen::EigenvaluesOnly);
@@ -223,8 +258,9 @@ Eigen::Matrix3d Dispersion::long_wave_stiffness(const Eigen::Vector3d& n) const
 
 Eigen::Matrix3d Dispersion::long_wave_matrix(const Eigen::Vector3d& n) const
 {
-    const Eigen::Vector3d s = gradient_moment_ * n.normalized();
-    return c_gradient_ * s * s.transpose() + c_hessian_ * long_wave_stiffness(n);
+    const Eigen::Vector3d s = gradient_moment_ * n.normalized(), sh = h_gradient_moment_ * n.normalized();
+    return c_gradient_ * s * s.transpose() - c_cross_ * (s * sh.transpose() + sh * s.transpose()) +
+           c_hessian_ * long_wave_stiffness(n);
 }
 
 DispersionModes Dispersion::modes(const Eigen::Vector3d& kappa) const

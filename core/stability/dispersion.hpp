@@ -5,11 +5,14 @@
 // B_st = m sum_{j in t} H(r_ij) exp(-i kappa.r_ij), H = W'' r^r^T + (W'/r)(I - r^r^T),
 // B0_s = sum_t B_st(0), rho the SPH density and P/rho = c^2/gamma. Units: c = d = 1, so
 // omega^2 is in c^2/d^2 and kappa in 1/d, in the lattice file's orientation. The mass
-// cancels: the spectrum does not depend on a_p.
+// cancels: the spectrum does not depend on a_p. With adaptive h (h_i = eta (m/rho_i)^(1/D)
+// and the grad-h terms) the matrix gains the h-derivatives of the gradients and other
+// coefficients (h_model.hpp); the equilibrium h is k d in both models.
 #pragma once
 
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
+#include "stability/h_model.hpp"
 
 #include <Eigen/Dense>
 
@@ -37,13 +40,19 @@ public:
     // Throws Error(input) for gamma <= 0, a kernel without the lattice's dimension, or a
     // multi-site lattice whose sites are not an equilibrium with one pressure (different
     // SPH densities, or a non-zero first moment at a site).
-    Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma);
+    // Adaptive h also refuses a site whose h-derivative of the first moment does not vanish.
+    Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h_model = HModel::fixed);
 
     int dimension() const { return dim_; }
     int sites() const { return static_cast<int>(neighbours_.size()); }
     int branches() const { return dim_ * sites(); }
     double k() const { return k_; }
     double gamma() const { return gamma_; }
+    HModel h_model() const { return h_model_; }
+    // The grad-h factor Omega = 1 + (h / (D rho)) sum_j m dW_ij/dh (1 with fixed h).
+    double grad_h_factor() const { return coefficients_.omega; }
+    // eta of h = eta (m / rho)^(1/D) at the equilibrium h = k d.
+    double eta() const;
     // The SPH density over the reference density rho0 = m / (a_p d^D): 1 + eps_rho.
     double density_ratio() const { return density_ / mass_; }
 
@@ -72,6 +81,7 @@ private:
         std::array<int, 3> cell;  // x = basis * cell + the sites' offset
         Eigen::Vector3d gradient; // m grad_i W(r_ij)
         Eigen::Matrix3d hessian;  // m H(r_ij)
+        Eigen::Vector3d h_gradient = Eigen::Vector3d::Zero(); // m d/dh grad_i W(r_ij) (adaptive h only)
     };
     // exp(i kappa.x) of every neighbour, as products of exp(i n kappa.a_j) over the cells'
     // integer coordinates: a few sincos per wave vector instead of one per neighbour.
@@ -87,11 +97,14 @@ private:
     std::vector<Eigen::Vector3d> offsets_;           // per site pair s * sites + t: x_t - x_s within a cell
     std::array<int, 3> cell_min_{}, cell_span_{};
     Eigen::Matrix3d gradient_moment_ = Eigen::Matrix3d::Zero();                  // site 0: sum m grad W x^T
+    Eigen::Matrix3d h_gradient_moment_ = Eigen::Matrix3d::Zero();                // site 0: sum m d/dh grad W x^T
     std::array<Eigen::Matrix3d, 9> hessian_moments_{};                          // site 0: sum m H x_a x_b / 2
     bool integer_cells_ = true;
     int dim_;
     double k_, gamma_, mass_, density_;
-    double c_gradient_, c_hessian_; // (1 - 2/gamma)/rho^2 and 2/(gamma rho)
+    HModel h_model_;
+    DispersionCoefficients coefficients_; // fixed h: (1 - 2/gamma)/rho^2, 0 and 2/(gamma rho)
+    double c_gradient_, c_cross_, c_hessian_;
 };
 
 } // namespace sphkern

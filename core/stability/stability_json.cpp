@@ -21,10 +21,22 @@ nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
     return a;
 }
 
-nlohmann::json header(const Kernel& kernel, const Lattice& lattice, double k, double gamma)
+nlohmann::json header(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h_model)
 {
     return {{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", k}, {"gamma", gamma},
+            {"h_model", h_model_name(h_model)},
             {"second_derivative", kernel.provides_second_derivative() ? "plugin" : "numerical"}};
+}
+
+// The header at one k, with eta of h = eta (m / rho)^(1/D) and the grad-h factor for adaptive h.
+nlohmann::json header(const Kernel& kernel, const Lattice& lattice, const Dispersion& dispersion)
+{
+    auto document = header(kernel, lattice, dispersion.k(), dispersion.gamma(), dispersion.h_model());
+    if (dispersion.h_model() == HModel::adaptive) {
+        document["eta"] = dispersion.eta();
+        document["grad_h_factor"] = dispersion.grad_h_factor();
+    }
+    return document;
 }
 
 // The directions of the high-symmetry points (Γ-X, Γ-L, ...), each once.
@@ -70,12 +82,12 @@ nlohmann::json stability_sample_json(const StabilitySample& s, int dim)
 }
 
 nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
-                                   const Eigen::Vector3d& kappa)
+                                   const Eigen::Vector3d& kappa, HModel h_model)
 {
-    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const Dispersion dispersion(kernel, lattice, k, gamma, h_model);
     const auto modes = dispersion.modes(kappa);
     const int D = lattice.dimension;
-    auto document = header(kernel, lattice, k, gamma);
+    auto document = header(kernel, lattice, dispersion);
     document["wavevector"] = vector_json(kappa, D);
     document["omega2"] = modes.omega2;
     nlohmann::json list = nlohmann::json::array();
@@ -94,13 +106,13 @@ nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice,
 }
 
 nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int grid,
-                                  int threads, double horizon)
+                                  int threads, double horizon, HModel h_model)
 {
-    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const Dispersion dispersion(kernel, lattice, k, gamma, h_model);
     const auto reciprocal = reciprocal_lattice(lattice);
     const auto scan = scan_brillouin_zone(dispersion, reciprocal, grid, threads);
     const int D = lattice.dimension;
-    auto document = header(kernel, lattice, k, gamma);
+    auto document = header(kernel, lattice, dispersion);
     document["bravais"] = reciprocal.bravais;
     nlohmann::json b = nlohmann::json::array();
     for (int i = 0; i < D; ++i) b.push_back(vector_json(reciprocal.vectors.col(i), D));
@@ -124,9 +136,10 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
     document["long_wave"] = {{"min_omega2_over_kappa2", scan.long_wave.omega2_over_kappa2},
                              {"direction", vector_json(scan.long_wave.direction, D)}};
     // Long waves: the speed per direction, and for one site how it follows from the
-    // hydrostatic errors (eps_rho, E) and the stiffness term.
+    // hydrostatic errors (eps_rho, E) and the stiffness term (fixed h: the relation of the
+    // method document holds for it only).
     std::unique_ptr<HydrostaticErrors> errors;
-    if (dispersion.sites() == 1)
+    if (dispersion.sites() == 1 && h_model == HModel::fixed)
         errors = std::make_unique<HydrostaticErrors>(kernel, lattice, 0, lattice.volume_per_site(), lattice.gravity, k);
     nlohmann::json speeds = nlohmann::json::array();
     for (const auto& [label, n] : symmetry_directions(reciprocal)) {
@@ -149,10 +162,11 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
 }
 
 nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                                         int steps, double gamma, int grid, int threads, double horizon)
+                                         int steps, double gamma, int grid, int threads, double horizon,
+                                         HModel h_model)
 {
-    const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads, horizon);
-    auto document = header(kernel, lattice, k_min, gamma);
+    const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads, horizon, h_model);
+    auto document = header(kernel, lattice, k_min, gamma, h_model);
     document.erase("k");
     document["k_range"] = {k_min, k_max};
     document["bravais"] = scan.bravais;
@@ -175,11 +189,12 @@ nlohmann::json dispersion_path_json(const DispersionPath& path)
     return {{"points", points}, {"position", path.position}, {"omega2", path.omega2}};
 }
 
-nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points)
+nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points,
+                                        HModel h_model)
 {
-    const Dispersion dispersion(kernel, lattice, k, gamma);
+    const Dispersion dispersion(kernel, lattice, k, gamma, h_model);
     const auto reciprocal = reciprocal_lattice(lattice);
-    auto document = header(kernel, lattice, k, gamma);
+    auto document = header(kernel, lattice, dispersion);
     document["bravais"] = reciprocal.bravais;
     document["path"] = dispersion_path_json(dispersion_along_path(dispersion, reciprocal, points));
     return document;

@@ -104,14 +104,14 @@ bool may_hide_a_change(const StabilitySample& a, const StabilitySample& b, const
 } // namespace
 
 StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
-                                double gamma, int grid, int threads, double horizon)
+                                double gamma, int grid, int threads, double horizon, HModel h_model)
 {
     const auto reciprocal = reciprocal_lattice(lattice);
     std::map<double, StabilitySample> seen; // the edges of both kinds of interval often coincide
     auto at = [&](double k) {
         if (auto found = seen.find(k); found != seen.end()) return found->second;
         throw_if_interrupted();
-        return seen[k] = stability_sample(Dispersion(kernel, lattice, k, gamma), reciprocal, grid, threads, horizon);
+        return seen[k] = stability_sample(Dispersion(kernel, lattice, k, gamma, h_model), reciprocal, grid, threads, horizon);
     };
     StabilityOverK result;
     result.bravais = reciprocal.bravais;

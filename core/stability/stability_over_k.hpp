@@ -45,7 +45,8 @@ struct StabilityOverK {
 
 // `steps` + 1 samples over [k_min, k_max]; `grid` the first zone grid per axis (0: default).
 StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
-                                double gamma, int grid, int threads, double horizon = default_horizon);
+                                double gamma, int grid, int threads, double horizon = default_horizon,
+                                HModel h_model = HModel::fixed);
 
 // The sample at one k, as every mode computes it.
 StabilitySample stability_sample(const Dispersion& dispersion, const ReciprocalLattice& reciprocal, int grid,

@@ -1,5 +1,6 @@
 #include "stability/zone_minimum.hpp"
 
+#include "stability/zone_polish.hpp"
 #include "stability/zone_symmetry.hpp"
 #include "support/interruption.hpp"
 
@@ -87,6 +88,12 @@ void grid_minima(const Dispersion& dispersion, const Eigen::Matrix3d& b, const Z
     found.offer({grid.fraction(at), value}, at != grid.gamma_index());
 }
 
+// A tenth of the tolerance between grids: what one more round of polishing may still gain.
+double polish_tolerance(double value)
+{
+    return 0.1 * (zone_tolerance_absolute + zone_tolerance_relative * std::abs(value));
+}
+
 } // namespace
 
 int zone_start_grid(int dimension) { return dimension == 3 ? 8 : dimension == 2 ? 32 : 128; }
@@ -123,6 +130,10 @@ ZoneMinimum lowest_branch_minimum(const Dispersion& dispersion, const Reciprocal
         previous = level.value;
     }
     if (result.levels == 1) result.change = 0; // a single grid: nothing to compare it with
+    // Where a mode grows, its growth time is reported: follow the valley to its floor.
+    if (result.omega2 < 0)
+        std::tie(result.fraction, result.omega2) = polish_minimum(dispersion, reciprocal.vectors, result.fraction,
+                                                                  result.omega2, 1.0 / result.grid, polish_tolerance, 40);
     return result;
 }
 

@@ -417,11 +417,13 @@ std::string stability_markdown(const StudyResults& results)
     std::string s = fmt::format(
         "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
         "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
-        "(standard SPH, summation density, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10). "
+        "(standard SPH, summation density, {} h, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10; "
+        "with adaptive h, h = eta (m/rho)^(1/D) with the grad-h terms, and k is its value h = k d at rest). "
         "A mode that grows more slowly than the horizon ({:g} d/c: growth time 1 / sqrt(-omega^2)) is weak: such k are "
         "not in the stable k, but count as stable where they meet condition (22). "
         "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        results.stability.front().gamma, method_document(), results.stability.front().over_k.horizon);
+        results.stability.front().h_model, results.stability.front().gamma, method_document(),
+        results.stability.front().over_k.horizon);
     std::string lattice;
     for (const auto& c : results.stability) {
         if (c.lattice != lattice) {

@@ -22,7 +22,8 @@ nlohmann::json per_site_json(const StudyCase& c, double epsilon)
 
 nlohmann::json stability_json(const StabilityCase& c)
 {
-    nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma}};
+    nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma},
+                            {"h_model", c.h_model}};
     if (!c.refused.empty()) {
         entry["refused"] = c.refused;
         return entry;

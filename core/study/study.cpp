@@ -164,7 +164,7 @@ StudySurface read_surface(const JsonNode& node)
 
 StudyStability read_stability(const JsonNode& node)
 {
-    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points", "horizon"});
+    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points", "horizon", "h_model"});
     StudyStability stability;
     if (auto gamma = node.find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
     if (auto k = node.find("k")) {
@@ -180,6 +180,11 @@ StudyStability read_stability(const JsonNode& node)
     if (auto k = node.find("dispersion_k")) stability.path_k = k_or_best(*k);
     if (auto points = node.find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
     if (auto horizon = node.find("horizon")) stability.horizon = horizon->number_in(1e-6, 1e12);
+    if (auto model = node.find("h_model")) {
+        stability.h_model = model->text();
+        if (stability.h_model != "fixed" && stability.h_model != "adaptive")
+            model->error("expected \"fixed\" or \"adaptive\"");
+    }
     return stability;
 }
 

@@ -63,6 +63,7 @@ struct StudyStability {
     std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
     int path_points = 120;
     double horizon = 100;               // growth time in d/c: slower instabilities are weak (default_horizon)
+    std::string h_model = "fixed";      // fixed or adaptive h (stability/h_model.hpp)
 };
 
 // A study's total work, bounded before it starts (see check in parse_study).

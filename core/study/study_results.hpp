@@ -105,6 +105,7 @@ struct StabilityCase {
     std::string lattice;
     std::string kernel_label;
     double gamma = 0;
+    std::string h_model = "fixed";
     std::string refused;      // why the lattice has no dispersion matrix; empty when it has one
     StabilityOverK over_k;
     double path_k = 0;        // where the dispersion curves are drawn

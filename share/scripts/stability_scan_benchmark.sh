@@ -31,6 +31,8 @@ PY
 commands=(
     "run -o $work/out --no-plots --force"
     "run $work/stability-2d.json -o $work/out --no-plots --force"
+    "roots cubic_bspline fcc --stability --json"
+    "roots wendland_c2 hcp --stability --json"
     "roots all triangular --stability --json"
     "roots all fcc --stability --json"
     "roots all hcp --stability --json"

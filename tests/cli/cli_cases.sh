@@ -520,6 +520,13 @@ expect 2 '--horizon 0 is not allowed' -- roots cubic_bspline fcc --stability --h
 expect 2 '--convention nosuch: unknown convention, expected one of pysph, dualsphysics, swift, gadget, splishsplash' -- roots cubic_bspline fcc --convention nosuch
 study s_horizon '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"horizon": -1}}'
 expect 3 's_horizon.json: /stability/horizon: ' -- run "$work/s_horizon.json" -o "$work/out12"
+# The smoothing-length model: fixed or adaptive, nothing else.
+expect 2 '--h-model "grad-h" is not a smoothing-length model, expected fixed or adaptive' -- stability cubic_bspline fcc --k 1.2 --h-model grad-h
+expect 2 '--h-model "Adaptive" is not a smoothing-length model' -- roots cubic_bspline fcc --stability --h-model Adaptive
+study s_hmodel '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"h_model": "variable"}}'
+expect 3 's_hmodel.json: /stability/h_model: expected "fixed" or "adaptive"' -- run "$work/s_hmodel.json" -o "$work/out_hmodel"
+check "stability --h-model adaptive gives eta and the grad-h factor in the JSON" \
+    test "$("$sphkern" stability cubic_bspline fcc --k 1.2 --h-model adaptive --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print(d["h_model"], d["eta"] > 0, d["grad_h_factor"] > 0)')" = "adaptive True True"
 check "stability --k gives every sampled k of --kmin/--kmax the same verdict and minimum" python3 -c "
 import json, subprocess
 run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_output=True, check=True, text=True).stdout)

@@ -126,6 +126,29 @@ def test_stability_verdicts_horizon_and_window_edge():
     assert sphkern.roots("wendland_c2", "hcp", details=True)["best_k_note"] == "at the window edge; widen --kmin/--kmax"
 
 
+def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line():
+    for model in ("fixed", "adaptive"):
+        document = sphkern.roots("cubic_bspline", "fcc", stability=True, steps=20, h_model=model, convention="swift")
+        cli = cli_json("roots", "cubic_bspline", "fcc", "--stability", "--steps", "20", "--h-model", model,
+                       "--convention", "swift")[0]
+        close(document["stability"], cli["stability"])
+        close(document["convention"], cli["convention"])
+        assert document["stability"]["h_model"] == model
+        assert document["best_k_at_window_edge"] is False
+    # The recommended k on the window's edge is flagged, in Python too.
+    edge = sphkern.roots("cubic_bspline", "fcc", kmin=0.99, kmax=1.0, stability=True, steps=4)["stability"]["recommended"]
+    assert edge["at_window_edge"] and edge["note"] == "at the window edge; widen --kmin/--kmax"
+    assert sphkern.roots("wendland_c2", "hcp", details=True)["best_k_at_window_edge"] is True
+    close(sphkern.stability("cubic_bspline", "fcc", 1.1, h_model="adaptive"),
+          cli_json("stability", "cubic_bspline", "fcc", "--k", "1.1", "--h-model", "adaptive"))
+    with pytest.raises(ValueError) as raised:
+        sphkern.stability("cubic_bspline", "fcc", 1.1, h_model="grad-h")
+    assert str(raised.value) == 'h_model "grad-h" is not a smoothing-length model, expected fixed or adaptive'
+    with pytest.raises(ValueError) as raised:
+        sphkern.roots("cubic_bspline", "fcc", convention="phantom")
+    assert "phantom" in str(raised.value)
+
+
 def test_kernel_functions_are_vectorised_and_equal_the_plugin():
     kernel = sphkern.kernel("cubic_bspline")
     q = np.linspace(0, 2.5, 11).reshape(11, 1)

@@ -14,8 +14,9 @@ using namespace sphkern::test;
 
 TEST_CASE("SWIFT's kernel gamma H / (2 sigma) is the value SWIFT lists for its 3D kernels")
 {
-    // SWIFT's kernel_hydro.h, 3D: cubic spline, quintic spline, Wendland C2, C4, C6.
+    // SWIFT's kernel_hydro.h, 3D: cubic, quartic and quintic spline, Wendland C2, C4, C6.
     const std::pair<const char*, double> listed[] = {{"cubic_bspline", 1.825742},
+                                                     {"quartic_bspline", 2.018932},
                                                      {"morris_quintic", 2.195775},
                                                      {"wendland_c2", 1.936492},
                                                      {"wendland_c4", 2.207940},

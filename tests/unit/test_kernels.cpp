@@ -14,14 +14,14 @@ using namespace sphkern;
 using sphkern::test::shipped_kernel;
 using sphkern::test::shipped_kernels;
 
-TEST_CASE("the eleven shipped kernels and the designed family are discovered")
+TEST_CASE("the twelve shipped kernels and the designed family are discovered")
 {
     std::vector<std::string> names;
     for (const auto& p : shipped_kernels().plugins())
         if (p->source.ends_with(".so")) names.push_back(p->name);
     std::sort(names.begin(), names.end());
     CHECK(names == std::vector<std::string>{"composite", "cubic_bspline", "desbrun_spiky", "johnson_quadratic",
-                                            "liu_quartic", "morris_quintic", "muller_poly6", "super_gaussian",
+                                            "liu_quartic", "morris_quintic", "muller_poly6", "quartic_bspline", "super_gaussian",
                                             "wendland_c2", "wendland_c2_shape", "wendland_c4", "wendland_c6"});
 }
 
@@ -68,6 +68,10 @@ TEST_CASE("spot values of every kernel against its formula")
         {"cubic_bspline", [&](double q, int D) {
              double s[] = {0, 1, 15 / (7 * pi), 3 / (2 * pi)};
              return s[D] * (q <= 1 ? 2.0 / 3 - q * q + q * q * q / 2 : q <= 2 ? std::pow(2 - q, 3) / 6 : 0.0);
+         }},
+        {"quartic_bspline", [&](double q, int D) {
+             double s[] = {0, 1.0 / 24, 96 / (1199 * pi), 1 / (20 * pi)};
+             return s[D] * (std::pow(pos(2.5 - q), 4) - 5 * std::pow(pos(1.5 - q), 4) + 10 * std::pow(pos(0.5 - q), 4));
          }},
         {"liu_quartic", [&](double q, int D) {
              double s[] = {0, 1, 15 / (7 * pi), 315 / (208 * pi)};
@@ -130,4 +134,27 @@ TEST_CASE("the widely copied Morris 3D constant 3/(359 pi) is 0.28% off")
     CHECK(integral == doctest::Approx(1.0).epsilon(1e-12));
     // Rescaling the exact 1/(120 pi) to 3/(359 pi) scales the integral by 360/359.
     CHECK(integral * 360.0 / 359.0 == doctest::Approx(1.00279).epsilon(1e-5));
+}
+
+TEST_CASE("the quartic B-spline's constants normalise it: Gauss-Legendre on each polynomial piece")
+{
+    // Independent of the host's quadrature: int W d^D x = c_D int_0^2.5 w(q) q^(D-1) dq with
+    // c_D = 2, 2 pi, 4 pi; four Gauss-Legendre points are exact for the degree <= 6 integrand
+    // between breakpoints.
+    Kernel m5 = shipped_kernel("quartic_bspline");
+    CHECK(m5.support() == 2.5);
+    const double pieces[] = {0, 0.5, 1.5, 2.5}, c[] = {0, 2, 2 * M_PI, 4 * M_PI};
+    const double node[] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+    const double weight[] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+    for (int D = 1; D <= 3; ++D) {
+        double integral = 0;
+        for (int p = 0; p < 3; ++p) {
+            const double mid = (pieces[p] + pieces[p + 1]) / 2, half = (pieces[p + 1] - pieces[p]) / 2;
+            for (int i = 0; i < 4; ++i) {
+                const double q = mid + half * node[i];
+                integral += half * weight[i] * m5.w(q, D, 1.0) * std::pow(q, D - 1);
+            }
+        }
+        CHECK_MESSAGE(c[D] * integral == doctest::Approx(1).epsilon(1e-13), "D = " << D);
+    }
 }

@@ -10,6 +10,7 @@
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "stability/zone_grid.hpp"
+#include "stability/zone_minimum.hpp"
 #include "stability/zone_symmetry.hpp"
 
 #include <doctest/doctest.h>
@@ -132,10 +133,12 @@ TEST_CASE("the k once reported stable in three unstable intervals are unstable, 
             CHECK(independent < -unstable_threshold);
             const auto scan = scan_brillouin_zone(d, reciprocal, 0, 1, false);
             CHECK_FALSE(scan.stable);
-            // The depth too, measured: within 2.5% of the independent minimum (Wendland C2 on fcc
-            // near k = 2.52 is 2.1% shallower: the coordinate-wise refinement stops early in a
-            // valley that runs diagonally; the verdict is not affected).
-            CHECK(scan.lowest().omega2 <= independent * (1 - 0.025));
+            // The depth too: within the zone tolerance (1e-4 of the minimum) of the independent
+            // minimum, now that the refinement also searches along the valley (Wendland C2 on
+            // fcc near k = 2.52 was 2.1% shallower with coordinate sweeps alone).
+            CHECK_MESSAGE(scan.lowest().omega2 <= independent * (1 - zone_tolerance_relative),
+                          "scan " << scan.lowest().omega2 << " independent " << independent << " ratio "
+                                  << scan.lowest().omega2 / independent);
         }
         // The scan over k: none of these k is in a stable interval.
         const auto over_k = stability_over_k(kernel, lattice, c.ks.front() - 0.01, c.ks.back() + 0.01, 4, gamma_53, 0, 1);

@@ -31,6 +31,8 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         c.lattice = lattice.name;
         c.kernel_label = kernel.label();
         c.gamma = spec.gamma;
+        c.h_model = spec.h_model;
+        const HModel h_model = parse_h_model(spec.h_model, "stability.h_model");
         c.over_k.horizon = spec.horizon; // also for a lattice that is refused
         // The bulk cases of the first automatic mode: their windows and condition (22).
         std::vector<const StudyCase*> accurate;
@@ -53,8 +55,9 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
         c.path_k = spec.path_k ? *spec.path_k : !accurate.empty() ? accurate.front()->acceptance.best_k
                                                                    : 0.5 * (k_min + k_max);
         try {
-            c.over_k = stability_over_k(kernel, lattice, k_min, k_max, spec.steps, spec.gamma, spec.grid, 1, spec.horizon);
-            const Dispersion at(kernel, lattice, c.path_k, spec.gamma);
+            c.over_k = stability_over_k(kernel, lattice, k_min, k_max, spec.steps, spec.gamma, spec.grid, 1, spec.horizon,
+                                        h_model);
+            const Dispersion at(kernel, lattice, c.path_k, spec.gamma, h_model);
             c.path = dispersion_along_path(at, reciprocal_lattice(lattice), spec.path_points);
         } catch (const Error& e) {
             if (e.code() != ExitCode::input) throw;
