@@ -108,7 +108,7 @@ def test_stability_documents_equal_the_command_lines():
     for kwargs, message in [({"wavevector": [1, 0]}, "wavevector: 2 components, expected 3 for a 3D lattice"),
                             ({"kmin": 0.8}, "kmin and kmax go together, without k, wavevector or path"),
                             ({"wavevector": [1, 0, 0], "path": 10}, "wavevector and path: give one of them"),
-                            ({"gamma": -1}, "gamma -1 is not allowed, expected a number in (0, 1e6]"),
+                            ({"gamma": -1}, "gamma -1 is not allowed, expected a number in [1e-06, 1e+06]"),
                             ({"horizon": -1}, "horizon -1 is not allowed, expected a growth time in (0, 1e12] (in d/c)")]:
         with pytest.raises(ValueError) as raised:
             sphkern.stability("cubic_bspline", "fcc", 1.2, **kwargs)
