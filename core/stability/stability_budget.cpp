@@ -1,5 +1,6 @@
 #include "stability/stability_budget.hpp"
 
+#include "stability/zone_minimum.hpp"
 #include "support/work_budget.hpp"
 
 #include <algorithm>
@@ -9,7 +10,7 @@ namespace sphkern {
 
 double stability_wave_vectors(int steps, int grid, int dimension)
 {
-    auto points = [&](int dim) { return grid > 0 ? std::pow(grid, dim) : dim == 3 ? 8.0 * 8 * 8 : 32.0 * 32; };
+    auto points = [&](int dim) { return std::pow(grid > 0 ? grid : zone_start_grid(dim), dim); };
     const double zone = dimension == 0 ? std::max(points(2), points(3)) : points(dimension);
     return (steps + 1.0) * zone;
 }

@@ -657,18 +657,20 @@ expect 4 'abort_above_k.so: plugin kernel abort_above_k crashed with signal 6 \(
 expect 4 'exit_in_w.so: plugin kernel exit_in_w called exit\(\) or pthread_exit\(\) in .*W; nothing was written' -- eps "$broken/exit_in_w.so" fcc --k 1.4
 expect 4 'loops_above_k.so: plugin kernel loops_above_k did not return within 2 s \(endless loop' -- \
     eps "$broken/loops_above_k.so" fcc --k 1.4
+expect 4 'overflows_stack.so: plugin kernel overflows_stack crashed with signal 11 \(SIGSEGV\) in W' -- \
+    eps "$broken/overflows_stack.so" fcc --k 1.4
 for plugin in exit_in_w abort_above_k loops_above_k; do
     study "s_$plugin" '{"name": "s", "kernels": ["'"$broken/$plugin"'.so"], "lattices": ["fcc"], "k": {"min": 0.75, "max": 1.5, "samples": 301}, "plots": false}'
     expect 4 "$plugin.so: plugin kernel $plugin " -- run "$work/s_$plugin.json" -o "$work/made_$plugin/a/b/out"
     check "$plugin in a study: no staging folder, no folder the run made" test ! -e "$work/made_$plugin"
 done
 # A signal while a plugin call loops and ignores it: exit 130 within a second (the time is printed).
-for sig in INT TERM; do
+for sig in INT TERM HUP; do
     SPHKERN_PLUGIN_TIMEOUT=60 signal_when 'loops_above_k has been in W for 1 s' $sig -- run "$work/s_loops_above_k.json" -o "$work/out_loop"
     check "SIG$sig inside a looping plugin call: exit $status in $elapsed ms, $err, left: $(leftovers out_loop)" \
         test $status -eq 130 -a -z "$(leftovers out_loop)"
 done
-check "the interrupt names the plugin call" grep -q 'terminated (SIGTERM) while .*loops_above_k.so: plugin kernel loops_above_k was in' <<<"$err"
+check "the interrupt names the plugin call" grep -q 'hung up (SIGHUP) while .*loops_above_k.so: plugin kernel loops_above_k was in' <<<"$err"
 # A plugin file replaced between its probe and its load: the replacement never runs unprobed
 # (its W would crash at the descriptor's probe points); the next run probes it.
 mkdir -p "$work/swap"
@@ -690,6 +692,7 @@ expect 3 'the stability scan over k asks for k samples x wave vectors = 32016000
 # A tiny gamma overflowed 2/gamma: refused, and never a non-finite omega^2.
 expect 2 '--gamma 1e-320 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- stability cubic_bspline fcc --gamma 1e-320 --k 1.2
 expect 2 '--gamma 1e-07 is not allowed' -- stability cubic_bspline fcc --gamma 1e-7 --kmin 1 --kmax 1.2
+expect 2 '--gamma 1100000 is not allowed' -- roots cubic_bspline fcc --stability --gamma 1.1e6
 "$sphkern" stability cubic_bspline fcc --gamma 1e-6 --k 1.2 >"$work/small_gamma.txt" 2>&1
 check "gamma 1e-6: finite numbers only" bash -c "! grep -qiE 'nan|inf' '$work/small_gamma.txt'"
 # A lattice with 10^5 volume coefficients is read in linear time (the test only reads it).

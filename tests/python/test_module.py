@@ -163,6 +163,8 @@ def test_a_million_k_values_in_one_call_keep_their_shape():
     (lambda: sphkern.shells("fcc", 1e5), ("shells", "fcc", "--radius", "1e5")),
     (lambda: sphkern.surface("cubic_bspline", "fcc", 1.2, form="up"),
      ("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "up")),
+    (lambda: sphkern.stability("cubic_bspline", "fcc", kmin=0.8, kmax=1.6, steps=2000, grid=400),
+     ("stability", "cubic_bspline", "fcc", "--kmin", "0.8", "--kmax", "1.6", "--steps", "2000", "--grid", "400")),
 ])
 def test_bad_input_raises_value_error_with_the_command_lines_message(call, args):
     code, message = cli_error(*args)
