@@ -1,5 +1,7 @@
 #include "block/block_geometry.hpp"
 
+#include "support/work_budget.hpp"
+
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
 
@@ -22,12 +24,8 @@ std::size_t checked_block_size(const Lattice& lattice, const BlockOptions& optio
                               " is not allowed, expected a positive number of cells");
         total *= static_cast<long double>(n);
     }
-    if (total > static_cast<long double>(max_block_particles)) {
-        std::ostringstream s;
-        s << "a block of " << static_cast<double>(total) << " particles is more than the limit of " << max_block_particles
-          << " (about " << max_block_particles * 100 / (1 << 20) << " MiB of memory)";
-        fail_input(s.str());
-    }
+    check_work_budget("the block", "cells x sites, its particles", static_cast<double>(total),
+                      static_cast<double>(max_block_particles)); // about 100 bytes each
     return static_cast<std::size_t>(total);
 }
 

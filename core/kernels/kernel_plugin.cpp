@@ -3,10 +3,13 @@
 #include "support/printable_text.hpp"
 #include "support/resource_errors.hpp"
 
+#include "kernels/plugin_file.hpp"
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 #include "support/isolated_call.hpp"
+#include "support/plugin_call_guard.hpp"
+#include "support/plugin_watchdog.hpp"
 #include "support/results_output.hpp"
 
 #include <spdlog/spdlog.h>
@@ -28,8 +31,6 @@ namespace sphkern {
 
 namespace {
 
-constexpr std::uintmax_t max_plugin_bytes = 256u << 20;
-
 bool valid_identifier(const char* s)
 {
     if (!s || !*s) return false;
@@ -49,15 +50,17 @@ bool valid_text(const char* s)
     return true;
 }
 
-std::shared_ptr<boost::dll::shared_library> open_library(const std::filesystem::path& file)
+// Loads `path` (a /proc/self/fd name); `name` is the file as the user gave it.
+std::shared_ptr<boost::dll::shared_library> open_library(const std::string& path, const std::string& name)
 {
     try {
         return std::make_shared<boost::dll::shared_library>(
-            boost::dll::fs::path(file.string()),
-            boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
+            boost::dll::fs::path(path), boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
     } catch (const std::exception& e) {
-        if (errno == EMFILE || errno == ENFILE) fail_resource(errno, file.string() + ": cannot be opened");
-        throw Error(ExitCode::plugin, file.string() + ": not a loadable shared library: " + e.what());
+        if (errno == EMFILE || errno == ENFILE) fail_resource(errno, name + ": cannot be opened");
+        std::string why = e.what();
+        for (auto at = why.find(path); at != std::string::npos; at = why.find(path)) why.replace(at, path.size(), name);
+        throw Error(ExitCode::plugin, name + ": not a loadable shared library: " + why);
     }
 }
 
@@ -109,46 +112,65 @@ struct DescriptorV1 {
 
 constexpr std::size_t required_v2_size = offsetof(sphkern_kernel_descriptor, get_extension);
 
-// The functions of a plugin: its descriptor's pointers, and the library they live in.
+// The functions of a plugin: its descriptor's pointers, and the library they live in. Every
+// call runs under a PluginCallGuard, so that a crash, exit() or hang in it names the plugin.
 class PluginFunctions final : public KernelFunctions {
 public:
-    PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const PluginDescriptor& d)
-        : library_(std::move(library)), d_(d) {}
-    double w(double q, int dim, double k, const double* p) const override { return d_.fields.w(q, dim, k, p); }
-    double dw(double q, int dim, double k, const double* p) const override { return d_.fields.dw(q, dim, k, p); }
+    PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const PluginDescriptor& d,
+                    const std::string& file)
+        : library_(std::move(library)), d_(d), w_(file, d.fields.name, "W"), dw_(file, d.fields.name, "dW"),
+          w_batch_(file, d.fields.name, "the batch W"), dw_batch_(file, d.fields.name, "the batch dW"),
+          d2w_(file, d.fields.name, "d2W"), d2w_batch_(file, d.fields.name, "the batch d2W"),
+          fourier_(file, d.fields.name, "the Fourier transform")
+    {
+    }
+    double w(double q, int dim, double k, const double* p) const override
+    {
+        PluginCallGuard in(w_);
+        return d_.fields.w(q, dim, k, p);
+    }
+    double dw(double q, int dim, double k, const double* p) const override
+    {
+        PluginCallGuard in(dw_);
+        return d_.fields.dw(q, dim, k, p);
+    }
     void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
+        PluginCallGuard in(w_batch_);
         d_.fields.w_batch(q, out, n, dim, k, p);
     }
     void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
+        PluginCallGuard in(dw_batch_);
         d_.fields.dw_batch(q, out, n, dim, k, p);
     }
     bool has_second_derivative() const override { return d_.second != nullptr; }
-    double d2w(double q, int dim, double k, const double* p) const override { return d_.second->d2w(q, dim, k, p); }
+    double d2w(double q, int dim, double k, const double* p) const override
+    {
+        PluginCallGuard in(d2w_);
+        return d_.second->d2w(q, dim, k, p);
+    }
     void d2w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
+        PluginCallGuard in(d2w_batch_);
         d_.second->d2w_batch(q, out, n, dim, k, p);
     }
     bool has_fourier_transform() const override { return d_.fourier != nullptr; }
     double fourier_transform(double kh, int dim, double k, const double* p) const override
     {
+        PluginCallGuard in(fourier_);
         return d_.fourier->transform(kh, dim, k, p);
     }
 
 private:
     std::shared_ptr<boost::dll::shared_library> library_; // keeps the descriptor and its functions mapped
     PluginDescriptor d_;
+    PluginCall w_, dw_, w_batch_, dw_batch_, d2w_, d2w_batch_, fourier_;
 };
 
 } // namespace
 
-double plugin_probe_timeout()
-{
-    const char* text = std::getenv("SPHKERN_PLUGIN_TIMEOUT");
-    double seconds = text ? std::strtod(text, nullptr) : 0;
-    return seconds > 0 && seconds < 3600 ? seconds : 10.0;
-}
+double plugin_probe_timeout() { return plugin_timeout_seconds(); }
 
 std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
 {
@@ -254,26 +276,20 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
     return {};
 }
 
-std::string probe_kernel_plugin(const std::filesystem::path& file)
+namespace {
+
+// Probes the open file in a child (unless the cache knows it) and returns its kernel name.
+std::string probe_open_plugin(const PluginFile& plugin)
 {
-    const std::string name = file.string();
-    struct stat st {};
-    if (::stat(file.c_str(), &st) != 0) throw Error(ExitCode::plugin, name + ": no such plugin file");
-    if (S_ISDIR(st.st_mode)) throw Error(ExitCode::plugin, name + ": is a folder, expected a plugin file");
-    // A device or a pipe would be read without end by the loader.
-    if (!S_ISREG(st.st_mode))
-        throw Error(ExitCode::plugin, name + ": is not a regular file (a device or pipe?), expected a shared library");
-    if (static_cast<std::uintmax_t>(st.st_size) > max_plugin_bytes)
-        throw Error(ExitCode::plugin, name + ": file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
-                                          std::to_string(max_plugin_bytes) + " for a plugin");
+    const std::string& name = plugin.name();
     auto& cache = PluginProbeCache::instance();
-    if (auto known = cache.passed(file)) return *known;
+    if (auto known = cache.passed(name, &plugin.status())) return *known;
 
     spdlog::debug("probing {}", name);
     auto verdict = run_isolated(
         [&]() -> std::string {
             try {
-                auto library = open_library(file);
+                auto library = open_library(plugin.loader_path(), name);
                 PluginDescriptor d;
                 auto reason = read_kernel_descriptor(call_entry(*library, name), d);
                 return reason.empty() ? std::string("+") + d.fields.name : name + ": invalid kernel descriptor: " + reason;
@@ -286,19 +302,37 @@ std::string probe_kernel_plugin(const std::filesystem::path& file)
         throw Error(ExitCode::plugin, name + ": plugin " + failure->reason);
     const auto& answer = std::get<std::string>(verdict);
     if (answer.empty() || answer[0] != '+') throw Error(ExitCode::plugin, answer);
-    cache.record(file, answer.substr(1));
+    if (plugin.unchanged()) cache.record(name, answer.substr(1), &plugin.status());
     return answer.substr(1);
 }
 
+} // namespace
+
+std::string probe_kernel_plugin(const std::filesystem::path& file) { return probe_open_plugin(PluginFile(file)); }
+
 std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
 {
-    const std::string name = file.string();
-    const std::string kernel_name = probe_kernel_plugin(file);
-    auto library = open_library(file);
+    PluginFile opened(file);
+    const std::string& name = opened.name();
+    const std::string kernel_name = probe_open_plugin(opened);
+    // The constructors, the entry and the descriptor's probe points run here too: guarded.
+    const PluginCall loading(name, kernel_name, "its constructors or entry function");
+    std::shared_ptr<boost::dll::shared_library> library;
     PluginDescriptor descriptor;
-    // Validated in the probe; read again because the file could have changed since.
-    if (auto reason = read_kernel_descriptor(call_entry(*library, name), descriptor); !reason.empty())
-        throw Error(ExitCode::plugin, name + ": invalid kernel descriptor: " + reason);
+    std::string reason;
+    {
+        PluginCallGuard in(loading);
+        library = open_library(opened.loader_path(), name);
+        opened.keep();
+        reason = read_kernel_descriptor(call_entry(*library, name), descriptor);
+    }
+    if (!reason.empty()) throw Error(ExitCode::plugin, name + ": invalid kernel descriptor: " + reason);
+    // Probe and load read one open file; written to in between, it is not used.
+    if (!opened.unchanged() || kernel_name != descriptor.fields.name) {
+        PluginProbeCache::instance().forget(name);
+        PluginProbeCache::instance().save();
+        throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");
+    }
     const auto* d = &descriptor.fields;
     // The library's constructors ran in this process: take the signals and stdout back.
     restore_interrupt_handlers();
@@ -306,11 +340,6 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     auto plugin = std::make_shared<KernelDefinition>();
     plugin->source = std::filesystem::absolute(file).lexically_normal().string();
     plugin->name = d->name;
-    if (plugin->name != kernel_name) { // the file changed between the probe and now, or the cache was stale
-        PluginProbeCache::instance().forget(file);
-        PluginProbeCache::instance().save();
-        throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");
-    }
     plugin->title = printable_text(d->title);
     plugin->reference = printable_text(d->reference);
     plugin->support = d->support;
@@ -324,7 +353,7 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;
     plugin->truncations = {d->support};
     plugin->abi = fmt::format("{}.{}", descriptor.abi_major, descriptor.abi_minor);
-    plugin->functions = std::make_shared<PluginFunctions>(std::move(library), descriptor);
+    plugin->functions = std::make_shared<PluginFunctions>(std::move(library), descriptor, name);
     return plugin;
 }
 

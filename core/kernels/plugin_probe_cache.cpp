@@ -65,7 +65,13 @@ PluginProbeCache::PluginProbeCache()
 std::optional<PluginProbeCache::Entry> PluginProbeCache::describe(const fs::path& file)
 {
     struct stat st {};
-    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    if (::stat(file.c_str(), &st) != 0) return std::nullopt;
+    return describe(st);
+}
+
+std::optional<PluginProbeCache::Entry> PluginProbeCache::describe(const struct stat& st)
+{
+    if (!S_ISREG(st.st_mode)) return std::nullopt;
     Entry e;
     e.size = st.st_size;
     e.mtime_ns = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
@@ -75,9 +81,9 @@ std::optional<PluginProbeCache::Entry> PluginProbeCache::describe(const fs::path
     return e;
 }
 
-std::optional<std::string> PluginProbeCache::passed(const fs::path& file)
+std::optional<std::string> PluginProbeCache::passed(const fs::path& file, const struct stat* opened)
 {
-    auto now = describe(file);
+    auto now = opened ? describe(*opened) : describe(file);
     if (!now) return std::nullopt;
     std::lock_guard lock(mutex_);
     auto it = entries_.find(key_of(file));
@@ -85,9 +91,9 @@ std::optional<std::string> PluginProbeCache::passed(const fs::path& file)
     return it->second.name;
 }
 
-void PluginProbeCache::record(const fs::path& file, const std::string& kernel_name)
+void PluginProbeCache::record(const fs::path& file, const std::string& kernel_name, const struct stat* opened)
 {
-    auto now = describe(file);
+    auto now = opened ? describe(*opened) : describe(file);
     if (!now) return;
     now->name = kernel_name;
     std::lock_guard lock(mutex_);

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <sys/stat.h>
 
 namespace sphkern {
 
@@ -19,9 +20,10 @@ public:
     // The process's cache, read on first use.
     static PluginProbeCache& instance();
 
-    // The kernel name of `file` if it passed the probe and has not changed since.
-    std::optional<std::string> passed(const std::filesystem::path& file);
-    void record(const std::filesystem::path& file, const std::string& kernel_name);
+    // The kernel name of `file` if it passed the probe and has not changed since. With `opened`
+    // (fstat of a descriptor), the file judged is that open file, not what the path names now.
+    std::optional<std::string> passed(const std::filesystem::path& file, const struct stat* opened = nullptr);
+    void record(const std::filesystem::path& file, const std::string& kernel_name, const struct stat* opened = nullptr);
     // Drops the entry of `file` (its kernel turned out to be another one): the next use probes it.
     void forget(const std::filesystem::path& file);
     void save(); // writes the file if something was recorded
@@ -42,6 +44,7 @@ private:
         }
     };
     static std::optional<Entry> describe(const std::filesystem::path& file);
+    static std::optional<Entry> describe(const struct stat& status);
     std::mutex mutex_;
     std::map<std::string, Entry> entries_;
     bool changed_ = false;

@@ -147,14 +147,16 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
         {"ball", dim == 2 ? pi / 4 : pi / 6, "computed"},
         {"cube", 1.0, "computed"},
     };
+    const std::size_t computed = lattice.volume_coefficients.size();
     if (auto extra = root.find("volume_coefficients")) {
         extra->expect_object();
         for (const auto& [key, unused] : extra->value().items()) {
             auto value_node = extra->at(key);
             if (key.empty() || key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
                 value_node.error("expected a name of [a-z0-9_]");
-            for (const auto& c : lattice.volume_coefficients)
-                if (c.name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
+            // Only the computed names can clash (the parser refuses a key given twice): linear in the keys.
+            for (std::size_t i = 0; i < computed; ++i)
+                if (lattice.volume_coefficients[i].name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
             double v = value_node.number();
             if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
             lattice.volume_coefficients.push_back({key, v, file});

@@ -2,6 +2,9 @@
 
 #include "support/error.hpp"
 #include "support/interruption.hpp"
+#include "support/work_budget.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <sstream>
@@ -56,12 +59,8 @@ void for_each_lattice_point_of_site(const Eigen::Matrix3d& basis, int dimension,
         box *= 2.0 * e + 1;
     }
     box *= static_cast<double>(motif.size());
-    if (box > 50.0 * max_lattice_points) {
-        std::ostringstream s;
-        s << "radius " << r_max << " needs a search over " << box << " cells, more than the limit of "
-          << 50.0 * max_lattice_points << " (the radius is too large or the basis too skewed)";
-        fail_input(s.str());
-    }
+    // Too large a radius, or too skewed a basis.
+    check_work_budget(fmt::format("radius {}", r_max), "cells to search", box, 50.0 * max_lattice_points);
     const double r2 = r_max * r_max * (1 + 1e-12);
     const Eigen::Vector3d& origin = motif[static_cast<std::size_t>(site)];
     for (std::size_t t = 0; t < motif.size(); ++t) {

@@ -2,6 +2,9 @@
 
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
+#include "support/work_budget.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +24,8 @@ std::vector<Shell> lattice_shells(const Lattice& lattice, int site, double r_max
         fail_input(s.str());
     }
     double bound = lattice_point_bound(r_max, lattice.dimension);
-    if (bound > static_cast<double>(max_lattice_points)) {
-        s << "radius " << r_max << " may hold up to " << bound << " points in " << lattice.dimension
-          << "D, more than the limit of " << max_lattice_points;
-        fail_input(s.str());
-    }
+    check_work_budget(fmt::format("radius {}", r_max), "lattice points inside it (at most)", bound,
+                      static_cast<double>(max_lattice_points));
     std::vector<Eigen::Vector3d> points;
     points.reserve(static_cast<std::size_t>(bound));
     for_each_lattice_point(lattice.basis, lattice.dimension, lattice.motif, site, r_max,

@@ -394,8 +394,8 @@ PYBIND11_MODULE(sphkern, m)
         .def_property_readonly("name", &KernelHandle::name)
         .def_property_readonly("support", &KernelHandle::support)
         .def_property_readonly("info", &KernelHandle::info)
-        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0)
-        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0);
+        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, guard)
+        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, guard);
     m.def("kernel", [](const std::string& spec, const py::object& params) { return KernelHandle(kernel_of(spec, params)); },
-          py::arg("name"), py::arg("params") = py::none(), "A kernel by name, plugin file or blend A+B.");
+          py::arg("name"), py::arg("params") = py::none(), "A kernel by name, plugin file or blend A+B.", guard);
 }

@@ -13,8 +13,9 @@ namespace sphkern {
 
 void check_gamma(double gamma, const std::string& what)
 {
-    if (!std::isfinite(gamma) || gamma <= 0 || gamma > 1e6)
-        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a number in (0, 1e6]", what, gamma));
+    // 2 / gamma enters the pressure terms: below 1e-6 it nears overflow (1e-320 gave -nan and "stable").
+    if (!std::isfinite(gamma) || gamma < min_gamma || gamma > max_gamma)
+        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a number in [1e-06, 1e+06]", what, gamma));
 }
 
 Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension, const std::string& what)
@@ -32,8 +33,8 @@ Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int di
 Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h_model)
     : dim_(lattice.dimension), k_(k), gamma_(gamma), h_model_(h_model)
 {
-    if (!std::isfinite(gamma) || gamma <= 0)
-        fail_input(fmt::format("gamma = {} is not allowed, expected a finite number > 0", gamma));
+    if (!std::isfinite(gamma) || gamma < min_gamma || gamma > max_gamma)
+        fail_input(fmt::format("gamma = {} is not allowed, expected a number in [1e-06, 1e+06]", gamma));
     if (!std::isfinite(k) || k <= 0 || k > 100) fail_input(fmt::format("k = {} is not allowed, expected k in (0, 100]", k));
     kernel.require_dimension(dim_, lattice.name);
     require_usable_kernel(kernel, dim_, k);
@@ -123,6 +124,10 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     c_gradient_ = coefficients_.gradient;
     c_cross_ = coefficients_.cross;
     c_hessian_ = coefficients_.hessian;
+    // Never a non-finite omega^2 printed as a result: the coefficients of every matrix are finite.
+    if (!std::isfinite(c_gradient_) || !std::isfinite(c_cross_) || !std::isfinite(c_hessian_))
+        fail_input(fmt::format("gamma = {} and the SPH density {:.6g} at k = {} give pressure coefficients that are not "
+                               "finite numbers", gamma, density_, k));
 }
 
 double Dispersion::eta() const

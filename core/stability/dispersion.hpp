@@ -25,7 +25,8 @@ namespace sphkern {
 
 // Checks of the inputs the command line and the Python module take alike; Error(usage)
 // whose message starts with `what` (an option's name, or the option and its text).
-void check_gamma(double gamma, const std::string& what);                  // in (0, 1e6]
+inline constexpr double min_gamma = 1e-6, max_gamma = 1e6;
+void check_gamma(double gamma, const std::string& what);                  // in [min_gamma, max_gamma]
 Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension,
                                    const std::string& what);              // D finite components, 0 < |kappa| <= 1e6
 

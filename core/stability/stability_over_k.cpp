@@ -1,5 +1,7 @@
 #include "stability/stability_over_k.hpp"
 
+#include "stability/stability_budget.hpp"
+
 #include "stability/brillouin_zone.hpp"
 #include "support/interruption.hpp"
 
@@ -106,6 +108,7 @@ bool may_hide_a_change(const StabilitySample& a, const StabilitySample& b, const
 StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
                                 double gamma, int grid, int threads, double horizon, HModel h_model)
 {
+    check_stability_budget("the stability scan over k", steps, grid, lattice.dimension);
     const auto reciprocal = reciprocal_lattice(lattice);
     std::map<double, StabilitySample> seen; // the edges of both kinds of interval often coincide
     auto at = [&](double k) {

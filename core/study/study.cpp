@@ -10,6 +10,8 @@
 #include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
+#include "support/work_budget.hpp"
+#include "stability/stability_budget.hpp"
 
 #include <fmt/format.h>
 
@@ -199,8 +201,7 @@ namespace {
 void check_study_budget(const Study& study, const JsonNode& root)
 {
     auto refuse = [&](const std::string& what, double amount, double limit) {
-        root.error(fmt::format("the study asks for {} = {:.0f}, more than the limit of {:.0f}; make it smaller", what,
-                               amount, limit));
+        root.error("the study " + over_budget(what, amount, limit));
     };
     const double cases = double(study.kernels.size()) * double(study.lattices.size()) *
                          double(study.volume_coefficients.size()) * double(study.modes.size());
@@ -219,9 +220,8 @@ void check_study_budget(const Study& study, const JsonNode& root)
             refuse("kernels x lattices x surface forms x layers", layers, max_study_surface_layers);
     }
     if (study.stability) {
-        double points = double(study.kernels.size()) * double(study.lattices.size()) * (study.stability->steps + 1);
-        const int grid = study.stability->grid > 0 ? study.stability->grid : 32; // the 2D default, the larger
-        points *= study.stability->grid > 0 ? std::pow(grid, 3) : grid * grid;
+        const double points = double(study.kernels.size()) * double(study.lattices.size()) *
+                              stability_wave_vectors(study.stability->steps, study.stability->grid, 0);
         if (points > max_study_stability_points)
             refuse("kernels x lattices x stability k samples x wave vectors", points, max_study_stability_points);
     }

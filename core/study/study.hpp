@@ -70,7 +70,7 @@ struct StudyStability {
 inline constexpr double max_study_curve_points = 2e6;
 inline constexpr double max_study_sweep_points = 2e6;
 inline constexpr double max_study_surface_layers = 1e6;
-inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples
+inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples (as max_stability_points)
 inline constexpr double max_study_particle_evaluations = 1e8; // particles x N_H values, over all sources
 
 struct Study {

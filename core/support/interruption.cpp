@@ -1,6 +1,8 @@
 #include "support/interruption.hpp"
 
 #include "support/error.hpp"
+#include "support/plugin_faults.hpp"
+#include "support/plugin_watchdog.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -23,6 +25,11 @@ constexpr int slots = 8;
 constexpr std::size_t path_bytes = 4096;
 char staged[slots][path_bytes];
 std::atomic<bool> used[slots];
+
+// The folders a run created for its output (the innermost, and how many levels up), removed
+// after the staging paths if they are empty.
+char created[path_bytes];
+std::atomic<int> created_levels{0};
 
 struct linux_dirent64 {
     ino64_t d_ino;
@@ -61,7 +68,9 @@ void remove_contents(int dir, int depth)
     }
 }
 
-void remove_staged_paths()
+} // namespace
+
+void remove_staging_now()
 {
     for (int i = 0; i < slots; ++i) {
         if (!used[i].load()) continue;
@@ -72,7 +81,19 @@ void remove_staged_paths()
         ::close(dir);
         ::rmdir(staged[i]);
     }
+    char folder[path_bytes];
+    const int levels = created_levels.load();
+    if (levels <= 0) return;
+    std::memcpy(folder, created, path_bytes);
+    for (int i = 0; i < levels; ++i) {
+        if (::rmdir(folder) != 0) return; // not empty (not only ours), or gone
+        char* slash = std::strrchr(folder, '/');
+        if (!slash || slash == folder) return;
+        *slash = '\0';
+    }
 }
+
+namespace {
 
 // The command line owns its process: a second signal ends it. A library host keeps its process.
 std::atomic<bool> owns_process{false};
@@ -80,7 +101,7 @@ std::atomic<bool> owns_process{false};
 extern "C" void on_signal(int sig)
 {
     if (received.exchange(sig) != 0 && owns_process.load()) { // a second signal: clean up and stop at once
-        remove_staged_paths();
+        remove_staging_now();
         struct sigaction plain {};
         plain.sa_handler = SIG_DFL;
         ::sigaction(sig, &plain, nullptr);
@@ -90,8 +111,9 @@ extern "C" void on_signal(int sig)
 
 constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
 
-void take_signals(struct sigaction* saved)
+void take_signals(struct sigaction* saved, struct sigaction* saved_faults)
 {
+    take_fault_signals(saved_faults);
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
@@ -103,19 +125,21 @@ void take_signals(struct sigaction* saved)
 std::mutex scope_mutex;
 int scopes = 0;
 struct sigaction host_handlers[3];
+struct sigaction host_faults[fault_signal_count];
 
 } // namespace
 
 void install_interrupt_handlers()
 {
     owns_process = true;
-    take_signals(nullptr);
+    take_signals(nullptr, nullptr);
+    start_plugin_watchdog();
 }
 
 void restore_interrupt_handlers()
 {
     std::lock_guard lock(scope_mutex);
-    if (owns_process.load() || scopes > 0) take_signals(nullptr);
+    if (owns_process.load() || scopes > 0) take_signals(nullptr, nullptr);
 }
 
 InterruptScope::InterruptScope() : exceptions_(std::uncaught_exceptions())
@@ -123,7 +147,8 @@ InterruptScope::InterruptScope() : exceptions_(std::uncaught_exceptions())
     std::lock_guard lock(scope_mutex);
     if (scopes++ > 0 || owns_process.load()) return;
     received = 0;
-    take_signals(host_handlers);
+    take_signals(host_handlers, host_faults);
+    start_plugin_watchdog();
 }
 
 InterruptScope::~InterruptScope()
@@ -131,6 +156,7 @@ InterruptScope::~InterruptScope()
     std::lock_guard lock(scope_mutex);
     if (--scopes > 0 || owns_process.load()) return;
     for (int i = 0; i < 3; ++i) ::sigaction(handled[i], &host_handlers[i], nullptr);
+    give_back_fault_signals(host_faults);
     const int sig = received.exchange(0);
     // SIGINT that ended the call is already the call's error; any other arrival goes to the host.
     const bool reported = sig == SIGINT && std::uncaught_exceptions() > exceptions_;
@@ -138,6 +164,8 @@ InterruptScope::~InterruptScope()
 }
 
 bool interrupted() { return received.load() != 0; }
+
+int interrupting_signal() { return received.load(); }
 
 void throw_if_interrupted()
 {
@@ -165,5 +193,15 @@ void unregister_staging_path(const std::filesystem::path& path)
     for (int i = 0; i < slots; ++i)
         if (used[i].load() && text == staged[i]) used[i].store(false);
 }
+
+void register_created_folders(const std::filesystem::path& innermost, int levels)
+{
+    const std::string text = std::filesystem::absolute(innermost).string();
+    if (text.size() >= path_bytes || created_levels.load() != 0) return;
+    std::memcpy(created, text.c_str(), text.size() + 1);
+    created_levels.store(levels);
+}
+
+void unregister_created_folders() { created_levels.store(0); }
 
 } // namespace sphkern

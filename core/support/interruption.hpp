@@ -36,10 +36,19 @@ private:
 // Throws Error(interrupted) once one of the signals has arrived.
 void throw_if_interrupted();
 bool interrupted();
+int interrupting_signal(); // the signal that arrived, or 0
 
 // A path (file or folder) that a second signal must remove before the process dies.
 // At most a few are registered at a time; each is removed again with unregister.
 void register_staging_path(const std::filesystem::path& path);
 void unregister_staging_path(const std::filesystem::path& path);
+
+// Folders made for an output (`innermost` and `levels` - 1 of its parents): removed after the
+// staging paths, each only if empty. One such chain at a time.
+void register_created_folders(const std::filesystem::path& innermost, int levels);
+void unregister_created_folders();
+
+// Removes the registered staging paths (and created folders) now; async-signal-safe (for handlers that end the process).
+void remove_staging_now();
 
 } // namespace sphkern

@@ -79,22 +79,12 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
             throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
                                               marker_name + " inside); refusing to replace it");
     }
-    // Make the missing parents one by one, remembering them so that a failed run removes them.
-    std::vector<fs::path> missing;
-    for (fs::path p = target_.parent_path(); !p.empty() && !lexists(p); p = p.parent_path()) {
-        missing.insert(missing.begin(), p);
-        if (p == p.parent_path()) break;
-    }
-    for (const auto& p : missing) {
-        if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST)
-            throw Error(ExitCode::output, p.string() + ": cannot create the folder: " + std::strerror(errno));
-        created_parents_.push_back(p);
-    }
+    make_parents();
     remove_stale_staging(target_);
     std::string pattern = (target_.parent_path() / (staging_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
     if (!::mkdtemp(pattern.data())) {
         int error = errno;
-        for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str());
+        remove_created_parents();
         throw Error(ExitCode::output, target_.parent_path().string() + ": cannot create a folder there: " + std::strerror(error));
     }
     staging_ = pattern;
@@ -103,16 +93,55 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
     // mkdtemp makes it private; results are ordinary files (the umask still applies to them).
     fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                   fs::perms::others_read | fs::perms::others_exec, ec);
-    write(marker_name, "This folder was written by sphkern; `sphkern run --force` may replace it.\n");
+    try {
+        write(marker_name, "This folder was written by sphkern; `sphkern run --force` may replace it.\n");
+    } catch (...) { // the destructor does not run for a constructor that throws
+        unregister_staging_path(staging_);
+        fs::remove_all(staging_, ec);
+        remove_created_parents();
+        throw;
+    }
+}
+
+// Makes the missing parents one by one, remembering them so that a failed run removes them
+// (a path too long for the system fails part of the way: what was made is removed then).
+void OutputFolder::make_parents()
+{
+    std::vector<fs::path> missing;
+    for (fs::path p = target_.parent_path(); !p.empty() && !lexists(p); p = p.parent_path()) {
+        missing.insert(missing.begin(), p);
+        if (p == p.parent_path()) break;
+    }
+    for (const auto& p : missing) {
+        if (::mkdir(p.c_str(), 0777) != 0) {
+            if (errno == EEXIST) continue; // made by someone else meanwhile: not ours to remove
+            const int error = errno;
+            remove_created_parents();
+            throw Error(ExitCode::output, p.string() + ": cannot create the folder: " + std::strerror(error));
+        }
+        created_parents_.push_back(p);
+    }
+    // A run that dies at a signal or a plugin's crash removes them too, from the handler.
+    if (!created_parents_.empty()) register_created_folders(created_parents_.back(), static_cast<int>(created_parents_.size()));
+}
+
+void OutputFolder::remove_created_parents()
+{
+    if (!created_parents_.empty()) unregister_created_folders();
+    for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str()); // only if empty
+    created_parents_.clear();
 }
 
 OutputFolder::~OutputFolder()
 {
     unregister_staging_path(staging_);
-    if (committed_) return;
+    if (committed_) {
+        if (!created_parents_.empty()) unregister_created_folders();
+        return;
+    }
     std::error_code ec;
     fs::remove_all(staging_, ec);
-    for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str()); // only if empty
+    remove_created_parents();
 }
 
 void OutputFolder::write(const std::string& name, const std::string& content)

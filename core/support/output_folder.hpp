@@ -32,6 +32,8 @@ public:
     void commit(); // moves the staged folder into place
 
 private:
+    void make_parents();
+    void remove_created_parents();
     std::filesystem::path target_;
     std::filesystem::path staging_;
     std::vector<std::filesystem::path> created_parents_; // outermost first

@@ -494,12 +494,12 @@ check "plugin output on stderr" grep -q 'hello from a plugin' "$work/noisy.err"
 expect 2 'wavevector 0,0,0: expected a non-zero wave vector' -- stability cubic_bspline fcc --k 1.2 --wavevector 0,0,0
 expect 2 'wavevector 1,nan,0: "nan" is not a finite number' -- stability cubic_bspline fcc --k 1.2 --wavevector 1,nan,0
 expect 2 'wavevector 1,2: 2 components, expected 3' -- stability cubic_bspline fcc --k 1.2 --wavevector 1,2
-expect 2 'gamma 0 is not allowed, expected a number in \(0, 1e6\]' -- stability cubic_bspline fcc --k 1.2 --gamma 0
+expect 2 'gamma 0 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- stability cubic_bspline fcc --k 1.2 --gamma 0
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$examples/lieb.json" --k 1.2
 expect 2 '--path: Value 1 not in range 2 to 100000' -- stability cubic_bspline fcc --k 1.2 --path 1
-expect 2 '--gamma -1 is not allowed, expected a number in \(0, 1e6\]' -- roots cubic_bspline fcc --stability --gamma -1
+expect 2 '--gamma -1 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- roots cubic_bspline fcc --stability --gamma -1
 check "roots --stability: the stable intervals of stability --kmin/--kmax, and their overlap with (22)" python3 -c "
 import json, subprocess
 run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_output=True, check=True, text=True).stdout)
@@ -657,6 +657,65 @@ if [[ $(id -u) -eq 0 ]] && command -v setpriv >/dev/null; then
         bash -c "ulimit -u 1; exec '$sphkern' check cubic_bspline" 2>&1 >/dev/null; echo "exit $?")
     check "ulimit -u 1: $out" grep -qzE 'cannot start.*exit 3' <<<"$out"
 fi
+
+# Plugins that pass their probe and fail later, at a q, k or batch size the probe did not try:
+# exit 4 and one line naming the file, the kernel and the function; nothing left behind.
+expect 4 'crash_in_band.so: plugin kernel crash_in_band crashed with signal 11 \(SIGSEGV\) in W; nothing was written' -- \
+    spectrum "$broken/crash_in_band.so" --dim 3
+expect 4 'abort_above_k.so: plugin kernel abort_above_k crashed with signal 6 \(SIGABRT\) in .*W; nothing was written' -- \
+    eps "$broken/abort_above_k.so" fcc --k 1.4
+expect 4 'exit_in_w.so: plugin kernel exit_in_w called exit\(\) or pthread_exit\(\) in .*W; nothing was written' -- eps "$broken/exit_in_w.so" fcc --k 1.4
+expect 4 'loops_above_k.so: plugin kernel loops_above_k did not return within 2 s \(endless loop' -- \
+    eps "$broken/loops_above_k.so" fcc --k 1.4
+expect 4 'overflows_stack.so: plugin kernel overflows_stack crashed with signal 11 \(SIGSEGV\) in W' -- \
+    eps "$broken/overflows_stack.so" fcc --k 1.4
+for plugin in exit_in_w abort_above_k loops_above_k; do
+    study "s_$plugin" '{"name": "s", "kernels": ["'"$broken/$plugin"'.so"], "lattices": ["fcc"], "k": {"min": 0.75, "max": 1.5, "samples": 301}, "plots": false}'
+    expect 4 "$plugin.so: plugin kernel $plugin " -- run "$work/s_$plugin.json" -o "$work/made_$plugin/a/b/out"
+    check "$plugin in a study: no staging folder, no folder the run made" test ! -e "$work/made_$plugin"
+done
+# A signal while a plugin call loops and ignores it: exit 130 within a second (the time is printed).
+for sig in INT TERM HUP; do
+    SPHKERN_PLUGIN_TIMEOUT=60 signal_when 'loops_above_k has been in W for 1 s' $sig -- run "$work/s_loops_above_k.json" -o "$work/out_loop"
+    check "SIG$sig inside a looping plugin call: exit $status in $elapsed ms, $err, left: $(leftovers out_loop)" \
+        test $status -eq 130 -a -z "$(leftovers out_loop)"
+done
+check "the interrupt names the plugin call" grep -q 'hung up (SIGHUP) while .*loops_above_k.so: plugin kernel loops_above_k was in' <<<"$err"
+# A plugin file replaced between its probe and its load: the replacement never runs unprobed
+# (its W would crash at the descriptor's probe points); the next run probes it.
+mkdir -p "$work/swap"
+cp "$broken/replaces_itself.so" "$work/swap/plugin.so"
+cp "$broken/crash_in_w.so" "$work/swap/other.so"
+out=$(XDG_CACHE_HOME="$work/swap" SPHKERN_TEST_REPLACE_FROM="$work/swap/other.so" SPHKERN_TEST_REPLACE_TO="$work/swap/plugin.so" \
+    "$sphkern" eps replaces_itself fcc --k 1.2 --plugin "$work/swap/plugin.so" 2>&1; echo "exit $?")
+check "replaced between probe and load: refused, the replacement not run: $out" \
+    test "$out" = "sphkern: error: $work/swap/plugin.so: the plugin changed while it was loaded; run again
+exit 4"
+check "the file was replaced during the probe" cmp -s "$work/swap/plugin.so" "$broken/crash_in_w.so"
+XDG_CACHE_HOME="$work/swap" expect 4 'swap/plugin.so: plugin crashed with signal 11' -- eps crash_in_w fcc --k 1.2 --plugin "$work/swap/plugin.so"
+
+# Budgets on the command line are the study's: one rule, exit 3.
+expect 3 'the stability scan over k asks for k samples x wave vectors = 128064000000, more than the limit of 100000000' -- \
+    stability cubic_bspline fcc --kmin 0.8 --kmax 1.6 --steps 2000 --grid 400
+expect 3 'the stability scan over k asks for k samples x wave vectors = 320160000, more than the limit of 100000000' -- \
+    stability cubic_bspline triangular --kmin 0.8 --kmax 1.6 --steps 2000 --grid 400
+# A tiny gamma overflowed 2/gamma: refused, and never a non-finite omega^2.
+expect 2 '--gamma 1e-320 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- stability cubic_bspline fcc --gamma 1e-320 --k 1.2
+expect 2 '--gamma 1e-07 is not allowed' -- stability cubic_bspline fcc --gamma 1e-7 --kmin 1 --kmax 1.2
+expect 2 '--gamma 1100000 is not allowed' -- roots cubic_bspline fcc --stability --gamma 1.1e6
+"$sphkern" stability cubic_bspline fcc --gamma 1e-6 --k 1.2 >"$work/small_gamma.txt" 2>&1
+check "gamma 1e-6: finite numbers only" bash -c "! grep -qiE 'nan|inf' '$work/small_gamma.txt'"
+# A lattice with 10^5 volume coefficients is read in linear time (the test only reads it).
+python3 -c "
+import json; d = {'name': 't', 'dimension': 2, 'basis': [[1, 0], [0, 1]], 'motif': [[0, 0]],
+                  'volume_coefficients': {'c%d' % i: 1.0 for i in range(100000)}}
+json.dump(d, open('$work/many_ap.json', 'w'))"
+expect 0 '^$' -- eps cubic_bspline "$work/many_ap.json" --k 1.2 --ap c99999
+# A long output path: the folders made on the way down are removed when the run fails.
+mkdir -p "$work/longpath"
+deep="$work/longpath$(python3 -c "print('/d' * 2100)")"
+expect 5 'cannot create' -- run "$work/s_ok.json" -o "$deep/out"
+check "a path too long left no folder" test -z "$(ls -A "$work/longpath")"
 
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2

@@ -4,12 +4,15 @@
 #include "support/json_input.hpp"
 #include "support/output_folder.hpp"
 #include "support/parallel_for.hpp"
+#include "support/plugin_call_guard.hpp"
+#include "support/work_budget.hpp"
 
 #include <doctest/doctest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 #include <unistd.h>
 
 using namespace sphkern;
@@ -106,4 +109,43 @@ TEST_CASE("an output folder is committed without replacing anything, and --force
     CHECK(!fs::exists(base / "new1"));
     CHECK(fs::exists(base));
     fs::remove_all(base);
+}
+
+TEST_CASE("a results path too long for the system fails part of the way and leaves no folder it made")
+{
+    fs::path base = fresh_folder("long");
+    fs::path deep = base;
+    while (deep.string().size() < 4200) deep /= "d"; // PATH_MAX is 4096: mkdir fails past it
+    const std::string error = error_of([&] { OutputFolder out(deep / "results", false); });
+    CHECK(error.find("cannot create") != std::string::npos);
+    CHECK(fs::is_empty(base)); // the 2000-odd folders made on the way down are gone
+    fs::remove_all(base);
+}
+
+TEST_CASE("a plugin call guard marks its thread only, and nests")
+{
+    const PluginCall w("/p/x.so", "x", "W"), dw("/p/x.so", "x", "dW");
+    CHECK(current_plugin_call() == nullptr);
+    {
+        PluginCallGuard outer(w);
+        CHECK(current_plugin_call() == &w);
+        CHECK(std::string(w.plugin()) == "/p/x.so: plugin kernel x");
+        {
+            PluginCallGuard inner(dw);
+            CHECK(current_plugin_call() == &dw);
+        }
+        CHECK(current_plugin_call() == &w);
+        const PluginCall* seen = &w;
+        std::thread([&] { seen = current_plugin_call(); }).join();
+        CHECK(seen == nullptr);
+    }
+    CHECK(current_plugin_call() == nullptr);
+}
+
+TEST_CASE("a budget message writes whole numbers, never 2e+06 against 2e+06")
+{
+    CHECK(over_budget("n", 2e6, 2e6).empty());
+    CHECK(over_budget("n", 2000000.5, 2e6) == "asks for n = 2000001, more than the limit of 2000000; make it smaller");
+    CHECK(over_budget("k samples x wave vectors", 2001.0 * 400 * 400 * 400, 1e8) ==
+          "asks for k samples x wave vectors = 128064000000, more than the limit of 100000000; make it smaller");
 }
