@@ -3,6 +3,7 @@
 #include "kernels/kernel_validity.hpp"
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
+#include "support/interruption.hpp"
 
 #include <fmt/format.h>
 
@@ -57,8 +58,11 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
         auto& list = neighbours_[static_cast<std::size_t>(s)];
         double density = mass_ * kernel.w(0, dim_, k) / hd;
         Eigen::Vector3d first = Eigen::Vector3d::Zero(), first_h = Eigen::Vector3d::Zero();
+        std::size_t visited = 0;
         for_each_lattice_point_of_site(lattice.basis, dim_, lattice.motif, s, R * h * (1 + support_edge),
                                        [&](const Eigen::Vector3d& x, int t) {
+            // A large k has millions of neighbours: a signal is answered while they are listed.
+            if ((++visited & 0xFFFF) == 0) throw_if_interrupted();
             const double r = x.norm(), q = r / h;
             if (!kernel.inside(q)) return;
             const double w = kernel.w(q, dim_, k) / hd;
@@ -107,7 +111,9 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     }
     for (int a = 0; a < 3; ++a) cell_span_[a] = cell_max[a] - cell_min_[a] + 1;
     for (auto& q : hessian_moments_) q.setZero();
+    std::size_t moments = 0;
     for (const auto& nb : neighbours_[0]) {
+        if ((++moments & 0xFFFF) == 0) throw_if_interrupted();
         gradient_moment_ += nb.gradient * nb.x.transpose();
         h_gradient_moment_ += nb.h_gradient * nb.x.transpose();
         for (int a = 0; a < 3; ++a)
@@ -161,6 +167,7 @@ std::complex<double> Dispersion::phase_of(const Neighbour& nb, const std::vector
 
 Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
 {
+    throw_if_interrupted(); // one matrix sums every neighbour: at a large k that takes seconds
     const int n = sites(), D = dim_;
     // Per site pair, in fixed-size sums: A_st (a vector) and the block of B0 - B, summed as
     // H (1 - e) within a site so that long waves lose no digits to cancellation.
@@ -172,8 +179,10 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
     const auto table = fast ? cell_phases(kappa) : std::vector<std::complex<double>>{};
     std::vector<std::complex<double>> offset_phase;
     for (const auto& o : offsets_) offset_phase.push_back(std::polar(1.0, kappa.dot(o)));
+    std::size_t summed = 0;
     for (int s = 0; s < n; ++s)
         for (const auto& nb : neighbours_[static_cast<std::size_t>(s)]) {
+            if ((++summed & 0xFFFF) == 0) throw_if_interrupted();
             const auto pair = static_cast<std::size_t>(s * n + nb.site);
             std::complex<double> e; // exp(-i kappa.r_ij) = exp(i kappa.x), r_ij = -x
             double one_minus_cos;
