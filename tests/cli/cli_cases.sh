@@ -800,5 +800,19 @@ expect 3 '--samples 0: expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1
 expect 3 '--duration -1: expected a number' -- pairing cubic_bspline fcc --k 1.2 --duration -1
 expect 3 'expected 0 < kmin <= kmax <= 100' -- pairing cubic_bspline fcc --kmin 2 --kmax 1
 
+# A study source relaxed first: every field of "relax" refused with its JSON path.
+relax_study() { study "$1" '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500, "relax": '"$2"'}], "nh": {"min": 30, "max": 60, "steps": 1}}}'; }
+relax_study s_rk '{"kernel": "quintic"}'
+expect 3 's_rk.json: /particles/sources/0/relax: kernel: "quintic" is not one of the study.s kernels' -- run "$work/s_rk.json" -o "$work/out_rk"
+relax_study s_rm '{"kernel": "wendland_c2", "method": "jiggle"}'
+expect 3 's_rm.json: /particles/sources/0/relax/method: expected "pressure" or "shift"' -- run "$work/s_rm.json" -o "$work/out_rm"
+relax_study s_rh '{"kernel": "wendland_c2", "nh": 100, "eta": 1.2}'
+expect 3 's_rh.json: /particles/sources/0/relax: expected one of "nh" and "eta"' -- run "$work/s_rh.json" -o "$work/out_rh"
+relax_study s_rs '{"kernel": "wendland_c2", "steps": 0}'
+expect 3 's_rs.json: /particles/sources/0/relax/steps: value 0 is out of range' -- run "$work/s_rs.json" -o "$work/out_rs"
+relax_study s_ru '{"kernel": "wendland_c2", "colour": 1}'
+expect 3 's_ru.json: /particles/sources/0/relax: unknown key "colour"' -- run "$work/s_ru.json" -o "$work/out_ru"
+check "a refused relax section leaves no output folder" test -z "$(leftovers out_rk)"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
