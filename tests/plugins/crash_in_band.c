@@ -1,42 +1,4 @@
 /* A deliberately broken kernel plugin that passes its probe: a segmentation fault in W for q in (0.51, 0.54), between the probe's points */
-#define _GNU_SOURCE /* M_1_PI */
-#include <math.h>
-#include <signal.h>
-#include <stdlib.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    if (q > 0.51 && q < 0.54) { volatile int* nowhere = (int*)0; return *nowhere; }
-    return M_1_PI * (q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q) - (q < 1 ? (1 - q) * (1 - q) * (1 - q) : 0.0) : 0.0);
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return M_1_PI * (q < 2 ? -0.75 * (2 - q) * (2 - q) + (q < 1 ? 3 * (1 - q) * (1 - q) : 0.0) : 0.0);
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const double breakpoints[] = {1.0};
-
-static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
-    .name = "crash_in_band",
-    .title = "broken: the 3D cubic B-spline",
-    .reference = "",
-    .support = 2.0,
-    .dimensions = SPHKERN_DIM(3),
-    .breakpoint_count = 1,
-    .breakpoints = breakpoints,
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#define BROKEN_NAME "crash_in_band"
+#define BROKEN_FAULT(q, k) if ((q) > 0.51 && (q) < 0.54) { volatile int* nowhere = (int*)0; return *nowhere; }
+#include "broken_cubic.h"

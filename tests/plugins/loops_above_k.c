@@ -1,47 +1,11 @@
 /* A deliberately broken kernel plugin that passes its probe: an endless loop in W for k > 1.3 that ignores SIGINT and SIGTERM */
-#define _GNU_SOURCE /* M_1_PI */
-#include <math.h>
 #include <signal.h>
-#include <stdlib.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    if (k > 1.3) {
-        signal(SIGINT, SIG_IGN);
-        signal(SIGTERM, SIG_IGN);
-        for (volatile int forever = 1; forever;) {
-        }
+#define BROKEN_NAME "loops_above_k"
+#define BROKEN_FAULT(q, k)                                                                                              \
+    if ((k) > 1.3) {                                                                                                    \
+        signal(SIGINT, SIG_IGN);                                                                                        \
+        signal(SIGTERM, SIG_IGN);                                                                                       \
+        for (volatile int forever = 1; forever;) {                                                                      \
+        }                                                                                                               \
     }
-    return M_1_PI * (q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q) - (q < 1 ? (1 - q) * (1 - q) * (1 - q) : 0.0) : 0.0);
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return M_1_PI * (q < 2 ? -0.75 * (2 - q) * (2 - q) + (q < 1 ? 3 * (1 - q) * (1 - q) : 0.0) : 0.0);
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const double breakpoints[] = {1.0};
-
-static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
-    .name = "loops_above_k",
-    .title = "broken: the 3D cubic B-spline",
-    .reference = "",
-    .support = 2.0,
-    .dimensions = SPHKERN_DIM(3),
-    .breakpoint_count = 1,
-    .breakpoints = breakpoints,
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#include "broken_cubic.h"
