@@ -66,16 +66,14 @@ double relax_h(const RelaxOptions& o, const ParticleSet& set, const Kernel& kern
     if (o.nh) spec = {SmoothingRule::nh, *o.nh, 0};
     if (o.k) spec = {SmoothingRule::k, *o.k, 0};
     if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with --box", set.name));
-    const double mean_volume = set.box->volume(set.dimension) / static_cast<double>(set.size());
-    return smoothing_lengths(set, kernel, spec, mean_volume).front();
+    return smoothing_lengths(set, kernel, spec, mean_volume(set)).front();
 }
 
 RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
 {
     const ParticleSet& set = run.state.set;
     RelaxedSet judged;
-    const double l = std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
-    judged.eta = run.h / l;
+    judged.eta = run.h / mean_spacing(set);
     judged.nh = neighbour_number(judged.eta, kernel.support(), set.dimension);
     ParticleRequest request;
     request.smoothing = {SmoothingRule::eta, judged.eta, 0};

@@ -40,6 +40,10 @@ void check_positive(const std::vector<double>& values, const ParticleSet& set, c
 
 } // namespace
 
+double mean_volume(const ParticleSet& set) { return set.box->volume(set.dimension) / static_cast<double>(set.size()); }
+
+double mean_spacing(const ParticleSet& set) { return std::pow(mean_volume(set), 1.0 / set.dimension); }
+
 void wrap_into_box(ParticleSet& set)
 {
     Eigen::Matrix3d cell = set.box->edges;

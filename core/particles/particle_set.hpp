@@ -41,6 +41,11 @@ struct ParticleSet {
 // naming the set, the field and the particle id.
 void validate_particle_set(ParticleSet& set);
 
+// The box shared out equally, V = box / N, and its D-th root l = V^(1/D), the mean spacing
+// (a set with a box).
+double mean_volume(const ParticleSet& set);
+double mean_spacing(const ParticleSet& set);
+
 // Moves every particle of a set with a box into it (by whole edges). Throws Error(input) for
 // a particle more than one box outside: that is a wrong box, not rounding.
 void wrap_into_box(ParticleSet& set);

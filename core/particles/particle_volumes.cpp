@@ -36,7 +36,7 @@ std::vector<double> particle_volumes(const ParticleSet& set, VolumeModel model)
         if (!set.box)
             fail_input(fmt::format("{}: uniform volumes need a box (--box); a free set can use --volume file (m / rho)",
                                    set.name));
-        return std::vector<double>(set.size(), set.box->volume(set.dimension) / static_cast<double>(set.size()));
+        return std::vector<double>(set.size(), mean_volume(set));
     case VolumeModel::file: {
         if (set.mass.empty() || set.density.empty())
             fail_input(fmt::format("{}: --volume file needs masses and densities in the file; expected {}", set.name,

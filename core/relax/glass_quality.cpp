@@ -14,11 +14,6 @@ namespace sphkern {
 
 namespace {
 
-double mean_spacing(const ParticleSet& set)
-{
-    return std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
-}
-
 // Calls visit(thread, i, neighbours within `reach`) for every particle, in parallel.
 template <class Visit>
 void visit_neighbours(const ParticleSet& set, double reach, int threads, int thread_slots, const Visit& visit)
@@ -43,6 +38,13 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
 
 int thread_count(int threads) { return std::clamp(threads, 1, 64); }
 
+// The share of nearest-neighbour distances (in units of l) below 0.5.
+double paired_share(const std::vector<double>& nearest)
+{
+    return static_cast<double>(std::count_if(nearest.begin(), nearest.end(), [](double r) { return r < 0.5; })) /
+           static_cast<double>(nearest.size());
+}
+
 } // namespace
 
 std::vector<double> nearest_distances(const ParticleSet& set, int threads)
@@ -62,6 +64,14 @@ std::vector<double> nearest_distances(const ParticleSet& set, int threads)
     if (std::any_of(nearest.begin(), nearest.end(), [](double r) { return std::isinf(r); }))
         fail_input(fmt::format("{}: a particle has no neighbour within half the box", set.name));
     return nearest;
+}
+
+double paired_fraction(const ParticleSet& set, int threads)
+{
+    std::vector<double> nearest = nearest_distances(set, threads);
+    const double l = mean_spacing(set);
+    for (double& r : nearest) r /= l;
+    return paired_share(nearest);
 }
 
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads)
@@ -98,7 +108,7 @@ GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bin
     }
     std::vector<double> nearest = nearest_distances(set, threads);
     for (double& r : nearest) r /= l;
-    q.paired = static_cast<double>(std::count_if(nearest.begin(), nearest.end(), [](double r) { return r < 0.5; })) / n;
+    q.paired = paired_share(nearest);
     q.nearest_histogram = histogram(nearest, 30);
     q.nearest = summarise(std::move(nearest));
     return q;

@@ -27,6 +27,9 @@ struct GlassQuality {
 // Throws Error(input) for a particle with no neighbour within half the box's width.
 std::vector<double> nearest_distances(const ParticleSet& set, int threads);
 
+// The fraction of particles whose nearest neighbour is closer than 0.5 l.
+double paired_fraction(const ParticleSet& set, int threads);
+
 // g(r) up to `r_max` (units of l; at most half the box's smallest width) in `bins` bins.
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads);
 

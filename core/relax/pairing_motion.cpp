@@ -105,14 +105,6 @@ double displacement_rms(const ParticleSet& set, const ParticleSet& sites)
     return std::sqrt(sum / static_cast<double>(set.size()));
 }
 
-double paired_fraction(const ParticleSet& set, int threads)
-{
-    const double l = std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
-    const auto nearest = nearest_distances(set, threads);
-    return static_cast<double>(std::count_if(nearest.begin(), nearest.end(), [&](double r) { return r < 0.5 * l; })) /
-           static_cast<double>(set.size());
-}
-
 // The slope of ln(rms) against time over the samples where it grew from 3x its start to 0.05 d.
 double fitted_rate(const std::vector<std::pair<double, double>>& series, double start)
 {

@@ -17,7 +17,7 @@ namespace sphkern {
 double length_unit(const ParticleSet& set)
 {
     if (set.spacing > 0) return set.spacing;
-    return std::pow(set.box->volume(set.dimension) / static_cast<double>(set.size()), 1.0 / set.dimension);
+    return mean_spacing(set);
 }
 
 namespace {

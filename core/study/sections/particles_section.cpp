@@ -40,8 +40,7 @@ ParticleSet relaxed(const Study& study, const StudyInputs& inputs, const StudyPa
         if (kernel == inputs.kernels.end())
             fail_input(fmt::format("kernel: \"{}\" is not one of the study's kernels", r.kernel));
         if (!set.box) fail_input("relaxation needs a periodic box");
-        const double mean_volume = set.box->volume(set.dimension) / static_cast<double>(set.size());
-        const double h = smoothing_lengths(set, *kernel, r.smoothing, mean_volume).front();
+        const double h = smoothing_lengths(set, *kernel, r.smoothing, mean_volume(set)).front();
         spdlog::info("particles: relaxing {} with {}", s.label, kernel->label());
         return relax_particles(*kernel, std::move(set), h, r.settings).state.set;
     } catch (const Error& e) {
