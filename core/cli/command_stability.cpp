@@ -1,6 +1,7 @@
 // `sphkern stability`: the linear stability of SPH on a lattice at one k: the modes at a
 // wave vector, or the Brillouin-zone scan with the long-wave sound speeds.
 #include "cli/command.hpp"
+#include "requests/stability_request.hpp"
 #include "support/results_output.hpp"
 
 #include "stability/brillouin_zone.hpp"
@@ -21,16 +22,14 @@ namespace sphkern::cli {
 
 namespace {
 
-// "x,y[,z]" in 1/d: D finite numbers, not all zero.
-Eigen::Vector3d parse_wavevector(const std::string& text, int dimension)
+// "x,y[,z]" in 1/d: finite numbers (their count and length are checked with the lattice).
+std::vector<double> parse_wavevector(const std::string& text)
 {
-    std::vector<double> values;
     try {
-        values = parse_number_list(text, ValueSource::option("--wavevector"), 0);
+        return parse_number_list(text, ValueSource::option("--wavevector"), 0);
     } catch (const Error& e) {
-        throw Error(e.code(), fmt::format("{}; expected {} comma-separated numbers in 1/d", e.what(), dimension));
+        throw Error(e.code(), std::string(e.what()) + "; expected comma-separated numbers in 1/d");
     }
-    return checked_wavevector(values, dimension, "--wavevector " + one_line(text));
 }
 
 std::string vector_text(const nlohmann::json& v)
@@ -61,9 +60,15 @@ std::string h_model_text(const nlohmann::json& d)
                        d["grad_h_factor"].get<double>());
 }
 
-template <class Options>
+struct StabilityOptions : CommonOptions {
+    std::string kernel, lattice, wavevector, h_model = "fixed";
+    double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
+    int grid = 0, threads = 0, steps = 50, path = 0;
+    std::vector<std::string> sets;
+};
+
 void print_over_k(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
-                  const Options& options)
+                  const StabilityOptions& options)
 {
     auto intervals = [&](const nlohmann::json& list) {
         std::string s;
@@ -92,141 +97,162 @@ void print_over_k(const nlohmann::json& document, const std::string& kernel, con
                        p["min_omega2"].get<double>(), p["verdict"].get<std::string>());
 }
 
+void print_path(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
+                const StabilityOptions& options)
+{
+    const auto& path = document["path"];
+    std::string labels;
+    for (const auto& p : path["points"])
+        labels += fmt::format("{}{} ({:.4f})", labels.empty() ? "" : " - ", p["label"].get<std::string>(),
+                              p["at"].get<double>());
+    fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h: omega^2 in (c/d)^2 along {}\n", kernel,
+               lattice, options.k, options.gamma, options.h_model, labels);
+    for (std::size_t i = 0; i < path["position"].size(); ++i) {
+        fmt::print(results_file(), "  {:>10.6f}", path["position"][i].get<double>());
+        for (const auto& w : path["omega2"][i]) fmt::print(results_file(), " {:>14.8g}", w.get<double>());
+        fmt::print(results_file(), "\n");
+    }
+}
+
+void print_modes(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
+                 const StabilityOptions& options)
+{
+    fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h, kappa = {} / d\n", kernel, lattice,
+               options.k, options.gamma, options.h_model, vector_text(document["wavevector"]));
+    fmt::print(results_file(), "  {:>6} {:>16} {:>13}\n", "branch", "omega^2 (c/d)^2", "longitudinal");
+    int b = 0;
+    for (const auto& m : document["modes"])
+        fmt::print(results_file(), "  {:>6} {:>16.10g} {:>13.4f}\n", b++, m["omega2"].get<double>(),
+                   m["longitudinal"].get<double>());
+}
+
+void print_long_waves(const nlohmann::json& document)
+{
+    fmt::print(results_file(), "  long waves: lowest omega^2 / kappa^2 over every direction {:.6g} c^2 along {}\n",
+               document["long_wave"]["min_omega2_over_kappa2"].get<double>(),
+               vector_text(document["long_wave"]["direction"]));
+    fmt::print(results_file(), "  long waves: speed / c - 1 of the longitudinal mode\n");
+    for (const auto& s : document["sound_speed"]) {
+        std::string relation;
+        if (s.contains("pressure_term"))
+            relation = fmt::format("  (eps_rho {:+.3e}, eps_gradP {:+.3e}, pressure term {:+.3e}, stiffness term {:+.3e})",
+                                   s["eps_rho"].get<double>(), s["eps_gradp"].get<double>(),
+                                   s["pressure_term"].get<double>(), s["stiffness_term"].get<double>());
+        fmt::print(results_file(), "  {:<6} {:+.6e}{}\n", s["direction"].get<std::string>(),
+                   s["longitudinal_error"].get<double>(), relation);
+    }
+}
+
+void print_zone_scan(const nlohmann::json& document, const std::string& kernel, const Lattice& lattice,
+                     const StabilityOptions& options)
+{
+    fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}, {} h: {}\n", kernel,
+               lattice.name, document["bravais"].get<std::string>(), options.k, options.gamma,
+               h_model_text(document), verdict_text(document));
+    const auto& zone = document["zone_scan"];
+    fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
+                               "branch {}):\n", zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),
+               zone["converged"].get<bool>() ? "settled within the tolerance" : "NOT settled");
+    for (const auto& m : document["branches"])
+        fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",
+                   m["branch"].get<int>(), m["min_omega2"].get<double>(), vector_text(m["at"]),
+                   m["longitudinal"].get<double>());
+    print_long_waves(document);
+}
+
+// The text form of the document, for the request's mode.
+void print_stability(const nlohmann::json& document, StabilityMode mode, const std::string& kernel,
+                     const Lattice& lattice, const StabilityOptions& options)
+{
+    switch (mode) {
+    case StabilityMode::path: return print_path(document, kernel, lattice.name, options);
+    case StabilityMode::wavevector: return print_modes(document, kernel, lattice.name, options);
+    case StabilityMode::over_k: return print_over_k(document, kernel, lattice.name, options);
+    case StabilityMode::zone_scan: return print_zone_scan(document, kernel, lattice, options);
+    }
+}
+
+// The command line's names for the request's values.
+StabilitySources option_sources(const StabilityOptions& o)
+{
+    return {ValueSource::option("--k"), ValueSource::option("--kmin"), ValueSource::option("--kmax"),
+            ValueSource::option("--gamma"), ValueSource::option("--horizon"),
+            ValueSource::option("--wavevector " + one_line(o.wavevector)), " (or give --kmin and --kmax)"};
+}
+
+// The adapter: which options go together, and the text of the wave vector and h model.
+StabilityRequest request_from(const StabilityOptions& o)
+{
+    const bool over_k = o.k_max > 0 || o.k_min > 0;
+    if (over_k && !o.wavevector.empty()) throw Error(ExitCode::usage, "--wavevector needs --k, not a k range");
+    if (!o.wavevector.empty() && o.path > 0) throw Error(ExitCode::usage, "--wavevector and --path: give one of them");
+    StabilityRequest r;
+    r.mode = over_k                 ? StabilityMode::over_k
+             : !o.wavevector.empty() ? StabilityMode::wavevector
+             : o.path > 0            ? StabilityMode::path
+                                     : StabilityMode::zone_scan;
+    r.k = o.k;
+    r.k_min = o.k_min;
+    r.k_max = o.k_max;
+    r.steps = o.steps;
+    if (!o.wavevector.empty()) r.wavevector = parse_wavevector(o.wavevector);
+    r.path_points = o.path;
+    r.gamma = o.gamma;
+    r.horizon = o.horizon;
+    r.h_model = parse_h_model(o.h_model, "--h-model");
+    r.grid = o.grid;
+    r.threads = o.threads;
+    return r;
+}
+
+void add_stability_options(CLI::App& command, StabilityOptions& o)
+{
+    auto* k_option = command.add_option("--k", o.k, "Smoothing coefficient, h = k d");
+    auto* kmin_option = command.add_option("--kmin", o.k_min, "Scan k from here (with --kmax): stable intervals");
+    auto* kmax_option = command.add_option("--kmax", o.k_max, "Scan k up to here");
+    command.add_option("--steps", o.steps, "Intervals of the k scan")->capture_default_str()->check(CLI::Range(1, 2000));
+    k_option->excludes(kmin_option)->excludes(kmax_option);
+    kmin_option->needs(kmax_option);
+    kmax_option->needs(kmin_option);
+    command.add_option("--gamma", o.gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
+    command.add_option("--wavevector", o.wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
+    auto* path_option = command.add_option("--path", o.path, "Dispersion curves along the high-symmetry "
+                                                             "path: about this many points")
+                            ->check(CLI::Range(2, 100000));
+    path_option->excludes(kmin_option)->excludes(kmax_option);
+    command.add_option("--grid", o.grid, "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
+                                         "in 2D; doubled until the minimum settles)")
+        ->check(CLI::Range(2, 400));
+    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak")->capture_default_str();
+    command.add_option("--h-model", o.h_model, "Smoothing length: fixed (h = k d) or adaptive (h = eta "
+                                               "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
+        ->capture_default_str();
+    command.add_option("--threads", o.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+}
+
 } // namespace
 
 Action add_stability_command(CLI::App& app)
 {
     auto* command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
                                                     "scan, long-wave sound speed");
-    struct Options : CommonOptions {
-        std::string kernel, lattice, wavevector, h_model = "fixed";
-        double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
-        int grid = 0, threads = 0, steps = 50, path = 0;
-        std::vector<std::string> sets;
-    };
-    auto options = std::make_shared<Options>();
+    auto options = std::make_shared<StabilityOptions>();
     command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
     command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    auto* k_option = command->add_option("--k", options->k, "Smoothing coefficient, h = k d");
-    auto* kmin_option = command->add_option("--kmin", options->k_min, "Scan k from here (with --kmax): stable intervals");
-    auto* kmax_option = command->add_option("--kmax", options->k_max, "Scan k up to here");
-    command->add_option("--steps", options->steps, "Intervals of the k scan")->capture_default_str()
-        ->check(CLI::Range(1, 2000));
-    k_option->excludes(kmin_option)->excludes(kmax_option);
-    kmin_option->needs(kmax_option);
-    kmax_option->needs(kmin_option);
-    command->add_option("--gamma", options->gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
-    command->add_option("--wavevector", options->wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
-    auto* path_option = command->add_option("--path", options->path, "Dispersion curves along the high-symmetry "
-                                                                     "path: about this many points")
-                            ->check(CLI::Range(2, 100000));
-    path_option->excludes(kmin_option)->excludes(kmax_option);
-    command->add_option("--grid", options->grid, "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
-                                                 "in 2D; doubled until the minimum settles)")
-        ->check(CLI::Range(2, 400));
-    command->add_option("--horizon", options->horizon, "Growth time in d/c: slower instabilities are weak")
-        ->capture_default_str();
-    command->add_option("--h-model", options->h_model, "Smoothing length: fixed (h = k d) or adaptive (h = eta "
-                                                       "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
-        ->capture_default_str();
-    command->add_option("--threads", options->threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    add_stability_options(*command, *options);
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        const bool over_k = options->k_max > 0 || options->k_min > 0;
-        if (over_k) {
-            check_k_interval(options->k_min, options->k_max, ValueSource::option("--kmin"), ValueSource::option("--kmax"));
-            if (!options->wavevector.empty()) throw Error(ExitCode::usage, "--wavevector needs --k, not a k range");
-        } else
-            check_k(options->k, ValueSource::option("--k"), " (or give --kmin and --kmax)");
-        check_gamma(options->gamma, "--gamma");
-        check_horizon(options->horizon, "--horizon");
-        const HModel h_model = parse_h_model(options->h_model, "--h-model");
+        const auto request = request_from(*options);
+        const auto sources = option_sources(*options);
+        check_stability_request(request, sources);
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
-        if (!options->wavevector.empty() && options->path > 0)
-            throw Error(ExitCode::usage, "--wavevector and --path: give one of them");
-        if (options->path > 0) {
-            auto document = dispersion_path_document(kernel, lattice, options->k, options->gamma, options->path,
-                                                     h_model);
-            if (options->json) {
-                print_json(document);
-                return 0;
-            }
-            const auto& path = document["path"];
-            std::string labels;
-            for (const auto& p : path["points"])
-                labels += fmt::format("{}{} ({:.4f})", labels.empty() ? "" : " - ", p["label"].get<std::string>(),
-                                      p["at"].get<double>());
-            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h: omega^2 in (c/d)^2 along {}\n",
-                       kernel.label(), lattice.name, options->k, options->gamma, options->h_model, labels);
-            for (std::size_t i = 0; i < path["position"].size(); ++i) {
-                fmt::print(results_file(), "  {:>10.6f}", path["position"][i].get<double>());
-                for (const auto& w : path["omega2"][i]) fmt::print(results_file(), " {:>14.8g}", w.get<double>());
-                fmt::print(results_file(), "\n");
-            }
-            return 0;
-        }
-        if (!options->wavevector.empty()) {
-            const auto kappa = parse_wavevector(options->wavevector, lattice.dimension);
-            auto document = dispersion_document(kernel, lattice, options->k, options->gamma, kappa, h_model);
-            if (options->json) {
-                print_json(document);
-                return 0;
-            }
-            fmt::print(results_file(), "{} on {} at k = {}, gamma = {:.6g}, {} h, kappa = {} / d\n", kernel.label(),
-                       lattice.name, options->k, options->gamma, options->h_model, vector_text(document["wavevector"]));
-            fmt::print(results_file(), "  {:>6} {:>16} {:>13}\n", "branch", "omega^2 (c/d)^2", "longitudinal");
-            int b = 0;
-            for (const auto& m : document["modes"])
-                fmt::print(results_file(), "  {:>6} {:>16.10g} {:>13.4f}\n", b++, m["omega2"].get<double>(),
-                           m["longitudinal"].get<double>());
-            return 0;
-        }
-        const int threads = options->threads > 0 ? options->threads
-                                                 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-        if (over_k) {
-            auto document = stability_over_k_document(kernel, lattice, options->k_min, options->k_max, options->steps,
-                                                      options->gamma, options->grid, threads, options->horizon, h_model);
-            if (options->json) {
-                print_json(document);
-                return 0;
-            }
-            print_over_k(document, kernel.label(), lattice.name, *options);
-            return 0;
-        }
-        auto document = stability_document(kernel, lattice, options->k, options->gamma, options->grid, threads,
-                                           options->horizon, h_model);
-        if (options->json) {
-            print_json(document);
-            return 0;
-        }
-        fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}, {} h: {}\n",
-                   kernel.label(), lattice.name, document["bravais"].get<std::string>(), options->k, options->gamma,
-                   h_model_text(document), verdict_text(document));
-        const auto& zone = document["zone_scan"];
-        fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
-                                   "branch {}):\n", zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),
-                   zone["converged"].get<bool>() ? "settled within the tolerance" : "NOT settled");
-        for (const auto& m : document["branches"])
-            fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",
-                       m["branch"].get<int>(), m["min_omega2"].get<double>(), vector_text(m["at"]),
-                       m["longitudinal"].get<double>());
-        fmt::print(results_file(), "  long waves: lowest omega^2 / kappa^2 over every direction {:.6g} c^2 along {}\n",
-                   document["long_wave"]["min_omega2_over_kappa2"].get<double>(),
-                   vector_text(document["long_wave"]["direction"]));
-        fmt::print(results_file(), "  long waves: speed / c - 1 of the longitudinal mode\n");
-        for (const auto& s : document["sound_speed"]) {
-            std::string relation;
-            if (s.contains("pressure_term"))
-                relation = fmt::format("  (eps_rho {:+.3e}, eps_gradP {:+.3e}, pressure term {:+.3e}, stiffness term {:+.3e})",
-                                       s["eps_rho"].get<double>(), s["eps_gradp"].get<double>(),
-                                       s["pressure_term"].get<double>(), s["stiffness_term"].get<double>());
-            fmt::print(results_file(), "  {:<6} {:+.6e}{}\n", s["direction"].get<std::string>(),
-                       s["longitudinal_error"].get<double>(), relation);
-        }
+        const auto document = run_stability(request, sources, kernel, lattice);
+        if (options->json) print_json(document);
+        else print_stability(document, request.mode, kernel.label(), lattice, *options);
         return 0;
     };
 }

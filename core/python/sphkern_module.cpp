@@ -21,6 +21,7 @@
 #include "stability/roots_stability.hpp"
 #include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
+#include "requests/stability_request.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/interruption.hpp"
@@ -35,6 +36,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace py = pybind11;
@@ -184,15 +186,46 @@ std::filesystem::path module_folder()
     return std::filesystem::absolute(info.dli_fname).parent_path();
 }
 
+// The adapter: which arguments go together and the ranges the command line's options check.
+StabilityRequest stability_request(std::optional<double> k, double gamma, const std::optional<std::vector<double>>& wavevector,
+                                   std::optional<double> kmin, std::optional<double> kmax, int steps, int grid, int path,
+                                   int threads, double horizon, const std::string& h_model)
+{
+    StabilityRequest r;
+    r.h_model = parse_h_model(h_model, "h_model");
+    if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
+    if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
+    if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
+    if (kmin || kmax) {
+        if (!kmin || !kmax || k || wavevector || path) fail_input("kmin and kmax go together, without k, wavevector or path");
+        r.mode = StabilityMode::over_k;
+        r.k_min = *kmin;
+        r.k_max = *kmax;
+    } else {
+        if (!k) fail_input("k: expected a number (or kmin and kmax)");
+        if (wavevector && path) fail_input("wavevector and path: give one of them");
+        r.mode = wavevector ? StabilityMode::wavevector : path ? StabilityMode::path : StabilityMode::zone_scan;
+        r.k = *k;
+        r.wavevector = wavevector.value_or(std::vector<double>{});
+    }
+    r.steps = steps;
+    r.path_points = path;
+    r.gamma = gamma;
+    r.horizon = horizon;
+    r.grid = grid;
+    r.threads = threads;
+    return r;
+}
+
 } // namespace
 
-PYBIND11_MODULE(sphkern, m)
-{
-    m.doc() = "sphkern: accuracy of SPH smoothing kernels on regular particle lattices";
-    m.attr("__version__") = SPHKERN_VERSION;
-    const auto folder = module_folder();
-    set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
+namespace {
 
+using Guard = py::call_guard<InterruptScope>;
+
+// An Error becomes ValueError, a plugin's RuntimeError, an interruption KeyboardInterrupt.
+void translate_errors()
+{
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
@@ -203,10 +236,11 @@ PYBIND11_MODULE(sphkern, m)
             else PyErr_SetString(PyExc_ValueError, message.c_str());
         }
     });
+}
 
-    // Every call runs with sphkern's signal handlers, Python's own before and after it.
-    const auto guard = py::call_guard<InterruptScope>();
-    bind_particles(m, &kernel_of, &to_python);
+// Every kernel and lattice, and files loaded into the module.
+void bind_catalogues(py::module_& m, const Guard& guard)
+{
     m.def("kernels", [] {
         std::lock_guard lock(registry_mutex);
         nlohmann::json list = nlohmann::json::array();
@@ -224,9 +258,40 @@ PYBIND11_MODULE(sphkern, m)
     }, py::arg("path"), "Loads a plugin library or an expression kernel file, probed as the command line probes it.", guard);
     m.def("load_lattice", [](const std::string& path) { return to_python(lattice_json(read_lattice(path))); },
           py::arg("path"), "Reads and validates a lattice file.", guard);
+}
+
+// The hydrostatic errors at k, the neighbour shells and the surface profile.
+void bind_accuracy(py::module_& m, const Guard& guard)
+{
     m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
           py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
           "eps_rho, eps_gradp, eps_lateral and nh (numpy arrays shaped like k) of a kernel on a lattice.", guard);
+    m.def("shells",
+          [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
+              auto lattice = load_lattice(lattice_spec);
+              return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
+          },
+          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
+          "Neighbour shells of a site, as `sphkern shells --json`.", guard);
+    m.def("surface",
+          [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
+             int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
+              check_k(k, ValueSource::argument("k"));
+              auto lattice = load_lattice(lattice_spec);
+              auto kernel = kernel_of(kernel_spec, params);
+              const double ap = ap_of(lattice, a_p);
+              const auto f = parse_gradient_form(form);
+              auto profile = surface_profile(kernel, lattice, site, ap, gravity_of(lattice, gravity), k, layers, f);
+              return to_python(surface_document(kernel, lattice, k, ap, f, profile));
+          },
+          py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
+          py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.", guard);
+}
+
+// The roots in k of both errors, with stability and a code's convention on request.
+void bind_roots(py::module_& m, const Guard& guard)
+{
     m.def("roots",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
@@ -280,64 +345,28 @@ PYBIND11_MODULE(sphkern, m)
           "their overlap with condition (22) and the recommended k (`at_window_edge`, as `roots --stability`); "
           "convention='pysph', 'dualsphysics', 'swift', 'gadget' or 'splishsplash' adds `convention` "
           "(as `roots --convention`). With either, the whole document is returned.", guard);
-    m.def("shells",
-          [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
-              auto lattice = load_lattice(lattice_spec);
-              return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
-          },
-          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
-          "Neighbour shells of a site, as `sphkern shells --json`.", guard);
-    m.def("surface",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
-             int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
-              check_k(k, ValueSource::argument("k"));
-              auto lattice = load_lattice(lattice_spec);
-              auto kernel = kernel_of(kernel_spec, params);
-              const double ap = ap_of(lattice, a_p);
-              const auto f = parse_gradient_form(form);
-              auto profile = surface_profile(kernel, lattice, site, ap, gravity_of(lattice, gravity), k, layers, f);
-              return to_python(surface_document(kernel, lattice, k, ap, f, profile));
-          },
-          py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
-          py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.", guard);
+}
+
+// Linear stability through the one stability request.
+void bind_stability(py::module_& m, const Guard& guard)
+{
     m.def("stability",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k, double gamma,
-             const py::object& wavevector, const py::object& kmin, const py::object& kmax, int steps, int grid,
-             int path, int threads, double horizon, const py::object& params, const std::string& h_model_text) {
-              const HModel h_model = parse_h_model(h_model_text, "h_model");
-              check_gamma(gamma, "gamma");
-              check_horizon(horizon, "horizon");
-              if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
-              if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
-              if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
+          [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
+             std::optional<std::vector<double>> wavevector, std::optional<double> kmin, std::optional<double> kmax,
+             int steps, int grid, int path, int threads, double horizon, const py::object& params,
+             const std::string& h_model) {
+              const auto request = stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads,
+                                                     horizon, h_model);
+              const StabilitySources sources{ValueSource::argument("k"), ValueSource::argument("kmin"),
+                                             ValueSource::argument("kmax"), ValueSource::argument("gamma"),
+                                             ValueSource::argument("horizon"), ValueSource::argument("wavevector"), ""};
+              check_stability_request(request, sources);
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);
-              const int cores = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
               nlohmann::json document;
-              if (!kmin.is_none() || !kmax.is_none()) { // stability against k
-                  if (kmin.is_none() || kmax.is_none() || !k.is_none() || !wavevector.is_none() || path)
-                      fail_input("kmin and kmax go together, without k, wavevector or path");
-                  const double lo = kmin.cast<double>(), hi = kmax.cast<double>();
-                  check_k_interval(lo, hi, ValueSource::argument("kmin/kmax"));
+              {
                   py::gil_scoped_release unlocked;
-                  document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma, grid, cores, horizon,
-                                                       h_model);
-              } else {
-                  if (k.is_none()) fail_input("k: expected a number (or kmin and kmax)");
-                  const double at = k.cast<double>();
-                  check_k(at, ValueSource::argument("k"));
-                  if (!wavevector.is_none()) {
-                      if (path) fail_input("wavevector and path: give one of them");
-                      const auto kappa = checked_wavevector(wavevector.cast<std::vector<double>>(), lattice.dimension,
-                                                            "wavevector");
-                      document = dispersion_document(kernel, lattice, at, gamma, kappa, h_model);
-                  } else if (path) {
-                      document = dispersion_path_document(kernel, lattice, at, gamma, path, h_model);
-                  } else {
-                      py::gil_scoped_release unlocked;
-                      document = stability_document(kernel, lattice, at, gamma, grid, cores, horizon, h_model);
-                  }
+                  document = run_stability(request, sources, kernel, lattice);
               }
               return to_python(document);
           },
@@ -350,6 +379,11 @@ PYBIND11_MODULE(sphkern, m)
           "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan; `horizon` "
           "(d/c) separates weak instabilities from unstable ones; h_model 'fixed' or 'adaptive' (h = eta "
           "(m/rho)^(1/D) with the grad-h terms; k is the equilibrium h = k d in both).", guard);
+}
+
+// Kernel design: where both errors vanish.
+void bind_design(py::module_& m, const Guard& guard)
+{
     m.def("design",
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
@@ -384,7 +418,11 @@ PYBIND11_MODULE(sphkern, m)
           py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
           py::arg("site") = 0, py::arg("params") = py::none(),
           "Every (k, parameter) where both errors vanish, as `sphkern design --json`.", guard);
+}
 
+// A kernel as an object, its functions vectorised over q.
+void bind_kernel(py::module_& m, const Guard& guard)
+{
     py::class_<KernelHandle>(m, "Kernel", "A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q.")
         .def_property_readonly("name", &KernelHandle::name)
         .def_property_readonly("support", &KernelHandle::support)
@@ -393,4 +431,24 @@ PYBIND11_MODULE(sphkern, m)
         .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, guard);
     m.def("kernel", [](const std::string& spec, const py::object& params) { return KernelHandle(kernel_of(spec, params)); },
           py::arg("name"), py::arg("params") = py::none(), "A kernel by name, plugin file or blend A+B.", guard);
+}
+
+} // namespace
+
+PYBIND11_MODULE(sphkern, m)
+{
+    m.doc() = "sphkern: accuracy of SPH smoothing kernels on regular particle lattices";
+    m.attr("__version__") = SPHKERN_VERSION;
+    const auto folder = module_folder();
+    set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
+    translate_errors();
+    // Every call runs with sphkern's signal handlers, Python's own before and after it.
+    const Guard guard;
+    bind_particles(m, &kernel_of, &to_python);
+    bind_catalogues(m, guard);
+    bind_accuracy(m, guard);
+    bind_roots(m, guard);
+    bind_stability(m, guard);
+    bind_design(m, guard);
+    bind_kernel(m, guard);
 }
