@@ -60,6 +60,43 @@ void write_csv(std::ostream& out, const BlockResult& r)
                 r.eps_gradp[i]);
 }
 
+void print_block_json(const Kernel& kernel, const Lattice& lattice, const BlockOptions& block, const BlockResult& result,
+                      double rate)
+{
+    nlohmann::json layers = nlohmann::json::array();
+    for (const auto& l : result.layers())
+        layers.push_back({{"layer", l.layer}, {"particles", l.particles}, {"sites", l.sites},
+                          {"eps_rho_min", l.rho_min}, {"eps_rho_max", l.rho_max},
+                          {"eps_gradp_min", l.gradp_min}, {"eps_gradp_max", l.gradp_max}});
+    print_json({{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", block.k}, {"a_p", block.a_p},
+                {"size", block.cells}, {"periodic", block.periodic},
+                {"form", gradient_form_name(block.form)}, {"particles", result.particles()},
+                {"pair_interactions_per_pass", result.pair_interactions}, {"threads", result.threads},
+                {"fused_passes", result.timings.fused},
+                {"seconds", {{"setup", result.timings.setup}, {"evaluation", result.timings.evaluation}}},
+                {"pair_interactions_per_second", rate}, {"layers", layers}},
+               command_inputs(&kernel, &lattice));
+}
+
+void print_block_text(const Kernel& kernel, const Lattice& lattice, const BlockResult& result, double rate)
+{
+    fmt::print(results_file(), "{} on {}: {} particles, {} pair interactions per pass, {} threads\n", kernel.label(),
+               lattice.name, result.particles(), result.pair_interactions, result.threads);
+    fmt::print(results_file(), "setup {:.4f} s, density and gradient {:.4f} s ({}): {:.3g} pairs per second\n",
+               result.timings.setup, result.timings.evaluation, result.timings.fused ? "one fused sweep" : "two passes",
+               rate);
+    const bool several = result.sites > 1;
+    fmt::print(results_file(), "{:>5} {:>9} {}{:>14} {:>14} {:>14} {:>14}\n", "layer", "particles",
+               several ? fmt::format("{:>8} ", "sites") : "", "eps_rho min", "eps_rho max", "eps_gradP min",
+               "eps_gradP max");
+    for (const auto& l : result.layers()) {
+        std::string sites;
+        for (int s : l.sites) sites += fmt::format("{}{}", sites.empty() ? "" : ",", s);
+        fmt::print(results_file(), "{:>5} {:>9} {}{:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles,
+                   several ? fmt::format("{:>8} ", sites) : "", l.rho_min, l.rho_max, l.gradp_min, l.gradp_max);
+    }
+}
+
 } // namespace
 
 Action add_block_command(CLI::App& app)
@@ -108,37 +145,8 @@ Action add_block_command(CLI::App& app)
         // A pair is counted once, though it feeds both sums (as BENCHMARKS.md counts it).
         const double seconds = result.timings.evaluation;
         const double rate = seconds > 0 ? static_cast<double>(result.pair_interactions) / seconds : 0;
-        if (options->json) {
-            nlohmann::json layers = nlohmann::json::array();
-            for (const auto& l : result.layers())
-                layers.push_back({{"layer", l.layer}, {"particles", l.particles}, {"sites", l.sites},
-                                  {"eps_rho_min", l.rho_min}, {"eps_rho_max", l.rho_max},
-                                  {"eps_gradp_min", l.gradp_min}, {"eps_gradp_max", l.gradp_max}});
-            print_json({{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", block.k}, {"a_p", block.a_p},
-                        {"size", block.cells}, {"periodic", block.periodic},
-                        {"form", gradient_form_name(block.form)}, {"particles", result.particles()},
-                        {"pair_interactions_per_pass", result.pair_interactions}, {"threads", result.threads},
-                        {"fused_passes", result.timings.fused},
-                        {"seconds", {{"setup", result.timings.setup}, {"evaluation", result.timings.evaluation}}},
-                        {"pair_interactions_per_second", rate}, {"layers", layers}},
-                       command_inputs(&kernel, &lattice));
-            return 0;
-        }
-        fmt::print(results_file(), "{} on {}: {} particles, {} pair interactions per pass, {} threads\n", kernel.label(),
-                   lattice.name, result.particles(), result.pair_interactions, result.threads);
-        fmt::print(results_file(), "setup {:.4f} s, density and gradient {:.4f} s ({}): {:.3g} pairs per second\n",
-                   result.timings.setup, result.timings.evaluation, result.timings.fused ? "one fused sweep" : "two passes",
-                   rate);
-        const bool several = result.sites > 1;
-        fmt::print(results_file(), "{:>5} {:>9} {}{:>14} {:>14} {:>14} {:>14}\n", "layer", "particles",
-                   several ? fmt::format("{:>8} ", "sites") : "", "eps_rho min", "eps_rho max", "eps_gradP min",
-                   "eps_gradP max");
-        for (const auto& l : result.layers()) {
-            std::string sites;
-            for (int s : l.sites) sites += (sites.empty() ? "" : ",") + std::to_string(s);
-            fmt::print(results_file(), "{:>5} {:>9} {}{:>14.8f} {:>14.8f} {:>14.8f} {:>14.8f}\n", l.layer, l.particles,
-                       several ? fmt::format("{:>8} ", sites) : "", l.rho_min, l.rho_max, l.gradp_min, l.gradp_max);
-        }
+        if (options->json) print_block_json(kernel, lattice, block, result, rate);
+        else print_block_text(kernel, lattice, result, rate);
         return 0;
     };
 }

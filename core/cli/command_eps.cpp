@@ -14,6 +14,27 @@
 
 namespace sphkern::cli {
 
+namespace {
+
+// Every site's values, when the lattice has more than one.
+void print_every_site(const std::vector<SiteReport>& reports, int chosen, std::size_t worst)
+{
+    if (reports.size() <= 1) return;
+    fmt::print(results_file(), "every site (the values above are site {}; worst site {}):\n", chosen,
+               reports[worst].site);
+    fmt::print(results_file(), "  {:>4} {:>14} {:>14} {:>10} {:>5}  {:<34} {}\n", "site", "eps_rho", "eps_gradP",
+               "lateral", "N_H", "eigenvalues of E", "|first moment|");
+    for (const auto& r : reports) {
+        std::string eigen;
+        for (double e : r.gradient.eigenvalues) eigen += fmt::format("{}{:+.6f}", eigen.empty() ? "" : " ", e);
+        fmt::print(results_file(), "  {:>4} {:>14.8f} {:>14.8f} {:>10.3g} {:>5}  {:<34} {:.3g}\n", r.site,
+                   r.values.eps_rho, r.values.eps_gradp, r.values.lateral, r.values.neighbours, eigen,
+                   r.gradient.first_moment.norm());
+    }
+}
+
+} // namespace
+
 Action add_eps_command(CLI::App& app)
 {
     auto* command = app.add_subcommand("eps", "eps_rho and eps_gradP of a kernel on a lattice at one k");
@@ -69,19 +90,7 @@ Action add_eps_command(CLI::App& app)
                    axis == Axis::eta ? fmt::format(" (eta = {:.10g})", eta) : "");
         fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
                    v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, kernel.support() * options->k);
-        if (reports.size() > 1) {
-            fmt::print(results_file(), "every site (the values above are site {}; worst site {}):\n", options->evaluation.site,
-                       reports[worst].site);
-            fmt::print(results_file(), "  {:>4} {:>14} {:>14} {:>10} {:>5}  {:<34} {}\n", "site", "eps_rho", "eps_gradP",
-                       "lateral", "N_H", "eigenvalues of E", "|first moment|");
-            for (const auto& r : reports) {
-                std::string eigen;
-                for (double e : r.gradient.eigenvalues) eigen += fmt::format("{}{:+.6f}", eigen.empty() ? "" : " ", e);
-                fmt::print(results_file(), "  {:>4} {:>14.8f} {:>14.8f} {:>10.3g} {:>5}  {:<34} {:.3g}\n", r.site,
-                           r.values.eps_rho, r.values.eps_gradp, r.values.lateral, r.values.neighbours, eigen,
-                           r.gradient.first_moment.norm());
-            }
-        }
+        print_every_site(reports, options->evaluation.site, worst);
         return 0;
     };
 }

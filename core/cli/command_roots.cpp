@@ -70,6 +70,49 @@ void print_scan(const RootScan& scan)
 
 // Roots of one kernel on one lattice, for every site, with condition (22) along gravity
 // and for every direction: printed, or appended to `collected` as JSON.
+void print_roots_stability(const RootsOptions& options, const RootsStability& stability)
+{
+    if (!options.stability) return;
+    if (stability.refused())
+        fmt::print(results_file(), "stability (gamma = {:.6g}, {} h): not available: {}\n", options.gamma,
+                   options.h_model, stability.json["refused"].get<std::string>());
+    else
+        fmt::print(results_file(), "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
+                                   "accurate (condition (22), every site) and stable:{}\n  {}\n",
+                   options.gamma, options.h_model, options.horizon, intervals_text(stability.stable),
+                   intervals_text(stability.both), recommended_text(stability.recommended));
+}
+
+void print_roots_convention(const RootsOptions& options, const Kernel& kernel, int dimension, double a_p,
+                            const Acceptance& all_along, const RecommendedK& recommended)
+{
+    if (options.convention.empty()) return;
+    const auto& c = code_convention(options.convention, "--convention");
+    if (const auto why = convention_undefined(c, kernel, dimension); !why.empty())
+        return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
+    auto in = [&](double k) { return in_convention(c, kernel, dimension, a_p, k); };
+    std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
+                                c.quantity, in(all_along.best_k));
+    for (const auto& i : all_along.intervals)
+        s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", c.quantity, in(i.from), in(i.to));
+    if (recommended.found)
+        s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", c.quantity, in(recommended.k),
+                         in(recommended.widest.from), in(recommended.widest.to));
+    fmt::print(results_file(), "{}\n", s);
+}
+
+// Every site but the chosen one, after it.
+void print_other_sites(const RootsAnalysis& analysis, int chosen)
+{
+    for (const auto& s : analysis.sites) {
+        if (s.site == chosen) continue;
+        fmt::print(results_file(), "site {}:\n", s.site);
+        print_scan(s.scan);
+        fmt::print(results_file(), "condition (22): {}\n  for every direction: {}\n", acceptance_text(s.along),
+                   acceptance_text(s.every));
+    }
+}
+
 void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice, nlohmann::json* collected)
 {
     double a_p = lattice.volume_coefficient(options.evaluation.ap);
@@ -104,38 +147,12 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
         collected->push_back(document);
         return;
     }
-    auto print_stability = [&] {
-        if (!options.stability) return;
-        if (stability.refused())
-            fmt::print(results_file(), "stability (gamma = {:.6g}, {} h): not available: {}\n", options.gamma,
-                       options.h_model, stability.json["refused"].get<std::string>());
-        else
-            fmt::print(results_file(), "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
-                                       "accurate (condition (22), every site) and stable:{}\n  {}\n",
-                       options.gamma, options.h_model, options.horizon, intervals_text(stability.stable), intervals_text(stability.both),
-                       recommended_text(recommended));
-    };
-    auto print_convention = [&] {
-        if (options.convention.empty()) return;
-        const auto& c = code_convention(options.convention, "--convention");
-        if (const auto why = convention_undefined(c, kernel, lattice.dimension); !why.empty())
-            return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
-        auto in = [&](double k) { return in_convention(c, kernel, lattice.dimension, a_p, k); };
-        std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
-                                    c.quantity, in(analysis.all_along.best_k));
-        for (const auto& i : analysis.all_along.intervals)
-            s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", c.quantity, in(i.from), in(i.to));
-        if (recommended.found)
-            s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", c.quantity, in(recommended.k),
-                             in(recommended.widest.from), in(recommended.widest.to));
-        fmt::print(results_file(), "{}\n", s);
-    };
     auto print_tail = [&] {
         if (at_window_edge(analysis.all_along.best_k, options.k_min, options.k_max))
             fmt::print(results_file(), "best k of condition (22) = {:.6f}: {}\n", analysis.all_along.best_k,
                        window_edge_note);
-        print_stability();
-        print_convention();
+        print_roots_stability(options, stability);
+        print_roots_convention(options, kernel, lattice.dimension, a_p, analysis.all_along, recommended);
     };
     const std::string lateral = options.lateral ? ", lateral error included" : "";
     fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}{}\n", kernel.label(), lattice.name, a_p,
@@ -146,13 +163,7 @@ void run_one(RootsOptions options, const Kernel& kernel, const Lattice& lattice,
     fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", options.epsilon, lateral, acceptance_text(chosen.along));
     fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
     if (sites.size() == 1) return print_tail();
-    for (const auto& s : analysis.sites) {
-        if (s.site == options.evaluation.site) continue;
-        fmt::print(results_file(), "site {}:\n", s.site);
-        print_scan(s.scan);
-        fmt::print(results_file(), "condition (22): {}\n  for every direction: {}\n", acceptance_text(s.along),
-                   acceptance_text(s.every));
-    }
+    print_other_sites(analysis, options.evaluation.site);
     fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
                acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
     print_tail();

@@ -61,6 +61,26 @@ int reproduce(const std::string& file, KernelRegistry& registry)
     return static_cast<int>(ExitCode::check_failed);
 }
 
+// The report links the method document beside it: the folder reads on its own.
+void write_method_document(OutputFolder& output)
+{
+    if (std::ifstream method{data_folder("docs") / "method.md"}) {
+        std::ostringstream text;
+        text << method.rdbuf();
+        output.write("method.md", text.str());
+    } else {
+        spdlog::warn("{}: not found; the report's link to method.md will not resolve",
+                     (data_folder("docs") / "method.md").string());
+    }
+}
+
+// A study file, or the name of a shipped study (default: the paper's).
+std::filesystem::path study_file(const std::string& study)
+{
+    if (study.empty()) return data_folder("studies") / "potapov2021.json";
+    return looks_like_path(study, ".json") ? std::filesystem::path(study) : data_folder("studies") / (study + ".json");
+}
+
 } // namespace
 
 Action add_run_command(CLI::App& app)
@@ -91,10 +111,7 @@ Action add_run_command(CLI::App& app)
             auto registry = discover_kernels(*options);
             return reproduce(options->reproduce, registry);
         }
-        std::filesystem::path file = options->study.empty() ? data_folder("studies") / "potapov2021.json"
-                                     : looks_like_path(options->study, ".json")
-                                         ? std::filesystem::path(options->study)
-                                         : data_folder("studies") / (options->study + ".json");
+        const std::filesystem::path file = study_file(options->study);
         const auto formats = parse_figure_formats(options->format, "--format");
         Study study = read_study(file);
         std::filesystem::path target =
@@ -113,15 +130,7 @@ Action add_run_command(CLI::App& app)
         output.write("results.json", [&](std::ostream& out) { write_study_results_json(out, study, results); });
         output.write("curves.csv", [&](std::ostream& out) { write_curves_csv(out, results); });
         output.write("report.md", report_markdown(study, results, figures));
-        // The report links the method document beside it: the folder reads on its own.
-        if (std::ifstream method{data_folder("docs") / "method.md"}) {
-            std::ostringstream text;
-            text << method.rdbuf();
-            output.write("method.md", text.str());
-        } else {
-            spdlog::warn("{}: not found; the report's link to method.md will not resolve",
-                         (data_folder("docs") / "method.md").string());
-        }
+        write_method_document(output);
         output.commit();
 
         std::string summary = replication_markdown(results);

@@ -13,6 +13,45 @@
 
 namespace sphkern::cli {
 
+namespace {
+
+// The layers below the surface, then the bulk, as text.
+void print_surface(const Kernel& kernel, const Lattice& lattice, double k, double a_p, GradientForm form,
+                   const SurfaceProfile& profile)
+{
+    const bool one_site = lattice.sites() == 1;
+    if (one_site)
+        fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(),
+                   lattice.name, k, a_p, gradient_form_name(form), profile.spacing);
+    else {
+        std::string names;
+        for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
+            names += fmt::format("{}{}: {}", t ? ", " : "", t, profile.planes.name(static_cast<int>(t)));
+        fmt::print(results_file(),
+                   "{} on {}, k = {}, a_p = {:.10g}, form {}; the occupied planes repeat every {:.6f} d; "
+                   "terminations {}; on top: {}\n",
+                   kernel.label(), lattice.name, k, a_p, gradient_form_name(form), profile.spacing, names,
+                   profile.termination);
+    }
+    fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site",
+               "N", "eps_rho", "eps_gradP");
+    for (const auto& l : profile.layers)
+        for (const auto& v : l.sites)
+            fmt::print(results_file(), "{:>5} {:>10.5f} {}{:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth,
+                       one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
+    for (const auto& v : profile.bulk.sites)
+        fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14.8f} {:>14.8f}\n", "bulk", "",
+                   one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
+    for (std::size_t s = 0; s < profile.first_moments.size(); ++s)
+        if (profile.first_moments[s].norm() > 1e-9)
+            fmt::print(results_file(),
+                       "site {} is not a centre of inversion (first moment {:.3g}): with the sum form its gradient "
+                       "error grows with depth by 2 P_i m1; the bulk row leaves that term out\n",
+                       s, profile.first_moments[s].norm());
+}
+
+} // namespace
+
 Action add_surface_command(CLI::App& app)
 {
     auto* command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
@@ -53,35 +92,7 @@ Action add_surface_command(CLI::App& app)
             print_json(surface_document(kernel, lattice, options->k, a_p, form, profile), command_inputs(&kernel, &lattice));
             return 0;
         }
-        const bool one_site = lattice.sites() == 1;
-        if (one_site)
-            fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(),
-                       lattice.name, options->k, a_p, gradient_form_name(form), profile.spacing);
-        else {
-            std::string names;
-            for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
-                names += fmt::format("{}{}: {}", t ? ", " : "", t, profile.planes.name(static_cast<int>(t)));
-            fmt::print(results_file(),
-                       "{} on {}, k = {}, a_p = {:.10g}, form {}; the occupied planes repeat every {:.6f} d; "
-                       "terminations {}; on top: {}\n",
-                       kernel.label(), lattice.name, options->k, a_p, gradient_form_name(form), profile.spacing, names,
-                       profile.termination);
-        }
-        fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site",
-                   "N", "eps_rho", "eps_gradP");
-        for (const auto& l : profile.layers)
-            for (const auto& v : l.sites)
-                fmt::print(results_file(), "{:>5} {:>10.5f} {}{:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth,
-                           one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
-        for (const auto& v : profile.bulk.sites)
-            fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14.8f} {:>14.8f}\n", "bulk", "",
-                       one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
-        for (std::size_t s = 0; s < profile.first_moments.size(); ++s)
-            if (profile.first_moments[s].norm() > 1e-9)
-                fmt::print(results_file(),
-                           "site {} is not a centre of inversion (first moment {:.3g}): with the sum form its gradient "
-                           "error grows with depth by 2 P_i m1; the bulk row leaves that term out\n",
-                           s, profile.first_moments[s].norm());
+        print_surface(kernel, lattice, options->k, a_p, form, profile);
         return 0;
     };
 }

@@ -34,6 +34,54 @@ int finish(int status)
     return status;
 }
 
+
+using Commands = std::vector<std::pair<CLI::App*, cli::Action>>;
+
+Commands add_commands(CLI::App& app)
+{
+    Commands commands;
+    auto add = [&](cli::Action (*add_command)(CLI::App&)) {
+        std::size_t before = app.get_subcommands({}).size();
+        cli::Action action = add_command(app);
+        commands.emplace_back(app.get_subcommands({})[before], std::move(action));
+    };
+    for (auto* add_command : {cli::add_run_command, cli::add_kernels_command, cli::add_check_command,
+                              cli::add_lattices_command, cli::add_shells_command, cli::add_eps_command,
+                              cli::add_roots_command, cli::add_surface_command, cli::add_block_command,
+                              cli::add_design_command, cli::add_stability_command, cli::add_spectrum_command,
+                              cli::add_particles_command, cli::add_relax_command, cli::add_pairing_command,
+                              cli::add_studies_command})
+        add(add_command);
+    // An empty value ('') is never a number, a name or a file: refused before CLI11 reads it as 0.
+    const CLI::Validator non_empty([](std::string& value) { return value.empty() ? std::string("an empty value") : std::string(); },
+                                   "", "non-empty");
+    for (auto* command : app.get_subcommands({}))
+        for (auto* option : command->get_options())
+            if (option->get_type_size() != 0 && !option->get_positional()) option->check(non_empty);
+    return commands;
+}
+
+// Runs the command that was parsed; every error becomes one line and its exit code.
+int run_parsed(const Commands& commands)
+{
+    try {
+        for (auto& [command, action] : commands)
+            if (command->parsed()) {
+                spdlog::debug("running {}", command->get_name()); // tests wait for this line before signalling
+                return finish(action());
+            }
+    } catch (const Error& e) {
+        return fail(e.what(), e.code());
+    } catch (const std::bad_alloc&) {
+        return fail("out of memory", ExitCode::input);
+    } catch (const std::system_error& e) {
+        return fail(std::string("the system refused: ") + e.what(), ExitCode::input);
+    } catch (const std::exception& e) {
+        return fail(e.what(), ExitCode::input);
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -53,35 +101,7 @@ int main(int argc, char** argv)
         ->capture_default_str()
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
-    std::vector<std::pair<CLI::App*, cli::Action>> commands;
-    auto add = [&](cli::Action (*add_command)(CLI::App&)) {
-        std::size_t before = app.get_subcommands({}).size();
-        cli::Action action = add_command(app);
-        commands.emplace_back(app.get_subcommands({})[before], std::move(action));
-    };
-    add(cli::add_run_command);
-    add(cli::add_kernels_command);
-    add(cli::add_check_command);
-    add(cli::add_lattices_command);
-    add(cli::add_shells_command);
-    add(cli::add_eps_command);
-    add(cli::add_roots_command);
-    add(cli::add_surface_command);
-    add(cli::add_block_command);
-    add(cli::add_design_command);
-    add(cli::add_stability_command);
-    add(cli::add_spectrum_command);
-    add(cli::add_particles_command);
-    add(cli::add_relax_command);
-    add(cli::add_pairing_command);
-    add(cli::add_studies_command);
-
-    // An empty value ('') is never a number, a name or a file: refused before CLI11 reads it as 0.
-    const CLI::Validator non_empty([](std::string& value) { return value.empty() ? std::string("an empty value") : std::string(); },
-                                   "", "non-empty");
-    for (auto* command : app.get_subcommands({}))
-        for (auto* option : command->get_options())
-            if (option->get_type_size() != 0 && !option->get_positional()) option->check(non_empty);
+    const Commands commands = add_commands(app);
 
     try {
         app.parse(argc, argv);
@@ -101,20 +121,5 @@ int main(int argc, char** argv)
     // file and removes what was staged, instead of a signal that kills without a word.
     std::signal(SIGXFSZ, SIG_IGN);
     separate_results_from_stdout();
-    try {
-        for (auto& [command, action] : commands)
-            if (command->parsed()) {
-                spdlog::debug("running {}", command->get_name()); // tests wait for this line before signalling
-                return finish(action());
-            }
-    } catch (const Error& e) {
-        return fail(e.what(), e.code());
-    } catch (const std::bad_alloc&) {
-        return fail("out of memory", ExitCode::input);
-    } catch (const std::system_error& e) {
-        return fail(std::string("the system refused: ") + e.what(), ExitCode::input);
-    } catch (const std::exception& e) {
-        return fail(e.what(), ExitCode::input);
-    }
-    return 0;
+    return run_parsed(commands);
 }
