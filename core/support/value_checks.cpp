@@ -55,8 +55,9 @@ void check_k_interval(double k_min, double k_max, const ValueSource& interval, I
 void check_k_interval(double k_min, double k_max, const ValueSource& min, const ValueSource& max, IntervalEnds kind)
 {
     if (!valid_interval(k_min, k_max, kind))
-        throw Error(min.code, fmt::format("{} {} {} {}: expected 0 < {} {} {} <= 100", min.name, k_min, max.name, k_max,
-                                          bare(min.name), kind == IntervalEnds::distinct ? "<" : "<=", bare(max.name)));
+        throw Error(min.code, fmt::format("{}{}{}: expected 0 < {} {} {} <= 100", min.about(k_min),
+                                          min.name.rfind("-", 0) == 0 ? " " : ", ", max.about(k_max), bare(min.name),
+                                          kind == IntervalEnds::distinct ? "<" : "<=", bare(max.name)));
 }
 
 bool is_identifier(std::string_view name, std::string_view extra, std::size_t max_length)

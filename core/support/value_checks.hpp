@@ -54,7 +54,8 @@ void check_k(double k, const ValueSource& source, std::string_view hint = {});
 enum class IntervalEnds { distinct, may_meet };
 // Named as one value: "k interval: [1.3, 1] is not allowed, expected 0 < min < max <= 100".
 void check_k_interval(double k_min, double k_max, const ValueSource& interval, IntervalEnds kind = IntervalEnds::distinct);
-// Two options: "--kmin 1.2 --kmax 1: expected 0 < kmin < kmax <= 100" (the exit code is min's).
+// Two values: "--kmin 1.2 --kmax 1: expected 0 < kmin < kmax <= 100" for options, "kmin = 1.2,
+// kmax = 1: ..." for arguments (the exit code is min's).
 void check_k_interval(double k_min, double k_max, const ValueSource& min, const ValueSource& max,
                       IntervalEnds kind = IntervalEnds::distinct);
 
