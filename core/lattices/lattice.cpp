@@ -4,6 +4,7 @@
 
 #include "support/file_spec.hpp"
 #include "lattices/lattice_points.hpp"
+#include "lattices/numeric_inputs.hpp"
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
@@ -58,11 +59,7 @@ double Lattice::volume_coefficient(const std::string& spec) const
         if (c.name == spec) return c.value;
     char* end = nullptr;
     double value = std::strtod(spec.c_str(), &end);
-    if (!spec.empty() && end && *end == '\0') {
-        if (!std::isfinite(value) || value <= 0 || value > 1e6)
-            fail_input("volume coefficient a_p = " + spec + " is not allowed, expected a positive number up to 1e6");
-        return value;
-    }
+    if (!spec.empty() && end && *end == '\0') return checked_volume_coefficient(value, spec);
     std::vector<std::string> names;
     std::string list;
     for (const auto& c : volume_coefficients) {
@@ -192,13 +189,25 @@ Lattice load_lattice(const std::string& spec)
 
 Eigen::Vector3d parse_direction(const std::string& text, int dimension, const std::string& what)
 {
-    const auto parts = parse_number_list(text, ValueSource::argument(what), 0);
-    if (static_cast<int>(parts.size()) != dimension)
-        fail_input(what + " \"" + text + "\": expected " + std::to_string(dimension) + " comma-separated components");
+    return direction_of(parse_number_list(text, ValueSource::argument(what), 0), dimension, what + " \"" + text + "\"");
+}
+
+Eigen::Vector3d direction_of(const std::vector<double>& components, int dimension, const std::string& named)
+{
+    if (static_cast<int>(components.size()) != dimension)
+        fail_input(named + ": expected " + std::to_string(dimension) + " comma-separated components");
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
-    for (int i = 0; i < dimension; ++i) v[i] = parts[static_cast<std::size_t>(i)];
-    if (v.cwiseAbs().maxCoeff() == 0) fail_input(what + " \"" + text + "\" has zero length, expected a direction");
+    for (int i = 0; i < dimension; ++i) v[i] = components[static_cast<std::size_t>(i)];
+    if (!v.allFinite()) fail_input(named + ": expected finite numbers");
+    if (v.cwiseAbs().maxCoeff() == 0) fail_input(named + " has zero length, expected a direction");
     return v.stableNormalized();
+}
+
+double checked_volume_coefficient(double a_p, const std::string& text)
+{
+    if (!std::isfinite(a_p) || a_p <= 0 || a_p > 1e6)
+        fail_input("volume coefficient a_p = " + text + " is not allowed, expected a positive number up to 1e6");
+    return a_p;
 }
 
 } // namespace sphkern

@@ -16,6 +16,7 @@
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "lattices/numeric_inputs.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/roots_convention.hpp"
 #include "stability/roots_stability.hpp"
@@ -28,6 +29,7 @@
 #include "support/value_checks.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -93,19 +95,20 @@ double ap_of(const Lattice& lattice, const py::object& a_p)
     } catch (const py::cast_error&) {
         fail_input("a_p: expected a name the lattice offers or a positive number");
     }
-    return lattice.volume_coefficient(fmt::format("{}", v)); // the command line's checks
+    return checked_volume_coefficient(v, fmt::format("{}", v));
 }
 
 Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
 {
     if (gravity.is_none()) return lattice.gravity;
-    std::string text;
+    std::vector<double> components;
     try {
-        for (const auto& c : gravity.cast<std::vector<double>>()) text += (text.empty() ? "" : ",") + fmt::format("{}", c);
+        components = gravity.cast<std::vector<double>>();
     } catch (const py::cast_error&) {
         fail_input("gravity: expected a sequence of " + std::to_string(lattice.dimension) + " numbers");
     }
-    return parse_direction(text, lattice.dimension, "gravity");
+    // Named as the command line names "--gravity 0,0,1", so that both say the same line.
+    return direction_of(components, lattice.dimension, fmt::format("gravity \"{}\"", fmt::join(components, ",")));
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
