@@ -42,13 +42,13 @@ std::string method_document() { return "[method.md](method.md)"; }
 // The value of k on the study's axis, for the tables: "" on the k axis (nh is the N_H column).
 std::string on_axis(const Study& study, double k, const StudyCase& c)
 {
-    if (study.axis != "eta") return "";
+    if (study.axis != Axis::eta) return "";
     return fmt::format(" (eta {:.4f})", eta_of_k(k, c.a_p, c.dimension));
 }
 
 std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& intervals, const StudyCase& c)
 {
-    if (study.axis != "eta" || intervals.empty()) return "";
+    if (study.axis != Axis::eta || intervals.empty()) return "";
     std::string s;
     for (const auto& i : intervals)
         s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", eta_of_k(i.from, c.a_p, c.dimension),
@@ -73,9 +73,9 @@ std::string intervals_text(const Acceptance& a) { return intervals_text(a.interv
 std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
 {
     std::vector<std::vector<const StudyCase*>> groups;
-    std::map<std::tuple<std::string, std::string, std::string>, std::size_t> index;
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::size_t> index;
     for (const auto& c : results.cases) {
-        auto key = std::make_tuple(c.lattice, c.mode, c.ap_name);
+        auto key = std::make_tuple(c.key.lattice, c.key.mode, c.key.volume_coefficient);
         auto [it, added] = index.emplace(key, groups.size());
         if (added) groups.emplace_back();
         groups[it->second].push_back(&c);
@@ -139,11 +139,11 @@ std::string replication_markdown(const StudyResults& results)
 std::string verdicts_markdown(const Study& study, const StudyResults& results)
 {
     std::string s = fmt::format("## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
-                                study.epsilon, study.epsilon, study.axis, study.k_min, study.k_max);
-    if (study.axis != "k")
+                                study.epsilon, study.epsilon, axis_name(study.axis), study.k_min, study.k_max);
+    if (study.axis != Axis::k)
         s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
                          "its kernel, lattice and a_p.\n\n",
-                         study.axis, study.axis == "eta" ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
+                         axis_name(study.axis), study.axis == Axis::eta ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
                                                          : "nh = the number of neighbours inside the support");
     s += fmt::format("The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
                      "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
@@ -177,7 +177,7 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
     s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
     for (const auto& g : groups) {
         std::string windows;
-        if (study.axis != "k") {
+        if (study.axis != Axis::k) {
             const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
                 return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
             });
@@ -229,7 +229,7 @@ std::string header_markdown(const Study& study, const nlohmann::json& inputs)
                                 "Errors are the bulk relative errors of {} section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
                                 study.title, version_text(), std::filesystem::path(study.file).filename().string(),
-                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", study.axis, study.k_min,
+                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", axis_name(study.axis), study.k_min,
                                 study.k_max, study.samples, study.epsilon, method_document());
     s += "Modes: ";
     for (const auto& m : study.modes) {
@@ -432,8 +432,8 @@ std::string stability_markdown(const StudyResults& results)
             s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
                              "|---|---|---|---|---|\n", lattice);
         }
-        if (!c.refused.empty()) {
-            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, c.refused);
+        if (c.refused) {
+            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, *c.refused);
             continue;
         }
         std::string both;

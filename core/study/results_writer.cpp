@@ -24,8 +24,8 @@ nlohmann::json stability_json(const StabilityCase& c)
 {
     nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma},
                             {"h_model", c.h_model}};
-    if (!c.refused.empty()) {
-        entry["refused"] = c.refused;
+    if (c.refused) {
+        entry["refused"] = *c.refused;
         return entry;
     }
     nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
