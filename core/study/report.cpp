@@ -136,7 +136,11 @@ std::string replication_markdown(const StudyResults& results)
     return s;
 }
 
-std::string verdicts_markdown(const Study& study, const StudyResults& results)
+namespace {
+
+using CaseGroup = std::vector<const StudyCase*>;
+
+std::string verdicts_intro(const Study& study)
 {
     std::string s = fmt::format("## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
                                 study.epsilon, study.epsilon, axis_name(study.axis), study.k_min, study.k_max);
@@ -151,12 +155,16 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
                      "tables below.\n\n",
                      study.lateral ? ", the lateral error included" : "",
                      study.sites ? "the sites listed in the study" : "every site of each lattice");
-    // A summary matrix first: kernels down, lattice / mode / a_p across.
-    auto groups = grouped(results);
+    return s;
+}
+
+// A summary matrix: kernels down, lattice / mode / a_p across.
+std::string verdicts_matrix(const Study& study, const StudyResults& results, const std::vector<CaseGroup>& groups)
+{
     std::vector<std::string> kernels;
     for (const auto& c : results.cases)
         if (std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end()) kernels.push_back(c.kernel_label);
-    s += "| kernel |";
+    std::string s = "| kernel |";
     std::string rule = "|---|";
     for (const auto& g : groups) {
         s += fmt::format(" {} {}{} |", g[0]->lattice, g[0]->ap_name, study.modes.size() > 1 ? " (" + g[0]->mode + ")" : "");
@@ -174,48 +182,67 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
         }
         s += "\n";
     }
-    s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
-    for (const auto& g : groups) {
-        std::string windows;
-        if (study.axis != Axis::k) {
-            const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
-                return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
-            });
-            if (same) windows = fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
-            else
-                for (const auto* c : g)
-                    windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
-                                           c->k_min, c->k_max);
-        }
-        s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
-                         g[0]->ap_name, g[0]->a_p, windows) +
-             "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
-             "|---|---|---|---|---|---|\n";
-        for (const auto* c : g)
-            s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
-                             c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
-                             intervals_on_axis(study, c->acceptance.intervals, *c), c->acceptance.best_k,
-                             on_axis(study, c->acceptance.best_k, *c), c->acceptance.best_error,
-                             c->acceptance_every.passes() ? "pass" : "fail", intervals_text(c->acceptance_every));
-        s += "\n";
-        // Several sites: each on its own, so that a site that fails is seen.
-        if (g[0]->per_site.empty()) continue;
-        s += "Each site on its own (along gravity / every direction):\n\n| kernel |";
-        std::string rule = "|---|";
-        for (const auto& p : g[0]->per_site) {
-            s += fmt::format(" site {} |", p.site);
-            rule += "---|";
-        }
-        s += "\n" + rule + "\n";
-        for (const auto* c : g) {
-            s += "| " + c->kernel_label + " |";
-            for (const auto& p : c->per_site)
-                s += fmt::format(" {} / {} (best k {:.3f}) |", p.along.passes() ? "pass" : "fail",
-                                 p.every.passes() ? "pass" : "fail", p.along.best_k);
-            s += "\n";
-        }
+    return s + "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
+}
+
+// "; k in [a, b] for every kernel", or each kernel's, when the window is not on the k axis.
+std::string group_windows(const Study& study, const CaseGroup& g)
+{
+    std::string windows;
+    if (study.axis == Axis::k) return windows;
+    const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
+        return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
+    });
+    if (same) return fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
+    for (const auto* c : g)
+        windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label, c->k_min,
+                               c->k_max);
+    return windows;
+}
+
+// Several sites: each on its own, so that a site that fails is seen.
+std::string per_site_table(const CaseGroup& g)
+{
+    if (g[0]->per_site.empty()) return {};
+    std::string s = "Each site on its own (along gravity / every direction):\n\n| kernel |";
+    std::string rule = "|---|";
+    for (const auto& p : g[0]->per_site) {
+        s += fmt::format(" site {} |", p.site);
+        rule += "---|";
+    }
+    s += "\n" + rule + "\n";
+    for (const auto* c : g) {
+        s += "| " + c->kernel_label + " |";
+        for (const auto& p : c->per_site)
+            s += fmt::format(" {} / {} (best k {:.3f}) |", p.along.passes() ? "pass" : "fail",
+                             p.every.passes() ? "pass" : "fail", p.along.best_k);
         s += "\n";
     }
+    return s + "\n";
+}
+
+std::string group_verdicts(const Study& study, const CaseGroup& g)
+{
+    std::string s = fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension,
+                                g[0]->mode, g[0]->ap_name, g[0]->a_p, group_windows(study, g)) +
+                    "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
+                    "|---|---|---|---|---|---|\n";
+    for (const auto* c : g)
+        s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
+                         c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
+                         intervals_on_axis(study, c->acceptance.intervals, *c), c->acceptance.best_k,
+                         on_axis(study, c->acceptance.best_k, *c), c->acceptance.best_error,
+                         c->acceptance_every.passes() ? "pass" : "fail", intervals_text(c->acceptance_every));
+    return s + "\n" + per_site_table(g);
+}
+
+} // namespace
+
+std::string verdicts_markdown(const Study& study, const StudyResults& results)
+{
+    const auto groups = grouped(results);
+    std::string s = verdicts_intro(study) + verdicts_matrix(study, results, groups);
+    for (const auto& g : groups) s += group_verdicts(study, g);
     return s;
 }
 
