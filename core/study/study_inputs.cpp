@@ -102,11 +102,24 @@ void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& i
         });
 }
 
-// A source's "relax": by the study kernel it names (its label or name).
-void resolve_relax_kernels(const Study& study, StudyInputs& inputs)
+// A lattice source's cell counts, one per dimension of its lattice.
+void check_source_size(const Study& study, const StudyParticleSource& s)
+{
+    if (s.source.kind != SourceKind::lattice) return;
+    at_study_path(study.file, s.json_path, [&] {
+        const int dim = load_lattice(s.source.spec).dimension;
+        if (static_cast<int>(s.sizes) != dim)
+            fail_input("size: the lattice is " + std::to_string(dim) + "D, expected " + std::to_string(dim) +
+                       " cell counts");
+    });
+}
+
+// Each particle source's size, and its "relax": by the study kernel it names (its label or name).
+void resolve_particle_sources(const Study& study, StudyInputs& inputs)
 {
     if (!study.particles) return;
     for (const auto& s : study.particles->sources) {
+        check_source_size(study, s);
         auto& index = inputs.relax_kernel.emplace_back();
         if (!s.relax) continue;
         const auto& k = inputs.kernels;
@@ -170,7 +183,7 @@ StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
         for (const auto& kernel : inputs.kernels) per_kernel.push_back(evaluation_mode(study, mode, kernel));
     }
     resolve_sweeps(study, registry, inputs);
-    resolve_relax_kernels(study, inputs);
+    resolve_particle_sources(study, inputs);
     resolve_windows(study, inputs);
     resolve_reference(study, inputs);
     return inputs;

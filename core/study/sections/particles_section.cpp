@@ -1,14 +1,12 @@
 // The particle sets: every kernel of the study on each source, over the section's N_H or eta.
 #include "study/sections/sections.hpp"
 
-#include "lattices/lattice.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 
-#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 
@@ -18,14 +16,7 @@ namespace {
 
 ParticleSet load_source(const Study& study, const StudyParticleSource& s)
 {
-    return at_study_path(study.file, s.json_path, [&] {
-        if (s.source.kind == SourceKind::lattice) {
-            const int dim = load_lattice(s.source.spec).dimension;
-            if (static_cast<int>(s.sizes) != dim)
-                fail_input(fmt::format("size: the lattice is {}D, expected {} cell counts", dim, dim));
-        }
-        return load_particles(s.source);
-    });
+    return at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); });
 }
 
 // The source relaxed by the study kernel it names (resolved with the study's inputs).
