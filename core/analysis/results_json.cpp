@@ -1,6 +1,7 @@
 #include "analysis/results_json.hpp"
 
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -70,11 +71,7 @@ nlohmann::json surface_json(const SurfaceProfile& profile)
 
 void check_k_interval(double k_min, double k_max, const std::string& what)
 {
-    if (!std::isfinite(k_min) || !std::isfinite(k_max) || k_min <= 0 || k_max > 100 || k_min >= k_max) {
-        std::ostringstream s;
-        s << what << ": [" << k_min << ", " << k_max << "] is not allowed, expected 0 < min < max <= 100";
-        throw Error(ExitCode::input, s.str());
-    }
+    check_k_interval(k_min, k_max, ValueSource::argument(what));
 }
 
 nlohmann::json kernel_json(const KernelDefinition& p)

@@ -1,6 +1,7 @@
 #include "analysis/site_errors.hpp"
 
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <cmath>
 
@@ -15,10 +16,8 @@ std::vector<int> every_site(const Lattice& lattice)
 
 void check_sites(const Lattice& lattice, const std::vector<int>& sites, const std::string& what)
 {
-    const std::string range = "lattice " + lattice.name + " has sites 0 to " + std::to_string(lattice.sites() - 1);
-    if (sites.empty()) fail_input(what + ": an empty list of sites; " + range);
-    for (int s : sites)
-        if (s < 0 || s >= lattice.sites()) fail_input(what + ": site " + std::to_string(s) + " does not exist; " + range);
+    if (sites.empty()) fail_input(what + ": an empty list of sites; " + site_range(lattice.name, lattice.sites()));
+    for (int s : sites) check_site(s, lattice.sites(), lattice.name, ValueSource::argument(what));
 }
 
 std::vector<std::unique_ptr<HydrostaticErrors>> errors_per_site(const Kernel& kernel, const Lattice& lattice,

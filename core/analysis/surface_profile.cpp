@@ -5,6 +5,7 @@
 #include "lattices/lattice_points.hpp"
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -99,11 +100,9 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
                                std::optional<int> termination)
 {
     kernel.require_dimension(lattice.dimension, lattice.name);
-    if (!std::isfinite(k) || k <= 0 || k > 100) fail_input("k must be in (0, 100]");
+    check_k(k, ValueSource::argument("k"));
     if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
-    if (site < 0 || site >= lattice.sites())
-        fail_input("site " + std::to_string(site) + " does not exist; lattice " + lattice.name + " has sites 0 to " +
-                   std::to_string(lattice.sites() - 1));
+    check_site(site, lattice.sites(), lattice.name, {});
     const Eigen::Vector3d e = gravity.stableNormalized();
     const int dim = lattice.dimension, sites = lattice.sites();
     require_usable_kernel(kernel, dim, k);

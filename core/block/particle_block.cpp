@@ -6,6 +6,7 @@
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
 #include "support/parallel_for.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -63,7 +64,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     const int dim = lattice.dimension;
     auto started = Clock::now();
     kernel.require_dimension(lattice.dimension, lattice.name);
-    if (!std::isfinite(options.k) || options.k <= 0 || options.k > 100) fail_input("k must be in (0, 100]");
+    check_k(options.k, ValueSource::argument("k"));
     if (!std::isfinite(options.a_p) || options.a_p <= 0) fail_input("a_p must be positive");
     const std::size_t count = checked_block_size(lattice, options);
     require_usable_kernel(kernel, dim, options.k);

@@ -4,6 +4,7 @@
 #include "support/error.hpp"
 #include "support/provenance.hpp"
 #include "study/study_provenance.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -72,17 +73,10 @@ EvaluationMode evaluation_mode(const EvaluationOptions& options)
     EvaluationMode mode;
     mode.continue_past_support = options.continue_past_support;
     if (!options.shells.empty()) {
-        std::vector<double> radii;
-        std::stringstream list(options.shells);
-        std::string item;
-        while (std::getline(list, item, ',')) {
-            char* end = nullptr;
-            double r = std::strtod(item.c_str(), &end);
-            if (item.empty() || !end || *end != '\0' || !std::isfinite(r) || r <= 0)
-                throw Error(ExitCode::usage, "--shells " + options.shells + ": \"" + item +
-                                                 "\" is not a positive number");
-            radii.push_back(r);
-        }
+        const auto radii = parse_number_list(options.shells, ValueSource::option("--shells"));
+        for (double r : radii)
+            if (r <= 0)
+                throw Error(ExitCode::usage, fmt::format("--shells {}: \"{}\" is not a positive number", options.shells, r));
         mode.shell_radii = radii;
     } else if (options.continue_past_support) {
         throw Error(ExitCode::usage, "--continue-past-support needs an explicit --shells list");
@@ -112,25 +106,6 @@ std::vector<std::string> read_inputs(const std::string& source, const std::strin
         if (std::filesystem::exists(spec)) files.push_back(spec);
     return files;
 }
-
-std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max)
-{
-    std::vector<double> values;
-    std::stringstream list(text);
-    std::string item;
-    while (std::getline(list, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
-            throw Error(ExitCode::usage, option + " " + text + ": \"" + item + "\" is not a finite number");
-        values.push_back(v);
-    }
-    if (values.size() < min || values.size() > max)
-        throw Error(ExitCode::usage, option + " " + text + ": expected " + std::to_string(min) +
-                                         (max > min ? " to " + std::to_string(max) : "") + " comma-separated numbers");
-    return values;
-}
-
 
 // Every document says where it comes from; an array is a list of documents.
 nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice)

@@ -7,6 +7,7 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "support/output_targets.hpp"
+#include "support/value_checks.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -48,8 +49,6 @@ void add_evaluation_options(CLI::App& command, EvaluationOptions& options);
 EvaluationMode evaluation_mode(const EvaluationOptions& options);
 Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
 
-// "a,b[,c]": between `min` and `max` finite numbers; Error(usage) naming `option` otherwise.
-std::vector<double> parse_number_list(const std::string& option, const std::string& text, std::size_t min, std::size_t max);
 
 // The output options a command was given (an option given as '' too, for the check to refuse).
 std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options);

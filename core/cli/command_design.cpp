@@ -6,6 +6,7 @@
 #include "analysis/design.hpp"
 #include "analysis/results_json.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -41,7 +42,7 @@ Action add_design_command(CLI::App& app)
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
+        check_k_interval(options->k_min, options->k_max, ValueSource::argument("--kmin/--kmax"));
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);

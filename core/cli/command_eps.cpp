@@ -5,6 +5,7 @@
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -33,8 +34,7 @@ Action add_eps_command(CLI::App& app)
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
-            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100]", options->k));
+        check_k(options->k, ValueSource::option("--k"));
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
@@ -44,7 +44,7 @@ Action add_eps_command(CLI::App& app)
         if (axis == Axis::nh) fail_input("--axis nh names a window, not one value: give --k on the k or eta axis");
         const double given = options->k;
         if (axis == Axis::eta) options->k = k_of_eta(given, a_p, lattice.dimension);
-        if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
+        if (!k_in_range(options->k))
             fail_input(fmt::format("--k {} on the eta axis is k = {}, expected k in (0, 100]", given, options->k));
         const double eta = eta_of_k(options->k, a_p, lattice.dimension);
         // Every site: the top-level values describe the one chosen with --site.

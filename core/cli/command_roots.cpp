@@ -16,6 +16,7 @@
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -189,7 +190,7 @@ Action add_roots_command(CLI::App& app)
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        if (options->axis == "k") check_k_interval(options->k_min, options->k_max, "--kmin/--kmax");
+        if (options->axis == "k") check_k_interval(options->k_min, options->k_max, ValueSource::argument("--kmin/--kmax"));
         if (!std::isfinite(options->epsilon) || options->epsilon <= 0 || options->epsilon >= 1)
             throw Error(ExitCode::usage, "--epsilon must be in (0, 1)");
         check_gamma(options->gamma, "--gamma");

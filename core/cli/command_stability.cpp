@@ -8,6 +8,7 @@
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -24,21 +25,10 @@ namespace {
 Eigen::Vector3d parse_wavevector(const std::string& text, int dimension)
 {
     std::vector<double> values;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        std::size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != item.size() || !std::isfinite(v))
-            throw Error(ExitCode::usage, fmt::format("--wavevector {}: \"{}\" is not a finite number; expected {} "
-                                                     "comma-separated numbers in 1/d", one_line(text), one_line(item),
-                                                     dimension));
-        values.push_back(v);
+    try {
+        values = parse_number_list(text, ValueSource::option("--wavevector"), 0);
+    } catch (const Error& e) {
+        throw Error(e.code(), fmt::format("{}; expected {} comma-separated numbers in 1/d", e.what(), dimension));
     }
     return checked_wavevector(values, dimension, "--wavevector " + one_line(text));
 }
@@ -146,14 +136,10 @@ Action add_stability_command(CLI::App& app)
     return [options] {
         const bool over_k = options->k_max > 0 || options->k_min > 0;
         if (over_k) {
-            if (!std::isfinite(options->k_min) || !std::isfinite(options->k_max) || options->k_min <= 0 ||
-                options->k_max > 100 || options->k_min >= options->k_max)
-                throw Error(ExitCode::usage, fmt::format("--kmin {} --kmax {}: expected 0 < kmin < kmax <= 100",
-                                                         options->k_min, options->k_max));
+            check_k_interval(options->k_min, options->k_max, ValueSource::option("--kmin"), ValueSource::option("--kmax"));
             if (!options->wavevector.empty()) throw Error(ExitCode::usage, "--wavevector needs --k, not a k range");
-        } else if (!std::isfinite(options->k) || options->k <= 0 || options->k > 100)
-            throw Error(ExitCode::usage, fmt::format("--k {} is not allowed, expected a number in (0, 100] (or give "
-                                                     "--kmin and --kmax)", options->k));
+        } else
+            check_k(options->k, ValueSource::option("--k"), " (or give --kmin and --kmax)");
         check_gamma(options->gamma, "--gamma");
         check_horizon(options->horizon, "--horizon");
         const HModel h_model = parse_h_model(options->h_model, "--h-model");

@@ -3,6 +3,7 @@
 #include "cli/command.hpp"
 #include "support/error.hpp"
 #include "support/sha256.hpp"
+#include "support/value_checks.hpp"
 
 #include <cmath>
 #include <optional>
@@ -34,7 +35,7 @@ ParticleSource source_of(const SourceOptions& o)
         throw Error(ExitCode::usage, "--count is for poisson sets");
     if (source.kind == SourceKind::lattice) {
         if (o.size.empty()) throw Error(ExitCode::usage, "a lattice source needs --size N1,N2[,N3] (cells of the periodic block)");
-        const auto cells = parse_number_list("--size", o.size, 2, 3);
+        const auto cells = parse_number_list(o.size, ValueSource::option("--size"), 2, 3);
         for (std::size_t a = 0; a < cells.size(); ++a) {
             if (cells[a] != std::floor(cells[a]) || cells[a] < 1 || cells[a] > 1e6)
                 throw Error(ExitCode::usage, "--size " + o.size + ": expected positive whole numbers of cells");
@@ -56,7 +57,7 @@ ParticleSource source_of(const SourceOptions& o)
         source.poisson.dimension = o.dim ? o.dim : 3;
         source.poisson.seed = o.seed;
         if (!o.box.empty()) {
-            const auto sides = parse_number_list("--box", o.box, 1, 3);
+            const auto sides = parse_number_list(o.box, ValueSource::option("--box"), 1, 3);
             for (int a = 0; a < 3; ++a)
                 source.poisson.box[a] = sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
             if (sides.size() != 1 && static_cast<int>(sides.size()) != source.poisson.dimension)
@@ -67,7 +68,7 @@ ParticleSource source_of(const SourceOptions& o)
         source.file.array = o.array;
         if (o.dim) source.file.dimension = o.dim;
         if (!o.box.empty()) {
-            const auto sides = parse_number_list("--box", o.box, 2, 3);
+            const auto sides = parse_number_list(o.box, ValueSource::option("--box"), 2, 3);
             source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
         }
     } else if (!o.array.empty()) {

@@ -4,6 +4,7 @@
 
 #include "support/error.hpp"
 #include "support/json_input.hpp"
+#include "support/value_checks.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <muParser.h>
@@ -129,7 +130,7 @@ private:
 std::string identifier(const JsonNode& node)
 {
     std::string s = node.string();
-    if (s.size() > 64 || s.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+    if (!is_identifier(s))
         node.error("expected a name of up to 64 characters of [a-z0-9_]");
     return s;
 }

@@ -4,6 +4,7 @@
 #include "kernels/second_derivative.hpp"
 #include "support/error.hpp"
 #include "support/json_input.hpp"
+#include "support/value_checks.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -22,8 +23,8 @@ Kernel::Kernel(std::shared_ptr<const KernelDefinition> definition, const std::ma
         std::size_t i = 0;
         while (i < names.size() && names[i] != name) ++i;
         if (i == names.size()) {
-            std::string message = "kernel " + definition_->name + " has no parameter \"" + name + "\"";
-            if (auto s = closest_match(name, names)) message += " (did you mean \"" + *s + "\"?)";
+            std::string message =
+                "kernel " + definition_->name + " has no parameter \"" + name + "\"" + did_you_mean(name, names);
             fail_input(message + (names.empty() ? "; it has no parameters" : ""));
         }
         const auto& p = definition_->parameters[i];

@@ -11,6 +11,7 @@
 #include "support/plugin_call_guard.hpp"
 #include "support/plugin_watchdog.hpp"
 #include "support/results_output.hpp"
+#include "support/value_checks.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -33,13 +34,7 @@ namespace {
 
 bool valid_identifier(const char* s)
 {
-    if (!s || !*s) return false;
-    std::size_t n = 0;
-    for (; s[n] && n <= 64; ++n) {
-        char c = s[n];
-        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
-    }
-    return n <= 64;
+    return s && is_identifier(std::string_view(s, strnlen(s, 65)));
 }
 
 bool valid_text(const char* s)

@@ -11,6 +11,7 @@
 #include "support/interruption.hpp"
 #include "support/json_input.hpp"
 #include "support/parallel_for.hpp"
+#include "support/value_checks.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -234,8 +235,7 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::s
         found_source = fs::absolute(c.file).lexically_normal().string();
     }
     if (found) return found;
-    std::string message = "unknown kernel \"" + spec + "\"";
-    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    std::string message = "unknown kernel \"" + spec + "\"" + did_you_mean(spec, names);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     fail_input(message + "; known kernels: " + (list.empty() ? "none found (no plugin folder)" : list));

@@ -7,6 +7,7 @@
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
+#include "support/value_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -68,8 +69,8 @@ double Lattice::volume_coefficient(const std::string& spec) const
         names.push_back(c.name);
         list += (list.empty() ? "" : ", ") + c.name;
     }
-    std::string message = "lattice " + name + " has no volume coefficient \"" + spec + "\"";
-    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    std::string message =
+        "lattice " + name + " has no volume coefficient \"" + spec + "\"" + did_you_mean(spec, names);
     fail_input(message + "; expected one of " + list + " or a positive number");
 }
 
@@ -85,8 +86,7 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
     lattice.file = file;
     auto name_node = root.at("name");
     lattice.name = name_node.string();
-    if (lattice.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
-        lattice.name.size() > 64)
+    if (!is_identifier(lattice.name, "-"))
         name_node.error("expected a name of up to 64 characters of [a-z0-9_-]");
     lattice.title = root.find("title") ? printable_text(root.at("title").string()) : lattice.name;
     lattice.dimension = static_cast<int>(root.at("dimension").integer_in(2, 3));
@@ -152,7 +152,7 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
         extra->expect_object();
         for (const auto& [key, unused] : extra->value().items()) {
             auto value_node = extra->at(key);
-            if (key.empty() || key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+            if (!is_identifier(key, {}, std::string::npos))
                 value_node.error("expected a name of [a-z0-9_]");
             // Only the computed names can clash (the parser refuses a key given twice): linear in the keys.
             for (std::size_t i = 0; i < computed; ++i)
@@ -184,8 +184,7 @@ Lattice load_lattice(const std::string& spec)
     auto names = shipped_lattice_names();
     if (std::find(names.begin(), names.end(), spec) != names.end())
         return read_lattice(data_folder("lattices") / (spec + ".json"));
-    std::string message = "unknown lattice \"" + spec + "\"";
-    if (auto s = closest_match(spec, names)) message += " (did you mean \"" + *s + "\"?)";
+    std::string message = "unknown lattice \"" + spec + "\"" + did_you_mean(spec, names);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     fail_input(message + "; shipped lattices: " + list + ", or give a path to a lattice file");
@@ -193,16 +192,7 @@ Lattice load_lattice(const std::string& spec)
 
 Eigen::Vector3d parse_direction(const std::string& text, int dimension, const std::string& what)
 {
-    std::vector<double> parts;
-    std::stringstream list(text);
-    std::string item;
-    while (std::getline(list, item, ',')) {
-        char* end = nullptr;
-        double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
-            fail_input(what + " \"" + text + "\": \"" + item + "\" is not a finite number");
-        parts.push_back(v);
-    }
+    const auto parts = parse_number_list(text, ValueSource::argument(what), 0);
     if (static_cast<int>(parts.size()) != dimension)
         fail_input(what + " \"" + text + "\": expected " + std::to_string(dimension) + " comma-separated components");
     Eigen::Vector3d v = Eigen::Vector3d::Zero();

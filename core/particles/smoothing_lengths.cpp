@@ -1,6 +1,7 @@
 #include "particles/smoothing_lengths.hpp"
 
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -43,8 +44,7 @@ std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kern
     case SmoothingRule::k:
         if (set.spacing <= 0)
             fail_input(fmt::format("{}: --k needs a lattice (h = k d); for other sets give --eta or --nh", set.name));
-        if (!std::isfinite(spec.value) || spec.value <= 0 || spec.value > 100)
-            fail_input(fmt::format("--k {}: expected a number in (0, 100]", spec.value));
+        if (!k_in_range(spec.value)) fail_input(fmt::format("--k {}: expected a number in (0, 100]", spec.value));
         return uniform(spec.value * set.spacing);
     case SmoothingRule::file: break;
     }

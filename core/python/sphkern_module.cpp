@@ -24,6 +24,7 @@
 #include "support/error.hpp"
 #include "support/install_paths.hpp"
 #include "support/interruption.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -105,12 +106,6 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
     return parse_direction(text, lattice.dimension, "gravity");
 }
 
-void check_k(double k, const char* what)
-{
-    if (!std::isfinite(k) || k <= 0 || k > 100)
-        throw Error(ExitCode::usage, fmt::format("{} = {} is not allowed, expected a number in (0, 100]", what, k));
-}
-
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
              const py::object& a_p, const py::object& gravity, int site, const py::object& params)
 {
@@ -124,7 +119,7 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     if (n == 0) fail_input("k: an empty array");
     double k_max = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        check_k(ks[i], "k");
+        check_k(ks[i], ValueSource::argument("k"));
         k_max = std::max(k_max, ks[i]);
     }
     std::vector<py::ssize_t> shape(k.shape(), k.shape() + k.ndim());
@@ -164,7 +159,7 @@ public:
 private:
     py::array_t<double> apply(const DoubleArray& q, int dim, double k, bool derivative) const
     {
-        check_k(k, "k");
+        check_k(k, ValueSource::argument("k"));
         kernel_.require_dimension(dim, std::to_string(dim) + "D space");
         std::vector<py::ssize_t> shape(q.shape(), q.shape() + q.ndim());
         py::array_t<double> out(shape);
@@ -244,7 +239,7 @@ PYBIND11_MODULE(sphkern, m)
               const RootsStabilityOptions model{gamma, horizon, steps, parse_h_model(h_model, "h_model")};
               const CodeConvention* code =
                   convention.is_none() ? nullptr : &code_convention(convention.cast<std::string>(), "convention");
-              if (axis == Axis::k) check_k_interval(kmin, kmax, "kmin/kmax");
+              if (axis == Axis::k) check_k_interval(kmin, kmax, ValueSource::argument("kmin/kmax"));
               if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) fail_input("epsilon must be in (0, 1)");
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);
@@ -295,7 +290,7 @@ PYBIND11_MODULE(sphkern, m)
     m.def("surface",
           [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
              int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
-              check_k(k, "k");
+              check_k(k, ValueSource::argument("k"));
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);
               const double ap = ap_of(lattice, a_p);
@@ -324,14 +319,14 @@ PYBIND11_MODULE(sphkern, m)
                   if (kmin.is_none() || kmax.is_none() || !k.is_none() || !wavevector.is_none() || path)
                       fail_input("kmin and kmax go together, without k, wavevector or path");
                   const double lo = kmin.cast<double>(), hi = kmax.cast<double>();
-                  check_k_interval(lo, hi, "kmin/kmax");
+                  check_k_interval(lo, hi, ValueSource::argument("kmin/kmax"));
                   py::gil_scoped_release unlocked;
                   document = stability_over_k_document(kernel, lattice, lo, hi, steps, gamma, grid, cores, horizon,
                                                        h_model);
               } else {
                   if (k.is_none()) fail_input("k: expected a number (or kmin and kmax)");
                   const double at = k.cast<double>();
-                  check_k(at, "k");
+                  check_k(at, ValueSource::argument("k"));
                   if (!wavevector.is_none()) {
                       if (path) fail_input("wavevector and path: give one of them");
                       const auto kappa = checked_wavevector(wavevector.cast<std::vector<double>>(), lattice.dimension,
@@ -359,7 +354,7 @@ PYBIND11_MODULE(sphkern, m)
           [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
              const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
              int site, const py::object& params) {
-              check_k_interval(kmin, kmax, "kmin/kmax");
+              check_k_interval(kmin, kmax, ValueSource::argument("kmin/kmax"));
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);
               DesignProblem problem;

@@ -8,6 +8,7 @@
 #include "stability/mode_kind.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -22,8 +23,8 @@ namespace {
 
 void check_request(const PairingRequest& r)
 {
-    if (!std::isfinite(r.k_min) || !std::isfinite(r.k_max) || r.k_min <= 0 || r.k_max < r.k_min || r.k_max > 100)
-        fail_input(fmt::format("--kmin {:g} --kmax {:g}: expected 0 < kmin <= kmax <= 100", r.k_min, r.k_max));
+    check_k_interval(r.k_min, r.k_max, ValueSource::argument("--kmin"), ValueSource::argument("--kmax"),
+                     IntervalEnds::may_meet);
     if (r.samples < 1 || r.samples > 1000) fail_input(fmt::format("--samples {}: expected 1 to 1000", r.samples));
     if (r.samples > 1 && r.k_max == r.k_min) fail_input("--samples: several samples need kmin < kmax");
     if (!std::isfinite(r.noise) || r.noise <= 0 || r.noise > 0.01)

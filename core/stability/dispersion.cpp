@@ -4,6 +4,7 @@
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
+#include "support/value_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -36,7 +37,7 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
 {
     if (!std::isfinite(gamma) || gamma < min_gamma || gamma > max_gamma)
         fail_input(fmt::format("gamma = {} is not allowed, expected a number in [1e-06, 1e+06]", gamma));
-    if (!std::isfinite(k) || k <= 0 || k > 100) fail_input(fmt::format("k = {} is not allowed, expected k in (0, 100]", k));
+    check_k(k, ValueSource::argument("k"));
     kernel.require_dimension(dim_, lattice.name);
     require_usable_kernel(kernel, dim_, k);
     mass_ = lattice.volume_per_site(); // rho0 = 1 with a_p voronoi; the spectrum does not depend on it

@@ -2,6 +2,7 @@
 
 #include "support/error.hpp"
 #include "support/interruption.hpp"
+#include "support/value_checks.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -48,37 +49,7 @@ int nesting_depth(const std::string& text)
     return deepest;
 }
 
-std::size_t edit_distance(std::string_view a, std::string_view b)
-{
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
 } // namespace
-
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates)
-{
-    std::optional<std::string> best;
-    std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
-    for (const auto& candidate : candidates) {
-        std::size_t distance = edit_distance(word, candidate);
-        if (distance < best_distance) {
-            best_distance = distance;
-            best = candidate;
-        }
-    }
-    return best;
-}
 
 std::string read_input_file(const fs::path& file, std::size_t limit, const std::string& what)
 {
@@ -236,8 +207,7 @@ void JsonNode::expect_keys(std::initializer_list<std::string_view> known) const
     std::vector<std::string> names(known.begin(), known.end());
     for (const auto& [key, unused] : value_->items()) {
         if (std::find(names.begin(), names.end(), key) != names.end()) continue;
-        std::string message = "unknown key \"" + key + "\"";
-        if (auto suggestion = closest_match(key, names)) message += " (did you mean \"" + *suggestion + "\"?)";
+        std::string message = "unknown key \"" + key + "\"" + did_you_mean(key, names);
         std::string list;
         for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
         error(message + "; expected one of: " + list);

@@ -72,7 +72,5 @@ private:
 
 std::string json_type_name(const nlohmann::json& value);
 
-// The closest of `candidates` to `word` by edit distance, if any is close enough.
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
 
 } // namespace sphkern
