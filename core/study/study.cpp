@@ -9,6 +9,7 @@
 #include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
+#include "support/value_checks.hpp"
 #include "support/work_budget.hpp"
 #include "stability/stability_budget.hpp"
 
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <regex>
 
 namespace sphkern {
@@ -70,8 +72,7 @@ std::vector<std::string> string_list(const JsonNode& node)
 std::string read_name(const JsonNode& node)
 {
     std::string name = node.string();
-    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
-        node.error("expected a name of [a-z0-9_-]");
+    if (!is_identifier(name, "-", std::numeric_limits<std::size_t>::max())) node.error("expected a name of [a-z0-9_-]");
     return name;
 }
 
@@ -295,7 +296,7 @@ void read_window(const JsonNode& k, Study& study)
         study.axis = at_study_path(v->file(), v->path(), [&] { return parse_axis(name, "axis"); });
     }
     at_study_path(k.file(), k.path(), [&] {
-        if (study.axis == Axis::k) check_k_interval(study.k_min, study.k_max, "k interval");
+        if (study.axis == Axis::k) check_k_interval(study.k_min, study.k_max, ValueSource::argument("k interval"));
         else if (!(study.k_min > 0 && study.k_min < study.k_max && study.k_max <= 1e5))
             fail_input(std::string("the window on the ") + axis_name(study.axis) + " axis needs 0 < min < max");
     });

@@ -1,8 +1,9 @@
 // Errors in a study's inputs name the study file and the JSON Pointer of the entry at
-// fault: "file: /pointer: what is wrong, what was expected".
+// fault: "file: /pointer: what is wrong, what was expected" (support/value_checks.hpp's
+// ValueSource::json).
 #pragma once
 
-#include "support/error.hpp"
+#include "support/value_checks.hpp"
 
 #include <string>
 #include <utility>
@@ -14,17 +15,13 @@ namespace sphkern {
 template <class F>
 decltype(auto) at_study_path(const std::string& file, const std::string& pointer, F&& f)
 {
-    try {
-        return std::forward<F>(f)();
-    } catch (const Error& e) {
-        throw Error(e.code(), file + ": " + pointer + ": " + e.what());
-    }
+    return at_source(ValueSource::json(file, pointer), std::forward<F>(f));
 }
 
 // Refuses an input of the study (exit 3) at `pointer`.
 [[noreturn]] inline void fail_study_input(const std::string& file, const std::string& pointer, const std::string& what)
 {
-    fail_input(file + ": " + pointer + ": " + what);
+    ValueSource::json(file, pointer).fail(what);
 }
 
 } // namespace sphkern

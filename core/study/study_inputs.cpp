@@ -126,9 +126,13 @@ void resolve_particle_sources(const Study& study, StudyInputs& inputs)
         const auto it = std::find_if(k.begin(), k.end(), [&](const Kernel& kernel) {
             return kernel.label() == s.relax->kernel || kernel.name() == s.relax->kernel;
         });
-        if (it == k.end())
+        if (it == k.end()) {
+            std::vector<std::string> labels;
+            for (const auto& kernel : k) labels.push_back(kernel.label());
             fail_study_input(study.file, s.relax->json_path,
-                             "kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels");
+                             "kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
+                                 did_you_mean(s.relax->kernel, labels));
+        }
         index = static_cast<std::size_t>(it - k.begin());
     }
 }
