@@ -190,23 +190,27 @@ std::pair<double, double> default_parameter_range(const Kernel& kernel, const st
     return {0, 1}; // an unknown parameter: design_kernel names the known ones
 }
 
-DesignResult design_kernel(const Kernel& kernel, const DesignProblem& p)
+void check_design_parameter(const Kernel& kernel, const std::string& parameter, double min, double max)
 {
     const auto& params = kernel.definition().parameters;
-    auto declared = std::find_if(params.begin(), params.end(), [&](const auto& q) { return q.name == p.parameter; });
+    auto declared = std::find_if(params.begin(), params.end(), [&](const auto& q) { return q.name == parameter; });
     if (declared == params.end()) {
         std::string list;
         for (const auto& q : params) list += (list.empty() ? "" : ", ") + q.name;
-        fail_input("kernel " + kernel.name() + " has no parameter \"" + p.parameter + "\"" +
+        fail_input("kernel " + kernel.name() + " has no parameter \"" + parameter + "\"" +
                    (list.empty() ? "; it has no parameters (a blend A+B has alpha)" : "; it has: " + list));
     }
-    if (!(p.parameter_min < p.parameter_max) || p.parameter_min < declared->min_value ||
-        p.parameter_max > declared->max_value) {
+    if (!(min < max) || min < declared->min_value || max > declared->max_value) {
         std::ostringstream s;
-        s << "parameter range [" << p.parameter_min << ", " << p.parameter_max << "] is not allowed, expected "
-          << declared->min_value << " <= min < max <= " << declared->max_value;
+        s << "parameter range [" << min << ", " << max << "] is not allowed, expected " << declared->min_value
+          << " <= min < max <= " << declared->max_value;
         fail_input(s.str());
     }
+}
+
+DesignResult design_kernel(const Kernel& kernel, const DesignProblem& p)
+{
+    check_design_parameter(kernel, p.parameter, p.parameter_min, p.parameter_max);
     kernel.require_dimension(p.lattice->dimension, p.lattice->name);
     const bool blend = kernel.definition().name.find('+') != std::string::npos && p.parameter == "alpha";
 

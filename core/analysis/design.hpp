@@ -42,4 +42,8 @@ struct DesignResult {
 // Throws Error(input) for an unknown parameter or a range outside the declared one.
 DesignResult design_kernel(const Kernel& kernel, const DesignProblem& problem);
 
+// Refuses (Error(input)) a parameter the kernel does not declare, or a range outside its
+// declared one; design_kernel checks this first.
+void check_design_parameter(const Kernel& kernel, const std::string& parameter, double min, double max);
+
 } // namespace sphkern

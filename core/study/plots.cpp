@@ -299,13 +299,13 @@ void draw_stability_figures(const StudyResults& results, Canvas& canvas)
 {
     std::vector<std::string> lattices;
     for (const auto& c : results.stability)
-        if (c.refused.empty() && std::find(lattices.begin(), lattices.end(), c.lattice) == lattices.end())
+        if (!c.refused && std::find(lattices.begin(), lattices.end(), c.lattice) == lattices.end())
             lattices.push_back(c.lattice);
     int block = 0;
     for (const auto& lattice : lattices) {
         std::vector<const StabilityCase*> cases;
         for (const auto& c : results.stability)
-            if (c.lattice == lattice && c.refused.empty()) cases.push_back(&c);
+            if (c.lattice == lattice && !c.refused) cases.push_back(&c);
         const auto [rows, columns] = layout(cases.size());
         std::string script = fmt::format(
             "set multiplot layout {},{} title '{}: the lowest squared frequency of each branch over the Brillouin "

@@ -1,7 +1,6 @@
 #include "study/reference_comparison.hpp"
 
 #include "support/error.hpp"
-#include "support/json_input.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,88 +20,85 @@ const char* status_name(ComparisonStatus status)
 namespace {
 
 // Every value the row prints as a number, against the matching root: k and both errors.
-void compare_values(const JsonNode& row, const Root& computed, double tolerance, ComparisonRow& c)
+void compare_values(const ReferenceRow& row, const Root& computed, double tolerance, ComparisonRow& c)
 {
     c.compared = {"k"};
-    if (std::abs(computed.k - row.at("k").number()) > tolerance) c.differing.push_back("k");
-    for (const char* key : {"eps_rho", "eps_gradp"}) {
-        const auto& v = row.at(key).value();
-        if (!v.is_number()) continue; // the paper prints no number ("> 1"): nothing to compare
+    if (std::abs(computed.k - row.k) > tolerance) c.differing.push_back("k");
+    const std::pair<const char*, std::optional<double>> printed[] = {{"eps_rho", row.eps_rho}, {"eps_gradp", row.eps_gradp}};
+    for (const auto& [key, v] : printed) {
+        if (!v) continue; // the paper prints no number ("> 1"): nothing to compare
         c.compared.push_back(key);
         const double value = std::string(key) == "eps_rho" ? computed.values.eps_rho : computed.values.eps_gradp;
-        if (!(std::abs(value - v.get<double>()) <= tolerance)) c.differing.push_back(key);
+        if (!(std::abs(value - *v) <= tolerance)) c.differing.push_back(key);
     }
+}
+
+// Whether the reference declares an erratum for one value ("erratum_<key>").
+bool declared_erratum(const ReferenceRow& row, const std::string& key)
+{
+    return (key == "eps_rho" && row.erratum_eps_rho) || (key == "eps_gradp" && row.erratum_eps_gradp);
 }
 
 // Reproduced only when nothing differs; an erratum when every difference is one the
 // reference declares ("erratum" covers the whole row, "erratum_<key>" one value).
-ComparisonStatus comparison_status(const JsonNode& row, const std::vector<std::string>& differing)
+ComparisonStatus comparison_status(const ReferenceRow& row, const std::vector<std::string>& differing)
 {
     if (differing.empty()) return ComparisonStatus::reproduced;
-    if (row.find("erratum")) return ComparisonStatus::erratum;
+    if (row.erratum) return ComparisonStatus::erratum;
     for (const auto& key : differing)
-        if (!row.find("erratum_" + key)) return ComparisonStatus::differs;
+        if (!declared_erratum(row, key)) return ComparisonStatus::differs;
     return ComparisonStatus::erratum;
+}
+
+// A row the paper finds no root for: reproduced when the case has none either.
+ComparisonRow compare_no_root(const ReferenceRow& row, const StudyCase& match)
+{
+    ComparisonRow c;
+    c.reference = row.published;
+    c.kernel = row.kernel;
+    const bool none = match.scan.roots.empty();
+    if (!none) c.differing = {"roots"};
+    c.status = none ? ComparisonStatus::reproduced : ComparisonStatus::differs;
+    c.note = none ? "no root in the interval" : "sphkern finds roots in the interval";
+    return c;
+}
+
+ComparisonRow compare_row(const ReferenceRow& row, const StudyCase& match, double tolerance)
+{
+    if (row.no_root) return compare_no_root(row, match);
+    ComparisonRow c;
+    c.reference = row.published;
+    c.kernel = row.kernel;
+    const double k = row.k;
+    const auto function = row.eps_gradp && *row.eps_gradp == 0 ? ErrorFunction::gradp : ErrorFunction::rho;
+    c.function = function;
+    for (const auto& r : match.scan.roots)
+        if (r.function == function && (!c.computed || std::abs(r.k - k) < std::abs(c.computed->k - k))) c.computed = r;
+    if (!c.computed || std::abs(c.computed->k - k) > 0.05) {
+        c.computed.reset();
+        c.differing = {"k"};
+        c.note = std::string("no root of eps_") + function_name(function) + " near this k";
+    } else {
+        compare_values(row, *c.computed, tolerance, c);
+    }
+    c.status = comparison_status(row, c.differing);
+    if (row.erratum) c.note = *row.erratum;
+    if (row.erratum_eps_gradp && c.status == ComparisonStatus::erratum) c.note = "eps_gradP: " + *row.erratum_eps_gradp;
+    if (row.erratum_eps_rho && c.status == ComparisonStatus::erratum) c.note = "eps_rho: " + *row.erratum_eps_rho;
+    return c;
 }
 
 } // namespace
 
-void compare_with_reference(const Study& study, StudyResults& results)
+void compare_with_reference(const ReferenceTable& table, StudyResults& results)
 {
-    auto document = read_json_file(*study.compare_with);
-    JsonNode root(document, study.compare_with->string());
-    root.expect_keys({"source", "lattice", "volume_coefficient", "mode", "tolerance", "rows"});
-    results.reference = document;
-    std::string lattice = root.at("lattice").string(), ap = root.at("volume_coefficient").string(),
-                mode = root.at("mode").string();
-    results.tolerance = root.find("tolerance") ? root.at("tolerance").number_in(0, 1) : 1e-4;
-    auto rows = root.at("rows");
-    rows.expect_array(1);
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        auto row = rows[i];
-        ComparisonRow c;
-        c.reference = row.value();
-        c.kernel = row.at("kernel").string();
-        auto match = std::find_if(results.cases.begin(), results.cases.end(), [&](const StudyCase& s) {
-            return s.lattice == lattice && s.mode == mode && s.ap_name == ap && s.kernel == c.kernel;
-        });
-        if (match == results.cases.end())
-            row.error("the study has no case " + c.kernel + " / " + lattice + " / " + ap + " / mode " + mode);
-        row.expect_keys({"kernel", "k", "eps_rho", "eps_gradp", "printed_eps_gradp", "no_root", "erratum",
-                         "erratum_eps_gradp", "erratum_eps_rho"});
-        for (const char* key : {"printed_eps_gradp", "erratum", "erratum_eps_gradp", "erratum_eps_rho"})
-            if (auto v = row.find(key)) v->string();
-        if (auto no_root = row.find("no_root"); no_root && no_root->boolean()) {
-            if (!match->scan.roots.empty()) c.differing = {"roots"};
-            c.status = match->scan.roots.empty() ? ComparisonStatus::reproduced : ComparisonStatus::differs;
-            c.note = match->scan.roots.empty() ? "no root in the interval" : "sphkern finds roots in the interval";
-            results.comparison.push_back(c);
-            continue;
-        }
-        double k = row.at("k").number();
-        for (const char* key : {"eps_rho", "eps_gradp"}) // a number, or null where the paper prints none
-            if (auto v = row.at(key); !v.value().is_null()) v.number();
-        const auto& gradp_value = row.at("eps_gradp").value();
-        const auto function = gradp_value.is_number() && gradp_value.get<double>() == 0 ? ErrorFunction::gradp
-                                                                                        : ErrorFunction::rho;
-        c.function = function;
-        for (const auto& r : match->scan.roots)
-            if (r.function == function && (!c.computed || std::abs(r.k - k) < std::abs(c.computed->k - k)))
-                c.computed = r;
-        if (!c.computed || std::abs(c.computed->k - k) > 0.05) {
-            c.computed.reset();
-            c.differing = {"k"};
-            c.note = std::string("no root of eps_") + function_name(function) + " near this k";
-        } else {
-            compare_values(row, *c.computed, results.tolerance, c);
-        }
-        c.status = comparison_status(row, c.differing);
-        if (auto e = row.find("erratum")) c.note = e->string();
-        if (auto e = row.find("erratum_eps_gradp"); e && c.status == ComparisonStatus::erratum)
-            c.note = "eps_gradP: " + e->string();
-        if (auto e = row.find("erratum_eps_rho"); e && c.status == ComparisonStatus::erratum)
-            c.note = "eps_rho: " + e->string();
-        results.comparison.push_back(c);
+    results.reference = table.document;
+    results.tolerance = table.tolerance;
+    for (const auto& row : table.rows) {
+        const StudyCase* match = find_case(
+            results, {table.lattice_index, row.kernel_index, table.volume_coefficient_index, table.mode_index});
+        if (!match) fail_input(table.file + ": " + row.json_path + ": the study has no case " + row.kernel);
+        results.comparison.push_back(compare_row(row, *match, results.tolerance));
     }
 }
 

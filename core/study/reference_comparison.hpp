@@ -2,12 +2,13 @@
 // row, reproduced, different, or an erratum of the publication.
 #pragma once
 
-#include "study/study.hpp"
+#include "study/reference_table.hpp"
 #include "study/study_results.hpp"
 
 namespace sphkern {
 
-// Reads study.compare_with and fills results.comparison, results.reference and results.tolerance.
-void compare_with_reference(const Study& study, StudyResults& results);
+// Compares each row of a resolved table with its bulk case; fills results.comparison,
+// results.reference and results.tolerance.
+void compare_with_reference(const ReferenceTable& table, StudyResults& results);
 
 } // namespace sphkern

@@ -42,13 +42,13 @@ std::string method_document() { return "[method.md](method.md)"; }
 // The value of k on the study's axis, for the tables: "" on the k axis (nh is the N_H column).
 std::string on_axis(const Study& study, double k, const StudyCase& c)
 {
-    if (study.axis != "eta") return "";
+    if (study.axis != Axis::eta) return "";
     return fmt::format(" (eta {:.4f})", eta_of_k(k, c.a_p, c.dimension));
 }
 
 std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& intervals, const StudyCase& c)
 {
-    if (study.axis != "eta" || intervals.empty()) return "";
+    if (study.axis != Axis::eta || intervals.empty()) return "";
     std::string s;
     for (const auto& i : intervals)
         s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", eta_of_k(i.from, c.a_p, c.dimension),
@@ -73,9 +73,9 @@ std::string intervals_text(const Acceptance& a) { return intervals_text(a.interv
 std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
 {
     std::vector<std::vector<const StudyCase*>> groups;
-    std::map<std::tuple<std::string, std::string, std::string>, std::size_t> index;
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t>, std::size_t> index;
     for (const auto& c : results.cases) {
-        auto key = std::make_tuple(c.lattice, c.mode, c.ap_name);
+        auto key = std::make_tuple(c.key.lattice, c.key.mode, c.key.volume_coefficient);
         auto [it, added] = index.emplace(key, groups.size());
         if (added) groups.emplace_back();
         groups[it->second].push_back(&c);
@@ -136,14 +136,18 @@ std::string replication_markdown(const StudyResults& results)
     return s;
 }
 
-std::string verdicts_markdown(const Study& study, const StudyResults& results)
+namespace {
+
+using CaseGroup = std::vector<const StudyCase*>;
+
+std::string verdicts_intro(const Study& study)
 {
     std::string s = fmt::format("## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
-                                study.epsilon, study.epsilon, study.axis, study.k_min, study.k_max);
-    if (study.axis != "k")
+                                study.epsilon, study.epsilon, axis_name(study.axis), study.k_min, study.k_max);
+    if (study.axis != Axis::k)
         s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
                          "its kernel, lattice and a_p.\n\n",
-                         study.axis, study.axis == "eta" ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
+                         axis_name(study.axis), study.axis == Axis::eta ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
                                                          : "nh = the number of neighbours inside the support");
     s += fmt::format("The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
                      "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
@@ -151,12 +155,16 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
                      "tables below.\n\n",
                      study.lateral ? ", the lateral error included" : "",
                      study.sites ? "the sites listed in the study" : "every site of each lattice");
-    // A summary matrix first: kernels down, lattice / mode / a_p across.
-    auto groups = grouped(results);
+    return s;
+}
+
+// A summary matrix: kernels down, lattice / mode / a_p across.
+std::string verdicts_matrix(const Study& study, const StudyResults& results, const std::vector<CaseGroup>& groups)
+{
     std::vector<std::string> kernels;
     for (const auto& c : results.cases)
         if (std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end()) kernels.push_back(c.kernel_label);
-    s += "| kernel |";
+    std::string s = "| kernel |";
     std::string rule = "|---|";
     for (const auto& g : groups) {
         s += fmt::format(" {} {}{} |", g[0]->lattice, g[0]->ap_name, study.modes.size() > 1 ? " (" + g[0]->mode + ")" : "");
@@ -174,48 +182,67 @@ std::string verdicts_markdown(const Study& study, const StudyResults& results)
         }
         s += "\n";
     }
-    s += "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
-    for (const auto& g : groups) {
-        std::string windows;
-        if (study.axis != "k") {
-            const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
-                return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
-            });
-            if (same) windows = fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
-            else
-                for (const auto* c : g)
-                    windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label,
-                                           c->k_min, c->k_max);
-        }
-        s += fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension, g[0]->mode,
-                         g[0]->ap_name, g[0]->a_p, windows) +
-             "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
-             "|---|---|---|---|---|---|\n";
-        for (const auto* c : g)
-            s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
-                             c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
-                             intervals_on_axis(study, c->acceptance.intervals, *c), c->acceptance.best_k,
-                             on_axis(study, c->acceptance.best_k, *c), c->acceptance.best_error,
-                             c->acceptance_every.passes() ? "pass" : "fail", intervals_text(c->acceptance_every));
-        s += "\n";
-        // Several sites: each on its own, so that a site that fails is seen.
-        if (g[0]->per_site.empty()) continue;
-        s += "Each site on its own (along gravity / every direction):\n\n| kernel |";
-        std::string rule = "|---|";
-        for (const auto& p : g[0]->per_site) {
-            s += fmt::format(" site {} |", p.site);
-            rule += "---|";
-        }
-        s += "\n" + rule + "\n";
-        for (const auto* c : g) {
-            s += "| " + c->kernel_label + " |";
-            for (const auto& p : c->per_site)
-                s += fmt::format(" {} / {} (best k {:.3f}) |", p.along.passes() ? "pass" : "fail",
-                                 p.every.passes() ? "pass" : "fail", p.along.best_k);
-            s += "\n";
-        }
+    return s + "\npass: the best k (smallest max(|eps_rho|, |eps_gradP|)); fail: that smallest maximum.\n\n";
+}
+
+// "; k in [a, b] for every kernel", or each kernel's, when the window is not on the k axis.
+std::string group_windows(const Study& study, const CaseGroup& g)
+{
+    std::string windows;
+    if (study.axis == Axis::k) return windows;
+    const bool same = std::all_of(g.begin(), g.end(), [&](const StudyCase* c) {
+        return std::abs(c->k_min - g[0]->k_min) < 5e-5 && std::abs(c->k_max - g[0]->k_max) < 5e-5;
+    });
+    if (same) return fmt::format("; k in [{:.4f}, {:.4f}] for every kernel", g[0]->k_min, g[0]->k_max);
+    for (const auto* c : g)
+        windows += fmt::format("{}{} k in [{:.4f}, {:.4f}]", windows.empty() ? "; " : ", ", c->kernel_label, c->k_min,
+                               c->k_max);
+    return windows;
+}
+
+// Several sites: each on its own, so that a site that fails is seen.
+std::string per_site_table(const CaseGroup& g)
+{
+    if (g[0]->per_site.empty()) return {};
+    std::string s = "Each site on its own (along gravity / every direction):\n\n| kernel |";
+    std::string rule = "|---|";
+    for (const auto& p : g[0]->per_site) {
+        s += fmt::format(" site {} |", p.site);
+        rule += "---|";
+    }
+    s += "\n" + rule + "\n";
+    for (const auto* c : g) {
+        s += "| " + c->kernel_label + " |";
+        for (const auto& p : c->per_site)
+            s += fmt::format(" {} / {} (best k {:.3f}) |", p.along.passes() ? "pass" : "fail",
+                             p.every.passes() ? "pass" : "fail", p.along.best_k);
         s += "\n";
     }
+    return s + "\n";
+}
+
+std::string group_verdicts(const Study& study, const CaseGroup& g)
+{
+    std::string s = fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension,
+                                g[0]->mode, g[0]->ap_name, g[0]->a_p, group_windows(study, g)) +
+                    "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
+                    "|---|---|---|---|---|---|\n";
+    for (const auto* c : g)
+        s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
+                         c->acceptance.passes() ? "**pass**" : "fail", intervals_text(c->acceptance),
+                         intervals_on_axis(study, c->acceptance.intervals, *c), c->acceptance.best_k,
+                         on_axis(study, c->acceptance.best_k, *c), c->acceptance.best_error,
+                         c->acceptance_every.passes() ? "pass" : "fail", intervals_text(c->acceptance_every));
+    return s + "\n" + per_site_table(g);
+}
+
+} // namespace
+
+std::string verdicts_markdown(const Study& study, const StudyResults& results)
+{
+    const auto groups = grouped(results);
+    std::string s = verdicts_intro(study) + verdicts_matrix(study, results, groups);
+    for (const auto& g : groups) s += group_verdicts(study, g);
     return s;
 }
 
@@ -229,7 +256,7 @@ std::string header_markdown(const Study& study, const nlohmann::json& inputs)
                                 "Errors are the bulk relative errors of {} section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
                                 study.title, version_text(), std::filesystem::path(study.file).filename().string(),
-                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", study.axis, study.k_min,
+                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", axis_name(study.axis), study.k_min,
                                 study.k_max, study.samples, study.epsilon, method_document());
     s += "Modes: ";
     for (const auto& m : study.modes) {
@@ -432,8 +459,8 @@ std::string stability_markdown(const StudyResults& results)
             s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
                              "|---|---|---|---|---|\n", lattice);
         }
-        if (!c.refused.empty()) {
-            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, c.refused);
+        if (c.refused) {
+            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, *c.refused);
             continue;
         }
         std::string both;

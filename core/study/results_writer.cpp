@@ -24,8 +24,8 @@ nlohmann::json stability_json(const StabilityCase& c)
 {
     nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma},
                             {"h_model", c.h_model}};
-    if (!c.refused.empty()) {
-        entry["refused"] = c.refused;
+    if (c.refused) {
+        entry["refused"] = *c.refused;
         return entry;
     }
     nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
@@ -55,61 +55,63 @@ nlohmann::json stability_json(const StabilityCase& c)
     return entry;
 }
 
-} // namespace
-
-// Streamed: every part but the curves is a small JSON value; the curves, most of the
-// document, are written number by number without building a JSON tree for them.
-void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results)
+nlohmann::json explanations_json(const StudyCase& c)
 {
-    ChunkedWriter w(out);
+    nlohmann::json explanations = nlohmann::json::array();
+    for (const auto& e : c.explanations) {
+        nlohmann::json diffs = nlohmann::json::array();
+        for (const auto& d : e.differences)
+            diffs.push_back({{"radius", d.radius}, {"count", d.count}, {"reason", d.reason}, {"q", d.q},
+                             {"contribution", d.contribution}});
+        explanations.push_back({{"function", function_name(e.root.function)}, {"k", e.root.k},
+                                {"default_value", e.default_value},
+                                {"default_root_k", e.default_root_k ? nlohmann::json(*e.default_root_k) : nullptr},
+                                {"differences", diffs}});
+    }
+    return explanations;
+}
+
+// A case without its curve, as text without the closing brace: the curve follows.
+std::string case_head(const StudyCase& c, double epsilon)
+{
+    auto scan = root_scan_json(c.scan);
+    std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
+                                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
+                                      {"jumps", scan["jumps"]},
+                                      {"sites", c.sites},
+                                      {"acceptance", acceptance_json(c.acceptance, epsilon)},
+                                      {"acceptance_every_direction", acceptance_json(c.acceptance_every, epsilon)},
+                                      {"per_site", per_site_json(c, epsilon)},
+                                      {"explanations", explanations_json(c)}}
+                           .dump();
+    head.pop_back();
+    return head;
+}
+
+// The curve, number by number: "k", "eps_rho", "eps_gradp" and "neighbours" arrays.
+void write_curve(ChunkedWriter& w, const StudyCase& c)
+{
     auto number = [&](double v) {
         if (std::isfinite(v)) w.print("{}", v);
         else w.text("null");
     };
-    w.print("{{\n \"sphkern_version\": {},\n \"provenance\": {},\n \"study_file\": {},\n \"study\": {},\n "
-            "\"inputs\": {},\n \"cases\": [",
-            nlohmann::json(SPHKERN_VERSION).dump(), provenance().dump(), nlohmann::json(study.file).dump(),
-            study.document.dump(), results.inputs.dump());
-    for (std::size_t i = 0; i < results.cases.size(); ++i) {
-        const auto& c = results.cases[i];
-        nlohmann::json explanations = nlohmann::json::array();
-        for (const auto& e : c.explanations) {
-            nlohmann::json diffs = nlohmann::json::array();
-            for (const auto& d : e.differences)
-                diffs.push_back({{"radius", d.radius}, {"count", d.count}, {"reason", d.reason}, {"q", d.q},
-                                 {"contribution", d.contribution}});
-            explanations.push_back({{"function", function_name(e.root.function)}, {"k", e.root.k},
-                                    {"default_value", e.default_value},
-                                    {"default_root_k", e.default_root_k ? nlohmann::json(*e.default_root_k) : nullptr},
-                                    {"differences", diffs}});
+    const char* fields[] = {"k", "eps_rho", "eps_gradp", "neighbours"};
+    w.text(", \"curve\": {");
+    for (int f = 0; f < 4; ++f) {
+        w.print("{}\"{}\": [", f ? ", " : "", fields[f]);
+        for (std::size_t j = 0; j < c.curve.size(); ++j) {
+            if (j) w.text(",");
+            const auto& [k, v] = c.curve[j];
+            if (f == 3) w.print("{}", v.neighbours);
+            else number(f == 0 ? k : f == 1 ? v.eps_rho : v.eps_gradp);
         }
-        auto scan = root_scan_json(c.scan);
-        std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
-                                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
-                                          {"jumps", scan["jumps"]},
-                                          {"sites", c.sites},
-                                          {"acceptance", acceptance_json(c.acceptance, study.epsilon)},
-                                          {"acceptance_every_direction", acceptance_json(c.acceptance_every, study.epsilon)},
-                                          {"per_site", per_site_json(c, study.epsilon)},
-                                          {"explanations", explanations}}
-                               .dump();
-        head.pop_back(); // the closing brace: the curve follows
-        w.text(i ? ",\n  " : "\n  ");
-        w.text(head);
-        const char* fields[] = {"k", "eps_rho", "eps_gradp", "neighbours"};
-        w.text(", \"curve\": {");
-        for (int f = 0; f < 4; ++f) {
-            w.print("{}\"{}\": [", f ? ", " : "", fields[f]);
-            for (std::size_t j = 0; j < c.curve.size(); ++j) {
-                if (j) w.text(",");
-                const auto& [k, v] = c.curve[j];
-                if (f == 3) w.print("{}", v.neighbours);
-                else number(f == 0 ? k : f == 1 ? v.eps_rho : v.eps_gradp);
-            }
-            w.text("]");
-        }
-        w.text("}}");
+        w.text("]");
     }
+    w.text("}}");
+}
+
+nlohmann::json comparison_json(const StudyResults& results)
+{
     nlohmann::json comparison = nlohmann::json::array();
     for (const auto& r : results.comparison)
         comparison.push_back({{"reference", r.reference},
@@ -119,6 +121,11 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
                               {"differs_in", r.differing},
                               {"status", status_name(r.status)},
                               {"note", r.note}});
+    return comparison;
+}
+
+nlohmann::json surface_results_json(const StudyResults& results)
+{
     nlohmann::json surface = nlohmann::json::array();
     for (const auto& c : results.surface) {
         auto entry = surface_json(c.profile);
@@ -126,6 +133,11 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
                       {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k}});
         surface.push_back(entry);
     }
+    return surface;
+}
+
+nlohmann::json sweeps_json(const StudyResults& results, double epsilon)
+{
     nlohmann::json sweeps = nlohmann::json::array();
     for (const auto& c : results.sweeps) {
         nlohmann::json solutions = nlohmann::json::array();
@@ -134,16 +146,36 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
             solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
                                  {"eps_gradp", s.values.eps_gradp}, {"jacobian_condition", s.jacobian_condition},
                                  {"non_negative", s.non_negative},
-                                 {"acceptance", acceptance_json(c.designed_acceptance[i], study.epsilon)}});
+                                 {"acceptance", acceptance_json(c.designed_acceptance[i], epsilon)}});
         }
         sweeps.push_back({{"lattice", c.lattice}, {"kernel", c.kernel}, {"parameter", c.parameter},
                           {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
                           {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
     }
+    return sweeps;
+}
+
+} // namespace
+
+// Streamed: every part but the curves is a small JSON value; the curves, most of the
+// document, are written number by number without building a JSON tree for them.
+void write_study_results_json(std::ostream& out, const Study& study, const StudyResults& results)
+{
+    ChunkedWriter w(out);
+    w.print("{{\n \"sphkern_version\": {},\n \"provenance\": {},\n \"study_file\": {},\n \"study\": {},\n "
+            "\"inputs\": {},\n \"cases\": [",
+            nlohmann::json(SPHKERN_VERSION).dump(), provenance().dump(), nlohmann::json(study.file).dump(),
+            study.document.dump(), results.inputs.dump());
+    for (std::size_t i = 0; i < results.cases.size(); ++i) {
+        w.text(i ? ",\n  " : "\n  ");
+        w.text(case_head(results.cases[i], study.epsilon));
+        write_curve(w, results.cases[i]);
+    }
     nlohmann::json stability = nlohmann::json::array();
     for (const auto& c : results.stability) stability.push_back(stability_json(c));
     w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {},\n \"stability\": {},\n \"particles\": {}\n}}\n",
-            comparison.dump(1), surface.dump(1), sweeps.dump(1), stability.dump(1), particles_results_json(results).dump(1));
+            comparison_json(results).dump(1), surface_results_json(results).dump(1), sweeps_json(results, study.epsilon).dump(1),
+            stability.dump(1), particles_results_json(results).dump(1));
 }
 
 } // namespace sphkern

@@ -1,8 +1,7 @@
 #include "study/study.hpp"
 
+#include "study/study_error.hpp"
 #include "support/printable_text.hpp"
-
-#include "analysis/resolution_axis.hpp"
 
 #include "analysis/results_json.hpp"
 #include "analysis/surface_profile.hpp"
@@ -10,6 +9,7 @@
 #include "support/file_spec.hpp"
 #include "support/install_paths.hpp"
 #include "support/json_input.hpp"
+#include "support/value_checks.hpp"
 #include "support/work_budget.hpp"
 #include "stability/stability_budget.hpp"
 
@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <regex>
 
 namespace sphkern {
@@ -25,6 +26,19 @@ namespace fs = std::filesystem;
 bool StudyMode::continues(const std::string& kernel) const
 {
     return continue_all || std::find(continue_kernels.begin(), continue_kernels.end(), kernel) != continue_kernels.end();
+}
+
+const std::vector<double>* StudyMode::shells_for(double R) const
+{
+    // Keys are written to a few digits: "2" is the list of a support of 2 within a part in 1e6.
+    for (const auto& [support, radii] : shells_by_support)
+        if (std::abs(support - R) <= 1e-6 * R) return &radii;
+    return nullptr;
+}
+
+double StudyVolumeCoefficient::on(const Lattice& lattice) const
+{
+    return value ? *value : lattice.volume_coefficient(name);
 }
 
 std::optional<double> parse_radius(const nlohmann::json& value)
@@ -54,33 +68,45 @@ std::vector<std::string> string_list(const JsonNode& node)
     return items;
 }
 
+// A name of [a-z0-9_-]: a study's or a mode's.
+std::string read_name(const JsonNode& node)
+{
+    std::string name = node.string();
+    if (!is_identifier(name, "-", std::numeric_limits<std::size_t>::max())) node.error("expected a name of [a-z0-9_-]");
+    return name;
+}
+
+// "shells": {"R": [radius, ...], ...}, keyed by the kernel support R as a number.
+std::map<double, std::vector<double>> read_shells(const JsonNode& shells)
+{
+    shells.expect_object();
+    if (shells.value().empty()) shells.error("empty object, expected shell lists keyed by kernel support R");
+    std::map<double, std::vector<double>> by_support;
+    for (const auto& [key, unused] : shells.value().items()) {
+        auto list = shells.at(key);
+        char* end = nullptr;
+        double R = std::strtod(key.c_str(), &end);
+        if (key.empty() || *end != '\0' || !(R > 0) || !std::isfinite(R))
+            list.error("key must be a kernel support R such as \"2\"");
+        list.expect_array(1, 10000);
+        std::vector<double> radii;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            auto r = parse_radius(list[i].value());
+            if (!r) list[i].error("expected a shell radius in units of d: a positive number or \"sqrt(N)\"");
+            radii.push_back(*r);
+        }
+        if (!by_support.emplace(R, radii).second) list.error("a second shell list for R = " + key + ", expected one per R");
+    }
+    return by_support;
+}
+
 StudyMode read_mode(const JsonNode& node)
 {
     node.expect_keys({"name", "shells", "continue_past_support"});
     StudyMode mode;
     mode.json_path = node.path();
-    mode.name = node.at("name").string();
-    if (mode.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
-        node.at("name").error("expected a name of [a-z0-9_-]");
-    if (auto shells = node.find("shells")) {
-        shells->expect_object();
-        if (shells->value().empty()) shells->error("empty object, expected shell lists keyed by kernel support R");
-        for (const auto& [key, unused] : shells->value().items()) {
-            auto list = shells->at(key);
-            char* end = nullptr;
-            double R = std::strtod(key.c_str(), &end);
-            if (key.empty() || *end != '\0' || !(R > 0))
-                list.error("key must be a kernel support R such as \"2\"");
-            list.expect_array(1, 10000);
-            std::vector<double> radii;
-            for (std::size_t i = 0; i < list.size(); ++i) {
-                auto r = parse_radius(list[i].value());
-                if (!r) list[i].error("expected a shell radius in units of d: a positive number or \"sqrt(N)\"");
-                radii.push_back(*r);
-            }
-            mode.shells_by_support[key] = radii;
-        }
-    }
+    mode.name = read_name(node.at("name"));
+    if (auto shells = node.find("shells")) mode.shells_by_support = read_shells(*shells);
     if (auto c = node.find("continue_past_support")) {
         if (c->is_boolean()) mode.continue_all = c->boolean();
         else if (c->is_array()) mode.continue_kernels = string_list(*c);
@@ -143,6 +169,23 @@ StudySweep read_sweep(const JsonNode& node, const fs::path& file)
     return sweep;
 }
 
+// A volume coefficient: a name, or a number (given as a number or as text).
+StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item)
+{
+    StudyVolumeCoefficient ap;
+    if (item.is_number()) {
+        ap.name = item.value().dump();
+        ap.value = item.number();
+    } else {
+        ap.name = item.string();
+        char* end = nullptr;
+        const double v = std::strtod(ap.name.c_str(), &end);
+        if (*end == '\0') ap.value = v;
+    }
+    if (ap.value && !(*ap.value > 0 && *ap.value <= 1e6)) item.error("expected a positive volume coefficient up to 1e6");
+    return ap;
+}
+
 StudySurface read_surface(const JsonNode& node)
 {
     node.expect_keys({"k", "layers", "forms", "volume_coefficient"});
@@ -150,17 +193,14 @@ StudySurface read_surface(const JsonNode& node)
     if (auto k = node.find("k")) surface.k = k_or_best(*k);
     if (auto layers = node.find("layers")) surface.layers = static_cast<int>(layers->integer_in(1, 1000));
     if (auto forms = node.find("forms")) {
-        surface.forms = string_list(*forms);
-        for (std::size_t i = 0; i < surface.forms.size(); ++i) {
-            try {
-                parse_gradient_form(surface.forms[i]);
-            } catch (const Error& e) {
-                (*forms)[i].error(e.what());
-            }
+        const auto names = string_list(*forms);
+        surface.forms.clear();
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            const auto item = (*forms)[i];
+            surface.forms.push_back(at_study_path(item.file(), item.path(), [&] { return parse_gradient_form(names[i]); }));
         }
     }
-    if (auto ap = node.find("volume_coefficient"))
-        surface.volume_coefficient = ap->is_number() ? ap->value().dump() : ap->string();
+    if (auto ap = node.find("volume_coefficient")) surface.volume_coefficient = read_volume_coefficient(*ap);
     return surface;
 }
 
@@ -183,9 +223,9 @@ StudyStability read_stability(const JsonNode& node)
     if (auto points = node.find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
     if (auto horizon = node.find("horizon")) stability.horizon = horizon->number_in(1e-6, 1e12);
     if (auto model = node.find("h_model")) {
-        stability.h_model = model->text();
-        if (stability.h_model != "fixed" && stability.h_model != "adaptive")
-            model->error("expected \"fixed\" or \"adaptive\"");
+        const std::string name = model->text();
+        if (name != "fixed" && name != "adaptive") model->error("expected \"fixed\" or \"adaptive\"");
+        stability.h_model = parse_h_model(name, "h_model");
     }
     return stability;
 }
@@ -234,6 +274,98 @@ void check_study_budget(const Study& study, const JsonNode& root)
 
 } // namespace
 
+namespace {
+
+std::vector<StudyVolumeCoefficient> read_volume_coefficients(const JsonNode& list)
+{
+    list.expect_array(1, 100);
+    std::vector<StudyVolumeCoefficient> coefficients;
+    for (std::size_t i = 0; i < list.size(); ++i) coefficients.push_back(read_volume_coefficient(list[i]));
+    return coefficients;
+}
+
+// "k": {"min", "max", "samples", "axis"}: the window on its axis.
+void read_window(const JsonNode& k, Study& study)
+{
+    k.expect_keys({"min", "max", "samples", "axis"});
+    if (auto v = k.find("min")) study.k_min = v->number();
+    if (auto v = k.find("max")) study.k_max = v->number();
+    if (auto v = k.find("samples")) study.samples = static_cast<int>(v->integer_in(2, 100000));
+    if (auto v = k.find("axis")) {
+        const std::string name = v->string();
+        study.axis = at_study_path(v->file(), v->path(), [&] { return parse_axis(name, "axis"); });
+    }
+    at_study_path(k.file(), k.path(), [&] {
+        if (study.axis == Axis::k) check_k_interval(study.k_min, study.k_max, ValueSource::argument("k interval"));
+        else if (!(study.k_min > 0 && study.k_min < study.k_max && study.k_max <= 1e5))
+            fail_input(std::string("the window on the ") + axis_name(study.axis) + " axis needs 0 < min < max");
+    });
+}
+
+// "sites": "all" (empty) or the indices into every lattice's motif.
+std::optional<std::vector<int>> read_sites(const JsonNode& sites)
+{
+    if (sites.is_string()) {
+        if (sites.string() != "all") sites.error("expected \"all\" or an array of site indices");
+        return std::nullopt;
+    }
+    const std::size_t n = sites.expect_array(1, 64);
+    std::vector<int> list;
+    for (std::size_t i = 0; i < n; ++i) list.push_back(static_cast<int>(sites[i].integer_in(0, 63)));
+    return list;
+}
+
+std::vector<StudyMode> read_modes(const JsonNode& modes)
+{
+    modes.expect_array(1, 20);
+    std::vector<StudyMode> list;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        list.push_back(read_mode(modes[i]));
+        for (std::size_t j = 0; j + 1 < list.size(); ++j)
+            if (list[j].name == list.back().name)
+                modes[i].at("name").error("duplicate mode name \"" + list.back().name + "\"");
+    }
+    return list;
+}
+
+// "compare_with": a table beside the study or shipped in share/reference, read and checked now.
+ReferenceTable read_compare_with(const JsonNode& c, const fs::path& file)
+{
+    fs::path reference = c.string();
+    if (reference.is_relative()) {
+        fs::path beside = file.parent_path() / reference;
+        reference = fs::exists(beside) ? beside : data_folder("reference") / reference;
+    }
+    if (!fs::is_regular_file(reference)) c.error("no reference table \"" + c.string() + "\" beside the study or in share/reference");
+    return read_reference_table(reference);
+}
+
+// The kernels, lattices and volume coefficients: what every section is run over.
+void read_cases(const JsonNode& root, const fs::path& file, Study& study)
+{
+    auto kernels = root.at("kernels");
+    kernels.expect_array(1, 1000);
+    for (std::size_t i = 0; i < kernels.size(); ++i) study.kernels.push_back(read_kernel(kernels[i], file));
+    study.lattices = string_list(root.at("lattices"));
+    for (auto& l : study.lattices) l = resolve_beside(l, file, {".json"});
+    if (auto ap = root.find("volume_coefficients")) study.volume_coefficients = read_volume_coefficients(*ap);
+    else study.volume_coefficients = {{"voronoi", std::nullopt}};
+}
+
+// The optional sections, each read whole.
+void read_sections(const JsonNode& root, const fs::path& file, Study& study)
+{
+    if (auto sweeps = root.find("sweeps")) {
+        sweeps->expect_array(1, 20);
+        for (std::size_t i = 0; i < sweeps->size(); ++i) study.sweeps.push_back(read_sweep((*sweeps)[i], file));
+    }
+    if (auto node = root.find("surface")) study.surface = read_surface(*node);
+    if (auto node = root.find("stability")) study.stability = read_stability(*node);
+    if (auto node = root.find("particles")) study.particles = read_study_particles(*node, file);
+}
+
+} // namespace
+
 Study parse_study(nlohmann::json document, const fs::path& file)
 {
     Study study;
@@ -242,97 +374,21 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     JsonNode root(study.document, study.file);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
                       "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability", "particles"});
-    study.name = root.at("name").string();
-    if (study.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
-        root.at("name").error("expected a name of [a-z0-9_-]");
+    study.name = read_name(root.at("name"));
     study.title = root.find("title") ? printable_text(root.at("title").string()) : study.name;
-
-    auto kernels = root.at("kernels");
-    kernels.expect_array(1, 1000);
-    for (std::size_t i = 0; i < kernels.size(); ++i) study.kernels.push_back(read_kernel(kernels[i], file));
-    study.lattices = string_list(root.at("lattices"));
-    for (auto& l : study.lattices) l = resolve_beside(l, file, {".json"});
-
-    if (auto ap = root.find("volume_coefficients")) {
-        ap->expect_array(1, 100);
-        for (std::size_t i = 0; i < ap->size(); ++i) {
-            auto item = (*ap)[i];
-            if (item.is_number()) {
-                double v = item.number();
-                if (v <= 0 || v > 1e6) item.error("expected a positive volume coefficient up to 1e6");
-                study.volume_coefficients.push_back(item.value().dump());
-            } else {
-                study.volume_coefficients.push_back(item.string());
-            }
-        }
-    } else {
-        study.volume_coefficients = {"voronoi"};
-    }
-
-    if (auto k = root.find("k")) {
-        k->expect_keys({"min", "max", "samples", "axis"});
-        if (auto v = k->find("min")) study.k_min = v->number();
-        if (auto v = k->find("max")) study.k_max = v->number();
-        if (auto v = k->find("samples")) study.samples = static_cast<int>(v->integer_in(2, 100000));
-        if (auto v = k->find("axis")) {
-            study.axis = v->string();
-            try {
-                parse_axis(study.axis, "axis");
-            } catch (const Error& e) {
-                v->error(e.what());
-            }
-        }
-        try {
-            if (study.axis == "k") check_k_interval(study.k_min, study.k_max, "k interval");
-            else if (!(study.k_min > 0 && study.k_min < study.k_max && study.k_max <= 1e5))
-                fail_input("the window on the " + study.axis + " axis needs 0 < min < max");
-        } catch (const Error& e) {
-            k->error(e.what());
-        }
-    }
+    read_cases(root, file, study);
+    if (auto k = root.find("k")) read_window(*k, study);
     if (auto e = root.find("epsilon")) {
         study.epsilon = e->number();
         if (study.epsilon <= 0 || study.epsilon >= 1) e->error("expected a tolerance in (0, 1)");
     }
-    if (auto sites = root.find("sites")) {
-        if (sites->is_string()) {
-            if (sites->string() != "all") sites->error("expected \"all\" or an array of site indices");
-        } else {
-            const std::size_t n = sites->expect_array(1, 64);
-            std::vector<int> list;
-            for (std::size_t i = 0; i < n; ++i) list.push_back(static_cast<int>((*sites)[i].integer_in(0, 63)));
-            study.sites = list;
-        }
-    }
+    if (auto sites = root.find("sites")) study.sites = read_sites(*sites);
     if (auto lateral = root.find("lateral")) study.lateral = lateral->boolean();
-    if (auto modes = root.find("modes")) {
-        modes->expect_array(1, 20);
-        for (std::size_t i = 0; i < modes->size(); ++i) {
-            study.modes.push_back(read_mode((*modes)[i]));
-            for (std::size_t j = 0; j + 1 < study.modes.size(); ++j)
-                if (study.modes[j].name == study.modes.back().name)
-                    (*modes)[i].at("name").error("duplicate mode name \"" + study.modes.back().name + "\"");
-        }
-    } else {
-        study.modes.push_back({"default", {}, false, {}, "/modes"});
-    }
-    if (auto c = root.find("compare_with")) {
-        fs::path reference = c->string();
-        if (reference.is_relative()) {
-            fs::path beside = file.parent_path() / reference;
-            reference = fs::exists(beside) ? beside : data_folder("reference") / reference;
-        }
-        if (!fs::is_regular_file(reference)) c->error("no reference table \"" + c->string() + "\" beside the study or in share/reference");
-        study.compare_with = reference;
-    }
+    if (auto modes = root.find("modes")) study.modes = read_modes(*modes);
+    else study.modes.push_back({"default", {}, false, {}, "/modes"});
+    if (auto c = root.find("compare_with")) study.reference = read_compare_with(*c, file);
     if (auto p = root.find("plots")) study.plots = p->boolean();
-    if (auto sweeps = root.find("sweeps")) {
-        sweeps->expect_array(1, 20);
-        for (std::size_t i = 0; i < sweeps->size(); ++i) study.sweeps.push_back(read_sweep((*sweeps)[i], file));
-    }
-    if (auto node = root.find("surface")) study.surface = read_surface(*node);
-    if (auto node = root.find("stability")) study.stability = read_stability(*node);
-    if (auto node = root.find("particles")) study.particles = read_study_particles(*node, file);
+    read_sections(root, file, study);
     check_study_budget(study, root);
     return study;
 }

@@ -4,6 +4,10 @@
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
+#include "analysis/resolution_axis.hpp"
+#include "analysis/surface_profile.hpp"
+#include "stability/h_model.hpp"
+#include "study/reference_table.hpp"
 #include "study/study_particles.hpp"
 
 #include <nlohmann/json.hpp>
@@ -24,22 +28,33 @@ struct StudyKernel {
 
 struct StudyMode {
     std::string name;
-    // Explicit shell radii per kernel support R ("1", "2", ...); empty: automatic shells.
-    std::map<std::string, std::vector<double>> shells_by_support;
+    // Explicit shell radii per kernel support R (keys "1", "2", ... read as numbers); empty: automatic shells.
+    std::map<double, std::vector<double>> shells_by_support;
     bool continue_all = false;
     std::vector<std::string> continue_kernels; // kernels whose formula is continued past R
     std::string json_path;
 
     bool is_automatic() const { return shells_by_support.empty() && !continue_all && continue_kernels.empty(); }
     bool continues(const std::string& kernel) const;
+    // The shell list for a kernel of support R, or nullptr.
+    const std::vector<double>* shells_for(double R) const;
+};
+
+// A volume coefficient a_p: one of each lattice's named coefficients, or a number.
+struct StudyVolumeCoefficient {
+    std::string name;            // as the study gives it: "voronoi", or the number as written
+    std::optional<double> value; // the number, when one is given (as a number or as text)
+
+    // The number, or the lattice's coefficient of that name (Error(input) if it has none).
+    double on(const Lattice& lattice) const;
 };
 
 // The optional free-surface section: a profile per lattice, kernel and form.
 struct StudySurface {
     std::optional<double> k;           // empty: each kernel's best k (condition 22, first mode)
     int layers = 6;
-    std::vector<std::string> forms = {"sum"};
-    std::string volume_coefficient;    // empty: the study's first
+    std::vector<GradientForm> forms = {GradientForm::sum};
+    std::optional<StudyVolumeCoefficient> volume_coefficient; // empty: the study's first
 };
 
 // An optional parameter sweep: maps of both errors over (k, parameter) and the
@@ -63,7 +78,7 @@ struct StudyStability {
     std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
     int path_points = 120;
     double horizon = 100;               // growth time in d/c: slower instabilities are weak (default_horizon)
-    std::string h_model = "fixed";      // fixed or adaptive h (stability/h_model.hpp)
+    HModel h_model = HModel::fixed;     // fixed or adaptive h
 };
 
 // A study's total work, bounded before it starts (see check in parse_study).
@@ -80,15 +95,15 @@ struct Study {
     std::string title;
     std::vector<StudyKernel> kernels;
     std::vector<std::string> lattices;
-    std::vector<std::string> volume_coefficients;
+    std::vector<StudyVolumeCoefficient> volume_coefficients;
     double k_min = 0.75, k_max = 1.25; // the window, on `axis`
-    std::string axis = "k";            // k, eta or nh (see analysis/resolution_axis.hpp)
+    Axis axis = Axis::k;
     int samples = 501;
     double epsilon = 0.01;
     std::optional<std::vector<int>> sites; // "sites": indices into every lattice's motif; absent or "all": every site
     bool lateral = false;                  // the lateral gradient error counts in condition (22)
     std::vector<StudyMode> modes;
-    std::optional<std::filesystem::path> compare_with; // a reference table (share/reference)
+    std::optional<ReferenceTable> reference; // "compare_with": a reference table (share/reference), read and checked
     bool plots = true;
     std::optional<StudySurface> surface;
     std::vector<StudySweep> sweeps;

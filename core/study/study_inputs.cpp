@@ -1,9 +1,14 @@
 #include "study/study_inputs.hpp"
 
+#include "analysis/design.hpp"
 #include "analysis/resolution_axis.hpp"
+#include "analysis/site_errors.hpp"
+#include "study/study_error.hpp"
 #include "support/error.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 namespace sphkern {
 
@@ -16,79 +21,190 @@ std::string support_key(double R)
     return s.str();
 }
 
+std::string lattice_path(std::size_t i) { return "/lattices/" + std::to_string(i); }
+
+// One name, one table: two lattices or kernels that print alike would be merged.
+void check_names_differ(const Study& study, const StudyInputs& inputs)
+{
+    const auto& lattices = inputs.lattices;
+    for (std::size_t i = 0; i < lattices.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (lattices[i].name == lattices[j].name)
+                fail_study_input(study.file, lattice_path(i),
+                                 "lattice name \"" + lattices[i].name + "\" is already used by " + lattice_path(j) +
+                                     "; give each lattice its own name");
+    const auto& kernels = inputs.kernels;
+    for (std::size_t i = 0; i < kernels.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (kernels[i].label() == kernels[j].label())
+                fail_study_input(study.file, study.kernels[i].json_path,
+                                 "kernel \"" + kernels[i].label() + "\" is listed twice (also at " +
+                                     study.kernels[j].json_path + ")");
+}
+
+void load_kernels_and_lattices(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
+{
+    for (const auto& k : study.kernels)
+        inputs.kernels.push_back(at_study_path(study.file, k.json_path, [&] { return Kernel(registry.find(k.spec), k.parameters); }));
+    for (std::size_t i = 0; i < study.lattices.size(); ++i)
+        inputs.lattices.push_back(at_study_path(study.file, lattice_path(i), [&] { return load_lattice(study.lattices[i]); }));
+    check_names_differ(study, inputs);
+    for (std::size_t i = 0; i < inputs.kernels.size(); ++i)
+        for (const auto& l : inputs.lattices)
+            at_study_path(study.file, study.kernels[i].json_path,
+                          [&] { inputs.kernels[i].require_dimension(l.dimension, l.name); });
+}
+
+// Each lattice's a_p (the study's and the surface section's) and the sites studied.
+void resolve_lattice_values(const Study& study, StudyInputs& inputs)
+{
+    for (const auto& lattice : inputs.lattices) {
+        auto& aps = inputs.a_p.emplace_back();
+        for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i)
+            aps.push_back(at_study_path(study.file, "/volume_coefficients/" + std::to_string(i),
+                                        [&] { return study.volume_coefficients[i].on(lattice); }));
+        if (study.surface)
+            inputs.surface_a_p.push_back(
+                study.surface->volume_coefficient
+                    ? at_study_path(study.file, "/surface/volume_coefficient",
+                                    [&] { return study.surface->volume_coefficient->on(lattice); })
+                    : aps.front());
+    }
+    for (const auto& lattice : inputs.lattices) {
+        const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
+        at_study_path(study.file, "/sites", [&] { check_sites(lattice, sites, "sites"); });
+        inputs.sites.push_back(sites);
+    }
+}
+
+// The evaluation a mode asks of a kernel: its shell list for the kernel's support.
+EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const Kernel& kernel)
+{
+    EvaluationMode m;
+    if (mode.shells_by_support.empty()) return m;
+    const auto* radii = mode.shells_for(kernel.support());
+    const std::string R = support_key(kernel.support());
+    if (!radii)
+        fail_study_input(study.file, mode.json_path + "/shells",
+                         "no shell list for kernel " + kernel.name() + " with support R = " + R +
+                             ", expected a key \"" + R + "\"");
+    m.shell_radii = *radii;
+    m.continue_past_support = mode.continues(kernel.name());
+    return m;
+}
+
+void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
+{
+    for (const auto& sweep : study.sweeps)
+        at_study_path(study.file, sweep.json_path, [&] {
+            const Kernel& kernel = inputs.sweep_kernels.emplace_back(registry.find(sweep.kernel), sweep.parameters);
+            check_design_parameter(kernel, sweep.parameter, sweep.min, sweep.max);
+        });
+}
+
+// A lattice source's cell counts, one per dimension of its lattice.
+void check_source_size(const Study& study, const StudyParticleSource& s)
+{
+    if (s.source.kind != SourceKind::lattice) return;
+    at_study_path(study.file, s.json_path, [&] {
+        const int dim = load_lattice(s.source.spec).dimension;
+        if (static_cast<int>(s.sizes) != dim)
+            fail_input("size: the lattice is " + std::to_string(dim) + "D, expected " + std::to_string(dim) +
+                       " cell counts");
+    });
+}
+
+// Each particle source's size, and its "relax": by the study kernel it names (its label or name).
+void resolve_particle_sources(const Study& study, StudyInputs& inputs)
+{
+    if (!study.particles) return;
+    for (const auto& s : study.particles->sources) {
+        check_source_size(study, s);
+        auto& index = inputs.relax_kernel.emplace_back();
+        if (!s.relax) continue;
+        const auto& k = inputs.kernels;
+        const auto it = std::find_if(k.begin(), k.end(), [&](const Kernel& kernel) {
+            return kernel.label() == s.relax->kernel || kernel.name() == s.relax->kernel;
+        });
+        if (it == k.end()) {
+            std::vector<std::string> labels;
+            for (const auto& kernel : k) labels.push_back(kernel.label());
+            fail_study_input(study.file, s.relax->json_path,
+                             "kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
+                                 did_you_mean(s.relax->kernel, labels));
+        }
+        index = static_cast<std::size_t>(it - k.begin());
+    }
+}
+
+// Every window a section reads: the bulk cases' at their first site, the stability and
+// surface sections' and the sweeps' at site 0.
+void resolve_windows(const Study& study, StudyInputs& inputs)
+{
+    auto add = [&](std::size_t l, std::size_t k, int site, double a_p) {
+        const StudyInputs::WindowKey key{l, k, site, a_p};
+        if (inputs.windows.count(key)) return;
+        const Kernel& kernel = k < inputs.kernels.size() ? inputs.kernels[k] : inputs.sweep_kernels[k - inputs.kernels.size()];
+        inputs.windows[key] = at_study_path(study.file, "/k", [&] {
+            return k_window(study.axis, study.k_min, study.k_max, kernel, inputs.lattices[l], site, a_p, "window");
+        });
+    };
+    for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
+        for (std::size_t k = 0; k < inputs.kernels.size(); ++k) {
+            for (double a_p : inputs.a_p[l]) {
+                add(l, k, inputs.sites[l].front(), a_p);
+                if (study.stability && !study.stability->k_min) add(l, k, 0, a_p);
+            }
+            if (study.surface && !study.surface->k) add(l, k, 0, inputs.surface_a_p[l]);
+        }
+        for (std::size_t s = 0; s < inputs.sweep_kernels.size(); ++s)
+            if (inputs.sweep_kernels[s].supports(inputs.lattices[l].dimension))
+                add(l, inputs.kernels.size() + s, 0, inputs.a_p[l].front());
+    }
+}
+
+void resolve_reference(const Study& study, StudyInputs& inputs)
+{
+    if (!study.reference) return;
+    StudyCaseNames names;
+    for (const auto& l : inputs.lattices) names.lattices.push_back(l.name);
+    for (const auto& m : study.modes) names.modes.push_back(m.name);
+    for (const auto& ap : study.volume_coefficients) names.volume_coefficients.push_back(ap.name);
+    for (const auto& k : inputs.kernels) names.kernels.push_back(k.name());
+    inputs.reference = *study.reference;
+    resolve_reference_table(*inputs.reference, names);
+}
+
 } // namespace
 
 StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
 {
     StudyInputs inputs;
-    for (const auto& k : study.kernels) {
-        try {
-            inputs.kernels.push_back(Kernel(registry.find(k.spec), k.parameters));
-        } catch (const Error& e) {
-            throw Error(e.code(), study.file + ": " + k.json_path + ": " + e.what());
-        }
+    load_kernels_and_lattices(study, registry, inputs);
+    resolve_lattice_values(study, inputs);
+    for (const auto& mode : study.modes) {
+        auto& per_kernel = inputs.evaluation.emplace_back();
+        for (const auto& kernel : inputs.kernels) per_kernel.push_back(evaluation_mode(study, mode, kernel));
     }
-    auto& lattices = inputs.lattices;
-    for (std::size_t i = 0; i < study.lattices.size(); ++i) {
-        try {
-            lattices.push_back(load_lattice(study.lattices[i]));
-        } catch (const Error& e) {
-            throw Error(e.code(), study.file + ": /lattices/" + std::to_string(i) + ": " + e.what());
-        }
-    }
-    // One name, one table: two lattices or kernels that print alike would be merged.
-    for (std::size_t i = 0; i < lattices.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (lattices[i].name == lattices[j].name)
-                fail_input(study.file + ": /lattices/" + std::to_string(i) + ": lattice name \"" + lattices[i].name +
-                           "\" is already used by /lattices/" + std::to_string(j) + "; give each lattice its own name");
-    const auto& kernels = inputs.kernels;
-    for (std::size_t i = 0; i < kernels.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (kernels[i].label() == kernels[j].label())
-                fail_input(study.file + ": " + study.kernels[i].json_path + ": kernel \"" + kernels[i].label() +
-                           "\" is listed twice (also at " + study.kernels[j].json_path + ")");
-    for (std::size_t i = 0; i < kernels.size(); ++i)
-        for (const auto& l : lattices)
-            try {
-                kernels[i].require_dimension(l.dimension, l.name);
-            } catch (const Error& e) {
-                throw Error(e.code(), study.file + ": " + study.kernels[i].json_path + ": " + e.what());
-            }
+    resolve_sweeps(study, registry, inputs);
+    resolve_particle_sources(study, inputs);
+    resolve_windows(study, inputs);
+    resolve_reference(study, inputs);
     return inputs;
 }
 
-EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const Kernel& kernel)
+std::pair<double, double> StudyInputs::window(std::size_t lattice, std::size_t kernel, int site, double a_p) const
 {
-    EvaluationMode m;
-    if (mode.shells_by_support.empty()) return m;
-    auto it = mode.shells_by_support.find(support_key(kernel.support()));
-    if (it == mode.shells_by_support.end())
-        fail_input(study.file + ": " + mode.json_path + "/shells: no shell list for kernel " + kernel.name() +
-                   " with support R = " + support_key(kernel.support()) + ", expected a key \"" +
-                   support_key(kernel.support()) + "\"");
-    m.shell_radii = it->second;
-    m.continue_past_support = mode.continues(kernel.name());
-    return m;
+    const auto it = windows.find({lattice, kernel, site, a_p});
+    if (it == windows.end()) throw std::logic_error("a study window was not worked out before its section");
+    return it->second;
 }
 
-std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site,
-                                       double a_p)
+std::optional<std::size_t> first_automatic_mode(const Study& study)
 {
-    try {
-        return k_window(parse_axis(study.axis, "axis"), study.k_min, study.k_max, kernel, lattice, site, a_p, "window");
-    } catch (const Error& e) {
-        throw Error(e.code(), study.file + ": /k: " + e.what());
-    }
-}
-
-double study_volume_coefficient(const Study& study, const Lattice& lattice, std::size_t index)
-{
-    try {
-        return lattice.volume_coefficient(study.volume_coefficients[index]);
-    } catch (const Error& e) {
-        throw Error(e.code(), study.file + ": /volume_coefficients/" + std::to_string(index) + ": " + e.what());
-    }
+    for (std::size_t m = 0; m < study.modes.size(); ++m)
+        if (study.modes[m].is_automatic()) return m;
+    return std::nullopt;
 }
 
 } // namespace sphkern

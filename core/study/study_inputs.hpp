@@ -1,4 +1,8 @@
-// A study's kernels and lattices, loaded and checked once for every section.
+// A study's inputs, resolved and checked once before any section computes: its kernels and
+// lattices loaded, each lattice's a_p and sites, each mode's evaluation per kernel, the
+// sweep kernels, the windows in k, the kernels that relax particle sources and the
+// reference table matched to the cases. Errors name the study file and the JSON Pointer of
+// the entry at fault.
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
@@ -6,6 +10,9 @@
 #include "lattices/lattice.hpp"
 #include "study/study.hpp"
 
+#include <map>
+#include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -14,19 +21,27 @@ namespace sphkern {
 struct StudyInputs {
     std::vector<Kernel> kernels;   // in the study's order
     std::vector<Lattice> lattices;
+    std::vector<std::vector<double>> a_p;                // [lattice][volume coefficient]
+    std::vector<std::vector<int>> sites;                 // [lattice]: the sites studied
+    std::vector<std::vector<EvaluationMode>> evaluation; // [mode][kernel]
+    std::vector<double> surface_a_p;                     // [lattice], with a surface section
+    std::vector<Kernel> sweep_kernels;                   // [sweep]
+    std::vector<std::optional<std::size_t>> relax_kernel; // [particle source]: the kernel that relaxes it
+    std::optional<ReferenceTable> reference;             // matched to the study's cases
+
+    // The study's window in k for kernel `kernel` (an index into `kernels`, then `sweep_kernels`
+    // after them) on lattice `lattice`, at a site and a_p.
+    std::pair<double, double> window(std::size_t lattice, std::size_t kernel, int site, double a_p) const;
+
+    using WindowKey = std::tuple<std::size_t, std::size_t, int, double>; // lattice, kernel, site, a_p
+    std::map<WindowKey, std::pair<double, double>> windows; // every window the sections use
 };
 
-// Errors name the study file and the JSON path of the entry at fault.
+// Loads and checks every input; nothing is computed before this returns.
 StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry);
 
-// The evaluation a study mode asks of a kernel (its shell list for the kernel's support).
-EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const Kernel& kernel);
-
-// The study's window in k for a kernel, lattice, site and a_p.
-std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site,
-                                       double a_p);
-
-// A lattice's a_p for the study's volume coefficient `index` (errors name /volume_coefficients/index).
-double study_volume_coefficient(const Study& study, const Lattice& lattice, std::size_t index);
+// The index of the first automatic mode, the one whose condition (22) the stability and
+// surface sections read; empty if every mode has fixed shells.
+std::optional<std::size_t> first_automatic_mode(const Study& study);
 
 } // namespace sphkern

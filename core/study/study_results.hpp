@@ -37,7 +37,15 @@ struct RootExplanation {
     std::vector<ModeDifference> differences;
 };
 
+// Where a bulk case stands in its study: indices into the study's lattices, kernels,
+// volume coefficients and modes. Sections find each other's cases by it.
+struct CaseKey {
+    std::size_t lattice = 0, kernel = 0, volume_coefficient = 0, mode = 0;
+    bool operator==(const CaseKey&) const = default;
+};
+
 struct StudyCase {
+    CaseKey key;
     std::string lattice;
     int dimension = 0;
     std::string mode;
@@ -106,7 +114,7 @@ struct StabilityCase {
     std::string kernel_label;
     double gamma = 0;
     std::string h_model = "fixed";
-    std::string refused;      // why the lattice has no dispersion matrix; empty when it has one
+    std::optional<std::string> refused; // why the lattice has no dispersion matrix; empty when it has one
     StabilityOverK over_k;
     double path_k = 0;        // where the dispersion curves are drawn
     DispersionPath path;
@@ -124,5 +132,13 @@ struct StudyResults {
     nlohmann::json reference; // the whole reference table, if any
     nlohmann::json inputs;    // the study file, lattices and kernels in full (study_provenance.hpp)
 };
+
+// The bulk case at `key`, or nullptr.
+inline const StudyCase* find_case(const StudyResults& results, const CaseKey& key)
+{
+    for (const auto& c : results.cases)
+        if (c.key == key) return &c;
+    return nullptr;
+}
 
 } // namespace sphkern

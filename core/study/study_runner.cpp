@@ -14,10 +14,10 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     results.inputs = study_inputs_json(study, inputs);
     run_bulk_section(study, inputs, results);
     run_surface_section(study, inputs, results);
-    run_sweep_section(study, registry, inputs, results);
+    run_sweep_section(study, inputs, results);
     run_stability_section(study, inputs, results);
     run_particles_section(study, inputs, results);
-    if (study.compare_with) compare_with_reference(study, results);
+    if (inputs.reference) compare_with_reference(*inputs.reference, results);
     return results;
 }
 

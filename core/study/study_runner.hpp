@@ -1,5 +1,6 @@
-// Runs a study: its kernels and lattices loaded once, then each section in turn (bulk
-// cases, surface, sweeps, stability) and the comparison with a reference table.
+// Runs a study: every input resolved and checked first (study_inputs.hpp), then each
+// section in turn (bulk cases, surface, sweeps, stability, particles) and the comparison
+// with a reference table.
 #pragma once
 
 #include "kernels/kernel_registry.hpp"

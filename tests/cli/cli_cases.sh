@@ -814,5 +814,53 @@ relax_study s_ru '{"kernel": "wendland_c2", "colour": 1}'
 expect 3 's_ru.json: /particles/sources/0/relax: unknown key "colour"' -- run "$work/s_ru.json" -o "$work/out_ru"
 check "a refused relax section leaves no output folder" test -z "$(leftovers out_rk)"
 
+# A study's inputs are all resolved before its first section: a bad reference table, sweep
+# kernel, shell list or relax kernel is refused (exit 3) although the bulk section would
+# abort the run (abort_above_k aborts in W above k = 1.3: exit 4 had it run) or take long,
+# and no output folder is left.
+printf '{"source": "s", "lattice": "fcc", "volume_coefficient": "voronoi", "mode": "default", "rows": [{"kernel": "abort_above_k", "k": 1.0, "eps_rho": 0, "eps_gradp": "x"}]}' >"$work/ref_early.json"
+early_study() { study "$1" '{"name": "s", "kernels": ["'"$broken"'/abort_above_k.so"], "lattices": ["fcc"], "k": {"min": 0.75, "max": 1.5, "samples": 301}, "plots": false, '"$2"'}'; }
+early_study s_early_ref '"compare_with": "ref_early.json"'
+expect 3 'ref_early.json: /rows/0/eps_gradp: expected a number, got a string' -- run "$work/s_early_ref.json" -o "$work/out_early_ref"
+check "a study with a broken reference table leaves no output folder" test -z "$(leftovers out_early_ref)"
+printf '{"source": "s", "lattice": "fcc", "volume_coefficient": "voronoi", "mode": "default", "rows": [{"kernel": "cubic_bspline", "k": 1.0, "eps_rho": 0, "eps_gradp": 0}]}' >"$work/ref_nocase.json"
+early_study s_early_case '"compare_with": "ref_nocase.json"'
+expect 3 'ref_nocase.json: /rows/0: the study has no case cubic_bspline / fcc / voronoi / mode default' -- run "$work/s_early_case.json" -o "$work/out_early_case"
+early_study s_early_sweep '"sweeps": [{"kernel": "no_such_kernel", "parameter": "beta", "range": [0, 1]}]'
+expect 3 's_early_sweep.json: /sweeps/0: unknown kernel "no_such_kernel"' -- run "$work/s_early_sweep.json" -o "$work/out_early_sweep"
+check "a study with an unknown sweep kernel leaves no output folder" test -z "$(leftovers out_early_sweep)"
+early_study s_early_param '"sweeps": [{"kernel": "wendland_c2_shape", "parameter": "alpha", "range": [0, 1]}]'
+expect 3 's_early_param.json: /sweeps/0: kernel wendland_c2_shape has no parameter "alpha"' -- run "$work/s_early_param.json" -o "$work/out_early_param"
+early_study s_early_shells '"modes": [{"name": "p", "shells": {"3": [1]}}]'
+expect 3 's_early_shells.json: /modes/0/shells: no shell list for kernel abort_above_k with support R = 2' -- run "$work/s_early_shells.json" -o "$work/out_early_shells"
+early_study s_early_relax '"particles": {"sources": [{"poisson": 3, "count": 500, "relax": {"kernel": "quintic"}}], "nh": {"min": 30, "max": 60, "steps": 1}}'
+expect 3 's_early_relax.json: /particles/sources/0/relax: kernel: "quintic" is not one of the study.s kernels' -- run "$work/s_early_relax.json" -o "$work/out_early_relax"
+early_study s_early_surface '"surface": {"volume_coefficient": "voronio"}'
+expect 3 's_early_surface.json: /surface/volume_coefficient: lattice fcc has no volume coefficient "voronio" \(did you mean "voronoi"\?\)' -- run "$work/s_early_surface.json" -o "$work/out_early_surface"
+early_study s_early_size '"particles": {"sources": [{"lattice": "fcc", "size": [4, 4]}], "nh": {"min": 30, "max": 60, "steps": 1}}'
+expect 3 's_early_size.json: /particles/sources/0: size: the lattice is 3D, expected 3 cell counts' -- run "$work/s_early_size.json" -o "$work/out_early_size"
+# The same with a bulk section that runs for seconds (16 x 3 cases of 40000 samples): refused first, nothing left.
+study s_early_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 40000}, "plots": false, "compare_with": "ref_early.json"}'
+expect 3 'ref_early.json: /rows/0/eps_gradp: expected a number, got a string' -- run "$work/s_early_long.json" -o "$work/out_early_long"
+check "a long study with a broken reference table leaves no output folder" test -z "$(leftovers out_early_long)"
+# Shell lists are keyed by R as a number: "2.0" is the list of R = 2, and two keys for one R are refused.
+study s_key2 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "k": {"samples": 21}, "plots": false, "modes": [{"name": "p", "shells": {"2": [1, "sqrt(3)", 2]}}]}'
+study s_key20 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "k": {"samples": 21}, "plots": false, "modes": [{"name": "p", "shells": {"2.0": [1, "sqrt(3)", 2]}}]}'
+expect 0 'cases in' -- run "$work/s_key2.json" -o "$work/out_key2"
+expect 0 'cases in' -- run "$work/s_key20.json" -o "$work/out_key20"
+check "shells keyed \"2.0\" give the curves of \"2\"" cmp -s "$work/out_key2/curves.csv" "$work/out_key20/curves.csv"
+study s_key_twice '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "plots": false, "modes": [{"name": "p", "shells": {"2": [1], "2.0": [1, 2]}}]}'
+expect 3 's_key_twice.json: /modes/0/shells/2.0: a second shell list for R = 2.0, expected one per R' -- run "$work/s_key_twice.json" -o "$work/out_key_twice"
+# A volume coefficient written as text is a number all the same.
+study s_ap_text '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": ["0.75", 0.75], "k": {"samples": 21}, "plots": false}'
+expect 0 'cases in' -- run "$work/s_ap_text.json" -o "$work/out_ap_text"
+check "a_p \"0.75\" and 0.75 give one curve" python3 -c "
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r['volume_coefficient'] == '0.75']
+assert len(rows) == 42 and rows[:21] == rows[21:] and rows[0]['a_p'] == '0.75'
+" "$work/out_ap_text/curves.csv"
+study s_ap_text0 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": ["voronoi", "0"]}'
+expect 3 's_ap_text0.json: /volume_coefficients/1: expected a positive volume coefficient up to 1e6' -- run "$work/s_ap_text0.json" -o "$work/out_ap_text0"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -25,8 +25,8 @@ StudyResults compare(const std::vector<Root>& roots, const std::string& rows)
     auto file = std::filesystem::temp_directory_path() / ("sphkern-reference-" + std::to_string(::getpid()) + ".json");
     std::ofstream(file) << R"({"source": "test", "lattice": "L", "volume_coefficient": "voronoi", "mode": "paper",
                               "tolerance": 1e-4, "rows": [)" << rows << "]}";
-    Study study;
-    study.compare_with = file;
+    auto table = read_reference_table(file);
+    resolve_reference_table(table, {{"L"}, {"paper"}, {"voronoi"}, {"K"}});
     StudyResults results;
     StudyCase c;
     // Moved in, not assigned from literals: GCC 12 warns falsely (-Wrestrict) on the latter.
@@ -36,7 +36,7 @@ StudyResults compare(const std::vector<Root>& roots, const std::string& rows)
     c.kernel = std::string("K");
     c.scan.roots = roots;
     results.cases.push_back(c);
-    compare_with_reference(study, results);
+    compare_with_reference(table, results);
     std::filesystem::remove(file);
     return results;
 }

@@ -2,7 +2,6 @@
 #include "study/sections/sections.hpp"
 
 #include "analysis/site_errors.hpp"
-#include "support/error.hpp"
 #include "support/interruption.hpp"
 #include "support/progress.hpp"
 
@@ -51,61 +50,74 @@ std::vector<RootExplanation> explain(const HydrostaticErrors& mode, const Hydros
 
 } // namespace
 
+namespace {
+
+// One kernel x lattice x a_p x mode: the curve, roots, condition (22) and, for a fixed-shell
+// mode, why its roots differ from the automatic evaluation.
+StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey& key, const HydrostaticErrors& automatic,
+                    const RootScan& automatic_scan)
+{
+    const Lattice& lattice = inputs.lattices[key.lattice];
+    const Kernel& kernel = inputs.kernels[key.kernel];
+    const StudyMode& mode = study.modes[key.mode];
+    const std::vector<int>& sites = inputs.sites[key.lattice];
+    const double a_p = inputs.a_p[key.lattice][key.volume_coefficient];
+    const auto [k_min, k_max] = inputs.window(key.lattice, key.kernel, sites[0], a_p);
+    StudyCase c;
+    c.key = key;
+    c.lattice = lattice.name;
+    c.dimension = lattice.dimension;
+    c.mode = mode.name;
+    c.automatic = mode.is_automatic();
+    c.kernel = kernel.name();
+    c.kernel_label = kernel.label();
+    c.support = kernel.support();
+    c.ap_name = study.volume_coefficients[key.volume_coefficient].name;
+    c.a_p = a_p;
+    c.k_min = k_min;
+    c.k_max = k_max;
+    c.sites = sites;
+    auto errors = errors_per_site(kernel, lattice, sites, a_p, lattice.gravity, k_max,
+                                  inputs.evaluation[key.mode][key.kernel]);
+    for (int i = 0; i < study.samples; ++i) {
+        if (i % 64 == 0) throw_if_interrupted();
+        double k = k_min + (k_max - k_min) * i / (study.samples - 1);
+        c.curve.emplace_back(k, errors[0]->at(k));
+    }
+    c.scan = c.automatic ? automatic_scan : find_roots(*errors[0], k_min, k_max);
+    const AcceptanceRule along{study.epsilon, Direction::gravity, study.lateral};
+    const AcceptanceRule every{study.epsilon, Direction::every, study.lateral};
+    std::vector<const HydrostaticErrors*> all;
+    for (const auto& e : errors) all.push_back(e.get());
+    c.acceptance = evaluate_acceptance(all, k_min, k_max, along);
+    c.acceptance_every = evaluate_acceptance(all, k_min, k_max, every);
+    if (errors.size() > 1)
+        for (std::size_t i = 0; i < errors.size(); ++i)
+            c.per_site.push_back({sites[i], i == 0 ? c.scan : find_roots(*errors[i], k_min, k_max),
+                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, along),
+                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, every)});
+    if (!c.automatic) c.explanations = explain(*errors[0], automatic, c.scan, automatic_scan);
+    return c;
+}
+
+} // namespace
+
 void run_bulk_section(const Study& study, const StudyInputs& inputs, StudyResults& results)
 {
     Progress progress("study " + study.name, inputs.lattices.size() * inputs.kernels.size() *
                                                  study.volume_coefficients.size() * study.modes.size());
-    for (const auto& lattice : inputs.lattices) {
-        std::vector<double> aps;
-        for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i)
-            aps.push_back(study_volume_coefficient(study, lattice, i));
-        const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
-        try {
-            check_sites(lattice, sites, "sites");
-        } catch (const Error& e) {
-            throw Error(e.code(), study.file + ": /sites: " + e.what());
-        }
-        const AcceptanceRule along{study.epsilon, Direction::gravity, study.lateral};
-        const AcceptanceRule every{study.epsilon, Direction::every, study.lateral};
-        for (const auto& kernel : inputs.kernels)
-            for (std::size_t a = 0; a < aps.size(); ++a) {
-                const auto [k_min, k_max] = study_window(study, kernel, lattice, sites[0], aps[a]);
-                HydrostaticErrors automatic(kernel, lattice, sites[0], aps[a], lattice.gravity, k_max);
+    for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
+        const Lattice& lattice = inputs.lattices[l];
+        const int site = inputs.sites[l][0];
+        for (std::size_t k = 0; k < inputs.kernels.size(); ++k)
+            for (std::size_t a = 0; a < inputs.a_p[l].size(); ++a) {
+                const double a_p = inputs.a_p[l][a];
+                const auto [k_min, k_max] = inputs.window(l, k, site, a_p);
+                HydrostaticErrors automatic(inputs.kernels[k], lattice, site, a_p, lattice.gravity, k_max);
                 RootScan automatic_scan = find_roots(automatic, k_min, k_max);
-                for (const auto& mode : study.modes) {
-                    StudyCase c;
-                    c.lattice = lattice.name;
-                    c.dimension = lattice.dimension;
-                    c.mode = mode.name;
-                    c.automatic = mode.is_automatic();
-                    c.kernel = kernel.name();
-                    c.kernel_label = kernel.label();
-                    c.support = kernel.support();
-                    c.ap_name = study.volume_coefficients[a];
-                    c.a_p = aps[a];
-                    c.k_min = k_min;
-                    c.k_max = k_max;
-                    c.sites = sites;
-                    auto errors = errors_per_site(kernel, lattice, sites, aps[a], lattice.gravity, k_max,
-                                                  evaluation_mode(study, mode, kernel));
-                    for (int i = 0; i < study.samples; ++i) {
-                        if (i % 64 == 0) throw_if_interrupted();
-                        double k = k_min + (k_max - k_min) * i / (study.samples - 1);
-                        c.curve.emplace_back(k, errors[0]->at(k));
-                    }
-                    c.scan = c.automatic ? automatic_scan : find_roots(*errors[0], k_min, k_max);
-                    std::vector<const HydrostaticErrors*> all;
-                    for (const auto& e : errors) all.push_back(e.get());
-                    c.acceptance = evaluate_acceptance(all, k_min, k_max, along);
-                    c.acceptance_every = evaluate_acceptance(all, k_min, k_max, every);
-                    if (errors.size() > 1)
-                        for (std::size_t i = 0; i < errors.size(); ++i)
-                            c.per_site.push_back({sites[i], i == 0 ? c.scan : find_roots(*errors[i], k_min, k_max),
-                                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, along),
-                                                  evaluate_acceptance({errors[i].get()}, k_min, k_max, every)});
-                    if (!c.automatic) c.explanations = explain(*errors[0], automatic, c.scan, automatic_scan);
-                    results.cases.push_back(std::move(c));
-                    progress.step(kernel.name() + " on " + lattice.name);
+                for (std::size_t m = 0; m < study.modes.size(); ++m) {
+                    results.cases.push_back(bulk_case(study, inputs, {l, k, a, m}, automatic, automatic_scan));
+                    progress.step(inputs.kernels[k].name() + " on " + lattice.name);
                     throw_if_interrupted();
                 }
             }

@@ -1,16 +1,14 @@
 // The particle sets: every kernel of the study on each source, over the section's N_H or eta.
 #include "study/sections/sections.hpp"
 
-#include "lattices/lattice.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
+#include "study/study_error.hpp"
 #include "support/error.hpp"
 #include "support/interruption.hpp"
 
-#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 
 namespace sphkern {
 
@@ -18,33 +16,45 @@ namespace {
 
 ParticleSet load_source(const Study& study, const StudyParticleSource& s)
 {
-    try {
-        if (s.source.kind == SourceKind::lattice) {
-            const int dim = load_lattice(s.source.spec).dimension;
-            if (static_cast<int>(s.sizes) != dim)
-                fail_input(fmt::format("size: the lattice is {}D, expected {} cell counts", dim, dim));
-        }
-        return load_particles(s.source);
-    } catch (const Error& e) {
-        throw Error(e.code(), study.file + ": " + s.json_path + ": " + e.what());
-    }
+    return at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); });
 }
 
-// The source relaxed by the study kernel it names (its label or name).
-ParticleSet relaxed(const Study& study, const StudyInputs& inputs, const StudyParticleSource& s, ParticleSet set)
+// The source relaxed by the study kernel it names (resolved with the study's inputs).
+ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticleSource& s, ParticleSet set)
 {
     const StudyRelax& r = *s.relax;
-    const auto kernel = std::find_if(inputs.kernels.begin(), inputs.kernels.end(),
-                                     [&](const Kernel& k) { return k.label() == r.kernel || k.name() == r.kernel; });
-    try {
-        if (kernel == inputs.kernels.end())
-            fail_input(fmt::format("kernel: \"{}\" is not one of the study's kernels", r.kernel));
+    return at_study_path(study.file, r.json_path, [&] {
         if (!set.box) fail_input("relaxation needs a periodic box");
-        const double h = smoothing_lengths(set, *kernel, r.smoothing, mean_volume(set)).front();
-        spdlog::info("particles: relaxing {} with {}", s.label, kernel->label());
-        return relax_particles(*kernel, std::move(set), h, r.settings).state.set;
-    } catch (const Error& e) {
-        throw Error(e.code(), study.file + ": " + r.json_path + ": " + e.what());
+        const double h = smoothing_lengths(set, kernel, r.smoothing, mean_volume(set)).front();
+        spdlog::info("particles: relaxing {} with {}", s.label, kernel.label());
+        return relax_particles(kernel, std::move(set), h, r.settings).state.set;
+    });
+}
+
+// Every kernel of the study that supports the set's dimension, on one source.
+void analyse_source(const Study& study, const StudyInputs& inputs, const StudyParticleSource& s, const ParticleSet& set,
+                    StudyResults& results)
+{
+    ParticleRequest request;
+    request.sweep = study.particles->sweep;
+    request.volume = study.particles->volume;
+    for (const auto& kernel : inputs.kernels) {
+        if (!kernel.supports(set.dimension)) continue;
+        throw_if_interrupted();
+        spdlog::info("particles: {} on {}", kernel.label(), s.label);
+        ParticlesCase c;
+        c.source = s.label;
+        c.kernel_label = kernel.label();
+        c.dimension = set.dimension;
+        c.particles = set.size();
+        at_study_path(study.file, s.json_path, [&] {
+            auto answer = analyse_particles(kernel, set, request);
+            c.volume = answer.volume;
+            c.points = std::move(answer.points);
+            for (const auto& p : c.points)
+                c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.size()));
+        });
+        results.particles.push_back(std::move(c));
     }
 }
 
@@ -53,33 +63,11 @@ ParticleSet relaxed(const Study& study, const StudyInputs& inputs, const StudyPa
 void run_particles_section(const Study& study, const StudyInputs& inputs, StudyResults& results)
 {
     if (!study.particles) return;
-    const auto& section = *study.particles;
-    for (const auto& s : section.sources) {
-        ParticleSet set = load_source(study, s);
-        if (s.relax) set = relaxed(study, inputs, s, std::move(set));
-        ParticleRequest request;
-        request.sweep = section.sweep;
-        request.volume = section.volume;
-        for (const auto& kernel : inputs.kernels) {
-            if (!kernel.supports(set.dimension)) continue;
-            throw_if_interrupted();
-            spdlog::info("particles: {} on {}", kernel.label(), s.label);
-            ParticlesCase c;
-            c.source = s.label;
-            c.kernel_label = kernel.label();
-            c.dimension = set.dimension;
-            c.particles = set.size();
-            try {
-                auto answer = analyse_particles(kernel, set, request);
-                c.volume = answer.volume;
-                c.points = std::move(answer.points);
-                for (const auto& p : c.points)
-                    c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.size()));
-            } catch (const Error& e) {
-                throw Error(e.code(), study.file + ": " + s.json_path + ": " + e.what());
-            }
-            results.particles.push_back(std::move(c));
-        }
+    const auto& sources = study.particles->sources;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        ParticleSet set = load_source(study, sources[i]);
+        if (const auto kernel = inputs.relax_kernel[i]) set = relaxed(study, inputs.kernels[*kernel], sources[i], std::move(set));
+        analyse_source(study, inputs, sources[i], set, results);
     }
 }
 

@@ -1,5 +1,6 @@
-// The sections of a study, each run on its own into the study's results: the bulk cases
-// first (the others read their condition (22) windows), then the optional ones.
+// The sections of a study, each run on its own into the study's results from inputs
+// resolved before any of them (study_inputs.hpp): the bulk cases first (the others find
+// theirs by CaseKey for condition (22)), then the optional ones.
 #pragma once
 
 #include "study/study.hpp"
@@ -15,7 +16,7 @@ void run_bulk_section(const Study& study, const StudyInputs& inputs, StudyResult
 void run_surface_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
 
 // "sweeps": both errors over (k, parameter) and the designed kernels.
-void run_sweep_section(const Study& study, KernelRegistry& registry, const StudyInputs& inputs, StudyResults& results);
+void run_sweep_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
 
 // "stability": stable k intervals, dispersion curves and their overlap with condition (22).
 void run_stability_section(const Study& study, const StudyInputs& inputs, StudyResults& results);
