@@ -12,19 +12,6 @@
 
 namespace sphkern {
 
-GradientForm parse_gradient_form(const std::string& text)
-{
-    if (text == "sum") return GradientForm::sum;
-    if (text == "difference") return GradientForm::difference;
-    if (text == "monaghan") return GradientForm::monaghan;
-    fail_input("gradient form \"" + text + "\" is unknown, expected sum, difference or monaghan");
-}
-
-const char* gradient_form_name(GradientForm form)
-{
-    return form == GradientForm::sum ? "sum" : form == GradientForm::difference ? "difference" : "monaghan";
-}
-
 int SurfacePlanes::type_of_site(int site) const
 {
     for (std::size_t t = 0; t < types.size(); ++t)
@@ -179,15 +166,9 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
         for (const auto& j : neighbours[static_cast<std::size_t>(s)]) {
             double depth_j = depth_i + j.height;
             if (!bulk && depth_j < -1e-9) continue;
-            double weight;
-            switch (form) {
-            case GradientForm::sum: weight = depth_i + depth_j; break;
-            case GradientForm::difference: weight = depth_j - depth_i; break;
-            default: {
-                double rho_j = 1 + (bulk ? bulk_density[static_cast<std::size_t>(j.site)] : density_at(j.site, depth_j));
-                weight = rho_i * (depth_i / (rho_i * rho_i) + depth_j / (rho_j * rho_j));
-            }
-            }
+            const double rho_j = form != GradientForm::monaghan ? 1.0 // read by the Monaghan form only
+                                 : 1 + (bulk ? bulk_density[static_cast<std::size_t>(j.site)] : density_at(j.site, depth_j));
+            const double weight = gradient_form_weight(form, depth_i, depth_j, rho_i, rho_j);
             // (x_i - x_j) . e / r = -height / r
             sum += weight * kernel.dw(j.r / k, dim, k) * (-j.height / j.r);
         }
