@@ -34,12 +34,8 @@ enum class CheckStatus { ok, warn, fail };
 
 const char* check_status_name(CheckStatus status)
 {
-    switch (status) {
-    case CheckStatus::ok: return "ok";
-    case CheckStatus::warn: return "warn";
-    case CheckStatus::fail: return "fail";
-    }
-    return "fail";
+    static constexpr const char* names[] = {"ok", "warn", "fail"}; // in the enum's order
+    return names[static_cast<int>(status)];
 }
 
 struct CheckItem {
