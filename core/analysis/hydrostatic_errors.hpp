@@ -63,7 +63,6 @@ public:
     const Kernel& kernel() const { return kernel_; }
     int site() const { return site_; }
     int dimension() const { return dim_; }
-    double a_p() const { return a_p_; }
 
     // The contribution of one shell term to (eps_rho, eps_gradP) at k.
     std::pair<double, double> shell_contribution(const Shell& shell, double k) const;

@@ -2,6 +2,7 @@
 // layer n below a free surface normal to gravity, by lattice sums over the half-space.
 #pragma once
 
+#include "analysis/gradient_form.hpp"
 #include "analysis/hydrostatic_errors.hpp"
 
 #include <optional>
@@ -9,12 +10,6 @@
 #include <vector>
 
 namespace sphkern {
-
-// The pressure-gradient interpolation: sum (P_i + P_j), difference (P_j - P_i), or
-// Monaghan's rho_i sum m_j (P_i / rho_i^2 + P_j / rho_j^2) with per-layer densities.
-enum class GradientForm { sum, difference, monaghan };
-GradientForm parse_gradient_form(const std::string& text);
-const char* gradient_form_name(GradientForm form);
 
 // The lattice planes normal to gravity, occupied as they are. They repeat every
 // `period` (the smallest positive projection of a lattice vector on gravity); within one

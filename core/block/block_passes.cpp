@@ -1,5 +1,6 @@
 #include "block/block_passes.hpp"
 
+#include "analysis/gradient_form.hpp"
 #include "support/parallel_for.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
@@ -68,10 +69,7 @@ SPHKERN_VECTOR_CLONES void run_gradient(const double* __restrict depth_i, const 
                   double* __restrict sum)
 {
     for (std::size_t p = 0; p < length; ++p) {
-        double weight;
-        if constexpr (form == GradientForm::sum) weight = depth_i[p] + depth_j[p];
-        else if constexpr (form == GradientForm::difference) weight = depth_j[p] - depth_i[p];
-        else weight = rho_i[p] * (depth_i[p] / (rho_i[p] * rho_i[p]) + depth_j[p] / (rho_j[p] * rho_j[p]));
+        const double weight = gradient_form_weight<form>(depth_i[p], depth_j[p], rho_i[p], rho_j[p]);
         const double term = weight * dw[p] * -height[p] * inv_r[p];
         sum[p] += r2[p] <= reach2 ? term : 0.0;
     }

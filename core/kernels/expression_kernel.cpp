@@ -9,6 +9,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <muParser.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <map>
@@ -152,6 +153,80 @@ void check_expression(const JsonNode& node, const std::string& text, const std::
     }
 }
 
+// The dimensions, each once, in increasing order.
+std::vector<int> read_dimensions(const JsonNode& root)
+{
+    auto dims = root.at("dimensions");
+    dims.expect_array(1, 3);
+    std::vector<int> dimensions;
+    for (std::size_t i = 0; i < dims.size(); ++i) {
+        int d = static_cast<int>(dims[i].integer_in(1, 3));
+        if (std::find(dimensions.begin(), dimensions.end(), d) != dimensions.end())
+            dims[i].error("dimension " + std::to_string(d) + " listed twice");
+        dimensions.push_back(d);
+    }
+    std::sort(dimensions.begin(), dimensions.end());
+    return dimensions;
+}
+
+// The shape parameters: names other than q and k, min <= default <= max.
+std::vector<KernelParameter> read_parameters(const JsonNode& root)
+{
+    std::vector<KernelParameter> parameters;
+    auto params = root.find("parameters");
+    if (!params) return parameters;
+    params->expect_array(0, 16);
+    for (std::size_t i = 0; i < params->size(); ++i) {
+        auto p = (*params)[i];
+        p.expect_keys({"name", "description", "default", "min", "max"});
+        KernelParameter parameter{identifier(p.at("name")), p.find("description") ? p.at("description").text() : "",
+                                  p.at("default").number(), p.at("min").number(), p.at("max").number()};
+        if (parameter.name == "q" || parameter.name == "k") p.at("name").error("q and k are taken");
+        if (!(parameter.min_value <= parameter.default_value && parameter.default_value <= parameter.max_value))
+            p.error("expected min <= default <= max");
+        parameters.push_back(parameter);
+    }
+    return parameters;
+}
+
+// Breakpoints strictly increasing inside (0, support).
+std::vector<double> read_breakpoints(const JsonNode& root, double support)
+{
+    std::vector<double> breakpoints;
+    auto breaks = root.find("breakpoints");
+    if (!breaks) return breakpoints;
+    breaks->expect_array(0, 64);
+    for (std::size_t i = 0; i < breaks->size(); ++i) {
+        double b = (*breaks)[i].number();
+        if (b <= 0 || b >= support || (i > 0 && b <= breakpoints.back()))
+            (*breaks)[i].error("breakpoints must increase strictly inside (0, support)");
+        breakpoints.push_back(b);
+    }
+    return breakpoints;
+}
+
+// Finite values and a usable normalisation with the default parameters, or an error at /w.
+void require_normalisable(const JsonNode& root, const KernelDefinition& kernel, const ExpressionFunctions& functions)
+{
+    std::vector<double> defaults;
+    for (const auto& p : kernel.parameters) defaults.push_back(p.default_value);
+    for (int dim : kernel.dimensions) {
+        double s = functions.sigma(dim, defaults.data());
+        if (!std::isfinite(s) || s <= 0)
+            root.at("w").error("the integral of w over " + std::to_string(dim) +
+                               "D space is not a positive finite number, so it cannot be normalised");
+        for (int i = 0; i <= 60; ++i) {
+            double q = 1.5 * kernel.support * i / 60;
+            if (!std::isfinite(functions.w(q, dim, 1.0, defaults.data())) ||
+                !std::isfinite(functions.dw(q, dim, 1.0, defaults.data()))) {
+                std::ostringstream at;
+                at << "non-finite value at q = " << q << " (default parameters)";
+                root.at("w").error(at.str());
+            }
+        }
+    }
+}
+
 } // namespace
 
 std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesystem::path& file)
@@ -168,39 +243,10 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     kernel->title = root.find("title") ? printable_text(root.at("title").string()) : kernel->name;
     kernel->reference = root.find("reference") ? printable_text(root.at("reference").text()) : "";
     kernel->support = e.support = root.at("support").number_in(1e-3, 100);
-    auto dims = root.at("dimensions");
-    dims.expect_array(1, 3);
-    for (std::size_t i = 0; i < dims.size(); ++i) {
-        int d = static_cast<int>(dims[i].integer_in(1, 3));
-        if (kernel->supports(d)) dims[i].error("dimension " + std::to_string(d) + " listed twice");
-        kernel->dimensions.push_back(d);
-    }
-    std::sort(kernel->dimensions.begin(), kernel->dimensions.end());
-    if (auto params = root.find("parameters")) {
-        params->expect_array(0, 16);
-        for (std::size_t i = 0; i < params->size(); ++i) {
-            auto p = (*params)[i];
-            p.expect_keys({"name", "description", "default", "min", "max"});
-            KernelParameter parameter{identifier(p.at("name")),
-                                      p.find("description") ? p.at("description").text() : "",
-                                      p.at("default").number(), p.at("min").number(), p.at("max").number()};
-            if (parameter.name == "q" || parameter.name == "k") p.at("name").error("q and k are taken");
-            if (!(parameter.min_value <= parameter.default_value && parameter.default_value <= parameter.max_value))
-                p.error("expected min <= default <= max");
-            kernel->parameters.push_back(parameter);
-            e.parameter_names.push_back(parameter.name);
-        }
-    }
-    if (auto breaks = root.find("breakpoints")) {
-        breaks->expect_array(0, 64);
-        for (std::size_t i = 0; i < breaks->size(); ++i) {
-            double b = (*breaks)[i].number();
-            if (b <= 0 || b >= kernel->support || (i > 0 && b <= kernel->breakpoints.back()))
-                (*breaks)[i].error("breakpoints must increase strictly inside (0, support)");
-            kernel->breakpoints.push_back(b);
-        }
-    }
-    e.breakpoints = kernel->breakpoints;
+    kernel->dimensions = read_dimensions(root);
+    kernel->parameters = read_parameters(root);
+    for (const auto& p : kernel->parameters) e.parameter_names.push_back(p.name);
+    kernel->breakpoints = e.breakpoints = read_breakpoints(root, kernel->support);
     e.w = root.at("w").string();
     check_expression(root.at("w"), e.w, e.parameter_names);
     if (auto dw = root.find("dw")) {
@@ -211,25 +257,7 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     }
     kernel->truncations = {kernel->support};
     auto functions = std::make_shared<ExpressionFunctions>(e);
-
-    // Finite values and a usable normalisation with the default parameters.
-    std::vector<double> defaults;
-    for (const auto& p : kernel->parameters) defaults.push_back(p.default_value);
-    for (int dim : kernel->dimensions) {
-        double s = functions->sigma(dim, defaults.data());
-        if (!std::isfinite(s) || s <= 0)
-            root.at("w").error("the integral of w over " + std::to_string(dim) +
-                               "D space is not a positive finite number, so it cannot be normalised");
-        for (int i = 0; i <= 60; ++i) {
-            double q = 1.5 * kernel->support * i / 60;
-            if (!std::isfinite(functions->w(q, dim, 1.0, defaults.data())) ||
-                !std::isfinite(functions->dw(q, dim, 1.0, defaults.data()))) {
-                std::ostringstream at;
-                at << "non-finite value at q = " << q << " (default parameters)";
-                root.at("w").error(at.str());
-            }
-        }
-    }
+    require_normalisable(root, *kernel, *functions);
     kernel->functions = functions;
     return kernel;
 }

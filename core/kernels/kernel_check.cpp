@@ -29,25 +29,91 @@ std::string format(double v, int digits = 10)
     return s.str();
 }
 
+// A check's status, worst last; text only in the rendered result.
+enum class CheckStatus { ok, warn, fail };
+
+const char* check_status_name(CheckStatus status)
+{
+    static constexpr const char* names[] = {"ok", "warn", "fail"}; // in the enum's order
+    return names[static_cast<int>(status)];
+}
+
+struct CheckItem {
+    int dimension = 0;
+    std::string name;
+    CheckStatus status = CheckStatus::ok;
+    std::string detail;
+    std::string hint; // empty when ok
+};
+
 struct Checks {
-    nlohmann::json items = nlohmann::json::array();
-    int worst = 0; // 0 ok, 1 warn, 2 fail
-    void add(int dim, const std::string& name, int status, const std::string& detail, const std::string& hint = {})
+    std::vector<CheckItem> items;
+    CheckStatus worst = CheckStatus::ok;
+    void add(int dim, const std::string& name, CheckStatus status, const std::string& detail, const std::string& hint = {})
     {
-        static const char* names[] = {"ok", "warn", "fail"};
-        if (status > 0 && hint.empty()) throw std::logic_error("check " + name + " warns or fails without a hint");
-        nlohmann::json item = {{"dimension", dim}, {"check", name}, {"status", names[status]}, {"detail", detail}};
-        if (status > 0 && !hint.empty()) item["hint"] = hint;
-        items.push_back(std::move(item));
+        if (status != CheckStatus::ok && hint.empty())
+            throw std::logic_error("check " + name + " warns or fails without a hint");
+        items.push_back({dim, name, status, detail, status == CheckStatus::ok ? std::string() : hint});
         worst = std::max(worst, status);
     }
+    nlohmann::json to_json() const
+    {
+        nlohmann::json json = nlohmann::json::array();
+        for (const auto& c : items) {
+            nlohmann::json item = {{"dimension", c.dimension}, {"check", c.name}, {"status", check_status_name(c.status)},
+                                   {"detail", c.detail}};
+            if (!c.hint.empty()) item["hint"] = c.hint;
+            json.push_back(std::move(item));
+        }
+        return json;
+    }
 };
+
+// ok when the condition holds, else `otherwise`.
+CheckStatus ok_or(bool condition, CheckStatus otherwise) { return condition ? CheckStatus::ok : otherwise; }
+
+// Derivative against a central difference of W, away from breakpoints. Returns the
+// largest |dW/dr| on the grid, the scale of the continuity check.
+double check_derivative(const Kernel& kernel, int dim, const std::vector<double>& edges, Checks& checks)
+{
+    const double R = kernel.support();
+    double mismatch = 0, scale = 0, worst_q = 0;
+    for (int i = 1; i < 400; ++i) {
+        double q = R * i / 400.0;
+        bool near_edge = false;
+        for (double e : edges) near_edge |= std::abs(q - e) < 1e-4;
+        if (near_edge) continue;
+        double step = 1e-6;
+        double numeric = (kernel.w(q + step, dim, check_k) - kernel.w(q - step, dim, check_k)) / (2 * step);
+        double supplied = kernel.dw(q, dim, check_k);
+        scale = std::max(scale, std::abs(supplied));
+        if (std::abs(supplied - numeric) > mismatch) {
+            mismatch = std::abs(supplied - numeric);
+            worst_q = q;
+        }
+    }
+    double relative = mismatch / std::max(scale, 1e-300);
+    const auto& definition = kernel.definition();
+    if (!definition.derivative_note.empty())
+        checks.add(dim, "derivative", CheckStatus::ok, definition.derivative_note);
+    else if (definition.separate_derivative)
+        checks.add(dim, "derivative", CheckStatus::ok,
+                   "declared a separate derivative: differs from dW/dr by up to " + format(relative, 3) +
+                       " (relative, at q = " + format(worst_q, 4) + ", k = 1); reported, not checked");
+    else
+        checks.add(dim, "derivative", ok_or(relative <= 1e-6, CheckStatus::fail),
+                   "largest relative difference from a numerical dW/dr: " + format(relative, 3) + " at q = " +
+                       format(worst_q, 4),
+                   "compare dw with the derivative of w near q = " + format(worst_q, 4) +
+                       "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE");
+    return scale;
+}
 
 // A provided W'' against a sixth-order difference of dW/dr; without one, say how it is made.
 void check_second_derivative(const Kernel& kernel, int dim, const std::vector<double>& edges, Checks& checks)
 {
     if (!kernel.provides_second_derivative()) {
-        checks.add(dim, "second_derivative", 0,
+        checks.add(dim, "second_derivative", CheckStatus::ok,
                    "not provided: computed from dW/dr by sixth-order finite differences that never straddle a breakpoint");
         return;
     }
@@ -63,18 +129,48 @@ void check_second_derivative(const Kernel& kernel, int dim, const std::vector<do
         if (std::abs(given - numeric) > mismatch) mismatch = std::abs(given - numeric), worst_q = q;
     }
     const double relative = mismatch / std::max(scale, 1e-300);
-    checks.add(dim, "second_derivative", relative <= 1e-6 ? 0 : 2,
+    checks.add(dim, "second_derivative", ok_or(relative <= 1e-6, CheckStatus::fail),
                "provided; largest relative difference from a numerical derivative of dW/dr: " + format(relative, 3) +
                    " at q = " + format(worst_q, 4),
                "compare d2w with the derivative of dw near q = " + format(worst_q, 4));
 }
 
-// Where W or dW/dr breaks off a smooth curve: a jump or kink away from the declared
-// breakpoints, and a support larger than the kernel (W = 0 on the last part of [0, R]).
-void check_pieces(const Kernel& kernel, int dim, Checks& checks)
+// Continuity of W and dW/dr at each breakpoint and at R (where the host truncates);
+// `dw_scale` is the largest |dW/dr| inside the support.
+void check_continuity(const Kernel& kernel, int dim, const std::vector<double>& edges, double dw_scale, Checks& checks)
+{
+    const double w0 = std::abs(kernel.w(0, dim, check_k));
+    dw_scale = std::max(dw_scale, 1e-300);
+    for (std::size_t i = 1; i < edges.size(); ++i) {
+        double b = edges[i];
+        bool at_support = i + 1 == edges.size();
+        double eps = 1e-9 * b;
+        double w_left = kernel.w(b - eps, dim, check_k), dw_left = kernel.dw(b - eps, dim, check_k);
+        double w_right = at_support ? 0.0 : kernel.w(b + eps, dim, check_k);
+        double dw_right = at_support ? 0.0 : kernel.dw(b + eps, dim, check_k);
+        double w_jump = std::abs(w_right - w_left), dw_jump = std::abs(dw_right - dw_left);
+        std::string where = at_support ? "at R = " + format(b) : "at breakpoint q = " + format(b);
+        bool w_ok = w_jump <= 1e-7 * std::max(w0, 1e-300);
+        bool dw_ok = dw_jump <= 1e-7 * dw_scale;
+        const CheckStatus status = w_ok ? ok_or(dw_ok, CheckStatus::warn) : (at_support ? CheckStatus::warn : CheckStatus::fail);
+        checks.add(dim, "continuity", status,
+                   where + ": jump of W " + format(w_jump, 4) + ", of dW/dr " + format(dw_jump, 4) +
+                       " (in units of h^-D, h^-(D+1))",
+                   at_support ? "W or dW/dr does not reach zero at R: the errors jump where a shell crosses the "
+                                "support; a kernel that ends smoothly at R avoids it"
+                              : "the pieces do not meet at q = " + format(b) +
+                                    ": check each piece's formula and constant there");
+    }
+}
+
+// Where W or dW/dr breaks off a smooth curve away from the declared breakpoints.
+// Second differences on a grid are O(delta^2) and slowly varying on a smooth piece; at a
+// kink one of the two straddling points has O(delta), at a jump O(1). A difference far
+// above those three points away on both sides marks a break.
+void check_breakpoints(const Kernel& kernel, int dim, Checks& checks)
 {
     const double R = kernel.support();
-    auto edges = piece_edges(kernel);
+    const auto edges = piece_edges(kernel);
     const int n = 4000;
     const double delta = R / n;
     auto near_edge = [&](double q, double reach) {
@@ -82,9 +178,6 @@ void check_pieces(const Kernel& kernel, int dim, Checks& checks)
             if (std::abs(q - e) <= reach) return true;
         return false;
     };
-    // Second differences of W and of dW/dr on a grid: O(delta^2) and slowly varying on a
-    // smooth piece; at a kink one of the two straddling points has O(delta), at a jump O(1).
-    // A difference far above those three points away on both sides marks a break.
     std::string found;
     for (bool derivative : {false, true}) {
         std::vector<double> f(n + 1), d(n + 1, 0.0);
@@ -103,11 +196,18 @@ void check_pieces(const Kernel& kernel, int dim, Checks& checks)
         }
         if (!found.empty()) break;
     }
-    checks.add(dim, "breakpoints", found.empty() ? 0 : 1,
+    checks.add(dim, "breakpoints", ok_or(found.empty(), CheckStatus::warn),
                found.empty() ? "W and dW/dr smooth between the declared breakpoints" : found + ", which is not a declared breakpoint",
                "declare the breakpoint (or fix the formula): quadratures and derivatives are split at breakpoints only");
+}
 
-    // Exactly zero, not small: W ~ (R - q)^8 is tiny but still the kernel near R.
+// A support larger than the kernel: W = 0 on the last part of [0, R]. Exactly zero, not
+// small: W ~ (R - q)^8 is tiny but still the kernel near R.
+void check_support(const Kernel& kernel, int dim, Checks& checks)
+{
+    const double R = kernel.support();
+    const int n = 4000;
+    const double delta = R / n;
     double last = 0;
     for (int i = n - 1; i >= 0; --i)
         if (kernel.w(R * i / n, dim, check_k) != 0.0) {
@@ -115,7 +215,7 @@ void check_pieces(const Kernel& kernel, int dim, Checks& checks)
             break;
         }
     const bool over = last < R * 0.99;
-    checks.add(dim, "support", over ? 1 : 0,
+    checks.add(dim, "support", over ? CheckStatus::warn : CheckStatus::ok,
                over ? "W is zero from q = " + format(last + delta, 4) + " to the declared support R = " + format(R)
                     : "W is non-zero up to the declared support R = " + format(R),
                "declare the support where W ends: R sets the neighbour count N_H, H/d and the k windows");
@@ -138,30 +238,86 @@ double tail_integral(const Kernel& kernel, int dim)
     return sphere_area(dim) * total;
 }
 
-// |integral - 1| <= 1e-9 is ok. A larger deviation that the part of the formula cut off
-// at R accounts for (to 1e-6) is a truncation: a warning. Anything else is a wrong
-// normalisation constant and fails above 1e-6: eps_rho inherits it one to one.
-void check_normalization(const Kernel& kernel, int dim, double integral, double error, Checks& checks)
+// Normalisation of the truncated kernel; returns its integral. |integral - 1| <= 1e-9 is
+// ok. A larger deviation that the part of the formula cut off at R accounts for (to 1e-6)
+// is a truncation: a warning. Anything else is a wrong normalisation constant and fails
+// above 1e-6: eps_rho inherits it one to one.
+double check_normalization(const Kernel& kernel, int dim, Checks& checks)
 {
+    const auto [integral, error] = kernel_integral(kernel, dim, check_k);
     const double deviation = std::abs(integral - 1);
     std::string detail = "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")";
     if (deviation <= normalization_ok) {
-        checks.add(dim, "normalization", 0, detail);
-        return;
+        checks.add(dim, "normalization", CheckStatus::ok, detail);
+        return integral;
     }
     const double whole = integral + tail_integral(kernel, dim);
     if (std::isfinite(whole) && std::abs(whole - 1) <= normalization_truncation) {
-        checks.add(dim, "normalization", deviation <= normalization_warn ? 1 : 2,
+        checks.add(dim, "normalization", deviation <= normalization_warn ? CheckStatus::warn : CheckStatus::fail,
                    detail + "; the formula continued past R integrates to " + format(whole),
                    "normalised over all space, not over the support: cutting the formula at R changes its integral "
                    "by " + format(integral - 1, 3) + "; divide W by " + format(integral) + " in " +
                        std::to_string(dim) + "D or choose a larger R");
-        return;
+        return integral;
     }
-    checks.add(dim, "normalization", deviation <= normalization_truncation ? 1 : 2, detail,
+    checks.add(dim, "normalization", deviation <= normalization_truncation ? CheckStatus::warn : CheckStatus::fail, detail,
                "the normalisation constant is off by a factor " + format(integral) + " in " + std::to_string(dim) +
                    "D (eps_rho inherits it one to one): divide the " + std::to_string(dim) + "D constant by " +
                    format(integral));
+    return integral;
+}
+
+// Finiteness of W and dW/dr on a grid past R and at several k.
+void check_finiteness(const Kernel& kernel, int dim, Checks& checks)
+{
+    const double R = kernel.support();
+    int bad = 0;
+    double bad_q = 0;
+    for (double k : {0.75, 1.0, 1.25})
+        for (int i = 0; i <= 2000; ++i) {
+            double q = 1.5 * R * i / 2000;
+            if (!std::isfinite(kernel.w(q, dim, k)) || !std::isfinite(kernel.dw(q, dim, k))) {
+                if (!bad++) bad_q = q;
+            }
+        }
+    checks.add(dim, "finiteness", bad ? CheckStatus::fail : CheckStatus::ok,
+               bad ? std::to_string(bad) + " non-finite values, first at q = " + format(bad_q)
+                   : "W and dW/dr finite on [0, 1.5 R] at k = 0.75, 1, 1.25",
+               "a division by zero or a power of a negative number near q = " + format(bad_q) +
+                   "? every q >= 0 must give a finite value");
+}
+
+// The moment of the gradient: integral of x . grad W over D-space = -D for a normalised
+// kernel that vanishes at R (by parts); it sees a wrong dW/dr and a jump at R, which the
+// normalisation alone cannot. `integral` is the integral of W.
+void check_gradient_moment(const Kernel& kernel, int dim, double integral, Checks& checks)
+{
+    const double R = kernel.support();
+    const double moment = radial_integral(kernel, dim, [&](double q) { return kernel.dw(q, dim, check_k) * q; }).first;
+    // A jump of W at R leaves out the surface term of the integration by parts.
+    const double surface = sphere_area(dim) * std::pow(R, dim) * kernel.w(R * (1 - 1e-12), dim, check_k);
+    const double expected = -dim * integral + surface;
+    const bool consistent = std::abs(moment - expected) <= 1e-6 * dim;
+    const bool jump_at_support = std::abs(surface) > 1e-6 * dim;
+    std::string detail =
+        "integral of x . grad W = " + format(moment) + "; -D times the integral of W = " + format(-dim * integral);
+    if (jump_at_support) detail += ", plus the surface term the jump of W at R leaves out, " + format(surface, 4);
+    if (kernel.definition().separate_derivative) {
+        checks.add(dim, "gradient_moment", CheckStatus::ok,
+                   detail + "; a separate derivative: reported, not checked (it is the continuum gradient error times -D)");
+        return;
+    }
+    checks.add(dim, "gradient_moment", consistent ? ok_or(!jump_at_support, CheckStatus::warn) : CheckStatus::fail, detail,
+               consistent ? "W does not vanish at R: the truncated kernel's gradient misses a surface term"
+                          : "dW/dr is not the derivative of W (a wrong factor or sign?)");
+}
+
+// The second moment, the kernel's width in units of h^2 (reported); returns it.
+double check_second_moment(const Kernel& kernel, int dim, Checks& checks)
+{
+    const double width = kernel_integral(kernel, dim, check_k, 2).first;
+    checks.add(dim, "second_moment", CheckStatus::ok, "integral of q^2 W = " + format(width) + " (in units of h^2)");
+    return width;
 }
 
 // A provided Fourier transform against the radial quadrature of W.
@@ -173,159 +329,79 @@ void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
         const double d = std::abs(kernel.fourier(kh, dim, check_k) - fourier_transform_by_quadrature(kernel, kh, dim, check_k));
         if (d > worst) worst = d, at = kh;
     }
-    checks.add(dim, "fourier_provided", worst <= 1e-8 ? 0 : 2,
+    checks.add(dim, "fourier_provided", ok_or(worst <= 1e-8, CheckStatus::fail),
                "provided transform; largest difference from the quadrature of W: " + format(worst, 3) + " at kh = " +
                    format(at, 4),
                "the transform must be that of the normalised W, as a function of kappa h");
+}
+
+// The Fourier transform's minimum and first zero (a negative W^ pairs particles), and a
+// provided transform against the quadrature of W. Returns the "fourier" entry.
+nlohmann::json check_fourier(const Kernel& kernel, int dim, Checks& checks)
+{
+    auto spectrum = spectrum_summary(kernel, dim, check_k);
+    nlohmann::json entry = {{"min", spectrum.minimum}, {"at", spectrum.at}, {"at_zero", kernel.fourier(0, dim, check_k)},
+                            {"source", spectrum.provided ? "plugin" : "quadrature"}};
+    entry["first_zero"] = spectrum.first_zero ? nlohmann::json(*spectrum.first_zero) : nlohmann::json();
+    checks.add(dim, "fourier", spectrum.minimum < -1e-9 ? CheckStatus::warn : CheckStatus::ok,
+               "min of the Fourier transform over kh in [0, 50]: " + format(spectrum.minimum, 4) + " at kh = " +
+                   format(spectrum.at, 5) +
+                   (spectrum.first_zero ? ", first zero at kh = " + format(*spectrum.first_zero, 6) : ", no zero"),
+               "negative W^: with many neighbours SPH pairs particles (Dehnen & Aly 2012); see sphkern stability");
+    if (spectrum.provided) check_provided_transform(kernel, dim, checks);
+    return entry;
+}
+
+// Negative lobes of W inside the support (reported).
+void check_negative_lobe(const Kernel& kernel, int dim, Checks& checks)
+{
+    const double R = kernel.support();
+    double minimum = INFINITY, min_q = 0, first_negative = -1;
+    for (int i = 0; i <= 4000; ++i) {
+        double q = R * i / 4000.0, w = kernel.w(q, dim, check_k);
+        if (w < minimum) {
+            minimum = w;
+            min_q = q;
+        }
+        if (w < 0 && first_negative < 0) first_negative = q;
+    }
+    checks.add(dim, "negative_lobe", CheckStatus::ok,
+               first_negative < 0 ? "W >= 0 on [0, R]"
+                                  : "W < 0 from q = " + format(first_negative, 4) + ", minimum " + format(minimum, 4) +
+                                        " at q = " + format(min_q, 4));
 }
 
 } // namespace
 
 nlohmann::json check_kernel(const Kernel& kernel)
 {
-    const double R = kernel.support();
     Checks checks;
     nlohmann::json normalization = nlohmann::json::object(), second = nlohmann::json::object();
     nlohmann::json fourier = nlohmann::json::object();
+    const auto edges = piece_edges(kernel);
     for (int dim : kernel.definition().dimensions) {
         const std::string D = std::to_string(dim);
-
-        // Finiteness on a grid past R and at several k.
-        int bad = 0;
-        double bad_q = 0;
-        for (double k : {0.75, 1.0, 1.25})
-            for (int i = 0; i <= 2000; ++i) {
-                double q = 1.5 * R * i / 2000;
-                if (!std::isfinite(kernel.w(q, dim, k)) || !std::isfinite(kernel.dw(q, dim, k))) {
-                    if (!bad++) bad_q = q;
-                }
-            }
-        checks.add(dim, "finiteness", bad ? 2 : 0,
-                   bad ? std::to_string(bad) + " non-finite values, first at q = " + format(bad_q)
-                       : "W and dW/dr finite on [0, 1.5 R] at k = 0.75, 1, 1.25",
-                   "a division by zero or a power of a negative number near q = " + format(bad_q) +
-                       "? every q >= 0 must give a finite value");
-
-        // Normalisation of the truncated kernel.
-        auto [integral, error] = kernel_integral(kernel, dim, check_k);
+        check_finiteness(kernel, dim, checks);
+        const double integral = check_normalization(kernel, dim, checks);
         normalization[D] = integral;
-        check_normalization(kernel, dim, integral, error, checks);
-
-        // The moment of the gradient: integral of x . grad W over D-space = -D for a
-        // normalised kernel that vanishes at R (by parts); it sees a wrong dW/dr and a
-        // jump at R, which the normalisation alone cannot.
-        const double moment =
-            radial_integral(kernel, dim, [&](double q) { return kernel.dw(q, dim, check_k) * q; }).first;
-        // A jump of W at R leaves out the surface term of the integration by parts.
-        const double surface = sphere_area(dim) * std::pow(R, dim) * kernel.w(R * (1 - 1e-12), dim, check_k);
-        const double expected = -dim * integral + surface;
-        const bool consistent = std::abs(moment - expected) <= 1e-6 * dim;
-        std::string detail = "integral of x . grad W = " + format(moment) + "; -D times the integral of W = " +
-                             format(-dim * integral);
-        if (std::abs(surface) > 1e-6 * dim)
-            detail += ", plus the surface term the jump of W at R leaves out, " + format(surface, 4);
-        if (kernel.definition().separate_derivative)
-            checks.add(dim, "gradient_moment", 0,
-                       detail + "; a separate derivative: reported, not checked (it is the continuum gradient "
-                                "error times -D)");
-        else
-            checks.add(dim, "gradient_moment", consistent ? (std::abs(surface) > 1e-6 * dim ? 1 : 0) : 2, detail,
-                       consistent ? "W does not vanish at R: the truncated kernel's gradient misses a surface term"
-                                  : "dW/dr is not the derivative of W (a wrong factor or sign?)");
-        double width = kernel_integral(kernel, dim, check_k, 2).first;
-        second[D] = width;
-        checks.add(dim, "second_moment", 0, "integral of q^2 W = " + format(width) + " (in units of h^2)");
-
-        // Derivative against a central difference of W, away from breakpoints.
-        double mismatch = 0, scale = 0, worst_q = 0;
-        auto edges = piece_edges(kernel);
-        for (int i = 1; i < 400; ++i) {
-            double q = R * i / 400.0;
-            bool near_edge = false;
-            for (double e : edges) near_edge |= std::abs(q - e) < 1e-4;
-            if (near_edge) continue;
-            double step = 1e-6;
-            double numeric = (kernel.w(q + step, dim, check_k) - kernel.w(q - step, dim, check_k)) / (2 * step);
-            double supplied = kernel.dw(q, dim, check_k);
-            scale = std::max(scale, std::abs(supplied));
-            if (std::abs(supplied - numeric) > mismatch) {
-                mismatch = std::abs(supplied - numeric);
-                worst_q = q;
-            }
-        }
-        double relative = mismatch / std::max(scale, 1e-300);
-        if (!kernel.definition().derivative_note.empty())
-            checks.add(dim, "derivative", 0, kernel.definition().derivative_note);
-        else if (kernel.definition().separate_derivative)
-            checks.add(dim, "derivative", 0,
-                       "declared a separate derivative: differs from dW/dr by up to " + format(relative, 3) +
-                           " (relative, at q = " + format(worst_q, 4) + ", k = 1); reported, not checked");
-        else
-            checks.add(dim, "derivative", relative <= 1e-6 ? 0 : 2,
-                       "largest relative difference from a numerical dW/dr: " + format(relative, 3) + " at q = " +
-                           format(worst_q, 4),
-                       "compare dw with the derivative of w near q = " + format(worst_q, 4) +
-                           "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE");
+        check_gradient_moment(kernel, dim, integral, checks);
+        second[D] = check_second_moment(kernel, dim, checks);
+        const double dw_scale = check_derivative(kernel, dim, edges, checks);
         check_second_derivative(kernel, dim, edges, checks);
-
-        // Continuity of W and dW/dr at each breakpoint and at R (where the host truncates).
-        double w0 = std::abs(kernel.w(0, dim, check_k)), dw_scale = std::max(scale, 1e-300);
-        for (std::size_t i = 1; i < edges.size(); ++i) {
-            double b = edges[i];
-            bool at_support = i + 1 == edges.size();
-            double eps = 1e-9 * b;
-            double w_left = kernel.w(b - eps, dim, check_k), dw_left = kernel.dw(b - eps, dim, check_k);
-            double w_right = at_support ? 0.0 : kernel.w(b + eps, dim, check_k);
-            double dw_right = at_support ? 0.0 : kernel.dw(b + eps, dim, check_k);
-            double w_jump = std::abs(w_right - w_left), dw_jump = std::abs(dw_right - dw_left);
-            std::string where = at_support ? "at R = " + format(b) : "at breakpoint q = " + format(b);
-            bool w_ok = w_jump <= 1e-7 * std::max(w0, 1e-300);
-            bool dw_ok = dw_jump <= 1e-7 * dw_scale;
-            checks.add(dim, "continuity", w_ok ? (dw_ok ? 0 : 1) : (at_support ? 1 : 2),
-                       where + ": jump of W " + format(w_jump, 4) + ", of dW/dr " + format(dw_jump, 4) +
-                           " (in units of h^-D, h^-(D+1))",
-                       at_support ? "W or dW/dr does not reach zero at R: the errors jump where a shell crosses the "
-                                    "support; a kernel that ends smoothly at R avoids it"
-                                  : "the pieces do not meet at q = " + format(b) +
-                                        ": check each piece's formula and constant there");
-        }
-
-        // Negative lobes of W inside the support.
-        double minimum = INFINITY, min_q = 0, first_negative = -1;
-        for (int i = 0; i <= 4000; ++i) {
-            double q = R * i / 4000.0, w = kernel.w(q, dim, check_k);
-            if (w < minimum) {
-                minimum = w;
-                min_q = q;
-            }
-            if (w < 0 && first_negative < 0) first_negative = q;
-        }
-        check_pieces(kernel, dim, checks);
-        auto spectrum = spectrum_summary(kernel, dim, check_k);
-        nlohmann::json entry = {{"min", spectrum.minimum}, {"at", spectrum.at}, {"at_zero", kernel.fourier(0, dim, check_k)},
-                                {"source", spectrum.provided ? "plugin" : "quadrature"}};
-        entry["first_zero"] = spectrum.first_zero ? nlohmann::json(*spectrum.first_zero) : nlohmann::json();
-        fourier[D] = entry;
-        checks.add(dim, "fourier", spectrum.minimum < -1e-9 ? 1 : 0,
-                   "min of the Fourier transform over kh in [0, 50]: " + format(spectrum.minimum, 4) + " at kh = " +
-                       format(spectrum.at, 5) +
-                       (spectrum.first_zero ? ", first zero at kh = " + format(*spectrum.first_zero, 6) : ", no zero"),
-                   "negative W^: with many neighbours SPH pairs particles (Dehnen & Aly 2012); see sphkern stability");
-        if (spectrum.provided) check_provided_transform(kernel, dim, checks);
-        checks.add(dim, "negative_lobe", 0,
-                   first_negative < 0 ? "W >= 0 on [0, R]"
-                                      : "W < 0 from q = " + format(first_negative, 4) + ", minimum " +
-                                            format(minimum, 4) + " at q = " + format(min_q, 4));
+        check_continuity(kernel, dim, edges, dw_scale, checks);
+        check_breakpoints(kernel, dim, checks);
+        check_support(kernel, dim, checks);
+        fourier[D] = check_fourier(kernel, dim, checks);
+        check_negative_lobe(kernel, dim, checks);
     }
-    static const char* verdicts[] = {"ok", "warn", "fail"};
     return {{"kernel", kernel.name()},
             {"file", kernel.definition().source},
-            {"verdict", verdicts[checks.worst]},
+            {"verdict", check_status_name(checks.worst)},
             {"normalization", normalization},
             {"second_moment", second},
             {"fourier", fourier},
             {"second_derivative", kernel.provides_second_derivative() ? "plugin" : "numerical"},
-            {"checks", checks.items}};
+            {"checks", checks.to_json()}};
 }
 
 nlohmann::json check_kernel_isolated(const Kernel& kernel, double timeout_seconds)

@@ -49,6 +49,106 @@ double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension, c
     return nearest;
 }
 
+std::string read_lattice_name(const JsonNode& root)
+{
+    auto node = root.at("name");
+    std::string name = node.string();
+    if (!is_identifier(name, "-"))
+        node.error("expected a name of up to 64 characters of [a-z0-9_-]");
+    return name;
+}
+
+// The primitive vectors as columns (the third e_z in 2D), refused when (nearly) degenerate.
+Eigen::Matrix3d read_basis(const JsonNode& node, int dim)
+{
+    node.expect_array(static_cast<std::size_t>(dim), static_cast<std::size_t>(dim));
+    Eigen::Matrix3d basis = Eigen::Matrix3d::Identity();
+    for (int i = 0; i < dim; ++i) basis.col(i) = read_vector(node[static_cast<std::size_t>(i)], dim, max_coordinate);
+    double lengths = 1;
+    for (int i = 0; i < dim; ++i) lengths *= basis.col(i).norm();
+    // Nearly degenerate bases are refused too: their reduced vectors would be known only
+    // to about 1e-16 / ratio, not to the shell tolerance.
+    if (lengths == 0 || std::abs(basis.determinant()) < 1e-6 * lengths)
+        node.error(dim == 2 ? "degenerate basis: the vectors are collinear or zero (cell area below 1e-6 of the "
+                              "product of their lengths), expected two independent vectors"
+                            : "degenerate basis: the vectors are coplanar or zero (cell volume below 1e-6 of the "
+                              "product of their lengths), expected three independent vectors");
+    return basis;
+}
+
+// The motif's fractional coordinates wrapped into [0, 1); two sites at one position are refused.
+std::vector<Eigen::Vector3d> read_motif(const JsonNode& node, const Eigen::Matrix3d& basis, int dim)
+{
+    node.expect_array(1, 1000);
+    std::vector<Eigen::Vector3d> motif;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        Eigen::Vector3d f = read_vector(node[i], dim, 1e3);
+        for (int c = 0; c < dim; ++c) {
+            f[c] -= std::floor(f[c]);
+            if (f[c] > 1 - 1e-12) f[c] = 0; // wrap 0.9999999999999 to 0
+        }
+        for (std::size_t j = 0; j < motif.size(); ++j) {
+            Eigen::Vector3d delta = f - motif[j];
+            for (int c = 0; c < dim; ++c) delta[c] -= std::round(delta[c]);
+            if ((basis * delta).norm() < 1e-6 * std::pow(std::abs(basis.determinant()), 1.0 / dim))
+                node[i].error("duplicate motif site: the same position as /motif/" + std::to_string(j));
+        }
+        motif.push_back(f);
+    }
+    return motif;
+}
+
+// Rescales the basis so that the nearest-neighbour distance is 1, and keeps the file's.
+void scale_to_unit_distance(Lattice& lattice, const JsonNode& basis_node)
+{
+    const int dim = lattice.dimension;
+    double d = nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
+    if (!(d > 1e-6 * lattice.basis.colwise().norm().maxCoeff()))
+        basis_node.error("absurd geometry: the nearest-neighbour distance is below 1e-6 of the cell size");
+    lattice.basis /= d;
+    lattice.file_nearest_distance = d;
+    // Once more in the scaled units, with the very arithmetic the shells use, so that the
+    // first shell is at 1 to rounding even for a badly conditioned basis.
+    lattice.basis /= nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
+    if (dim == 2) lattice.basis.col(2) = Eigen::Vector3d::UnitZ();
+}
+
+// The file's gravity, normalised, or straight down (-y in 2D, -z in 3D).
+Eigen::Vector3d read_gravity(const JsonNode& root, int dim)
+{
+    auto g = root.find("gravity");
+    if (!g) return dim == 2 ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, -1);
+    Eigen::Vector3d v = read_vector(*g, dim, max_coordinate);
+    if (v.cwiseAbs().maxCoeff() == 0) g->error("gravity has zero length, expected a non-zero direction vector");
+    return v.stableNormalized();
+}
+
+// The computed volume coefficients (voronoi, ball, cube), then the file's own.
+std::vector<VolumeCoefficient> read_volume_coefficients(const JsonNode& root, const Lattice& lattice)
+{
+    std::vector<VolumeCoefficient> coefficients = {
+        {"voronoi", lattice.volume_per_site(), "computed"},
+        {"ball", lattice.dimension == 2 ? pi / 4 : pi / 6, "computed"},
+        {"cube", 1.0, "computed"},
+    };
+    const std::size_t computed = coefficients.size();
+    auto extra = root.find("volume_coefficients");
+    if (!extra) return coefficients;
+    extra->expect_object();
+    for (const auto& [key, unused] : extra->value().items()) {
+        auto value_node = extra->at(key);
+        if (!is_identifier(key, {}, std::string::npos))
+            value_node.error("expected a name of [a-z0-9_]");
+        // Only the computed names can clash (the parser refuses a key given twice): linear in the keys.
+        for (std::size_t i = 0; i < computed; ++i)
+            if (coefficients[i].name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
+        double v = value_node.number();
+        if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
+        coefficients.push_back({key, v, lattice.file});
+    }
+    return coefficients;
+}
+
 } // namespace
 
 double Lattice::volume_per_site() const { return std::abs(basis.determinant()) / sites(); }
@@ -81,84 +181,15 @@ Lattice parse_lattice(const nlohmann::json& document, const std::string& file)
 
     Lattice lattice;
     lattice.file = file;
-    auto name_node = root.at("name");
-    lattice.name = name_node.string();
-    if (!is_identifier(lattice.name, "-"))
-        name_node.error("expected a name of up to 64 characters of [a-z0-9_-]");
+    lattice.name = read_lattice_name(root);
     lattice.title = root.find("title") ? printable_text(root.at("title").string()) : lattice.name;
     lattice.dimension = static_cast<int>(root.at("dimension").integer_in(2, 3));
-    const int dim = lattice.dimension;
-
-    auto basis_node = root.at("basis");
-    basis_node.expect_array(static_cast<std::size_t>(dim), static_cast<std::size_t>(dim));
-    lattice.basis = Eigen::Matrix3d::Identity();
-    for (int i = 0; i < dim; ++i)
-        lattice.basis.col(i) = read_vector(basis_node[static_cast<std::size_t>(i)], dim, max_coordinate);
-    double lengths = 1;
-    for (int i = 0; i < dim; ++i) lengths *= lattice.basis.col(i).norm();
-    // Nearly degenerate bases are refused too: their reduced vectors would be known only
-    // to about 1e-16 / ratio, not to the shell tolerance.
-    if (lengths == 0 || std::abs(lattice.basis.determinant()) < 1e-6 * lengths)
-        basis_node.error(dim == 2 ? "degenerate basis: the vectors are collinear or zero (cell area below 1e-6 of the "
-                                    "product of their lengths), expected two independent vectors"
-                                  : "degenerate basis: the vectors are coplanar or zero (cell volume below 1e-6 of the "
-                                    "product of their lengths), expected three independent vectors");
-
-    auto motif_node = root.at("motif");
-    motif_node.expect_array(1, 1000);
-    for (std::size_t i = 0; i < motif_node.size(); ++i) {
-        Eigen::Vector3d f = read_vector(motif_node[i], dim, 1e3);
-        for (int c = 0; c < dim; ++c) {
-            f[c] -= std::floor(f[c]);
-            if (f[c] > 1 - 1e-12) f[c] = 0; // wrap 0.9999999999999 to 0
-        }
-        for (std::size_t j = 0; j < lattice.motif.size(); ++j) {
-            Eigen::Vector3d delta = f - lattice.motif[j];
-            for (int c = 0; c < dim; ++c) delta[c] -= std::round(delta[c]);
-            if ((lattice.basis * delta).norm() < 1e-6 * std::pow(std::abs(lattice.basis.determinant()), 1.0 / dim))
-                motif_node[i].error("duplicate motif site: the same position as /motif/" + std::to_string(j));
-        }
-        lattice.motif.push_back(f);
-    }
-
-    // Rescale so that the nearest-neighbour distance is 1.
-    double d = nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
-    if (!(d > 1e-6 * lattice.basis.colwise().norm().maxCoeff()))
-        basis_node.error("absurd geometry: the nearest-neighbour distance is below 1e-6 of the cell size");
-    lattice.basis /= d;
-    lattice.file_nearest_distance = d;
-    // Once more in the scaled units, with the very arithmetic the shells use, so that the
-    // first shell is at 1 to rounding even for a badly conditioned basis.
-    lattice.basis /= nearest_neighbour_distance(lattice.basis, dim, lattice.motif);
-    if (dim == 2) lattice.basis.col(2) = Eigen::Vector3d::UnitZ();
-
-    lattice.gravity = dim == 2 ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, -1);
-    if (auto g = root.find("gravity")) {
-        Eigen::Vector3d v = read_vector(*g, dim, max_coordinate);
-        if (v.cwiseAbs().maxCoeff() == 0) g->error("gravity has zero length, expected a non-zero direction vector");
-        lattice.gravity = v.stableNormalized();
-    }
-
-    lattice.volume_coefficients = {
-        {"voronoi", lattice.volume_per_site(), "computed"},
-        {"ball", dim == 2 ? pi / 4 : pi / 6, "computed"},
-        {"cube", 1.0, "computed"},
-    };
-    const std::size_t computed = lattice.volume_coefficients.size();
-    if (auto extra = root.find("volume_coefficients")) {
-        extra->expect_object();
-        for (const auto& [key, unused] : extra->value().items()) {
-            auto value_node = extra->at(key);
-            if (!is_identifier(key, {}, std::string::npos))
-                value_node.error("expected a name of [a-z0-9_]");
-            // Only the computed names can clash (the parser refuses a key given twice): linear in the keys.
-            for (std::size_t i = 0; i < computed; ++i)
-                if (lattice.volume_coefficients[i].name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
-            double v = value_node.number();
-            if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
-            lattice.volume_coefficients.push_back({key, v, file});
-        }
-    }
+    const auto basis_node = root.at("basis");
+    lattice.basis = read_basis(basis_node, lattice.dimension);
+    lattice.motif = read_motif(root.at("motif"), lattice.basis, lattice.dimension);
+    scale_to_unit_distance(lattice, basis_node);
+    lattice.gravity = read_gravity(root, lattice.dimension);
+    lattice.volume_coefficients = read_volume_coefficients(root, lattice);
     return lattice;
 }
 

@@ -139,13 +139,9 @@ private:
     std::size_t pos_ = 0, line_ = 0;
 };
 
-} // namespace
-
-ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions&)
+// "# vtk DataFile Version", the title, the encoding and an ASCII or BINARY point dataset.
+void read_vtk_header(VtkCursor& in)
 {
-    const std::string name = file.string();
-    const std::string text = read_input_file(file, particle_file_byte_limit(), "a VTK particle file");
-    VtkCursor in(text, name);
     if (in.line().rfind("# vtk DataFile", 0) != 0) in.fail("not a legacy VTK file; expected \"# vtk DataFile Version\"");
     in.line(); // the title
     const auto encoding = in.token();
@@ -155,81 +151,129 @@ ParticleSet read_vtk_particles(const std::filesystem::path& file, const Particle
     const auto dataset = in.token();
     if (dataset != "POLYDATA" && dataset != "UNSTRUCTURED_GRID")
         in.fail(fmt::format("DATASET {}: expected POLYDATA or UNSTRUCTURED_GRID (particles as points)", dataset));
+}
 
-    std::vector<double> points;
+// The sections after the header: the points and the point arrays with a particle field's
+// name; cells, cell data and metadata are read past.
+class VtkSections {
+public:
+    explicit VtkSections(VtkCursor& in) : in_(in) {}
+    void read_all()
+    {
+        while (!in_.at_end()) read_section(std::string(in_.token()));
+    }
+
+    std::vector<double> points; // x, y, z of each point
     std::size_t count = 0;
     std::map<ParticleField, std::vector<double>> arrays;
-    bool point_data = false;
-    auto read_array = [&](const std::string& array, std::string_view type, std::size_t components, std::size_t tuples) {
-        const auto field = point_data && components == 1 ? particle_field(array) : std::nullopt;
-        std::vector<double> values;
-        in.values(type, components * tuples, field ? &values : nullptr, "array " + array);
-        if (field && field != ParticleField::x && field != ParticleField::y && field != ParticleField::z)
-            arrays[*field] = std::move(values);
-    };
-    while (!in.at_end()) {
-        const std::string keyword(in.token());
+
+private:
+    void read_section(const std::string& keyword)
+    {
         if (keyword == "POINTS") {
-            count = in.count("POINTS");
-            in.values(in.token(), 3 * count, &points, "POINTS");
+            count = in_.count("POINTS");
+            in_.values(in_.token(), 3 * count, &points, "POINTS");
         } else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS" ||
                    keyword == "CELLS") {
-            in.count(keyword.c_str());
-            in.values("int", in.count(keyword.c_str()), nullptr, keyword);
+            in_.count(keyword.c_str());
+            in_.values("int", in_.count(keyword.c_str()), nullptr, keyword);
         } else if (keyword == "CELL_TYPES") {
-            in.values("int", in.count("CELL_TYPES"), nullptr, keyword);
+            in_.values("int", in_.count("CELL_TYPES"), nullptr, keyword);
         } else if (keyword == "POINT_DATA" || keyword == "CELL_DATA") {
-            const std::size_t n = in.count(keyword.c_str());
-            point_data = keyword == "POINT_DATA";
-            if (point_data && n != count) in.fail(fmt::format("POINT_DATA {}: expected {} as in POINTS", n, count));
+            const std::size_t n = in_.count(keyword.c_str());
+            point_data_ = keyword == "POINT_DATA";
+            if (point_data_ && n != count) in_.fail(fmt::format("POINT_DATA {}: expected {} as in POINTS", n, count));
         } else if (keyword == "SCALARS") {
-            const std::string array(in.token());
-            const auto type = in.token();
-            std::size_t components = 1;
-            std::string next(in.token());
-            if (next != "LOOKUP_TABLE") {
-                std::from_chars(next.data(), next.data() + next.size(), components);
-                next = in.token();
-            }
-            if (next != "LOOKUP_TABLE") in.fail("SCALARS " + array + ": expected LOOKUP_TABLE");
-            in.token(); // the table's name
-            read_array(array, type, components, point_data ? count : 0);
+            read_scalars();
         } else if (keyword == "VECTORS" || keyword == "NORMALS") {
-            const std::string array(in.token());
-            read_array(array, in.token(), 3, point_data ? count : 0);
+            const std::string array(in_.token());
+            read_array(array, in_.token(), 3, point_data_ ? count : 0);
         } else if (keyword == "FIELD") {
-            in.token(); // the field's name
-            const std::size_t n = in.count("FIELD");
-            for (std::size_t a = 0; a < n; ++a) {
-                const std::string array(in.token());
-                const std::size_t components = in.count(array.c_str()), tuples = in.count(array.c_str());
-                read_array(array, in.token(), components, tuples);
-            }
+            read_field();
         } else if (keyword == "METADATA") {
-            while (!in.at_end() && !in.line().empty()) {}
+            while (!in_.at_end() && !in_.line().empty()) {}
         } else {
-            in.fail(fmt::format("unknown section \"{}\"", keyword));
+            in_.fail(fmt::format("unknown section \"{}\"", keyword));
         }
     }
-    if (points.empty()) in.fail("no POINTS");
+    // SCALARS name type [components] LOOKUP_TABLE table, then the values.
+    void read_scalars()
+    {
+        const std::string array(in_.token());
+        const auto type = in_.token();
+        std::size_t components = 1;
+        std::string next(in_.token());
+        if (next != "LOOKUP_TABLE") {
+            std::from_chars(next.data(), next.data() + next.size(), components);
+            next = in_.token();
+        }
+        if (next != "LOOKUP_TABLE") in_.fail("SCALARS " + array + ": expected LOOKUP_TABLE");
+        in_.token(); // the table's name
+        read_array(array, type, components, point_data_ ? count : 0);
+    }
+    // FIELD name n, then n arrays: name components tuples type, then the values.
+    void read_field()
+    {
+        in_.token(); // the field's name
+        const std::size_t n = in_.count("FIELD");
+        for (std::size_t a = 0; a < n; ++a) {
+            const std::string array(in_.token());
+            const std::size_t components = in_.count(array.c_str()), tuples = in_.count(array.c_str());
+            read_array(array, in_.token(), components, tuples);
+        }
+    }
+    // Kept when it is point data of one component named as a particle field other than a
+    // coordinate; read past otherwise.
+    void read_array(const std::string& array, std::string_view type, std::size_t components, std::size_t tuples)
+    {
+        const auto field = point_data_ && components == 1 ? particle_field(array) : std::nullopt;
+        std::vector<double> values;
+        in_.values(type, components * tuples, field ? &values : nullptr, "array " + array);
+        if (field && field != ParticleField::x && field != ParticleField::y && field != ParticleField::z)
+            arrays[*field] = std::move(values);
+    }
+
+    VtkCursor& in_;
+    bool point_data_ = false;
+};
+
+// The particle set of the points and arrays read; a set whose z is constant is 2D.
+ParticleSet vtk_particle_set(const std::string& name, VtkSections& sections)
+{
+    const std::size_t count = sections.count;
     ParticleSet set;
     set.name = name;
     set.dimension = 3;
     for (std::size_t i = 0; i < count; ++i) {
-        set.x.push_back(points[3 * i]), set.y.push_back(points[3 * i + 1]), set.z.push_back(points[3 * i + 2]);
+        const double* p = sections.points.data() + 3 * i;
+        set.x.push_back(p[0]), set.y.push_back(p[1]), set.z.push_back(p[2]);
     }
-    for (auto& [field, values] : arrays) {
+    for (auto& [field, values] : sections.arrays) {
         if (values.size() != count)
             fail_input(fmt::format("{}: array {} has {} values for {} points", name, field_name(field), values.size(), count));
         (field == ParticleField::h ? set.h : field == ParticleField::mass ? set.mass : set.density) = std::move(values);
     }
-    // VTK points are always 3D: a set whose z is constant is a 2D set.
+    // VTK points are always 3D.
     if (std::all_of(set.z.begin(), set.z.end(), [&](double z) { return z == set.z[0]; })) {
         set.dimension = 2;
         set.gravity = Eigen::Vector3d(0, -1, 0);
         std::fill(set.z.begin(), set.z.end(), 0.0);
     }
     return set;
+}
+
+} // namespace
+
+ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions&)
+{
+    const std::string name = file.string();
+    const std::string text = read_input_file(file, particle_file_byte_limit(), "a VTK particle file");
+    VtkCursor in(text, name);
+    read_vtk_header(in);
+    VtkSections sections(in);
+    sections.read_all();
+    if (sections.points.empty()) in.fail("no POINTS");
+    return vtk_particle_set(name, sections);
 }
 
 } // namespace sphkern
