@@ -6,7 +6,13 @@
 
 #include <fmt/format.h>
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define SPHKERN_HAVE_AVX512_COMPRESS 1
+#endif
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,7 +22,7 @@ void Neighbours::reserve(std::size_t n)
 {
     if (dx.size() >= n) return;
     const std::size_t size = std::max(n, 2 * dx.size());
-    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw}) v->resize(size);
+    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw, &inv_r}) v->resize(size);
     index.resize(size);
 }
 
@@ -69,7 +75,102 @@ SPHKERN_VECTOR_CLONES void gather_by_index(const double* __restrict x, const dou
     }
 }
 
+// The points of one run with 0 < r2 <= reach2, appended at `m` of every output array;
+// `zeros` counts the points at r2 = 0 (the point itself, or a duplicate).
+struct RunInput {
+    const double *x, *y, *z, *a, *b;
+    std::size_t n;
+    double xi, yi, zi, reach2;
+};
+struct Compacted {
+    double *dx, *dy, *dz, *r2, *a, *b;
+};
+
+// Branch-free: every point is written, and the count moves on only for those inside.
+std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
+{
+    for (std::size_t c = 0; c < in.n; ++c) {
+        const double dx = in.x[c] - in.xi, dy = in.y[c] - in.yi, dz = in.z[c] - in.zi;
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        out.dx[m] = dx, out.dy[m] = dy, out.dz[m] = dz, out.r2[m] = r2, out.a[m] = in.a[c], out.b[m] = in.b[c];
+        zeros += r2 == 0;
+        m += r2 <= in.reach2 && r2 > 0;
+    }
+    return m;
+}
+
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+// Eight points at a time: compress in registers, then a full store (a compressing store to
+// memory is slow on some processors); the outputs have room for eight more.
+__attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
+                                                                     std::size_t& zeros)
+{
+    const __m512d xi = _mm512_set1_pd(in.xi), yi = _mm512_set1_pd(in.yi), zi = _mm512_set1_pd(in.zi);
+    const __m512d reach2 = _mm512_set1_pd(in.reach2), zero = _mm512_setzero_pd();
+    for (std::size_t c = 0; c < in.n; c += 8) {
+        const __mmask8 live = in.n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (in.n - c)) - 1);
+        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.x + c), xi);
+        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.y + c), yi);
+        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.z + c), zi);
+        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+        const __mmask8 at_zero = _mm512_mask_cmp_pd_mask(live, r2, zero, _CMP_EQ_OQ);
+        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, r2, reach2, _CMP_LE_OQ) & __mmask8(~at_zero);
+        zeros += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(at_zero)));
+        _mm512_storeu_pd(out.dx + m, _mm512_maskz_compress_pd(inside, dx));
+        _mm512_storeu_pd(out.dy + m, _mm512_maskz_compress_pd(inside, dy));
+        _mm512_storeu_pd(out.dz + m, _mm512_maskz_compress_pd(inside, dz));
+        _mm512_storeu_pd(out.r2 + m, _mm512_maskz_compress_pd(inside, r2));
+        _mm512_storeu_pd(out.a + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, in.a + c)));
+        _mm512_storeu_pd(out.b + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, in.b + c)));
+        m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
+    }
+    return m;
+}
+#endif
+
+using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
+
+AppendWithin choose_append_within()
+{
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+    if (__builtin_cpu_supports("avx512f")) return append_within_avx512;
+#endif
+    return append_within_scalar;
+}
+
+[[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
+{
+    const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
+    for (std::size_t j = 0; j < grid.points(); ++j)
+        if (j != p && grid.x()[j] == xi && grid.y()[j] == yi && grid.z()[j] == zi) {
+            const auto i = grid.source(p), k = grid.source(j);
+            fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set_name,
+                                   std::min(i, k), std::max(i, k), xi, yi, zi));
+        }
+    throw std::logic_error("a duplicate position that is not there");
+}
+
 } // namespace
+
+void gather_near(const NeighbourGrid& grid, std::size_t p, double reach2, const double* a, const double* b,
+                 const std::string& set_name, Neighbours& nb)
+{
+    static const AppendWithin append_within = choose_append_within();
+    RunInput in{nullptr, nullptr, nullptr, nullptr, nullptr, 0, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
+    std::size_t m = 0, zeros = 0;
+    grid.for_each_run_near(p, std::sqrt(reach2), [&](std::size_t begin, std::size_t end) {
+        in.n = end - begin;
+        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a + begin, in.b = b + begin;
+        nb.reserve(m + in.n + neighbour_lanes);
+        m = append_within(in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, m, zeros);
+    });
+    if (zeros == 0) throw std::logic_error("a particle is not among its own candidates");
+    if (zeros > 1) fail_duplicate(grid, p, set_name);
+    nb.reserve(m + neighbour_lanes);
+    for (std::size_t j = m; j < m + neighbour_lanes; ++j)
+        nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
+    nb.count = m;
+}
 
 void gather_neighbours(const NeighbourGrid& grid, std::size_t p, const std::vector<PointRun>& runs, double reach2,
                        const double* a, const double* b, const std::string& set_name, Neighbours& nb)
