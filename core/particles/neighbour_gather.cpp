@@ -89,13 +89,22 @@ struct Compacted {
 // Branch-free: every point is written, and the count moves on only for those inside.
 std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
 {
+    // Local copies: the compiler need not reload them after every store.
+    const double* __restrict x = in.x;
+    const double* __restrict y = in.y;
+    const double* __restrict z = in.z;
+    const double *__restrict a = in.a, *__restrict b = in.b;
+    double *__restrict dx = out.dx, *__restrict dy = out.dy, *__restrict dz = out.dz;
+    double *__restrict r2_out = out.r2, *__restrict va = out.a, *__restrict vb = out.b;
+    std::size_t at_zero = 0;
     for (std::size_t c = 0; c < in.n; ++c) {
-        const double dx = in.x[c] - in.xi, dy = in.y[c] - in.yi, dz = in.z[c] - in.zi;
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        out.dx[m] = dx, out.dy[m] = dy, out.dz[m] = dz, out.r2[m] = r2, out.a[m] = in.a[c], out.b[m] = in.b[c];
-        zeros += r2 == 0;
+        const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
+        const double r2 = ex * ex + ey * ey + ez * ez;
+        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c], vb[m] = b[c];
+        at_zero += r2 == 0;
         m += r2 <= in.reach2 && r2 > 0;
     }
+    zeros += at_zero;
     return m;
 }
 
@@ -105,25 +114,30 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
                                                                      std::size_t& zeros)
 {
+    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
+    double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
+    const std::size_t n = in.n;
     const __m512d xi = _mm512_set1_pd(in.xi), yi = _mm512_set1_pd(in.yi), zi = _mm512_set1_pd(in.zi);
     const __m512d reach2 = _mm512_set1_pd(in.reach2), zero = _mm512_setzero_pd();
-    for (std::size_t c = 0; c < in.n; c += 8) {
-        const __mmask8 live = in.n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (in.n - c)) - 1);
-        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.x + c), xi);
-        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.y + c), yi);
-        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, in.z + c), zi);
-        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-        const __mmask8 at_zero = _mm512_mask_cmp_pd_mask(live, r2, zero, _CMP_EQ_OQ);
-        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, r2, reach2, _CMP_LE_OQ) & __mmask8(~at_zero);
-        zeros += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(at_zero)));
-        _mm512_storeu_pd(out.dx + m, _mm512_maskz_compress_pd(inside, dx));
-        _mm512_storeu_pd(out.dy + m, _mm512_maskz_compress_pd(inside, dy));
-        _mm512_storeu_pd(out.dz + m, _mm512_maskz_compress_pd(inside, dz));
-        _mm512_storeu_pd(out.r2 + m, _mm512_maskz_compress_pd(inside, r2));
-        _mm512_storeu_pd(out.a + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, in.a + c)));
-        _mm512_storeu_pd(out.b + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, in.b + c)));
+    unsigned at_zero = 0;
+    for (std::size_t c = 0; c < n; c += 8) {
+        const __mmask8 live = n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - c)) - 1);
+        const __m512d ex = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, x + c), xi);
+        const __m512d ey = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, y + c), yi);
+        const __m512d ez = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, z + c), zi);
+        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
+        const __mmask8 zeros_here = _mm512_mask_cmp_pd_mask(live, r2, zero, _CMP_EQ_OQ);
+        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, r2, reach2, _CMP_LE_OQ) & __mmask8(~zeros_here);
+        at_zero += static_cast<unsigned>(std::popcount(static_cast<unsigned>(zeros_here)));
+        _mm512_storeu_pd(dx + m, _mm512_maskz_compress_pd(inside, ex));
+        _mm512_storeu_pd(dy + m, _mm512_maskz_compress_pd(inside, ey));
+        _mm512_storeu_pd(dz + m, _mm512_maskz_compress_pd(inside, ez));
+        _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
+        _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
+        _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
         m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
     }
+    zeros += at_zero;
     return m;
 }
 #endif
