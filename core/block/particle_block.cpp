@@ -1,7 +1,7 @@
 #include "block/particle_block.hpp"
 
 #include "block/block_geometry.hpp"
-#include "block/block_passes.hpp"
+#include "block/block_sweep.hpp"
 #include "block/cell_list.hpp"
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"

@@ -42,6 +42,11 @@ public:
     {
         f_->dw_batch(q, out, n, dim, k, values_.data());
     }
+    // w_batch and dw_batch in one call (one loop in plugins that give the fused extension).
+    void w_dw_batch(const double* q, double* w, double* dw, std::size_t n, int dim, double k) const
+    {
+        f_->w_dw_batch(q, w, dw, n, dim, k, values_.data());
+    }
 
     // h^(D+2) d2W/dr2 (q): the plugin's formula, else a one- or two-sided finite
     // difference of dw that never straddles a breakpoint (kernels/second_derivative.cpp).

@@ -25,11 +25,17 @@ public:
     virtual double dw(double q, int dim, double k, const double* params) const = 0;
     virtual void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* params) const = 0;
     virtual void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* params) const = 0;
+    // W and W' together (a plugin's fused evaluation); by default the two batch calls.
+    virtual void w_dw_batch(const double* q, double* w, double* dw, std::size_t n, int dim, double k,
+                            const double* params) const
+    {
+        w_batch(q, w, n, dim, k, params);
+        dw_batch(q, dw, n, dim, k, params);
+    }
     // Optional: h^(D+2) d2W/dr2 and the Fourier transform as a function of kappa h. Without
     // them the Kernel computes both numerically.
     virtual bool has_second_derivative() const { return false; }
     virtual double d2w(double, int, double, const double*) const { return 0.0; }
-    virtual void d2w_batch(const double*, double*, std::size_t, int, double, const double*) const {}
     virtual bool has_fourier_transform() const { return false; }
     virtual double fourier_transform(double, int, double, const double*) const { return 0.0; }
 };

@@ -115,7 +115,7 @@ public:
                     const std::string& file)
         : library_(std::move(library)), d_(d), w_(file, d.fields.name, "W"), dw_(file, d.fields.name, "dW"),
           w_batch_(file, d.fields.name, "the batch W"), dw_batch_(file, d.fields.name, "the batch dW"),
-          d2w_(file, d.fields.name, "d2W"), d2w_batch_(file, d.fields.name, "the batch d2W"),
+          w_dw_batch_(file, d.fields.name, "the fused W and dW"), d2w_(file, d.fields.name, "d2W"),
           fourier_(file, d.fields.name, "the Fourier transform")
     {
     }
@@ -139,16 +139,18 @@ public:
         PluginCallGuard in(dw_batch_);
         d_.fields.dw_batch(q, out, n, dim, k, p);
     }
+    void w_dw_batch(const double* q, double* w, double* dw, std::size_t n, int dim, double k,
+                    const double* p) const override
+    {
+        if (!d_.fused) return KernelFunctions::w_dw_batch(q, w, dw, n, dim, k, p);
+        PluginCallGuard in(w_dw_batch_);
+        d_.fused->w_dw(q, w, dw, n, dim, k, p);
+    }
     bool has_second_derivative() const override { return d_.second != nullptr; }
     double d2w(double q, int dim, double k, const double* p) const override
     {
         PluginCallGuard in(d2w_);
         return d_.second->d2w(q, dim, k, p);
-    }
-    void d2w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
-    {
-        PluginCallGuard in(d2w_batch_);
-        d_.second->d2w_batch(q, out, n, dim, k, p);
     }
     bool has_fourier_transform() const override { return d_.fourier != nullptr; }
     double fourier_transform(double kh, int dim, double k, const double* p) const override
@@ -160,7 +162,7 @@ public:
 private:
     std::shared_ptr<boost::dll::shared_library> library_; // keeps the descriptor and its functions mapped
     PluginDescriptor d_;
-    PluginCall w_, dw_, w_batch_, dw_batch_, d2w_, d2w_batch_, fourier_;
+    PluginCall w_, dw_, w_batch_, dw_batch_, w_dw_batch_, d2w_, fourier_;
 };
 
 } // namespace
@@ -217,6 +219,10 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
             out.fourier = static_cast<const sphkern_fourier_transform*>(e);
             if (!out.fourier->transform) return "the Fourier-transform extension has a null function";
         }
+        if (const void* e = d->get_extension(SPHKERN_EXTENSION_FUSED_EVALUATION)) {
+            out.fused = static_cast<const sphkern_fused_evaluation*>(e);
+            if (!out.fused->w_dw) return "the fused-evaluation extension has a null function";
+        }
     }
     if (!valid_identifier(d->name)) return "name must be 1 to 64 characters of [a-z0-9_]";
     if (!valid_text(d->title) || !valid_text(d->reference)) return "title and reference must be C strings";
@@ -246,7 +252,8 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
     std::vector<double> params;
     for (uint32_t i = 0; i < d->parameter_count; ++i) params.push_back(d->parameters[i].default_value);
     const int steps = 60;
-    std::vector<double> qs(steps + 1), batch_w(steps + 1), batch_dw(steps + 1), batch_d2w(steps + 1);
+    std::vector<double> qs(steps + 1), batch_w(steps + 1), batch_dw(steps + 1), batch_d2w(steps + 1),
+        fused_w(steps + 1), fused_dw(steps + 1);
     for (int i = 0; i <= steps; ++i) qs[i] = 1.5 * d->support * i / steps;
     auto disagree = [](double a, double b) { return std::abs(a - b) > 1e-12 * (1 + std::abs(b)); };
     for (int dim = 1; dim <= 3; ++dim) {
@@ -255,6 +262,7 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
             d->w_batch(qs.data(), batch_w.data(), qs.size(), dim, k, params.data());
             d->dw_batch(qs.data(), batch_dw.data(), qs.size(), dim, k, params.data());
             if (out.second) out.second->d2w_batch(qs.data(), batch_d2w.data(), qs.size(), dim, k, params.data());
+            if (out.fused) out.fused->w_dw(qs.data(), fused_w.data(), fused_dw.data(), qs.size(), dim, k, params.data());
             for (int i = 0; i <= steps; ++i) {
                 double w = d->w(qs[i], dim, k, params.data()), dw = d->dw(qs[i], dim, k, params.data());
                 double d2w = out.second ? out.second->d2w(qs[i], dim, k, params.data()) : 0.0;
@@ -265,6 +273,8 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
                 if (!std::isfinite(transform)) return "non-finite Fourier transform at kh = " + std::to_string(2 * qs[i]);
                 if (disagree(batch_w[i], w) || disagree(batch_dw[i], dw) || (out.second && disagree(batch_d2w[i], d2w)))
                     return "batch and scalar functions disagree" + at.str();
+                if (out.fused && (disagree(fused_w[i], w) || disagree(fused_dw[i], dw)))
+                    return "the fused and scalar functions disagree" + at.str();
             }
         }
     }

@@ -19,6 +19,7 @@ struct PluginDescriptor {
     sphkern_kernel_descriptor fields{};
     const sphkern_second_derivative* second = nullptr;
     const sphkern_fourier_transform* fourier = nullptr;
+    const sphkern_fused_evaluation* fused = nullptr;
 };
 
 // Reads what a plugin's entry function returned into `out`; returns an empty string if

@@ -6,7 +6,13 @@
 
 #include <fmt/format.h>
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define SPHKERN_HAVE_AVX512_COMPRESS 1
+#endif
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,7 +22,7 @@ void Neighbours::reserve(std::size_t n)
 {
     if (dx.size() >= n) return;
     const std::size_t size = std::max(n, 2 * dx.size());
-    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw}) v->resize(size);
+    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw, &inv_r}) v->resize(size);
     index.resize(size);
 }
 
@@ -69,7 +75,116 @@ SPHKERN_VECTOR_CLONES void gather_by_index(const double* __restrict x, const dou
     }
 }
 
+// The points of one run with 0 < r2 <= reach2, appended at `m` of every output array;
+// `zeros` counts the points at r2 = 0 (the point itself, or a duplicate).
+struct RunInput {
+    const double *x, *y, *z, *a, *b;
+    std::size_t n;
+    double xi, yi, zi, reach2;
+};
+struct Compacted {
+    double *dx, *dy, *dz, *r2, *a, *b;
+};
+
+// Branch-free: every point is written, and the count moves on only for those inside.
+std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
+{
+    // Local copies: the compiler need not reload them after every store.
+    const double* __restrict x = in.x;
+    const double* __restrict y = in.y;
+    const double* __restrict z = in.z;
+    const double *__restrict a = in.a, *__restrict b = in.b;
+    double *__restrict dx = out.dx, *__restrict dy = out.dy, *__restrict dz = out.dz;
+    double *__restrict r2_out = out.r2, *__restrict va = out.a, *__restrict vb = out.b;
+    std::size_t at_zero = 0;
+    for (std::size_t c = 0; c < in.n; ++c) {
+        const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
+        const double r2 = ex * ex + ey * ey + ez * ez;
+        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c], vb[m] = b[c];
+        at_zero += r2 == 0;
+        m += r2 <= in.reach2 && r2 > 0;
+    }
+    zeros += at_zero;
+    return m;
+}
+
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+// Eight points at a time: compress in registers, then a full store (a compressing store to
+// memory is slow on some processors); the outputs have room for eight more.
+__attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
+                                                                     std::size_t& zeros)
+{
+    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
+    double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
+    const std::size_t n = in.n;
+    const __m512d xi = _mm512_set1_pd(in.xi), yi = _mm512_set1_pd(in.yi), zi = _mm512_set1_pd(in.zi);
+    const __m512d reach2 = _mm512_set1_pd(in.reach2), zero = _mm512_setzero_pd();
+    unsigned at_zero = 0;
+    for (std::size_t c = 0; c < n; c += 8) {
+        const __mmask8 live = n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - c)) - 1);
+        const __m512d ex = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, x + c), xi);
+        const __m512d ey = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, y + c), yi);
+        const __m512d ez = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, z + c), zi);
+        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
+        const __mmask8 zeros_here = _mm512_mask_cmp_pd_mask(live, r2, zero, _CMP_EQ_OQ);
+        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, r2, reach2, _CMP_LE_OQ) & __mmask8(~zeros_here);
+        at_zero += static_cast<unsigned>(std::popcount(static_cast<unsigned>(zeros_here)));
+        _mm512_storeu_pd(dx + m, _mm512_maskz_compress_pd(inside, ex));
+        _mm512_storeu_pd(dy + m, _mm512_maskz_compress_pd(inside, ey));
+        _mm512_storeu_pd(dz + m, _mm512_maskz_compress_pd(inside, ez));
+        _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
+        _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
+        _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
+        m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
+    }
+    zeros += at_zero;
+    return m;
+}
+#endif
+
+using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
+
+AppendWithin choose_append_within()
+{
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+    if (__builtin_cpu_supports("avx512f")) return append_within_avx512;
+#endif
+    return append_within_scalar;
+}
+
+[[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
+{
+    const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
+    for (std::size_t j = 0; j < grid.points(); ++j)
+        if (j != p && grid.x()[j] == xi && grid.y()[j] == yi && grid.z()[j] == zi) {
+            const auto i = grid.source(p), k = grid.source(j);
+            fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set_name,
+                                   std::min(i, k), std::max(i, k), xi, yi, zi));
+        }
+    throw std::logic_error("a duplicate position that is not there");
+}
+
 } // namespace
+
+void gather_near(const NeighbourGrid& grid, std::size_t p, double reach2, const double* a, const double* b,
+                 const std::string& set_name, Neighbours& nb)
+{
+    static const AppendWithin append_within = choose_append_within();
+    RunInput in{nullptr, nullptr, nullptr, nullptr, nullptr, 0, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
+    std::size_t m = 0, zeros = 0;
+    grid.for_each_run_near(p, std::sqrt(reach2), [&](std::size_t begin, std::size_t end) {
+        in.n = end - begin;
+        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a + begin, in.b = b + begin;
+        nb.reserve(m + in.n + neighbour_lanes);
+        m = append_within(in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, m, zeros);
+    });
+    if (zeros == 0) throw std::logic_error("a particle is not among its own candidates");
+    if (zeros > 1) fail_duplicate(grid, p, set_name);
+    nb.reserve(m + neighbour_lanes);
+    for (std::size_t j = m; j < m + neighbour_lanes; ++j)
+        nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
+    nb.count = m;
+}
 
 void gather_neighbours(const NeighbourGrid& grid, std::size_t p, const std::vector<PointRun>& runs, double reach2,
                        const double* a, const double* b, const std::string& set_name, Neighbours& nb)

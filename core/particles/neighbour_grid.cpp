@@ -66,24 +66,23 @@ void NeighbourGrid::sort_into_bins(double reach)
 {
     const std::size_t count = x_.size();
     const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
-    double lo[3], extent[3];
     for (int a = 0; a < 3; ++a) {
         const auto [mn, mx] = std::minmax_element(coordinates[a], coordinates[a] + count);
-        lo[a] = *mn, extent[a] = *mx - *mn;
-        // Bins at least reach / stencil_reach wide, so that the block of bins around a bin holds
-        // every neighbour; not many more bins than points, so that sparse sets stay small.
-        const double bins = std::floor(extent[a] / reach * stencil_reach);
-        n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, std::max(1.0, std::cbrt(static_cast<double>(count)) * 4)));
+        const double extent = *mx - *mn;
+        // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
+        // block of bins around a bin holds every neighbour; not many more bins than points,
+        // so that sparse sets stay small.
+        const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
+        const double bins = std::floor(extent / reach * per_reach);
+        const double most = std::max(1.0, std::cbrt(static_cast<double>(count)) * 4 * (a == 0 ? x_bins_per_reach : 1));
+        n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, most));
+        lo_[a] = *mn;
+        scale_[a] = extent > 0 ? static_cast<double>(n_[a]) / extent : 0.0;
     }
     const std::size_t total_bins = n_[0] * n_[1] * n_[2];
     std::vector<std::uint64_t> bin(count), fill(total_bins + 1, 0);
     for (std::size_t p = 0; p < count; ++p) {
-        std::uint64_t cell[3];
-        for (int a = 0; a < 3; ++a) {
-            const double t = extent[a] > 0 ? (coordinates[a][p] - lo[a]) / extent[a] * static_cast<double>(n_[a]) : 0.0;
-            cell[a] = static_cast<std::uint64_t>(std::min(static_cast<double>(n_[a] - 1), std::max(0.0, std::floor(t))));
-        }
-        bin[p] = (cell[2] * n_[1] + cell[1]) * n_[0] + cell[0];
+        bin[p] = (bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p])) * n_[0] + bin_along(0, x_[p]);
         ++fill[bin[p] + 1];
     }
     for (std::size_t b = 0; b < total_bins; ++b) fill[b + 1] += fill[b];

@@ -6,6 +6,8 @@
 
 #include "particles/particle_set.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -13,11 +15,14 @@ namespace sphkern {
 
 class NeighbourGrid {
 public:
-    // Bins are reach / stencil_reach wide and a bin's candidates lie within stencil_reach
-    // bins along each axis. Smaller bins hold fewer candidates (5 x 5 x 5 bins of half a reach
-    // hold (5/2)^3 reach^3, 3 x 3 x 3 of one reach 27 reach^3), but in more and shorter runs,
-    // which cost more than the candidates they save on the sets measured.
+    // Bins are reach / stencil_reach wide across and reach / (stencil_reach x_bins_per_reach)
+    // along x, and a bin's candidates lie within stencil_reach bins across (x_bins_per_reach
+    // times as many along x). Smaller bins across hold fewer candidates but in more and
+    // shorter runs, which cost more than the candidates they save on the sets measured; along
+    // x, where a row of bins is one run, narrow bins let a point cut each run to the chord of
+    // its own support (for_each_run_near): about 3 candidates per neighbour instead of 6.
     static constexpr std::size_t stencil_reach = 1;
+    static constexpr std::size_t x_bins_per_reach = 4;
 
     // `reach`: the largest support radius of any particle. Throws Error(input) for a periodic
     // box narrower than twice the reach (a particle would see two images of one neighbour).
@@ -43,8 +48,8 @@ public:
     void for_each_run_of_bin(std::size_t b, Visit&& visit) const
     {
         const std::size_t bx = b % n_[0], by = b / n_[0] % n_[1], bz = b / (n_[0] * n_[1]);
-        constexpr std::size_t s = stencil_reach;
-        const std::size_t x0 = bx > s ? bx - s : 0, x1 = std::min(bx + s, n_[0] - 1);
+        constexpr std::size_t s = stencil_reach, sx = stencil_reach * x_bins_per_reach;
+        const std::size_t x0 = bx > sx ? bx - sx : 0, x1 = std::min(bx + sx, n_[0] - 1);
         const std::size_t z0 = bz > s ? bz - s : 0, z1 = std::min(bz + s, n_[2] - 1);
         const std::size_t y0 = by > s ? by - s : 0, y1 = std::min(by + s, n_[1] - 1);
         for (std::size_t cz = z0; cz <= z1; ++cz)
@@ -54,7 +59,45 @@ public:
             }
     }
 
+    // visit(begin, end) for each run of points that may lie within `reach` (at most the
+    // grid's reach) of point p: the rows of bins around p's bin, each cut along x to the
+    // chord of the sphere of radius `reach` through the row. In a fixed order.
+    template <class Visit>
+    void for_each_run_near(std::size_t p, double reach, Visit&& visit) const
+    {
+        const double xi = x_[p], yi = y_[p], zi = z_[p];
+        const std::size_t by = bin_along(1, yi), bz = bin_along(2, zi);
+        const std::size_t z0 = bz > 0 ? bz - 1 : 0, z1 = std::min(bz + 1, n_[2] - 1);
+        const std::size_t y0 = by > 0 ? by - 1 : 0, y1 = std::min(by + 1, n_[1] - 1);
+        for (std::size_t cz = z0; cz <= z1; ++cz) {
+            const double gz = gap(2, cz, bz, zi, reach);
+            for (std::size_t cy = y0; cy <= y1; ++cy) {
+                const double gy = gap(1, cy, by, yi, reach), chord2 = reach * reach - gy * gy - gz * gz;
+                if (chord2 < 0) continue;
+                const double chord = std::sqrt(chord2);
+                const std::size_t row = (cz * n_[1] + cy) * n_[0];
+                visit(static_cast<std::size_t>(start_[row + bin_along(0, xi - chord)]),
+                      static_cast<std::size_t>(start_[row + bin_along(0, xi + chord) + 1]));
+            }
+        }
+    }
+
 private:
+    // The bin of coordinate c along axis a: the one formula of the sort and the search, so
+    // that a point within the chord lies in a bin of the cut run (the formula is monotone).
+    std::size_t bin_along(int a, double c) const
+    {
+        const double t = std::floor((c - lo_[a]) * scale_[a]);
+        return static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(n_[a] - 1)));
+    }
+    // The distance along axis a from c (in bin `own`) to bin `cell`, a little short of it
+    // (the bin edges are computed, not stored).
+    double gap(int a, std::size_t cell, std::size_t own, double c, double reach) const
+    {
+        if (cell == own) return 0.0;
+        const double edge = lo_[a] + static_cast<double>(cell < own ? cell + 1 : cell) / scale_[a];
+        return std::max(0.0, std::abs(c - edge) - 1e-9 * reach);
+    }
     void add_ghosts(const ParticleSet& set, double reach);
     void sort_into_bins(double reach);
 
@@ -64,6 +107,7 @@ private:
     std::vector<std::uint8_t> ghost_;
     std::vector<std::uint64_t> start_; // first point of each bin, and one past the last
     std::size_t n_[3] = {1, 1, 1};
+    double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0}; // bin of c along a: floor((c - lo) scale)
 };
 
 } // namespace sphkern

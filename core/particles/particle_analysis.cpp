@@ -55,6 +55,7 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
         for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
+    point.cpu_seconds = m.cpu_seconds;
     point.pairs = m.pairs;
     return point;
 }

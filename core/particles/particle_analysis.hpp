@@ -40,7 +40,7 @@ struct ParticlePoint {
     double mean_neighbours = 0;
     std::vector<std::pair<std::string, Summary>> statistics; // e0, eps_rho, eps_gradp, ... in a fixed order
     std::vector<std::pair<std::string, Histogram>> histograms;
-    double seconds = 0;
+    double seconds = 0, cpu_seconds = 0; // of the sums: wall time, and CPU time of all threads
     std::size_t pairs = 0;
     const Summary& statistic(const std::string& name) const; // std::logic_error for a name not computed
 };

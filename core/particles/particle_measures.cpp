@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -34,26 +35,35 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // The sums over one particle's neighbours, in eight lanes of partial sums added in a fixed
 // order at the end: the loop vectorises, and the result does not depend on the thread count.
+// n is a multiple of the lanes (gather_near pads with neighbours that add zero).
 enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
-constexpr std::size_t lanes = 8;
+constexpr std::size_t lanes = neighbour_lanes;
+
+// r = sqrt(r2), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite).
+SPHKERN_VECTOR_CLONES void distances(const double* __restrict r2, std::size_t n, std::size_t live, double inv_h,
+                                     double* __restrict q, double* __restrict inv_r)
+{
+    for (std::size_t j = 0; j < n; ++j) {
+        const double r = std::sqrt(r2[j]);
+        q[j] = r * inv_h;
+        inv_r[j] = 1.0 / r;
+    }
+    for (std::size_t j = live; j < n; ++j) q[j] = inv_r[j] = 0;
+}
 
 SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const double* __restrict dy,
-                                          const double* __restrict dz, const double* __restrict r,
+                                          const double* __restrict dz, const double* __restrict inv_r,
                                           const double* __restrict v, const double* __restrict m,
                                           const double* __restrict w, const double* __restrict dw, std::size_t n,
                                           double* __restrict total)
 {
     double acc[sums][lanes] = {};
-    const std::size_t full = n / lanes * lanes;
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {
-            const std::size_t j = base + l;
-            // Past the end, a lane adds zeros (j < n masks it without a branch out of the loop).
-            const bool live = j < n;
-            const std::size_t k = live ? j : 0;
-            const double vw = live ? v[k] * w[k] : 0.0, mw = live ? m[k] * w[k] : 0.0;
+            const std::size_t k = base + l;
+            const double vw = v[k] * w[k], mw = m[k] * w[k];
             // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
-            const double g = live ? -v[k] * dw[k] / r[k] : 0.0;
+            const double g = -v[k] * dw[k] * inv_r[k];
             const double x = dx[k], y = dy[k], z = dz[k];
             acc[s0][l] += vw, acc[sm][l] += mw;
             acc[m1x][l] += vw * x, acc[m1y][l] += vw * y, acc[m1z][l] += vw * z;
@@ -61,7 +71,6 @@ SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const dou
             acc[exx][l] += g * x * x, acc[eyy][l] += g * y * y, acc[ezz][l] += g * z * z;
             acc[exy][l] += g * x * y, acc[exz][l] += g * x * z, acc[eyz][l] += g * y * z;
         }
-    (void)full;
     for (int s = 0; s < sums; ++s) {
         double t = 0;
         for (std::size_t l = 0; l < lanes; ++l) t += acc[s][l];
@@ -76,19 +85,20 @@ struct Sweep {
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order
 
-    void measure(std::size_t p, const std::vector<PointRun>& runs, Neighbours& nb, ParticleMeasures& out) const
+    // One fused pass per particle: the candidates kept as they are scanned, then r, q and
+    // 1 / r, W and W' in one kernel call, and every sum, over arrays that stay in L1.
+    void measure(std::size_t p, Neighbours& nb, ParticleMeasures& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
         const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h;
-        gather_neighbours(grid, p, runs, reach * reach * (1 + 2 * support_edge), volume.data(), mass.data(), set.name, nb);
-        const std::size_t n = nb.count;
-        scale_distances(nb.r.data(), n, 1 / h, nb.q.data());
-        kernel.w_batch(nb.q.data(), nb.w.data(), n, dim, k);
-        kernel.dw_batch(nb.q.data(), nb.dw.data(), n, dim, k);
+        gather_near(grid, p, reach * reach * (1 + 2 * support_edge), volume.data(), mass.data(), set.name, nb);
+        const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
+        distances(nb.r2.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
+        kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
-        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.a.data(), nb.b.data(),
-                       nb.w.data(), nb.dw.data(), n, t);
+        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nb.b.data(),
+                       nb.w.data(), nb.dw.data(), padded, t);
         const double w0 = kernel.w(0, dim, k);
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
@@ -152,22 +162,22 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     out.threads = inputs.threads > 0 ? inputs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
-    // Bin by bin: the candidates of a bin are gathered once for all its particles.
+    const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
+    // Bin by bin (in cell order, so that neighbouring particles share their candidates in cache).
     ParallelFor pass;
     pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        std::vector<PointRun> runs;
         Neighbours nb;
         // The first thread's share stands for the whole: every thread has as many bins.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} bins", b - begin + 1));
-            runs_of_bin(grid, b, runs);
             for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
-                if (!grid.is_ghost(p)) sweep.measure(p, runs, nb, out);
+                if (!grid.is_ghost(p)) sweep.measure(p, nb, out);
         }
     });
     out.seconds = seconds_since(t0);
+    out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     for (int count : out.neighbours) out.pairs += static_cast<std::size_t>(count);
     return out;
 }

@@ -30,6 +30,7 @@ struct ParticleMeasures {
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid
+    double cpu_seconds = 0;               // the same, CPU time of all threads (a loaded machine's measure)
     std::size_t size() const { return e0.size(); }
 };
 

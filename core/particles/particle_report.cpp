@@ -41,6 +41,7 @@ nlohmann::json point_json(const ParticlePoint& p)
     for (const auto& [name, s] : p.statistics) statistics[name] = summary_json(s);
     nlohmann::json point = {{"eta", p.eta},         {"nh", p.nh},       {"h_min", p.h_min}, {"h_max", p.h_max},
                             {"mean_neighbours", p.mean_neighbours}, {"pairs", p.pairs}, {"seconds", p.seconds},
+                            {"cpu_seconds", p.cpu_seconds},
                             {"statistics", statistics}};
     if (!p.histograms.empty()) {
         nlohmann::json histograms = nlohmann::json::object();

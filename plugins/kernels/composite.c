@@ -1,5 +1,6 @@
 /* Composite kernel (paper eq. 13a, 13b), R = 1, 2D only. Its derivative (13b) is a
  * separate formula that depends on k and is singular at k = 63/74. */
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -22,6 +23,8 @@ static double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const sphkern_kernel_descriptor descriptor = {
     SPHKERN_DESCRIPTOR_VERSION,
@@ -35,6 +38,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

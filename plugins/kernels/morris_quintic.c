@@ -1,4 +1,5 @@
 /* Morris quintic spline (paper eq. 7), R = 3, with the exact sigma_3 = 1/(120 pi). */
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -25,6 +26,8 @@ static double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const double breakpoints[] = {1.0, 2.0};
 
@@ -41,6 +44,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

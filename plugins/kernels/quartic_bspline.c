@@ -1,6 +1,7 @@
 /* Quartic B-spline M5 (Schoenberg 1946; Monaghan & Lattanzio 1985), R = 2.5 in the usual
    convention W = sigma_D f(q) / h^D, f(q) = (5/2 - q)^4_+ - 5 (3/2 - q)^4_+ + 10 (1/2 - q)^4_+,
    with the exact sigma_D = 1/24, 96/(1199 pi), 1/(20 pi) (a test integrates them). */
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -24,6 +25,8 @@ static double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const double breakpoints[] = {0.5, 1.5};
 
@@ -40,6 +43,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,6 +1,7 @@
 /* Super-Gaussian kernel (paper eq. 6; Monaghan's D-dimensional form in 3D), R = 3.
  * One formula for all q: it continues past R, where the host truncates it. */
 #include <math.h>
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -27,6 +28,8 @@ static double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const sphkern_kernel_descriptor descriptor = {
     SPHKERN_DESCRIPTOR_VERSION,
@@ -39,6 +42,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

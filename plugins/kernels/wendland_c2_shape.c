@@ -4,6 +4,7 @@
  * eps_rho and eps_gradP move differently and can vanish together (sphkern design).
  * sigma_D(beta) = 1 / (S_D (I_{D-1} + 2 I_D + beta I_{D+1})), with
  * I_n = integral_0^2 q^n (1 - q/2)^4 dq = 2^(n+1) n! 4! / (n+5)!. */
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -41,6 +42,8 @@ static inline double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const sphkern_kernel_parameter parameters[] = {
     {"beta", "weight of q^2 in the polynomial factor; 0 is Wendland C2", 0.0, -1.0, 10.0}};
@@ -58,6 +61,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

@@ -1,4 +1,5 @@
 /* Wendland C4, support 2h as in PySPH and DualSPHysics; 2D and 3D only. Zero past R. */
+#include <string.h>
 #include <sphkern/kernel_plugin.h>
 #include <sphkern/kernel_plugin_helpers.h>
 
@@ -26,6 +27,8 @@ static double dw(double q, int dim, double k, const double* p)
 
 SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
+SPHKERN_FUSED_FROM_SCALAR(w_dw, w, dw)
+SPHKERN_FUSED_EXTENSION(extensions, w_dw)
 
 static const sphkern_kernel_descriptor descriptor = {
     SPHKERN_DESCRIPTOR_VERSION,
@@ -38,6 +41,7 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+    .get_extension = extensions,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

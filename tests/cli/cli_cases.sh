@@ -662,6 +662,8 @@ fi
 # exit 4 and one line naming the file, the kernel and the function; nothing left behind.
 expect 4 'crash_in_band.so: plugin kernel crash_in_band crashed with signal 11 \(SIGSEGV\) in W; nothing was written' -- \
     spectrum "$broken/crash_in_band.so" --dim 3
+expect 4 'crash_in_fused.so: plugin kernel crash_in_fused crashed with signal 11 \(SIGSEGV\) in the fused W and dW; nothing was written' -- \
+    particles "$broken/crash_in_fused.so" poisson --dim 3 --count 2000 --nh 30
 expect 4 'abort_above_k.so: plugin kernel abort_above_k crashed with signal 6 \(SIGABRT\) in .*W; nothing was written' -- \
     eps "$broken/abort_above_k.so" fcc --k 1.4
 expect 4 'exit_in_w.so: plugin kernel exit_in_w called exit\(\) or pthread_exit\(\) in .*W; nothing was written' -- eps "$broken/exit_in_w.so" fcc --k 1.4

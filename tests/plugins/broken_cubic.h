@@ -1,6 +1,7 @@
 /* The 3D cubic B-spline of the deliberately broken plugins that pass their probe and fail
    later. A plugin defines BROKEN_NAME and BROKEN_FAULT(q, k), a statement run first in W, and
-   may define BROKEN_BATCH_FAULT(n, out), run first in the batch W; then includes this. */
+   may define BROKEN_BATCH_FAULT(n, out), run first in the batch W, and BROKEN_EXTENSION, its
+   get_extension function (defined after this file's w and dw); then includes this. */
 #define _GNU_SOURCE /* M_1_PI */
 #include <math.h>
 #include <stddef.h>
@@ -34,6 +35,10 @@ static void w_batch(const double* q, double* out, size_t n, int dim, double k, c
 }
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
+#ifdef BROKEN_EXTENSION
+static const void* BROKEN_EXTENSION(const char* id);
+#endif
+
 static const double breakpoints[] = {1.0};
 
 static const sphkern_kernel_descriptor descriptor = {
@@ -49,6 +54,9 @@ static const sphkern_kernel_descriptor descriptor = {
     .dw = dw,
     .w_batch = w_batch,
     .dw_batch = dw_batch,
+#ifdef BROKEN_EXTENSION
+    .get_extension = BROKEN_EXTENSION,
+#endif
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }

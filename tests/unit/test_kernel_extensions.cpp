@@ -45,7 +45,7 @@ TEST_CASE("a plugin built against the frozen ABI 1 header loads and agrees with 
 {
     Kernel old(load_kernel_plugin(fixture("abi1_cubic"))), now = shipped_kernel("cubic_bspline");
     CHECK(old.definition().abi == "1.0");
-    CHECK(now.definition().abi == "2.0");
+    CHECK(now.definition().abi == "2.1");
     for (const char* name : {"triangular", "fcc"}) {
         auto lattice = load_lattice(name);
         const double a_p = lattice.volume_coefficient("voronoi");
@@ -158,4 +158,42 @@ TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-de
             if (c["check"] == "breakpoints" || c["check"] == "support" || c["check"] == "gradient_moment")
                 CHECK_MESSAGE(c["status"] == "ok", name << ": " << c.dump());
     }
+}
+
+TEST_CASE("the fused W and W' of every shipped plugin equal its scalar functions; without the extension the batches give them")
+{
+    std::vector<double> q;
+    for (int i = 0; i <= 400; ++i) q.push_back(1.5 * i / 400); // in units of R below
+    int fused = 0;
+    for (const auto& definition : shipped_kernels().plugins()) {
+        if (definition->abi != "2.1") continue;
+        CAPTURE(definition->name);
+        const Kernel kernel(definition);
+        std::vector<double> qs, w(q.size()), dw(q.size());
+        for (double x : q) qs.push_back(x * kernel.support());
+        for (int dim = 1; dim <= 3; ++dim) {
+            if (!kernel.supports(dim)) continue;
+            kernel.w_dw_batch(qs.data(), w.data(), dw.data(), qs.size(), dim, 1.2);
+            for (std::size_t i = 0; i < qs.size(); ++i) {
+                CHECK(w[i] == doctest::Approx(kernel.w(qs[i], dim, 1.2)).epsilon(1e-12).scale(1));
+                CHECK(dw[i] == doctest::Approx(kernel.dw(qs[i], dim, 1.2)).epsilon(1e-12).scale(1));
+            }
+        }
+        ++fused;
+    }
+    CHECK(fused >= 12); // every shipped plugin gives the extension
+    // ABI 1 has no extension: the host's fallback calls the two batch functions.
+    const Kernel old(load_kernel_plugin(fixture("abi1_cubic")));
+    std::vector<double> w(q.size()), dw(q.size()), w_batch(q.size()), dw_batch(q.size());
+    old.w_dw_batch(q.data(), w.data(), dw.data(), q.size(), 3, 1.0);
+    old.w_batch(q.data(), w_batch.data(), q.size(), 3, 1.0);
+    old.dw_batch(q.data(), dw_batch.data(), q.size(), 3, 1.0);
+    CHECK(w == w_batch);
+    CHECK(dw == dw_batch);
+}
+
+TEST_CASE("a fused W and W' that disagree with the scalar functions are refused by the probe")
+{
+    CHECK_THROWS_WITH_AS(load_kernel_plugin(fixture("fused_disagrees")),
+                         doctest::Contains("the fused and scalar functions disagree at q = "), Error);
 }

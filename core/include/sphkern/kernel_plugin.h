@@ -21,6 +21,8 @@
  *   w(q, D, k, params)   returns h^D W          (the normalised kernel, sigma_D included)
  *   dw(q, D, k, params)  returns h^(D+1) dW/dr
  *   d2w(q, D, k, params) returns h^(D+2) d2W/dr2 (extension SPHKERN_EXTENSION_SECOND_DERIVATIVE)
+ *   w_dw(q, w, dw, n, D, k, params) writes w[i] = h^D W(q[i]) and dw[i] = h^(D+1) dW/dr(q[i])
+ *     for i < n in one call (extension SPHKERN_EXTENSION_FUSED_EVALUATION, ABI 2.1)
  *   transform(kh, D, k, params) returns the Fourier transform of W at wave number kappa
  *     with kh = kappa h: integral of W(|x|) exp(-i kappa.x) d^D x, dimensionless, 1 at
  *     kh = 0 (extension SPHKERN_EXTENSION_FOURIER_TRANSFORM).
@@ -65,7 +67,7 @@ extern "C" {
 #endif
 
 #define SPHKERN_KERNEL_ABI_MAJOR 2u
-#define SPHKERN_KERNEL_ABI_MINOR 0u
+#define SPHKERN_KERNEL_ABI_MINOR 1u
 
 /* Bit set in `dimensions` for each supported dimension D (1, 2, 3). */
 #define SPHKERN_DIM(D) (1u << (D))
@@ -141,6 +143,21 @@ typedef double (*sphkern_fourier_fn)(double kh, int dim, double k, const double*
 typedef struct sphkern_fourier_transform {
     sphkern_fourier_fn transform;
 } sphkern_fourier_transform;
+
+/* Extension (ABI 2.1): W and dW/dr together over an array of q = r / h, in one call. The
+ * host's pair loops (`sphkern particles`) evaluate both at every neighbour; one call
+ * instead of two batch calls halves the calls and lets the plugin share q's powers between
+ * W and W'. The values must equal the scalar w and dw (the host's probe compares them).
+ * q, w and dw never alias. The host takes q rather than r^2 or q^2: it needs r and 1/r
+ * for the pair's direction anyway, so a square root in the plugin would be a second one.
+ * Write it with SPHKERN_FUSED_FROM_SCALAR (kernel_plugin_helpers.h). A plugin without it
+ * keeps working: the host calls w_batch and dw_batch instead. */
+#define SPHKERN_EXTENSION_FUSED_EVALUATION "sphkern.fused_evaluation.1"
+typedef void (*sphkern_kernel_fused_fn)(const double* q, double* w, double* dw, size_t n, int dim, double k,
+                                        const double* params);
+typedef struct sphkern_fused_evaluation {
+    sphkern_kernel_fused_fn w_dw;
+} sphkern_fused_evaluation;
 
 #ifdef __cplusplus
 }

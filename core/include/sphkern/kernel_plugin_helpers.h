@@ -24,4 +24,35 @@
         for (size_t i = 0; i < n; ++i) out[i] = scalar(q[i], dim, k, params);              \
     }
 
+/* No aliasing between the arrays of a batch (the contract of kernel_plugin.h): the loop
+ * with two outputs vectorises only when the compiler knows it. C and C++ alike. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SPHKERN_RESTRICT __restrict
+#else
+#define SPHKERN_RESTRICT
+#endif
+
+/* Defines `name` as the fused function of SPHKERN_EXTENSION_FUSED_EVALUATION from the
+ * scalar functions `w` and `dw`: one loop writes both, and vectorises when they are
+ * branch-free. Pair it with SPHKERN_FUSED_EXTENSION or return &name's struct yourself. */
+#define SPHKERN_FUSED_FROM_SCALAR(name, w, dw)                                                  \
+    SPHKERN_VECTOR_CLONES static void name(const double* SPHKERN_RESTRICT q, double* SPHKERN_RESTRICT w_out, \
+                                           double* SPHKERN_RESTRICT dw_out, size_t n, int dim, double k,      \
+                                           const double* params)                                              \
+    {                                                                                         \
+        for (size_t i = 0; i < n; ++i) {                                                      \
+            w_out[i] = w(q[i], dim, k, params);                                               \
+            dw_out[i] = dw(q[i], dim, k, params);                                             \
+        }                                                                                     \
+    }
+
+/* Defines `name` as a get_extension function that gives the fused evaluation `fused`
+ * (made by SPHKERN_FUSED_FROM_SCALAR) and no other extension. Needs <string.h>. */
+#define SPHKERN_FUSED_EXTENSION(name, fused)                                                    \
+    static const void* name(const char* id)                                                   \
+    {                                                                                         \
+        static const sphkern_fused_evaluation extension = {fused};                            \
+        return strcmp(id, SPHKERN_EXTENSION_FUSED_EVALUATION) == 0 ? &extension : NULL;       \
+    }
+
 #endif /* SPHKERN_KERNEL_PLUGIN_HELPERS_H */

@@ -1,4 +1,4 @@
-#include "block/block_passes.hpp"
+#include "block/block_sweep.hpp"
 
 #include "analysis/gradient_form.hpp"
 #include "support/parallel_for.hpp"
