@@ -160,6 +160,12 @@ void Dispersion::sum_long_wave_moments()
 
 void Dispersion::check_one_density(const Lattice& lattice, const std::vector<double>& densities) const
 {
+    // A k so small that h^D underflows: no neighbour, an infinite (or huge) density and pressure
+    // terms of 0, which a scan over k read as "stable" with omega^2 = 0.
+    if (!std::isfinite(density_) || !(density_ > 0) || !std::isnormal(1 / (density_ * density_)))
+        fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice {} can be evaluated at: the SPH "
+                               "density is {:.3g} times rho0 and the pressure terms underflow (expected k of order 1)",
+                               k_, lattice.name, density_ / mass_));
     for (std::size_t s = 1; s < densities.size(); ++s)
         if (std::abs(densities[s] - density_) > 1e-9 * density_)
             fail_input(fmt::format("the sites of lattice {} do not see one SPH density (site 0: {:.10g}, site {}: {:.10g} "

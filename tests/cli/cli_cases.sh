@@ -748,6 +748,12 @@ expect 3 'the dispersion path asks for neighbours x wave vectors = 1023640229, m
     stability cubic_bspline fcc --k 6 --path 100000
 expect 3 'the stability scan over k asks for neighbours x wave vectors = 74005410032, more than the limit of 500000000' -- \
     stability cubic_bspline fcc --kmin 1 --kmax 100 --steps 10
+# A k so small that h^3 underflows has no neighbour and an infinite density: the scan over k
+# called it "stable" with omega^2 = 0; refused like --k 1e-300 is.
+expect 3 'k = 1e-300 is outside what this kernel and lattice fcc can be evaluated at: the SPH density is inf times rho0' -- \
+    stability cubic_bspline fcc --kmin 1e-300 --kmax 1e-299 --steps 2
+expect 3 'k = 1e-100 is outside what this kernel and lattice fcc can be evaluated at' -- \
+    stability cubic_bspline fcc --kmin 1e-100 --kmax 1e-99 --steps 2
 # A tiny gamma overflowed 2/gamma: refused, and never a non-finite omega^2.
 expect 2 '--gamma 1e-320 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- stability cubic_bspline fcc --gamma 1e-320 --k 1.2
 expect 2 '--gamma 1e-07 is not allowed' -- stability cubic_bspline fcc --gamma 1e-7 --kmin 1 --kmax 1.2
