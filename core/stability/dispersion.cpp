@@ -8,10 +8,28 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
 namespace sphkern {
+
+namespace {
+
+// Calls f on each item, checking for a signal between chunks of 65536 (a large k has millions
+// of neighbours): the inner loop stays as tight as it is without the check.
+template <class List, class F>
+void for_each_interruptible(const List& list, F&& f)
+{
+    constexpr std::size_t chunk = std::size_t{1} << 16;
+    for (std::size_t begin = 0; begin < list.size(); begin += chunk) {
+        throw_if_interrupted();
+        const std::size_t end = std::min(list.size(), begin + chunk);
+        for (std::size_t i = begin; i < end; ++i) f(list[i]);
+    }
+}
+
+} // namespace
 
 void check_gamma(double gamma, const std::string& what)
 {
@@ -273,8 +291,8 @@ Eigen::MatrixXcd Dispersion::matrix(const Eigen::Vector3d& kappa) const
 std::vector<double> Dispersion::omega2(const Eigen::Vector3d& kappa) const
 {
     // Every search calls this: at a large k one call sums millions of neighbours, and the
-    // searches between two checks of their own make thousands of calls.
-    throw_if_interrupted();
+    // searches between two checks of their own make thousands of calls. One site checks for a
+    // signal per chunk of neighbours; several go through matrix(), which checks too.
     if (sites() == 1) {
         // One site: A = -i S and B0 - B = T are real; a fixed-size solver, no allocation.
         Eigen::Matrix3d S3 = Eigen::Matrix3d::Zero();
@@ -283,23 +301,19 @@ std::vector<double> Dispersion::omega2(const Eigen::Vector3d& kappa) const
         Eigen::Matrix3d T = Eigen::Matrix3d::Zero();
         if (fast_phases(kappa)) {
             const auto table = cell_phases(kappa);
-            std::size_t summed = 0;
-            for (const auto& nb : neighbours_[0]) {
-                if ((++summed & 0xFFFF) == 0) throw_if_interrupted();
+            for_each_interruptible(neighbours_[0], [&](const Neighbour& nb) {
                 const auto e = phase_of(nb, table);
                 S += e.imag() * nb.gradient;
                 if (adaptive) Sh += e.imag() * nb.h_gradient;
                 T += (1 - e.real()) * nb.hessian;
-            }
+            });
         } else {
-            std::size_t summed = 0;
-            for (const auto& nb : neighbours_[0]) {
-                if ((++summed & 0xFFFF) == 0) throw_if_interrupted();
+            for_each_interruptible(neighbours_[0], [&](const Neighbour& nb) {
                 const double phase = kappa.dot(nb.x), half = std::sin(0.5 * phase);
                 S += std::sin(phase) * nb.gradient;
                 if (adaptive) Sh += std::sin(phase) * nb.h_gradient;
                 T += 2 * half * half * nb.hessian;
-            }
+            });
         }
         S3 = c_gradient_ * S * S.transpose() + c_hessian_ * T;
         if (adaptive) S3 -= c_cross_ * (S * Sh.transpose() + Sh * S.transpose());
