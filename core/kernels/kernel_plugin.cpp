@@ -169,9 +169,11 @@ private:
 
 double plugin_probe_timeout() { return plugin_timeout_seconds(); }
 
-std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
+namespace {
+
+// The layout: ABI 1 (frozen) or ABI 2 of any struct_size, read into the ABI 2 form.
+std::string normalise_descriptor(const void* raw, PluginDescriptor& out)
 {
-    out = PluginDescriptor{};
     uint32_t major = 0;
     std::memcpy(&major, raw, sizeof major);
     if (major == 1) {
@@ -193,43 +195,44 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
         f.dw = v1.dw;
         f.w_batch = v1.w_batch;
         f.dw_batch = v1.dw_batch;
-    } else if (major == SPHKERN_KERNEL_ABI_MAJOR) {
-        const auto* d = static_cast<const sphkern_kernel_descriptor*>(raw);
-        if (d->struct_size < required_v2_size || d->struct_size > 4096)
-            return "struct_size " + std::to_string(d->struct_size) + " is not a descriptor size (expected at least " +
-                   std::to_string(required_v2_size) + "; fill it with SPHKERN_DESCRIPTOR_VERSION)";
-        out.abi_major = major;
-        out.abi_minor = d->abi_minor;
-        // Only the fields the plugin's own header had: a smaller struct leaves the rest zero.
-        std::memcpy(&out.fields, raw, std::min<std::size_t>(d->struct_size, sizeof out.fields));
-    } else {
+        return {};
+    }
+    if (major != SPHKERN_KERNEL_ABI_MAJOR)
         return "ABI version " + std::to_string(major) + ", this sphkern reads versions 1 and " +
                std::to_string(SPHKERN_KERNEL_ABI_MAJOR) + " (rebuild the plugin against this sphkern)";
-    }
+    const auto* d = static_cast<const sphkern_kernel_descriptor*>(raw);
+    if (d->struct_size < required_v2_size || d->struct_size > 4096)
+        return "struct_size " + std::to_string(d->struct_size) + " is not a descriptor size (expected at least " +
+               std::to_string(required_v2_size) + "; fill it with SPHKERN_DESCRIPTOR_VERSION)";
+    out.abi_major = major;
+    out.abi_minor = d->abi_minor;
+    // Only the fields the plugin's own header had: a smaller struct leaves the rest zero.
+    std::memcpy(&out.fields, raw, std::min<std::size_t>(d->struct_size, sizeof out.fields));
+    return {};
+}
+
+// The extensions the plugin offers, each with its functions.
+std::string find_extensions(PluginDescriptor& out)
+{
     const auto* d = &out.fields;
-    if ((d->flags & ~uint32_t{SPHKERN_KERNEL_KNOWN_FLAGS}) != 0)
-        return fmt::format("flags 0x{:x} has bits this sphkern does not define (known: 0x{:x})", d->flags,
-                           SPHKERN_KERNEL_KNOWN_FLAGS);
-    if (d->get_extension) {
-        if (const void* e = d->get_extension(SPHKERN_EXTENSION_SECOND_DERIVATIVE)) {
-            out.second = static_cast<const sphkern_second_derivative*>(e);
-            if (!out.second->d2w || !out.second->d2w_batch) return "the second-derivative extension has a null function";
-        }
-        if (const void* e = d->get_extension(SPHKERN_EXTENSION_FOURIER_TRANSFORM)) {
-            out.fourier = static_cast<const sphkern_fourier_transform*>(e);
-            if (!out.fourier->transform) return "the Fourier-transform extension has a null function";
-        }
-        if (const void* e = d->get_extension(SPHKERN_EXTENSION_FUSED_EVALUATION)) {
-            out.fused = static_cast<const sphkern_fused_evaluation*>(e);
-            if (!out.fused->w_dw) return "the fused-evaluation extension has a null function";
-        }
+    if (!d->get_extension) return {};
+    if (const void* e = d->get_extension(SPHKERN_EXTENSION_SECOND_DERIVATIVE)) {
+        out.second = static_cast<const sphkern_second_derivative*>(e);
+        if (!out.second->d2w || !out.second->d2w_batch) return "the second-derivative extension has a null function";
     }
-    if (!valid_identifier(d->name)) return "name must be 1 to 64 characters of [a-z0-9_]";
-    if (!valid_text(d->title) || !valid_text(d->reference)) return "title and reference must be C strings";
-    if (!std::isfinite(d->support) || d->support <= 0 || d->support > 100)
-        return "support R must be a finite number in (0, 100]";
-    if (d->dimensions == 0 || (d->dimensions & ~(SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3))) != 0)
-        return "dimensions must be a non-empty subset of 1, 2, 3";
+    if (const void* e = d->get_extension(SPHKERN_EXTENSION_FOURIER_TRANSFORM)) {
+        out.fourier = static_cast<const sphkern_fourier_transform*>(e);
+        if (!out.fourier->transform) return "the Fourier-transform extension has a null function";
+    }
+    if (const void* e = d->get_extension(SPHKERN_EXTENSION_FUSED_EVALUATION)) {
+        out.fused = static_cast<const sphkern_fused_evaluation*>(e);
+        if (!out.fused->w_dw) return "the fused-evaluation extension has a null function";
+    }
+    return {};
+}
+
+std::string check_parameters_and_breakpoints(const sphkern_kernel_descriptor* d)
+{
     if (d->parameter_count > 16 || (d->parameter_count > 0 && !d->parameters))
         return "at most 16 parameters, with a parameter array";
     for (uint32_t i = 0; i < d->parameter_count; ++i) {
@@ -247,8 +250,32 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
         if (!std::isfinite(b) || b <= 0 || b >= d->support || (i > 0 && b <= d->breakpoints[i - 1]))
             return "breakpoints must increase strictly inside (0, R)";
     }
-    if (!d->w || !d->dw || !d->w_batch || !d->dw_batch) return "a kernel function pointer is null";
+    return {};
+}
 
+// Every field but the functions' values.
+std::string validate_descriptor_fields(PluginDescriptor& out)
+{
+    const auto* d = &out.fields;
+    if ((d->flags & ~uint32_t{SPHKERN_KERNEL_KNOWN_FLAGS}) != 0)
+        return fmt::format("flags 0x{:x} has bits this sphkern does not define (known: 0x{:x})", d->flags,
+                           SPHKERN_KERNEL_KNOWN_FLAGS);
+    if (auto reason = find_extensions(out); !reason.empty()) return reason;
+    if (!valid_identifier(d->name)) return "name must be 1 to 64 characters of [a-z0-9_]";
+    if (!valid_text(d->title) || !valid_text(d->reference)) return "title and reference must be C strings";
+    if (!std::isfinite(d->support) || d->support <= 0 || d->support > 100)
+        return "support R must be a finite number in (0, 100]";
+    if (d->dimensions == 0 || (d->dimensions & ~(SPHKERN_DIM(1) | SPHKERN_DIM(2) | SPHKERN_DIM(3))) != 0)
+        return "dimensions must be a non-empty subset of 1, 2, 3";
+    if (auto reason = check_parameters_and_breakpoints(d); !reason.empty()) return reason;
+    if (!d->w || !d->dw || !d->w_batch || !d->dw_batch) return "a kernel function pointer is null";
+    return {};
+}
+
+// The functions at 61 q x 4 k in each dimension: finite, and batch equal to scalar.
+std::string probe_descriptor_functions(const PluginDescriptor& out)
+{
+    const auto* d = &out.fields;
     std::vector<double> params;
     for (uint32_t i = 0; i < d->parameter_count; ++i) params.push_back(d->parameters[i].default_value);
     const int steps = 60;
@@ -281,14 +308,30 @@ std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out)
     return {};
 }
 
+} // namespace
+
+std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out, DescriptorCheck check)
+{
+    out = PluginDescriptor{};
+    if (auto reason = normalise_descriptor(raw, out); !reason.empty()) return reason;
+    if (auto reason = validate_descriptor_fields(out); !reason.empty()) return reason;
+    return check == DescriptorCheck::with_functions ? probe_descriptor_functions(out) : std::string{};
+}
+
 namespace {
 
+// The kernel name a probe found, and whether the probe ran now, in a child (else the cache knew it).
+struct ProbeVerdict {
+    std::string name;
+    bool in_child = false;
+};
+
 // Probes the open file in a child (unless the cache knows it) and returns its kernel name.
-std::string probe_open_plugin(const PluginFile& plugin)
+ProbeVerdict probe_open_plugin(const PluginFile& plugin)
 {
     const std::string& name = plugin.name();
     auto& cache = PluginProbeCache::instance();
-    if (auto known = cache.passed(name, &plugin.status())) return *known;
+    if (auto known = cache.passed(name, &plugin.status())) return {*known, false};
 
     spdlog::debug("probing {}", name);
     auto verdict = run_isolated(
@@ -308,19 +351,34 @@ std::string probe_open_plugin(const PluginFile& plugin)
     const auto& answer = std::get<std::string>(verdict);
     if (answer.empty() || answer[0] != '+') throw Error(ExitCode::plugin, answer);
     if (plugin.unchanged()) cache.record(name, answer.substr(1), &plugin.status());
-    return answer.substr(1);
+    return {answer.substr(1), true};
+}
+
+// The name the cache gave is not the descriptor's (a cache copied or edited by hand), while the
+// file is the one probed: the host has just validated the whole descriptor, so the entry heals.
+bool heal_cached_name(const PluginFile& opened, const ProbeVerdict& probe, const std::string& kernel_name)
+{
+    if (probe.in_child || probe.name == kernel_name || !opened.unchanged()) return false;
+    spdlog::debug("the plugin probe cache named {} kernel {}, its descriptor says {}: entry replaced", opened.name(),
+                  printable_text(probe.name), kernel_name);
+    auto& cache = PluginProbeCache::instance();
+    cache.record(opened.name(), kernel_name, &opened.status());
+    cache.save();
+    return true;
 }
 
 } // namespace
 
-std::string probe_kernel_plugin(const std::filesystem::path& file) { return probe_open_plugin(PluginFile(file)); }
+std::string probe_kernel_plugin(const std::filesystem::path& file) { return probe_open_plugin(PluginFile(file)).name; }
 
 std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
 {
     PluginFile opened(file);
     const std::string& name = opened.name();
-    const std::string kernel_name = probe_open_plugin(opened);
-    // The constructors, the entry and the descriptor's probe points run here too: guarded.
+    const ProbeVerdict probe = probe_open_plugin(opened);
+    const std::string& kernel_name = probe.name;
+    // The constructors and the entry run here too, guarded; the functions' probe points run
+    // once per load: here only if the child did not already run them on this same open file.
     const PluginCall loading(name, kernel_name, "its constructors or entry function");
     std::shared_ptr<boost::dll::shared_library> library;
     PluginDescriptor descriptor;
@@ -329,11 +387,13 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
         PluginCallGuard in(loading);
         library = open_library(opened.loader_path(), name);
         opened.keep();
-        reason = read_kernel_descriptor(call_entry(*library, name), descriptor);
+        reason = read_kernel_descriptor(call_entry(*library, name), descriptor,
+                                        probe.in_child ? DescriptorCheck::fields : DescriptorCheck::with_functions);
     }
     if (!reason.empty()) throw Error(ExitCode::plugin, name + ": invalid kernel descriptor: " + reason);
     // Probe and load read one open file; written to in between, it is not used.
-    if (!opened.unchanged() || kernel_name != descriptor.fields.name) {
+    if (!opened.unchanged() ||
+        (kernel_name != descriptor.fields.name && !heal_cached_name(opened, probe, descriptor.fields.name))) {
         PluginProbeCache::instance().forget(name);
         PluginProbeCache::instance().save();
         throw Error(ExitCode::plugin, name + ": the plugin changed while it was loaded; run again");

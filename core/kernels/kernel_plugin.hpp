@@ -22,10 +22,15 @@ struct PluginDescriptor {
     const sphkern_fused_evaluation* fused = nullptr;
 };
 
-// Reads what a plugin's entry function returned into `out`; returns an empty string if
-// the descriptor is usable, else why not. Calls the plugin's functions at probe points,
-// so run it where a crash cannot hurt.
-std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out);
+// How much of a descriptor to check: its fields only, or also its functions' values at the
+// probe points (61 q x 4 k in each dimension), which runs plugin code.
+enum class DescriptorCheck { fields, with_functions };
+
+// Reads what a plugin's entry function returned into `out` (layout, then fields, then the
+// functions); returns an empty string if the descriptor is usable, else why not. With the
+// functions it calls plugin code, so run it where a crash cannot hurt.
+std::string read_kernel_descriptor(const void* raw, PluginDescriptor& out,
+                                   DescriptorCheck check = DescriptorCheck::with_functions);
 
 // Validates a plugin file in a child process (unless the probe cache knows the unchanged
 // file) and returns its kernel name. Throws Error(plugin) naming the file and the reason.

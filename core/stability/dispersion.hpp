@@ -38,7 +38,8 @@ struct DispersionModes {
 
 class Dispersion {
 public:
-    // Throws Error(input) for gamma <= 0, a kernel without the lattice's dimension, or a
+    // Throws Error(input) for gamma <= 0, a kernel without the lattice's dimension, a neighbour
+    // list over max_dispersion_neighbours (stability_budget.hpp), or a
     // multi-site lattice whose sites are not an equilibrium with one pressure (different
     // SPH densities, or a non-zero first moment at a site).
     // Adaptive h also refuses a site whose h-derivative of the first moment does not vanish.
@@ -92,6 +93,21 @@ private:
     bool fast_phases(const Eigen::Vector3d& kappa) const;
     std::vector<std::complex<double>> cell_phases(const Eigen::Vector3d& kappa) const; // per axis, from cell_min_
     std::complex<double> phase_of(const Neighbour& nb, const std::vector<std::complex<double>>& table) const;
+
+    // The constructor's steps, in order.
+    struct SiteSums {
+        double density = 0, Z = 0, Z2 = 0; // Z, Z2: site 0 only, with adaptive h
+        Eigen::Vector3d first = Eigen::Vector3d::Zero(), first_h = Eigen::Vector3d::Zero();
+    };
+    void check_inputs(const Kernel& kernel, const Lattice& lattice, double k, double gamma) const;
+    void list_neighbours(const Kernel& kernel, const Lattice& lattice, int s, SiteSums& sums,
+                         std::array<int, 3>& cell_max);
+    Neighbour neighbour_at(const Eigen::Vector3d& x, int s, int t, const Eigen::Matrix3d& to_cells, double dw,
+                           double d2w, std::array<int, 3>& cell_max);
+    void check_site_at_rest(const Lattice& lattice, int s, const SiteSums& sums) const;
+    void sum_long_wave_moments();
+    void check_one_density(const Lattice& lattice, const std::vector<double>& densities) const;
+    void set_coefficients(double Z, double Z2);
 
     std::vector<std::vector<Neighbour>> neighbours_; // per site
     Eigen::Matrix3d basis_;

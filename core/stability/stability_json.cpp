@@ -3,6 +3,7 @@
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/results_json.hpp"
 #include "stability/dispersion_path.hpp"
+#include "stability/stability_budget.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "stability/zone_minimum.hpp"
@@ -108,6 +109,7 @@ nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice,
 nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int grid,
                                   int threads, double horizon, HModel h_model)
 {
+    check_stability_work("the stability zone scan", kernel, lattice, k, k, 0, grid);
     const Dispersion dispersion(kernel, lattice, k, gamma, h_model);
     const auto reciprocal = reciprocal_lattice(lattice);
     const auto scan = scan_brillouin_zone(dispersion, reciprocal, grid, threads);
@@ -192,6 +194,7 @@ nlohmann::json dispersion_path_json(const DispersionPath& path)
 nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points,
                                         HModel h_model)
 {
+    check_dispersion_work("the dispersion path", kernel, lattice, k, points);
     const Dispersion dispersion(kernel, lattice, k, gamma, h_model);
     const auto reciprocal = reciprocal_lattice(lattice);
     auto document = header(kernel, lattice, dispersion);

@@ -109,6 +109,7 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
                                 double gamma, int grid, int threads, double horizon, HModel h_model)
 {
     check_stability_budget("the stability scan over k", steps, grid, lattice.dimension);
+    check_stability_work("the stability scan over k", kernel, lattice, k_min, k_max, steps, grid);
     const auto reciprocal = reciprocal_lattice(lattice);
     std::map<double, StabilitySample> seen; // the edges of both kinds of interval often coincide
     auto at = [&](double k) {

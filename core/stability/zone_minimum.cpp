@@ -5,6 +5,7 @@
 #include "support/interruption.hpp"
 
 #include <boost/math/tools/minima.hpp>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +107,9 @@ ZoneMinimum lowest_branch_minimum(const Dispersion& dispersion, const Reciprocal
     const auto symmetries = zone_symmetries(dispersion, reciprocal);
     ZoneMinimum result;
     Found lines;
+    spdlog::debug("zone scan: minima along the high-symmetry path");
     line_minima(dispersion, reciprocal, 2 * start, 0.5 / start, lines);
+    spdlog::debug("zone scan: the high-symmetry path searched");
     // Grids up to four times the default start (a larger start is used alone, unverified).
     const int largest = std::max(start, 4 * zone_start_grid(D));
     double previous = INFINITY;

@@ -294,6 +294,13 @@ check "relax stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status
 check "relax stopped writes no file" test -z "$(leftovers rsig.h5)"
 signal_when 'running design' INT -- design wendland_c2_shape fcc --param beta --kmin 0.5 --kmax 8
 check "design stopped by SIGINT: exit $status in $elapsed ms, $err" test $status -eq 130
+# Stability at a large k: each wave vector sums about 270000 neighbours, and the search along the
+# high-symmetry path makes some 2000 such sums before its caller checks again (at k = 60 a
+# SIGTERM took 255 s). Every sum now answers: the search itself stops, it never finishes.
+signal_when 'zone scan: minima along the high-symmetry path' TERM -- stability cubic_bspline fcc --k 20 --threads 1
+check "stability stopped by SIGTERM on the high-symmetry path: exit $status in $elapsed ms, $err" \
+    test $status -eq 130 -a -z "$(grep 'the high-symmetry path searched' "$work/signal.err")"
+check "stability stopped by SIGTERM: a hang guard of 60 s, not a speed test (took $elapsed ms)" test $elapsed -lt 60000
 # A plugin that ignores SIGINT and hangs in its probe: sphkern stops the probe itself.
 SPHKERN_PLUGIN_TIMEOUT=60 signal_when 'probing .*hangs_ignoring_sigint' INT -- kernels --plugin "$broken/hangs_ignoring_sigint.so"
 check "hanging plugin probe interrupted: exit $status in $elapsed ms, $err" test $status -eq 130
@@ -477,6 +484,31 @@ stamp=$(stat -c %y "$work/copy.so")
 cp "$work/copy.so" "$work/copy.bytes" && cat "$work/copy.bytes" >"$work/copy.so" && touch -d "$stamp" "$work/copy.so"
 check "a plugin rewritten in place with its old size and mtime is probed again" \
     test "$(probes eps nan_band fcc --k 1.2 --plugin "$work/copy.so")" -eq 1
+# New content in place, same size, same inode, mtime set back (touch -r): probed again, and
+# refused for what it now says (its name patched to an invalid one).
+touch -r "$work/copy.so" "$work/copy.stamp" && before=$(stat -c '%s %Y %i' "$work/copy.so")
+python3 -c "
+import sys; f = open(sys.argv[1], 'r+b'); d = f.read(); assert d.count(b'\0nan_band\0') == 1
+f.seek(d.index(b'\0nan_band\0') + 1); f.write(b'nan_bAnd')" "$work/copy.so"
+touch -r "$work/copy.stamp" "$work/copy.so"
+check "the patched plugin keeps size, mtime and inode" test "$(stat -c '%s %Y %i' "$work/copy.so")" = "$before"
+patched=$("$sphkern" --log-level debug eps nan_band fcc --k 1.2 --plugin "$work/copy.so" 2>&1 >/dev/null)
+status=$?
+check "patched in place: probed again and refused for its new name: exit $status, $(grep -v 'debug:' <<<"$patched")" \
+    test $status -eq 4 -a "$(grep -c 'debug: probing .*copy.so' <<<"$patched")" -eq 1 -a \
+    -n "$(grep 'copy.so: invalid kernel descriptor: name must be 1 to 64 characters' <<<"$patched")"
+# A cache entry with a wrong name for an unchanged file (a cache copied or edited): the load
+# validates the whole descriptor and the entry heals; before, every run failed until the file changed.
+cp "$broken/nan_band.so" "$work/heal.so"
+expect 0 '^$' -- eps nan_band fcc --k 1.2 --plugin "$work/heal.so"
+python3 -c "
+import json, sys; p = sys.argv[1]; c = json.load(open(p))
+[e.update(name='cubic_bspline') for k, e in c['plugins'].items() if k.endswith('/heal.so')]
+json.dump(c, open(p, 'w'))" "$work/cache/sphkern/plugin-probes.json"
+expect 0 '^$' -- eps nan_band fcc --k 1.2 --plugin "$work/heal.so"
+check "the wrong cached name is replaced by the descriptor's" python3 -c "
+import json; c = json.load(open('$work/cache/sphkern/plugin-probes.json'))
+assert [e['name'] for k, e in c['plugins'].items() if k.endswith('/heal.so')] == ['nan_band'], c"
 printf '{"format": "sphkern' >"$work/cache/sphkern/plugin-probes.json"
 expect 0 '^$' -- eps cubic_bspline fcc --k 1.2
 check "a corrupt cache is rewritten" python3 -c "import json; json.load(open('$work/cache/sphkern/plugin-probes.json'))"
@@ -701,6 +733,29 @@ expect 3 'the stability scan over k asks for k samples x wave vectors = 12806400
     stability cubic_bspline fcc --kmin 0.8 --kmax 1.6 --steps 2000 --grid 400
 expect 3 'the stability scan over k asks for k samples x wave vectors = 320160000, more than the limit of 100000000' -- \
     stability cubic_bspline triangular --kmin 0.8 --kmax 1.6 --steps 2000 --grid 400
+# Stability counts its neighbour sums before it lists a neighbour: neighbours within the support
+# (the ball of radius R k over the volume per site, 1/sqrt(2) on fcc: 4/3 pi 120^3 sqrt(2) =
+# 10236402.3 at k = 60)
+# times the first grid's wave vectors (8^3 = 512 in 3D, or the path's points), at most 5e8; and at
+# most 4e6 neighbours are listed for one k (about 170 bytes each).
+expect 3 'the stability zone scan asks for neighbours x wave vectors = 5241037973, more than the limit of 500000000; make it smaller' -- \
+    stability cubic_bspline fcc --k 60 --gamma 1e-6
+expect 3 'the stability zone scan asks for neighbours x wave vectors = 5241037973, more than the limit of 500000000' -- \
+    stability cubic_bspline fcc --k 60 --json
+expect 3 'the stability zone scan asks for neighbours x wave vectors = 5241037973, more than the limit of 500000000' -- \
+    stability cubic_bspline fcc --k 1.2 --grid 400
+expect 3 'stability at k = 100 asks for neighbours within the support = 47390752, more than the limit of 4000000' -- \
+    stability cubic_bspline fcc --k 100 --wavevector 1,0,0
+expect 3 'the dispersion path asks for neighbours x wave vectors = 1023640229, more than the limit of 500000000' -- \
+    stability cubic_bspline fcc --k 6 --path 100000
+expect 3 'the stability scan over k asks for neighbours x wave vectors = 74005410032, more than the limit of 500000000' -- \
+    stability cubic_bspline fcc --kmin 1 --kmax 100 --steps 10
+# A k so small that h^3 underflows has no neighbour and an infinite density: the scan over k
+# called it "stable" with omega^2 = 0; refused like --k 1e-300 is.
+expect 3 'k = 1e-300 is outside what this kernel and lattice fcc can be evaluated at: the SPH density is inf times rho0' -- \
+    stability cubic_bspline fcc --kmin 1e-300 --kmax 1e-299 --steps 2
+expect 3 'k = 1e-100 is outside what this kernel and lattice fcc can be evaluated at' -- \
+    stability cubic_bspline fcc --kmin 1e-100 --kmax 1e-99 --steps 2
 # A tiny gamma overflowed 2/gamma: refused, and never a non-finite omega^2.
 expect 2 '--gamma 1e-320 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- stability cubic_bspline fcc --gamma 1e-320 --k 1.2
 expect 2 '--gamma 1e-07 is not allowed' -- stability cubic_bspline fcc --gamma 1e-7 --kmin 1 --kmax 1.2
