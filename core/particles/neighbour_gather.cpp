@@ -87,6 +87,8 @@ struct Compacted {
 };
 
 // Branch-free: every point is written, and the count moves on only for those inside.
+// Without b (with_b false), the b arrays are not touched.
+template <bool with_b>
 std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
 {
     // Local copies: the compiler need not reload them after every store.
@@ -100,7 +102,8 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
         const double r2 = ex * ex + ey * ey + ez * ez;
-        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c], vb[m] = b[c];
+        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c];
+        if constexpr (with_b) vb[m] = b[c];
         at_zero += r2 == 0;
         m += r2 <= in.reach2 && r2 > 0;
     }
@@ -111,6 +114,7 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
 // Eight points at a time: compress in registers, then a full store (a compressing store to
 // memory is slow on some processors); the outputs have room for eight more.
+template <bool with_b>
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
                                                                      std::size_t& zeros)
 {
@@ -134,7 +138,8 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
         _mm512_storeu_pd(dz + m, _mm512_maskz_compress_pd(inside, ez));
         _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
         _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
-        _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
+        if constexpr (with_b)
+            _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
         m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
     }
     zeros += at_zero;
@@ -144,12 +149,13 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
 
 using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
 
+template <bool with_b>
 AppendWithin choose_append_within()
 {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    if (__builtin_cpu_supports("avx512f")) return append_within_avx512;
+    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b>;
 #endif
-    return append_within_scalar;
+    return append_within_scalar<with_b>;
 }
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
@@ -166,21 +172,126 @@ AppendWithin choose_append_within()
 
 } // namespace
 
-void gather_near(const NeighbourGrid& grid, std::size_t p, double reach2, const double* a, const double* b,
-                 const std::string& set_name, Neighbours& nb)
+void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, const std::string& set_name)
 {
-    static const AppendWithin append_within = choose_append_within();
-    RunInput in{nullptr, nullptr, nullptr, nullptr, nullptr, 0, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
-    std::size_t m = 0, zeros = 0;
-    grid.for_each_run_near(p, std::sqrt(reach2), [&](std::size_t begin, std::size_t end) {
-        in.n = end - begin;
-        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a + begin, in.b = b + begin;
-        nb.reserve(m + in.n + neighbour_lanes);
-        m = append_within(in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, m, zeros);
-    });
     if (zeros == 0) throw std::logic_error("a particle is not among its own candidates");
     if (zeros > 1) fail_duplicate(grid, p, set_name);
-    nb.reserve(m + neighbour_lanes);
+}
+
+void ClusterCandidates::reserve(std::size_t n)
+{
+    if (x.size() >= n) return;
+    const std::size_t size = std::max(n, 2 * x.size());
+    for (auto* v : {&x, &y, &z, &a, &b}) v->resize(size);
+}
+
+namespace {
+
+// The points of one run within sqrt(reach2) of the box [lo, hi], appended at m; branch-free.
+std::size_t append_near_box_scalar(const RunInput& in, const double* lo, const double* hi, ClusterCandidates& out,
+                                   std::size_t m)
+{
+    const double *__restrict x = in.x, *__restrict y = in.y, *__restrict z = in.z;
+    const double *__restrict a = in.a, *__restrict b = in.b;
+    double *__restrict ox = out.x.data(), *__restrict oy = out.y.data(), *__restrict oz = out.z.data();
+    double *__restrict oa = out.a.data(), *__restrict ob = out.b.data();
+    for (std::size_t c = 0; c < in.n; ++c) {
+        const double ex = std::max({0.0, lo[0] - x[c], x[c] - hi[0]});
+        const double ey = std::max({0.0, lo[1] - y[c], y[c] - hi[1]});
+        const double ez = std::max({0.0, lo[2] - z[c], z[c] - hi[2]});
+        ox[m] = x[c], oy[m] = y[c], oz[m] = z[c], oa[m] = a[c];
+        if (b) ob[m] = b[c];
+        m += ex * ex + ey * ey + ez * ez <= in.reach2;
+    }
+    return m;
+}
+
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+// As append_within_avx512: eight points at a time, compressed in registers, full stores
+// (the outputs have room for eight more).
+__attribute__((target("avx512f"))) std::size_t append_near_box_avx512(const RunInput& in, const double* lo,
+                                                                      const double* hi, ClusterCandidates& out,
+                                                                      std::size_t m)
+{
+    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
+    double *ox = out.x.data(), *oy = out.y.data(), *oz = out.z.data(), *oa = out.a.data(), *ob = out.b.data();
+    const __m512d zero = _mm512_setzero_pd(), reach2 = _mm512_set1_pd(in.reach2);
+    const __m512d lx = _mm512_set1_pd(lo[0]), ly = _mm512_set1_pd(lo[1]), lz = _mm512_set1_pd(lo[2]);
+    const __m512d hx = _mm512_set1_pd(hi[0]), hy = _mm512_set1_pd(hi[1]), hz = _mm512_set1_pd(hi[2]);
+    for (std::size_t c = 0; c < in.n; c += 8) {
+        const __mmask8 live = in.n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (in.n - c)) - 1);
+        const __m512d px = _mm512_maskz_loadu_pd(live, x + c), py = _mm512_maskz_loadu_pd(live, y + c);
+        const __m512d pz = _mm512_maskz_loadu_pd(live, z + c);
+        // How far outside [lo, hi] along each axis (0 inside); maskz_max, as plain max reads an
+        // undefined register that GCC 12 warns about.
+        const __mmask8 all = 0xff;
+        const __m512d ex = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lx, px)), _mm512_sub_pd(px, hx));
+        const __m512d ey = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(ly, py)), _mm512_sub_pd(py, hy));
+        const __m512d ez = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lz, pz)), _mm512_sub_pd(pz, hz));
+        const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
+        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, d2, reach2, _CMP_LE_OQ);
+        _mm512_storeu_pd(ox + m, _mm512_maskz_compress_pd(inside, px));
+        _mm512_storeu_pd(oy + m, _mm512_maskz_compress_pd(inside, py));
+        _mm512_storeu_pd(oz + m, _mm512_maskz_compress_pd(inside, pz));
+        _mm512_storeu_pd(oa + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
+        if (b) _mm512_storeu_pd(ob + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
+        m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
+    }
+    return m;
+}
+#endif
+
+using AppendNearBox = std::size_t (*)(const RunInput&, const double*, const double*, ClusterCandidates&, std::size_t);
+
+AppendNearBox choose_append_near_box()
+{
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+    if (__builtin_cpu_supports("avx512f")) return append_near_box_avx512;
+#endif
+    return append_near_box_scalar;
+}
+
+} // namespace
+
+void gather_cluster(const NeighbourGrid& grid, std::size_t bin, const double* reach, const double* a, const double* b,
+                    ClusterCandidates& out)
+{
+    static const AppendNearBox append_near_box = choose_append_near_box();
+    out.count = 0, out.reach = 0, out.with_b = b != nullptr;
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    bool any = false;
+    for (std::size_t p = grid.bin_begin(bin); p < grid.bin_begin(bin + 1); ++p) {
+        if (grid.is_ghost(p)) continue;
+        const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
+        for (int d = 0; d < 3; ++d) lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
+        out.reach = std::max(out.reach, reach[grid.source(p)]);
+        any = true;
+    }
+    if (!any) return;
+    // A hair wider than any particle's reach2: the box distance rounds no larger than r.
+    RunInput in{nullptr, nullptr, nullptr, nullptr, nullptr, 0, 0, 0, 0, out.reach * out.reach * (1 + 1e-12)};
+    std::size_t m = 0;
+    grid.for_each_run_near_box(lo, hi, out.reach, [&](std::size_t begin, std::size_t end) {
+        in.n = end - begin;
+        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a + begin;
+        in.b = b ? b + begin : nullptr;
+        out.reserve(m + in.n + neighbour_lanes);
+        m = append_near_box(in, lo, hi, out, m);
+    });
+    out.count = m;
+}
+
+void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
+                         const std::string& set_name, Neighbours& nb)
+{
+    static const AppendWithin with_b = choose_append_within<true>(), without_b = choose_append_within<false>();
+    const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.a.data(), cluster.b.data(),
+                      cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
+    nb.reserve(cluster.count + neighbour_lanes);
+    std::size_t zeros = 0;
+    const std::size_t m = (cluster.with_b ? with_b : without_b)(
+        in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, 0, zeros);
+    require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)
         nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
     nb.count = m;

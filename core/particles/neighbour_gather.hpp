@@ -33,15 +33,38 @@ struct Neighbours {
 void gather_neighbours(const NeighbourGrid& grid, std::size_t p, const std::vector<PointRun>& runs, double reach2,
                        const double* a, const double* b, const std::string& set_name, Neighbours& nb);
 
-// The fused pair loops take neighbours in groups of this many; gather_near pads to it.
+// The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
 
-// As gather_neighbours, but over the runs cut to p's support (NeighbourGrid::for_each_run_near)
-// and with r2, dx, dy, dz, a and b only (no r, no index), in one pass that keeps the points
-// inside: AVX-512 compress where the processor has it. After the `count` neighbours, up to
-// the next multiple of neighbour_lanes, entries with a = b = dx = dy = dz = 0 and r2 = reach2.
-void gather_near(const NeighbourGrid& grid, std::size_t p, double reach2, const double* a, const double* b,
-                 const std::string& set_name, Neighbours& nb);
+// The candidates shared by the particles of one bin (a cluster, as in GROMACS's cluster
+// pairs): every point within the cluster's reach (the largest support radius of its
+// particles) of the box around them, in the grid's fixed order, contiguous, so that each
+// particle's pass over them stays in L1 and the rows are cut once per bin, not per particle.
+struct ClusterCandidates {
+    std::vector<double> x, y, z, a, b; // b only when gathered with b
+    std::size_t count = 0;
+    double reach = 0;
+    bool with_b = false;
+    void reserve(std::size_t n);
+};
+
+// The candidates of bin `bin` for particles whose support radius is reach[particle] (by
+// source index), with a[j] and, unless b is null, b[j] per point. count = 0 for a bin of ghosts.
+void gather_cluster(const NeighbourGrid& grid, std::size_t bin, const double* reach, const double* a, const double* b,
+                    ClusterCandidates& out);
+
+// The neighbours of point p of the cluster's bin within sqrt(reach2), p itself left out, from
+// the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
+// the processor has it), with r2, dx, dy, dz, a and b (b not written if the cluster has none;
+// no r, no index). After the `count` neighbours, up to the next multiple of neighbour_lanes,
+// entries with a = b = dx = dy = dz = 0 and r2 = reach2. Throws Error(input) naming both ids
+// for another particle at p's position.
+void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
+                         const std::string& set_name, Neighbours& nb);
+
+// `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
+// both ids for two, std::logic_error for none.
+void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, const std::string& set_name);
 
 // q[j] = r[j] * factor.
 void scale_distances(const double* r, std::size_t n, double factor, double* q);

@@ -65,19 +65,29 @@ public:
     template <class Visit>
     void for_each_run_near(std::size_t p, double reach, Visit&& visit) const
     {
-        const double xi = x_[p], yi = y_[p], zi = z_[p];
-        const std::size_t by = bin_along(1, yi), bz = bin_along(2, zi);
+        const double at[3] = {x_[p], y_[p], z_[p]};
+        for_each_run_near_box(at, at, reach, visit);
+    }
+
+    // The same for every point of the box [lo, hi] (inside one bin across, as the points of
+    // one bin are): the rows around it, each cut along x to [lo_x - chord, hi_x + chord]
+    // with the chord of `reach` at the row's distance from the box. In a fixed order.
+    template <class Visit>
+    void for_each_run_near_box(const double* lo, const double* hi, double reach, Visit&& visit) const
+    {
+        const std::size_t by = bin_along(1, lo[1]), bz = bin_along(2, lo[2]);
         const std::size_t z0 = bz > 0 ? bz - 1 : 0, z1 = std::min(bz + 1, n_[2] - 1);
         const std::size_t y0 = by > 0 ? by - 1 : 0, y1 = std::min(by + 1, n_[1] - 1);
         for (std::size_t cz = z0; cz <= z1; ++cz) {
-            const double gz = gap(2, cz, bz, zi, reach);
+            const double gz = gap(2, cz, bz, cz < bz ? lo[2] : hi[2], reach);
             for (std::size_t cy = y0; cy <= y1; ++cy) {
-                const double gy = gap(1, cy, by, yi, reach), chord2 = reach * reach - gy * gy - gz * gz;
+                const double gy = gap(1, cy, by, cy < by ? lo[1] : hi[1], reach);
+                const double chord2 = reach * reach - gy * gy - gz * gz;
                 if (chord2 < 0) continue;
                 const double chord = std::sqrt(chord2);
                 const std::size_t row = (cz * n_[1] + cy) * n_[0];
-                visit(static_cast<std::size_t>(start_[row + bin_along(0, xi - chord)]),
-                      static_cast<std::size_t>(start_[row + bin_along(0, xi + chord) + 1]));
+                visit(static_cast<std::size_t>(start_[row + bin_along(0, lo[0] - chord)]),
+                      static_cast<std::size_t>(start_[row + bin_along(0, hi[0] + chord) + 1]));
             }
         }
     }

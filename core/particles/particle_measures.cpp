@@ -35,7 +35,7 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // The sums over one particle's neighbours, in eight lanes of partial sums added in a fixed
 // order at the end: the loop vectorises, and the result does not depend on the thread count.
-// n is a multiple of the lanes (gather_near pads with neighbours that add zero).
+// n is a multiple of the lanes (gather_from_cluster pads with neighbours that add zero).
 enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
 constexpr std::size_t lanes = neighbour_lanes;
 
@@ -51,6 +51,8 @@ SPHKERN_VECTOR_CLONES void distances(const double* __restrict r2, std::size_t n,
     for (std::size_t j = live; j < n; ++j) q[j] = inv_r[j] = 0;
 }
 
+// Without masses (m null), acc[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0.
+template <bool with_mass>
 SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const double* __restrict dy,
                                           const double* __restrict dz, const double* __restrict inv_r,
                                           const double* __restrict v, const double* __restrict m,
@@ -61,11 +63,12 @@ SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const dou
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::size_t k = base + l;
-            const double vw = v[k] * w[k], mw = m[k] * w[k];
+            const double vw = v[k] * w[k];
             // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
             const double g = -v[k] * dw[k] * inv_r[k];
             const double x = dx[k], y = dy[k], z = dz[k];
-            acc[s0][l] += vw, acc[sm][l] += mw;
+            acc[s0][l] += vw;
+            if constexpr (with_mass) acc[sm][l] += m[k] * w[k];
             acc[m1x][l] += vw * x, acc[m1y][l] += vw * y, acc[m1z][l] += vw * z;
             acc[e1x][l] += g * x, acc[e1y][l] += g * y, acc[e1z][l] += g * z;
             acc[exx][l] += g * x * x, acc[eyy][l] += g * y * y, acc[ezz][l] += g * z * z;
@@ -83,35 +86,51 @@ struct Sweep {
     const ParticleSet& set;
     const MeasureInputs& in;
     const NeighbourGrid& grid;
-    std::vector<double> volume, mass; // in point order
+    std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
+    std::vector<double> reach;        // support radius of each particle (by source index), with its edge
 
-    // One fused pass per particle: the candidates kept as they are scanned, then r, q and
-    // 1 / r, W and W' in one kernel call, and every sum, over arrays that stay in L1.
-    void measure(std::size_t p, Neighbours& nb, ParticleMeasures& out) const
+    // The candidates of a bin gathered once, then one fused pass per particle of the bin:
+    // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
+    // call, and every sum, over arrays that stay in L1.
+    void measure_bin(std::size_t b, ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    {
+        gather_cluster(grid, b, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
+        for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
+            if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
+    }
+
+    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = in.h[i], k = h / in.spacing, reach = kernel.support() * h;
-        gather_near(grid, p, reach * reach * (1 + 2 * support_edge), volume.data(), mass.data(), set.name, nb);
+        const double h = in.h[i], k = h / in.spacing;
+        gather_from_cluster(grid, cluster, p, reach[i] * reach[i], set.name, nb);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
         distances(nb.r2.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
-        neighbour_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nb.b.data(),
-                       nb.w.data(), nb.dw.data(), padded, t);
-        const double w0 = kernel.w(0, dim, k);
+        if (mass.empty())
+            neighbour_sums<false>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nullptr,
+                                  nb.w.data(), nb.dw.data(), padded, t);
+        else
+            neighbour_sums<true>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nb.b.data(),
+                                 nb.w.data(), nb.dw.data(), padded, t);
+        const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume[p] * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
-        store(i, n, h, t[s0] + volume[p] * w0, t[sm] + mass[p] * w0, m1, e1, E, out);
+        const std::optional<double> sm_total =
+            mass.empty() ? std::nullopt : std::optional<double>(t[sm] + mass[p] * w0);
+        store(i, n, h, s0_total, sm_total, m1, e1, E, out);
     }
 
-    void store(std::size_t i, std::size_t n, double h, double s0, double sm, const double* m1, const double* e1,
-               const double* E, ParticleMeasures& out) const
+    // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).
+    void store(std::size_t i, std::size_t n, double h, double s0, std::optional<double> sm, const double* m1,
+               const double* e1, const double* E, ParticleMeasures& out) const
     {
         const int dim = set.dimension;
-        const double hd = std::pow(h, dim), hd1 = hd * h;
+        const double hd = dim == 3 ? h * h * h : h * h, hd1 = hd * h; // std::pow costs more than the sums of a particle
         out.e0[i] = s0 / hd - 1;
-        out.eps_rho[i] = sm / hd / in.rho0 - 1;
+        out.eps_rho[i] = sm ? *sm / hd / in.rho0 - 1 : out.e0[i];
         for (int a = 0; a < 3; ++a) out.m1[i][static_cast<std::size_t>(a)] = m1[a] / hd / h;
         for (int a = 0; a < 3; ++a) out.e1[i][static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
         std::array<double, 6> tensor;
@@ -150,10 +169,10 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     const double h_max = *std::max_element(inputs.h.begin(), inputs.h.end());
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
     const NeighbourGrid grid(set, kernel.support() * h_max);
-    std::vector<double> mass = inputs.mass;
-    if (mass.empty())
-        for (double v : inputs.volume) mass.push_back(inputs.rho0 * v);
-    const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume), grid.gather(mass)};
+    std::vector<double> reach(inputs.h.size());
+    for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = kernel.support() * inputs.h[i] * std::sqrt(1 + 2 * support_edge);
+    const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume),
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass), std::move(reach)};
 
     ParticleMeasures out;
     const std::size_t n = set.size();
@@ -167,13 +186,13 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     ParallelFor pass;
     pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         Neighbours nb;
+        ClusterCandidates cluster;
         // The first thread's share stands for the whole: every thread has as many bins.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} bins", b - begin + 1));
-            for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
-                if (!grid.is_ghost(p)) sweep.measure(p, nb, out);
+            sweep.measure_bin(b, cluster, nb, out);
         }
     });
     out.seconds = seconds_since(t0);
