@@ -11,27 +11,13 @@
 
 namespace sphkern {
 
-// A run of candidate points [begin, end) of a bin's neighbourhood.
-struct PointRun {
-    std::size_t begin, end;
-};
-
-// The candidate runs of bin b (those that are not empty).
-void runs_of_bin(const NeighbourGrid& grid, std::size_t b, std::vector<PointRun>& runs);
-
-// One point's neighbours (x_j - x_i, r, the gathered values a_j and b_j) and room for q, W
-// and W' of a caller; the scratch of the candidates.
+// One point's neighbours (x_j - x_i, r2, r on request, the gathered values a_j and b_j) and
+// room for q, W, W' and 1 / r of a caller.
 struct Neighbours {
     std::vector<double> r2, dx, dy, dz, r, q, a, b, w, dw, inv_r;
-    std::vector<std::uint32_t> index;
     std::size_t count = 0;
     void reserve(std::size_t n);
 };
-
-// The points of `runs` within sqrt(reach2) of point p, p itself left out, with a[j] and b[j]
-// (per point). Throws Error(input) naming both ids for another particle at p's position.
-void gather_neighbours(const NeighbourGrid& grid, std::size_t p, const std::vector<PointRun>& runs, double reach2,
-                       const double* a, const double* b, const std::string& set_name, Neighbours& nb);
 
 // The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
@@ -56,7 +42,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t bin, const double* re
 // The neighbours of point p of the cluster's bin within sqrt(reach2), p itself left out, from
 // the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
 // the processor has it), with r2, dx, dy, dz, a and b (b not written if the cluster has none;
-// no r, no index). After the `count` neighbours, up to the next multiple of neighbour_lanes,
+// r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,
 // entries with a = b = dx = dy = dz = 0 and r2 = reach2. Throws Error(input) naming both ids
 // for another particle at p's position.
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
@@ -65,6 +51,9 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
 // `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
 // both ids for two, std::logic_error for none.
 void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, const std::string& set_name);
+
+// r = sqrt(r2) of the `count` neighbours.
+void fill_distances(Neighbours& nb);
 
 // q[j] = r[j] * factor.
 void scale_distances(const double* r, std::size_t n, double factor, double* q);

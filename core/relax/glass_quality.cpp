@@ -21,15 +21,17 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
     const NeighbourGrid grid(set, reach);
     const std::vector<double> zeros(grid.points(), 0.0);
+    const std::vector<double> reaches(set.size(), reach);
     ParallelFor pass;
     pass.run(grid.bins(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
-        std::vector<PointRun> runs;
+        ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            runs_of_bin(grid, b, runs);
+            gather_cluster(grid, b, reaches.data(), zeros.data(), nullptr, cluster);
             for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
                 if (!grid.is_ghost(p)) {
-                    gather_neighbours(grid, p, runs, reach * reach, zeros.data(), zeros.data(), set.name, nb);
+                    gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
+                    fill_distances(nb);
                     visit(thread, grid.source(p), nb);
                 }
         }

@@ -48,21 +48,25 @@ SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const doub
     return s;
 }
 
-// Calls visit(p, neighbours) for every particle of the set, bin by bin on `threads` threads.
+// Calls visit(p, neighbours) for every particle of the set, bin by bin on `threads` threads,
+// with the particle engine's pass: a bin's candidates gathered once, each particle's
+// neighbours kept from them (dx, dy, dz, r and a; b unless null).
 template <class Visit>
 void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const std::vector<double>& a,
-                       const std::vector<double>& b, int threads, const Visit& visit)
+                       const std::vector<double>* b, int threads, const Visit& visit)
 {
     const double reach2 = reach * reach * (1 + 2 * support_edge);
+    const std::vector<double> reaches(set.size(), std::sqrt(reach2));
     ParallelFor pass;
     pass.run(grid.bins(), threads, [&](int, std::size_t begin, std::size_t end) {
-        std::vector<PointRun> runs;
+        ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t bin = begin; bin < end && pass.keep_going(); ++bin) {
-            runs_of_bin(grid, bin, runs);
+            gather_cluster(grid, bin, reaches.data(), a.data(), b ? b->data() : nullptr, cluster);
             for (std::size_t p = grid.bin_begin(bin); p < grid.bin_begin(bin + 1); ++p) {
                 if (grid.is_ghost(p)) continue;
-                gather_neighbours(grid, p, runs, reach2, a.data(), b.data(), set.name, nb);
+                gather_from_cluster(grid, cluster, p, reach2, set.name, nb);
+                fill_distances(nb);
                 visit(p, nb);
             }
         }
@@ -77,10 +81,10 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const std::size_t n = set.size();
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
     const NeighbourGrid grid(set, reach);
-    const std::vector<double> zeros(grid.points(), 0.0);
+    const std::vector<double> none(grid.points(), 0.0);
     out.density.assign(n, 0.0);
     const double w0 = kernel.w(0, dim, model.k);
-    for_each_particle(grid, set, reach, zeros, zeros, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, none, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
@@ -97,7 +101,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
     const double scale = 1 / (hd * model.h); // W' = dW/dq: dW/dr = W' / h^(D+1)
-    for_each_particle(grid, set, reach, pi_points, zeros, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, pi_points, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
