@@ -1,9 +1,9 @@
 #include "block/block_geometry.hpp"
 
-#include "support/work_budget.hpp"
+#include "support/process/work_budget.hpp"
 
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,7 @@
 #include "analysis/site_errors.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -91,6 +92,20 @@ EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const 
     m.shell_radii = *radii;
     m.continue_past_support = mode.continues(kernel.name());
     return m;
+}
+
+// A mode's "continue_past_support" names study kernels (by name): a misspelt name
+// would otherwise silently evaluate that kernel truncated.
+void check_continued_kernels(const Study& study, const StudyMode& mode, const std::vector<Kernel>& kernels)
+{
+    std::vector<std::string> names;
+    for (const auto& kernel : kernels) names.push_back(kernel.name());
+    for (std::size_t i = 0; i < mode.continue_kernels.size(); ++i) {
+        const std::string& name = mode.continue_kernels[i];
+        if (std::find(names.begin(), names.end(), name) == names.end())
+            fail_study_input(study.file, mode.json_path + "/continue_past_support/" + std::to_string(i),
+                             "\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
+    }
 }
 
 void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
@@ -183,6 +198,7 @@ StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
     load_kernels_and_lattices(study, registry, inputs);
     resolve_lattice_values(study, inputs);
     for (const auto& mode : study.modes) {
+        check_continued_kernels(study, mode, inputs.kernels);
         auto& per_kernel = inputs.evaluation.emplace_back();
         for (const auto& kernel : inputs.kernels) per_kernel.push_back(evaluation_mode(study, mode, kernel));
     }

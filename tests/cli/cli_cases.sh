@@ -908,6 +908,9 @@ expect 0 'cases in' -- run "$work/s_key20.json" -o "$work/out_key20"
 check "shells keyed \"2.0\" give the curves of \"2\"" cmp -s "$work/out_key2/curves.csv" "$work/out_key20/curves.csv"
 study s_key_twice '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "plots": false, "modes": [{"name": "p", "shells": {"2": [1], "2.0": [1, 2]}}]}'
 expect 3 's_key_twice.json: /modes/0/shells/2.0: a second shell list for R = 2.0, expected one per R' -- run "$work/s_key_twice.json" -o "$work/out_key_twice"
+# A kernel named in continue_past_support that the study does not have (it used to be ignored).
+study s_continue '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "plots": false, "modes": [{"name": "p", "shells": {"2": [1]}, "continue_past_support": ["cubic_bsplin"]}]}'
+expect 3 's_continue.json: /modes/0/continue_past_support/0: "cubic_bsplin" is not one of the study.s kernels \(did you mean "cubic_bspline"\?\)' -- run "$work/s_continue.json" -o "$work/out_continue"
 # A volume coefficient written as text is a number all the same.
 study s_ap_text '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": ["0.75", 0.75], "k": {"samples": 21}, "plots": false}'
 expect 0 'cases in' -- run "$work/s_ap_text.json" -o "$work/out_ap_text"

@@ -5,7 +5,7 @@
 #include "relax/relaxation.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/spdlog.h>
 
