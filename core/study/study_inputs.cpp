@@ -3,6 +3,8 @@
 #include "analysis/design.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
+#include "particles/particles_memory.hpp"
+#include "particles/sources/particle_source.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
@@ -129,12 +131,29 @@ void check_source_size(const Study& study, const StudyParticleSource& s)
     });
 }
 
-// Each particle source's size, and its "relax": by the study kernel it names (its label or name).
+// Each particle source read (a bad file is refused before any section runs); all of them
+// are held at once, so their count together is bounded by the memory budget.
+void load_particle_sets(const Study& study, StudyInputs& inputs)
+{
+    std::size_t total = 0;
+    for (const auto& s : study.particles->sources) {
+        check_source_size(study, s);
+        inputs.particle_sets.push_back(at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); }));
+        total += inputs.particle_sets.back().size();
+        if (total > max_particles())
+            fail_study_input(study.file, s.json_path,
+                             "the particle sources up to this one hold " + std::to_string(total) +
+                                 " particles, more than the " + std::to_string(max_particles()) +
+                                 " the memory budget allows (three quarters of the available memory)");
+    }
+}
+
+// Each particle source's "relax": by the study kernel it names (its label or name).
 void resolve_particle_sources(const Study& study, StudyInputs& inputs)
 {
     if (!study.particles) return;
+    load_particle_sets(study, inputs);
     for (const auto& s : study.particles->sources) {
-        check_source_size(study, s);
         auto& index = inputs.relax_kernel.emplace_back();
         if (!s.relax) continue;
         const auto& k = inputs.kernels;

@@ -896,6 +896,9 @@ early_study s_early_surface '"surface": {"volume_coefficient": "voronio"}'
 expect 3 's_early_surface.json: /surface/volume_coefficient: lattice fcc has no volume coefficient "voronio" \(did you mean "voronoi"\?\)' -- run "$work/s_early_surface.json" -o "$work/out_early_surface"
 early_study s_early_size '"particles": {"sources": [{"lattice": "fcc", "size": [4, 4]}], "nh": {"min": 30, "max": 60, "steps": 1}}'
 expect 3 's_early_size.json: /particles/sources/0: size: the lattice is 3D, expected 3 cell counts' -- run "$work/s_early_size.json" -o "$work/out_early_size"
+printf 'x,y,z\n0,0,0\n0.5,nan,0\n' >"$work/early_nan.csv"
+early_study s_early_file '"particles": {"sources": [{"file": "early_nan.csv"}], "nh": {"min": 30, "max": 60, "steps": 1}}'
+expect 3 'early_nan.csv.*(y|id 1|particle 1)' -- run "$work/s_early_file.json" -o "$work/out_early_file"
 # The same with a bulk section that runs for seconds (16 x 3 cases of 40000 samples): refused first, nothing left.
 study s_early_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 40000}, "plots": false, "compare_with": "ref_early.json"}'
 expect 3 'ref_early.json: /rows/0/eps_gradp: expected a number, got a string' -- run "$work/s_early_long.json" -o "$work/out_early_long"
