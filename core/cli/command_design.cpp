@@ -1,12 +1,12 @@
 // `sphkern design`: the (k, parameter) where both bulk errors vanish together.
-#include "cli/command.hpp"
 #include "analysis/results_json.hpp"
-#include "support/results_output.hpp"
+#include "cli/command.hpp"
+#include "support/io/results_output.hpp"
 
 #include "analysis/design.hpp"
 #include "analysis/results_json.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

@@ -1,11 +1,11 @@
 // `sphkern eps`: both bulk errors of one kernel on one lattice at one k.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

@@ -1,14 +1,14 @@
 // `sphkern roots`: the k where eps_rho or eps_gradP vanish, the jumps, condition (22).
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "analysis/acceptance.hpp"
 #include "analysis/code_conventions.hpp"
 #include "analysis/resolution_axis.hpp"
+#include "analysis/results_json.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
-#include "analysis/results_json.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/recommended_k.hpp"
 #include "stability/roots_convention.hpp"
@@ -16,7 +16,7 @@
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

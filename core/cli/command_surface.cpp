@@ -1,6 +1,6 @@
 // `sphkern surface`: the error profile below a free surface, layer by layer.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "analysis/results_json.hpp"
 #include "support/error.hpp"
