@@ -205,14 +205,14 @@ AppendNearBox choose_append_near_box()
 
 } // namespace
 
-void gather_cluster(const NeighbourGrid& grid, std::size_t bin, const double* reach, const double* a, const double* b,
+void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
                     ClusterCandidates& out)
 {
     static const AppendNearBox append_near_box = choose_append_near_box();
     out.count = 0, out.reach = 0, out.with_b = b != nullptr;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
-    for (std::size_t p = grid.bin_begin(bin); p < grid.bin_begin(bin + 1); ++p) {
+    for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
         if (grid.is_ghost(p)) continue;
         const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
         for (int d = 0; d < 3; ++d) lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];

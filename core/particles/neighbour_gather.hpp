@@ -22,10 +22,10 @@ struct Neighbours {
 // The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
 
-// The candidates shared by the particles of one bin (a cluster, as in GROMACS's cluster
+// The candidates shared by the particles of one cluster of the grid (as in GROMACS's cluster
 // pairs): every point within the cluster's reach (the largest support radius of its
 // particles) of the box around them, in the grid's fixed order, contiguous, so that each
-// particle's pass over them stays in L1 and the rows are cut once per bin, not per particle.
+// particle's pass over them stays in L1 and the rows are cut once per cluster, not per particle.
 struct ClusterCandidates {
     std::vector<double> x, y, z, a, b; // b only when gathered with b
     std::size_t count = 0;
@@ -34,12 +34,12 @@ struct ClusterCandidates {
     void reserve(std::size_t n);
 };
 
-// The candidates of bin `bin` for particles whose support radius is reach[particle] (by
-// source index), with a[j] and, unless b is null, b[j] per point. count = 0 for a bin of ghosts.
-void gather_cluster(const NeighbourGrid& grid, std::size_t bin, const double* reach, const double* a, const double* b,
+// The candidates of cluster c for particles whose support radius is reach[particle] (by
+// source index), with a[j] and, unless b is null, b[j] per point. count = 0 for a cluster of ghosts.
+void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
                     ClusterCandidates& out);
 
-// The neighbours of point p of the cluster's bin within sqrt(reach2), p itself left out, from
+// The neighbours of point p of the cluster within sqrt(reach2), p itself left out, from
 // the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
 // the processor has it), with r2, dx, dy, dz, a and b (b not written if the cluster has none;
 // r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,

@@ -89,13 +89,13 @@ struct Sweep {
     std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
     std::vector<double> reach;        // support radius of each particle (by source index), with its edge
 
-    // The candidates of a bin gathered once, then one fused pass per particle of the bin:
+    // The candidates of a cluster gathered once, then one fused pass per particle of it:
     // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
     // call, and every sum, over arrays that stay in L1.
-    void measure_bin(std::size_t b, ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
     {
-        gather_cluster(grid, b, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
-        for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
+        gather_cluster(grid, c, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
+        for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
     }
 
@@ -182,17 +182,17 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
-    // Bin by bin (in cell order, so that neighbouring particles share their candidates in cache).
+    // Cluster by cluster (in cell order, so that neighbouring clusters share their candidates in cache).
     ParallelFor pass;
-    pass.run(grid.bins(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
+    pass.run(grid.clusters(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         Neighbours nb;
         ClusterCandidates cluster;
-        // The first thread's share stands for the whole: every thread has as many bins.
+        // The first thread's share stands for the whole: every thread has as many clusters.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} bins", b - begin + 1));
-            sweep.measure_bin(b, cluster, nb, out);
+            if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} clusters", b - begin + 1));
+            sweep.measure_cluster(b, cluster, nb, out);
         }
     });
     out.seconds = seconds_since(t0);

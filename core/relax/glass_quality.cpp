@@ -23,12 +23,12 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
     const std::vector<double> zeros(grid.points(), 0.0);
     const std::vector<double> reaches(set.size(), reach);
     ParallelFor pass;
-    pass.run(grid.bins(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
+    pass.run(grid.clusters(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             gather_cluster(grid, b, reaches.data(), zeros.data(), nullptr, cluster);
-            for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p)
+            for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p)
                 if (!grid.is_ghost(p)) {
                     gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
                     fill_distances(nb);

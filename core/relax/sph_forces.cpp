@@ -48,8 +48,8 @@ SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const doub
     return s;
 }
 
-// Calls visit(p, neighbours) for every particle of the set, bin by bin on `threads` threads,
-// with the particle engine's pass: a bin's candidates gathered once, each particle's
+// Calls visit(p, neighbours) for every particle of the set, cluster by cluster on `threads` threads,
+// with the particle engine's pass: a cluster's candidates gathered once, each particle's
 // neighbours kept from them (dx, dy, dz, r and a; b unless null).
 template <class Visit>
 void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const std::vector<double>& a,
@@ -58,12 +58,12 @@ void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double
     const double reach2 = reach * reach * (1 + 2 * support_edge);
     const std::vector<double> reaches(set.size(), std::sqrt(reach2));
     ParallelFor pass;
-    pass.run(grid.bins(), threads, [&](int, std::size_t begin, std::size_t end) {
+    pass.run(grid.clusters(), threads, [&](int, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t bin = begin; bin < end && pass.keep_going(); ++bin) {
             gather_cluster(grid, bin, reaches.data(), a.data(), b ? b->data() : nullptr, cluster);
-            for (std::size_t p = grid.bin_begin(bin); p < grid.bin_begin(bin + 1); ++p) {
+            for (std::size_t p = grid.cluster_begin(bin); p < grid.cluster_end(bin); ++p) {
                 if (grid.is_ghost(p)) continue;
                 gather_from_cluster(grid, cluster, p, reach2, set.name, nb);
                 fill_distances(nb);

@@ -429,7 +429,7 @@ TEST_CASE("the runs cut to a point's support hold every point within it once, ab
         }
 }
 
-TEST_CASE("a bin's shared candidates hold, once each, every point within each of its particles' support")
+TEST_CASE("a cluster's shared candidates hold, once each, every point within each of its particles' support")
 {
     for (int dim : {2, 3})
         for (bool periodic : {true, false}) {
@@ -446,11 +446,11 @@ TEST_CASE("a bin's shared candidates hold, once each, every point within each of
             ClusterCandidates cluster;
             Neighbours nb;
             std::size_t checked = 0, wrong = 0, neighbours = 0;
-            for (std::size_t b = 0; b < grid.bins(); ++b) {
+            for (std::size_t b = 0; b < grid.clusters(); ++b) {
                 gather_cluster(grid, b, reaches.data(), ids.data(), nullptr, cluster);
                 std::vector<int> seen(grid.points(), 0);
                 for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
-                for (std::size_t p = grid.bin_begin(b); p < grid.bin_begin(b + 1); ++p) {
+                for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
                     if (grid.is_ghost(p)) continue;
                     const double r = reaches[grid.source(p)];
                     gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
