@@ -1,6 +1,6 @@
 #include "analysis/acceptance.hpp"
 
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "analysis/design.hpp"
 
 #include "analysis/roots.hpp"
-#include "support/interruption.hpp"
 #include "support/error.hpp"
+#include "support/process/interruption.hpp"
 
 #include <Eigen/SVD>
 #include <boost/math/tools/toms748_solve.hpp>

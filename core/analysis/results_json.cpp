@@ -1,7 +1,6 @@
 #include "analysis/results_json.hpp"
 
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -67,64 +66,6 @@ nlohmann::json surface_json(const SurfaceProfile& profile)
             {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
                       {"neighbours", profile.bulk.neighbours}, {"sites", sites_json(profile.bulk.sites)}}},
             {"first_moments", first}};
-}
-
-void check_k_interval(double k_min, double k_max, const std::string& what)
-{
-    check_k_interval(k_min, k_max, ValueSource::argument(what));
-}
-
-nlohmann::json kernel_json(const KernelDefinition& p)
-{
-    nlohmann::json parameters = nlohmann::json::array();
-    for (const auto& q : p.parameters)
-        parameters.push_back({{"name", q.name}, {"description", q.description}, {"default", q.default_value},
-                              {"min", q.min_value}, {"max", q.max_value}});
-    return {{"name", p.name}, {"title", p.title}, {"support", p.support}, {"dimensions", p.dimensions},
-            {"parameters", parameters}, {"breakpoints", p.breakpoints}, {"separate_derivative", p.separate_derivative},
-            {"reference", p.reference}, {"file", p.source}};
-}
-
-nlohmann::json lattice_json(const Lattice& l)
-{
-    nlohmann::json coefficients = nlohmann::json::object();
-    for (const auto& c : l.volume_coefficients) coefficients[c.name] = c.value;
-    std::vector<double> gravity(l.gravity.data(), l.gravity.data() + l.dimension);
-    return {{"name", l.name},   {"title", l.title},
-            {"dimension", l.dimension}, {"sites", l.sites()},
-            {"volume_coefficients", coefficients}, {"gravity", gravity}, {"file", l.file}};
-}
-
-nlohmann::json lattice_description_json(const Lattice& lattice, double radius)
-{
-    auto document = lattice_json(lattice);
-    document["nearest_neighbour_distance"] = 1.0;
-    document["nearest_neighbour_distance_in_file_units"] = lattice.file_nearest_distance;
-    nlohmann::json sites = nlohmann::json::array();
-    for (int s = 0; s < lattice.sites(); ++s) {
-        const Eigen::Vector3d& m = lattice.motif[static_cast<std::size_t>(s)];
-        const Eigen::Vector3d x = lattice.basis * m;
-        sites.push_back({{"site", s},
-                         {"fractional", std::vector<double>(m.data(), m.data() + lattice.dimension)},
-                         {"position", std::vector<double>(x.data(), x.data() + lattice.dimension)},
-                         {"shells", shells_json(lattice, s, radius, lattice.gravity)["shells"]}});
-    }
-    document["shells_radius"] = radius;
-    document["site_details"] = sites;
-    return document;
-}
-
-nlohmann::json shells_json(const Lattice& lattice, int site, double radius, const Eigen::Vector3d& e)
-{
-    auto shells = lattice_shells(lattice, site, radius);
-    nlohmann::json list = nlohmann::json::array();
-    int total = 0;
-    for (const auto& s : shells) {
-        total += s.count;
-        list.push_back({{"radius", s.radius}, {"radius_squared", s.radius * s.radius}, {"count", s.count},
-                        {"cumulative", total}, {"gravity_moment", s.directional_moment(e)}});
-    }
-    return {{"lattice", lattice.name}, {"site", site}, {"radius", radius}, {"shells", list}};
 }
 
 nlohmann::json roots_json(const Kernel& kernel, const Lattice& lattice, double a_p, double k_min, double k_max,

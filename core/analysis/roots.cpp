@@ -1,6 +1,6 @@
 #include "analysis/roots.hpp"
 
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <boost/math/tools/toms748_solve.hpp>
 

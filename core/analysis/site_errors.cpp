@@ -1,7 +1,7 @@
 #include "analysis/site_errors.hpp"
 
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <cmath>
 

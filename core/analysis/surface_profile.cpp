@@ -1,11 +1,11 @@
 #include "analysis/surface_profile.hpp"
 
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
-#include "lattices/lattice_points.hpp"
 #include "kernels/kernel_validity.hpp"
+#include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <algorithm>
 #include <cmath>

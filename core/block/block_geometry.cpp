@@ -1,9 +1,9 @@
 #include "block/block_geometry.hpp"
 
-#include "support/work_budget.hpp"
+#include "support/process/work_budget.hpp"
 
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,49 +29,34 @@ std::size_t checked_block_size(const Lattice& lattice, const BlockOptions& optio
     return static_cast<std::size_t>(total);
 }
 
-BlockGeometry place_particles(const Lattice& lattice, const BlockOptions& options, BlockResult& result)
+namespace {
+
+// The highest particle sits in the top cell layer: the maximum height over the motif.
+double top_height(const Lattice& lattice, long long vertical, const Eigen::Vector3d& gravity)
 {
     const int dim = lattice.dimension;
-    const int sites = lattice.sites();
-    const long double total = static_cast<long double>(checked_block_size(lattice, options));
-    BlockGeometry geometry;
-    const long long size[3] = {options.cells[0], options.cells[1], options.cells[2]};
-    const long long n1 = size[0], n2 = size[1], n3 = size[2];
-    geometry.size[0] = n1, geometry.size[1] = n2, geometry.size[2] = n3;
-    const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3), count = static_cast<std::size_t>(total);
-    geometry.cells = cells;
-    geometry.count = count;
-    // Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
-    // so that a row of cells is a contiguous run for every site.
-    // Every per-particle array is first touched by the thread that fills it.
-    result.x = HugeArray<double>(count);
-    result.y = HugeArray<double>(count);
-    result.z = HugeArray<double>(count);
-    result.layer = HugeArray<int>(count);
-    result.eps_rho = HugeArray<double>(count);
-    result.eps_gradp = HugeArray<double>(count);
-    geometry.depth = HugeArray<double>(count);
-    auto& depth = geometry.depth;
-    double* x = result.x.data();
-    double* y = result.y.data();
-    double* z = result.z.data();
-    // The highest particle sits in the top cell layer: the maximum height over the motif.
     double top = -INFINITY;
     for (const auto& m : lattice.motif)
-        for (long long corner : {0LL, size[dim - 1] - 1}) {
+        for (long long corner : {0LL, vertical - 1}) {
             Eigen::Vector3d index = Eigen::Vector3d::Zero();
             index[dim - 1] = static_cast<double>(corner);
-            top = std::max(top, -result.gravity.dot(lattice.basis * (index + m)));
+            top = std::max(top, -gravity.dot(lattice.basis * (index + m)));
         }
-    // The layers are the occupied planes, top first, ranked by depth (several sites may share
-    // one, and planes need not be equally spaced): the plane of (vertical cell, site).
-    const long long vertical = size[dim - 1];
+    return top;
+}
+
+// The layers are the occupied planes, top first, ranked by depth (several sites may share
+// one, and planes need not be equally spaced): the rank of the plane of (vertical cell, site),
+// indexed by vertical cell * sites + site.
+std::vector<int> plane_ranks(const Lattice& lattice, long long vertical, double top, const Eigen::Vector3d& gravity)
+{
+    const int dim = lattice.dimension, sites = lattice.sites();
     std::vector<std::pair<double, std::size_t>> plane_depths; // depth, vertical cell * sites + site
     for (long long c = 0; c < vertical; ++c)
         for (int s = 0; s < sites; ++s) {
             Eigen::Vector3d index = Eigen::Vector3d::Zero();
             index[dim - 1] = static_cast<double>(c);
-            plane_depths.emplace_back(top + result.gravity.dot(lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)])),
+            plane_depths.emplace_back(top + gravity.dot(lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)])),
                                       static_cast<std::size_t>(c * sites + s));
         }
     std::sort(plane_depths.begin(), plane_depths.end());
@@ -81,6 +66,44 @@ BlockGeometry place_particles(const Lattice& lattice, const BlockOptions& option
         if (i > 0 && plane_depths[i].first - plane_depths[i - 1].first > 1e-9) ++rank;
         plane_of[plane_depths[i].second] = rank;
     }
+    return plane_of;
+}
+
+// Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
+// so that a row of cells is a contiguous run for every site. Every per-particle array is
+// allocated here and first touched by the thread that fills it.
+void allocate_particles(std::size_t count, BlockGeometry& geometry, BlockResult& result)
+{
+    result.x = HugeArray<double>(count);
+    result.y = HugeArray<double>(count);
+    result.z = HugeArray<double>(count);
+    result.layer = HugeArray<int>(count);
+    result.eps_rho = HugeArray<double>(count);
+    result.eps_gradp = HugeArray<double>(count);
+    geometry.depth = HugeArray<double>(count);
+}
+
+} // namespace
+
+BlockGeometry place_particles(const Lattice& lattice, const BlockOptions& options, BlockResult& result)
+{
+    const int dim = lattice.dimension;
+    const int sites = lattice.sites();
+    const std::size_t count = checked_block_size(lattice, options);
+    BlockGeometry geometry;
+    const long long n1 = options.cells[0], n2 = options.cells[1], n3 = options.cells[2];
+    geometry.size[0] = n1, geometry.size[1] = n2, geometry.size[2] = n3;
+    const std::size_t cells = static_cast<std::size_t>(n1 * n2 * n3);
+    geometry.cells = cells;
+    geometry.count = count;
+    allocate_particles(count, geometry, result);
+    const long long vertical = geometry.size[dim - 1];
+    const double top = top_height(lattice, vertical, result.gravity);
+    const std::vector<int> plane_of = plane_ranks(lattice, vertical, top, result.gravity);
+    double* x = result.x.data();
+    double* y = result.y.data();
+    double* z = result.z.data();
+    double* depth = geometry.depth.data();
     ParallelFor fill;
     fill.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {

@@ -1,7 +1,7 @@
 #include "block/block_sweep.hpp"
 
 #include "analysis/gradient_form.hpp"
-#include "support/parallel_for.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
 
@@ -83,7 +83,7 @@ std::size_t sweep_block(const Kernel& kernel, const CellList& cells, const Block
 {
     const int dim = parameters.dimension;
     const double k = parameters.k, inv_k = 1 / k, kd = std::pow(k, dim), kd1 = kd * k;
-    const double reach = kernel.support() * k, reach2 = reach * reach * (1 + 1e-12);
+    const double reach = kernel.support() * k, reach2 = reach * reach * (1 + 2 * support_edge);
     const GradientForm form = parameters.form;
     const double self = kernel.w(0, dim, k);
     const int sites = result.sites;

@@ -1,5 +1,6 @@
 #include "block/cell_list.hpp"
 
+#include "kernels/kernel.hpp"
 #include "support/error.hpp"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ std::vector<Eigen::Vector3i> make_stencil(const Lattice& lattice, double reach, 
     if (cells > 1e6)
         fail_input("the block's cells are too skewed for a support of " + std::to_string(reach) +
                    " d: the neighbour stencil would search " + std::to_string(cells) + " cells");
-    const double reach2 = reach * reach * (1 + 1e-12);
+    const double reach2 = reach * reach * (1 + 2 * support_edge); // (1 + support_edge) squared, as the lattice sums
     // Offsets into one neighbour row of cells follow each other: that row stays in cache.
     for (int c = -range[2]; c <= range[2]; ++c)
         for (int b = -range[1]; b <= range[1]; ++b)

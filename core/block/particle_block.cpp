@@ -5,8 +5,8 @@
 #include "block/cell_list.hpp"
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
-#include "support/value_checks.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

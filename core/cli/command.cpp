@@ -1,10 +1,10 @@
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
-#include "support/error.hpp"
-#include "support/provenance.hpp"
 #include "study/study_provenance.hpp"
-#include "support/value_checks.hpp"
+#include "support/error.hpp"
+#include "support/io/provenance.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

@@ -7,8 +7,8 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "requests/evaluation_inputs.hpp"
-#include "support/output_targets.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/output_targets.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

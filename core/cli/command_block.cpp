@@ -1,13 +1,13 @@
 // `sphkern block`: direct SPH sums over a finite block of particles.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "block/particle_block.hpp"
-#include "support/atomic_file.hpp"
-#include "support/output_targets.hpp"
-#include "support/chunked_writer.hpp"
-#include "support/vtk_points.hpp"
 #include "support/error.hpp"
+#include "support/io/atomic_file.hpp"
+#include "support/io/chunked_writer.hpp"
+#include "support/io/output_targets.hpp"
+#include "support/io/vtk_points.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

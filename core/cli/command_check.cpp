@@ -1,6 +1,6 @@
 // `sphkern check`: the kernel author's check-up, run in a child process.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "kernels/kernel_check.hpp"
 #include "support/error.hpp"

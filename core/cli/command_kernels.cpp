@@ -1,7 +1,7 @@
 // `sphkern kernels`: the kernels sphkern can find, with their metadata.
 #include "cli/command.hpp"
-#include "analysis/results_json.hpp"
-#include "support/results_output.hpp"
+#include "kernels/kernel_json.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

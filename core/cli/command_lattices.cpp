@@ -1,8 +1,8 @@
 // `sphkern lattices`: the shipped lattices, their volume coefficients and gravity, and the examples.
 #include "cli/command.hpp"
-#include "analysis/results_json.hpp"
-#include "support/install_paths.hpp"
-#include "support/results_output.hpp"
+#include "lattices/lattice_json.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

@@ -4,7 +4,7 @@
 
 #include "relax/relax_report.hpp"
 #include "support/error.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include <memory>
 

@@ -5,10 +5,10 @@
 
 #include "particles/particle_report.hpp"
 #include "particles/particles_memory.hpp"
-#include "support/atomic_file.hpp"
-#include "support/output_targets.hpp"
 #include "support/error.hpp"
-#include "support/results_output.hpp"
+#include "support/io/atomic_file.hpp"
+#include "support/io/output_targets.hpp"
+#include "support/io/results_output.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -7,9 +7,9 @@
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relax_report.hpp"
-#include "support/atomic_file.hpp"
 #include "support/error.hpp"
-#include "support/results_output.hpp"
+#include "support/io/atomic_file.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 // `sphkern run`: a study (default: the paper's) into a results folder, complete or not at all.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "study/gnuplot.hpp"
 #include "study/plots.hpp"
@@ -8,12 +8,12 @@
 #include "study/reproduce.hpp"
 #include "study/results_writer.hpp"
 #include "study/study_runner.hpp"
-#include "support/chunked_writer.hpp"
 #include "support/error.hpp"
-#include "support/file_spec.hpp"
-#include "support/install_paths.hpp"
-#include "support/json_input.hpp"
-#include "support/output_folder.hpp"
+#include "support/io/chunked_writer.hpp"
+#include "support/io/file_spec.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
+#include "support/io/output_folder.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

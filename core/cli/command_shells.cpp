@@ -1,7 +1,7 @@
 // `sphkern shells`: the neighbour shells of a lattice site.
 #include "cli/command.hpp"
-#include "analysis/results_json.hpp"
-#include "support/results_output.hpp"
+#include "lattices/lattice_json.hpp"
+#include "support/io/results_output.hpp"
 
 #include "lattices/shells.hpp"
 

@@ -1,7 +1,7 @@
 // `sphkern spectrum`: the Fourier transform of a kernel against kappa h, with its
 // minimum and first zero.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "kernels/kernel_spectrum.hpp"
 #include "support/error.hpp"

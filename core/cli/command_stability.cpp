@@ -2,14 +2,14 @@
 // wave vector, or the Brillouin-zone scan with the long-wave sound speeds.
 #include "cli/command.hpp"
 #include "requests/stability_request.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "stability/brillouin_zone.hpp"
 #include "stability/stability_json.hpp"
 #include "stability/stability_over_k.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

@@ -1,9 +1,9 @@
 // `sphkern studies`: the shipped studies, each with its title and what it runs.
 #include "cli/command.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
-#include "support/install_paths.hpp"
-#include "support/json_input.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
 

@@ -1,9 +1,9 @@
 // sphkern: accuracy of SPH smoothing kernels on regular particle lattices.
 #include "cli/command.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/provenance.hpp"
-#include "support/results_output.hpp"
+#include "support/io/provenance.hpp"
+#include "support/io/results_output.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>

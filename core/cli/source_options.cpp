@@ -2,8 +2,8 @@
 
 #include "cli/command.hpp"
 #include "support/error.hpp"
-#include "support/sha256.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/sha256.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <cmath>
 #include <optional>

@@ -1,10 +1,10 @@
 #include "kernels/expression_kernel.hpp"
 
-#include "support/printable_text.hpp"
+#include "support/text/printable_text.hpp"
 
 #include "support/error.hpp"
-#include "support/json_input.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/json_input.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <muParser.h>

@@ -3,8 +3,8 @@
 #include "kernels/fourier_transform.hpp"
 #include "kernels/second_derivative.hpp"
 #include "support/error.hpp"
-#include "support/json_input.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/json_input.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <cmath>
 #include <sstream>

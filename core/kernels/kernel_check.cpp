@@ -6,7 +6,7 @@
 #include "kernels/kernel_spectrum.hpp"
 #include "kernels/second_derivative.hpp"
 #include "support/error.hpp"
-#include "support/isolated_call.hpp"
+#include "support/process/isolated_call.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 

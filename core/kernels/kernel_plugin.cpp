@@ -1,17 +1,17 @@
 #include "kernels/kernel_plugin.hpp"
 
-#include "support/printable_text.hpp"
-#include "support/resource_errors.hpp"
+#include "support/process/resource_errors.hpp"
+#include "support/text/printable_text.hpp"
 
 #include "kernels/plugin_file.hpp"
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/isolated_call.hpp"
-#include "support/plugin_call_guard.hpp"
-#include "support/plugin_watchdog.hpp"
-#include "support/results_output.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/results_output.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/isolated_call.hpp"
+#include "support/process/plugin_call_guard.hpp"
+#include "support/process/plugin_watchdog.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <spdlog/spdlog.h>
 

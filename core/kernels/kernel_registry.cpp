@@ -1,17 +1,17 @@
 #include "kernels/kernel_registry.hpp"
 
-#include "support/resource_errors.hpp"
+#include "support/process/resource_errors.hpp"
 
 #include "kernels/expression_kernel.hpp"
 #include "kernels/kernel_blend.hpp"
 #include "kernels/plugin_probe_cache.hpp"
 #include "support/error.hpp"
-#include "support/file_spec.hpp"
-#include "support/install_paths.hpp"
-#include "support/interruption.hpp"
-#include "support/json_input.hpp"
-#include "support/parallel_for.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/file_spec.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <spdlog/spdlog.h>
 

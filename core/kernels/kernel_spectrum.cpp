@@ -1,6 +1,6 @@
 #include "kernels/kernel_spectrum.hpp"
 
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>

@@ -1,7 +1,7 @@
 #include "kernels/plugin_file.hpp"
 
 #include "support/error.hpp"
-#include "support/resource_errors.hpp"
+#include "support/process/resource_errors.hpp"
 
 #include <cerrno>
 #include <cstring>

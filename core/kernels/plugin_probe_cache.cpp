@@ -1,7 +1,7 @@
 #include "kernels/plugin_probe_cache.hpp"
 
-#include "support/atomic_file.hpp"
-#include "support/json_input.hpp"
+#include "support/io/atomic_file.hpp"
+#include "support/io/json_input.hpp"
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>

@@ -1,14 +1,14 @@
 #include "lattices/lattice.hpp"
 
-#include "support/printable_text.hpp"
+#include "support/text/printable_text.hpp"
 
-#include "support/file_spec.hpp"
 #include "lattices/lattice_points.hpp"
 #include "lattices/numeric_inputs.hpp"
 #include "support/error.hpp"
-#include "support/install_paths.hpp"
-#include "support/json_input.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/file_spec.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <algorithm>
 #include <cmath>

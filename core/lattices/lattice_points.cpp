@@ -1,8 +1,8 @@
 #include "lattices/lattice_points.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/work_budget.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/work_budget.hpp"
 
 #include <fmt/format.h>
 

@@ -2,8 +2,8 @@
 
 #include "lattices/lattice_points.hpp"
 #include "support/error.hpp"
-#include "support/work_budget.hpp"
-#include "support/value_checks.hpp"
+#include "support/process/work_budget.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

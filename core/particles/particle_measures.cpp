@@ -3,8 +3,8 @@
 #include "kernels/kernel_validity.hpp"
 #include "particles/neighbour_gather.hpp"
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
-#include "support/progress.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/process/progress.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
 

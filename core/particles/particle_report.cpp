@@ -1,7 +1,7 @@
 #include "particles/particle_report.hpp"
 
-#include "support/chunked_writer.hpp"
-#include "support/vtk_points.hpp"
+#include "support/io/chunked_writer.hpp"
+#include "support/io/vtk_points.hpp"
 
 #include <fmt/format.h>
 

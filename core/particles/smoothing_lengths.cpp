@@ -1,7 +1,7 @@
 #include "particles/smoothing_lengths.hpp"
 
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

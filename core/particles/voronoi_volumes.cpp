@@ -4,7 +4,7 @@
 #include "particles/particle_volumes.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <fmt/format.h>
 #include <voro++/voro++.hh>

@@ -6,7 +6,7 @@
 #include "particles/particle_report.hpp"
 #include "particles/particle_set.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>

@@ -11,6 +11,8 @@
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
+#include "kernels/kernel_json.hpp"
+#include "lattices/lattice_json.hpp"
 #include "particles_binding.hpp"
 #include "python_arrays.hpp"
 #include "kernels/kernel.hpp"
@@ -28,9 +30,9 @@
 #include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
 #include "support/error.hpp"
-#include "support/install_paths.hpp"
-#include "support/interruption.hpp"
-#include "support/value_checks.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/process/interruption.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

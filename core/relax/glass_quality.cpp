@@ -2,7 +2,7 @@
 
 #include "particles/neighbour_gather.hpp"
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 

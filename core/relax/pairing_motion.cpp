@@ -8,7 +8,7 @@
 #include "stability/mode_kind.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

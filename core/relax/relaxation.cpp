@@ -1,8 +1,8 @@
 #include "relax/relaxation.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/progress.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/progress.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

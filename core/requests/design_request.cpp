@@ -1,6 +1,6 @@
 #include "requests/design_request.hpp"
 
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #include "requests/eps_request.hpp"
 
 #include "support/error.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

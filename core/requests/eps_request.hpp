@@ -8,7 +8,7 @@
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "requests/evaluation_inputs.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 

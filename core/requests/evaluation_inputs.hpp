@@ -5,7 +5,7 @@
 
 #include "analysis/hydrostatic_errors.hpp"
 #include "lattices/lattice.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <Eigen/Core>
 

@@ -6,7 +6,7 @@
 #include "stability/roots_convention.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

@@ -10,7 +10,7 @@
 #include "lattices/lattice.hpp"
 #include "requests/evaluation_inputs.hpp"
 #include "stability/roots_stability.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 

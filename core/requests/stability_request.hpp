@@ -6,7 +6,7 @@
 #include "lattices/lattice.hpp"
 #include "stability/h_model.hpp"
 #include "stability/stability_scan.hpp"
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 

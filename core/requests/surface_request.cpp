@@ -1,7 +1,7 @@
 #include "requests/surface_request.hpp"
 
 #include "analysis/results_json.hpp"
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
 

@@ -4,8 +4,8 @@
 #include "lattices/lattice_points.hpp"
 #include "stability/stability_budget.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/value_checks.hpp"
+#include "support/process/interruption.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

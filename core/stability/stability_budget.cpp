@@ -1,7 +1,7 @@
 #include "stability/stability_budget.hpp"
 
 #include "stability/zone_minimum.hpp"
-#include "support/work_budget.hpp"
+#include "support/process/work_budget.hpp"
 
 #include <fmt/format.h>
 

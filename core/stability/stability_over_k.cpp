@@ -3,7 +3,7 @@
 #include "stability/stability_budget.hpp"
 
 #include "stability/brillouin_zone.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include "stability/zone_grid.hpp"
 
-#include "support/parallel_for.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <boost/math/tools/minima.hpp>
 

@@ -2,7 +2,7 @@
 
 #include "stability/zone_polish.hpp"
 #include "stability/zone_symmetry.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <boost/math/tools/minima.hpp>
 #include <spdlog/spdlog.h>

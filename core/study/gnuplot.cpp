@@ -1,8 +1,8 @@
 #include "study/gnuplot.hpp"
 
-#include "support/child_process.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/child_process.hpp"
+#include "support/process/interruption.hpp"
 
 #include <fmt/format.h>
 

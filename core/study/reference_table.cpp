@@ -1,7 +1,7 @@
 #include "study/reference_table.hpp"
 
 #include "support/error.hpp"
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <algorithm>
 

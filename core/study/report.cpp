@@ -1,11 +1,11 @@
 #include "study/report.hpp"
 
-#include "study/particles_outputs.hpp"
 #include "analysis/code_conventions.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "stability/recommended_k.hpp"
-#include "support/install_paths.hpp"
-#include "support/provenance.hpp"
+#include "study/particles_outputs.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/provenance.hpp"
 
 #include <filesystem>
 

@@ -1,6 +1,6 @@
 #include "study/reproduce.hpp"
 
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
 

@@ -2,10 +2,10 @@
 
 #include "analysis/code_conventions.hpp"
 #include "analysis/results_json.hpp"
-#include "study/particles_outputs.hpp"
 #include "stability/stability_json.hpp"
-#include "support/chunked_writer.hpp"
-#include "support/provenance.hpp"
+#include "study/particles_outputs.hpp"
+#include "support/io/chunked_writer.hpp"
+#include "support/io/provenance.hpp"
 
 #include <cmath>
 

@@ -1,17 +1,17 @@
 #include "study/study.hpp"
 
 #include "study/study_error.hpp"
-#include "support/printable_text.hpp"
+#include "support/text/printable_text.hpp"
 
 #include "analysis/results_json.hpp"
 #include "analysis/surface_profile.hpp"
-#include "support/error.hpp"
-#include "support/file_spec.hpp"
-#include "support/install_paths.hpp"
-#include "support/json_input.hpp"
-#include "support/value_checks.hpp"
-#include "support/work_budget.hpp"
 #include "stability/stability_budget.hpp"
+#include "support/error.hpp"
+#include "support/io/file_spec.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
+#include "support/process/work_budget.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

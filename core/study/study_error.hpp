@@ -3,7 +3,7 @@
 // ValueSource::json).
 #pragma once
 
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <string>
 #include <utility>

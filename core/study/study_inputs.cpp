@@ -3,8 +3,11 @@
 #include "analysis/design.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
+#include "particles/particles_memory.hpp"
+#include "particles/sources/particle_source.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -93,6 +96,20 @@ EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const 
     return m;
 }
 
+// A mode's "continue_past_support" names study kernels (by name): a misspelt name
+// would otherwise silently evaluate that kernel truncated.
+void check_continued_kernels(const Study& study, const StudyMode& mode, const std::vector<Kernel>& kernels)
+{
+    std::vector<std::string> names;
+    for (const auto& kernel : kernels) names.push_back(kernel.name());
+    for (std::size_t i = 0; i < mode.continue_kernels.size(); ++i) {
+        const std::string& name = mode.continue_kernels[i];
+        if (std::find(names.begin(), names.end(), name) == names.end())
+            fail_study_input(study.file, mode.json_path + "/continue_past_support/" + std::to_string(i),
+                             "\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
+    }
+}
+
 void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
 {
     for (const auto& sweep : study.sweeps)
@@ -114,12 +131,29 @@ void check_source_size(const Study& study, const StudyParticleSource& s)
     });
 }
 
-// Each particle source's size, and its "relax": by the study kernel it names (its label or name).
+// Each particle source read (a bad file is refused before any section runs); all of them
+// are held at once, so their count together is bounded by the memory budget.
+void load_particle_sets(const Study& study, StudyInputs& inputs)
+{
+    std::size_t total = 0;
+    for (const auto& s : study.particles->sources) {
+        check_source_size(study, s);
+        inputs.particle_sets.push_back(at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); }));
+        total += inputs.particle_sets.back().size();
+        if (total > max_particles())
+            fail_study_input(study.file, s.json_path,
+                             "the particle sources up to this one hold " + std::to_string(total) +
+                                 " particles, more than the " + std::to_string(max_particles()) +
+                                 " the memory budget allows (three quarters of the available memory)");
+    }
+}
+
+// Each particle source's "relax": by the study kernel it names (its label or name).
 void resolve_particle_sources(const Study& study, StudyInputs& inputs)
 {
     if (!study.particles) return;
+    load_particle_sets(study, inputs);
     for (const auto& s : study.particles->sources) {
-        check_source_size(study, s);
         auto& index = inputs.relax_kernel.emplace_back();
         if (!s.relax) continue;
         const auto& k = inputs.kernels;
@@ -183,6 +217,7 @@ StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
     load_kernels_and_lattices(study, registry, inputs);
     resolve_lattice_values(study, inputs);
     for (const auto& mode : study.modes) {
+        check_continued_kernels(study, mode, inputs.kernels);
         auto& per_kernel = inputs.evaluation.emplace_back();
         for (const auto& kernel : inputs.kernels) per_kernel.push_back(evaluation_mode(study, mode, kernel));
     }

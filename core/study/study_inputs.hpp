@@ -1,13 +1,14 @@
 // A study's inputs, resolved and checked once before any section computes: its kernels and
 // lattices loaded, each lattice's a_p and sites, each mode's evaluation per kernel, the
-// sweep kernels, the windows in k, the kernels that relax particle sources and the
-// reference table matched to the cases. Errors name the study file and the JSON Pointer of
+// sweep kernels, the windows in k, the particle sets read from their sources, the kernels
+// that relax them and the reference table matched to the cases. Errors name the study file and the JSON Pointer of
 // the entry at fault.
 #pragma once
 
 #include "analysis/hydrostatic_errors.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "particles/particle_set.hpp"
 #include "study/study.hpp"
 
 #include <map>
@@ -26,6 +27,7 @@ struct StudyInputs {
     std::vector<std::vector<EvaluationMode>> evaluation; // [mode][kernel]
     std::vector<double> surface_a_p;                     // [lattice], with a surface section
     std::vector<Kernel> sweep_kernels;                   // [sweep]
+    std::vector<ParticleSet> particle_sets;               // [particle source], as loaded (before any relaxation)
     std::vector<std::optional<std::size_t>> relax_kernel; // [particle source]: the kernel that relaxes it
     std::optional<ReferenceTable> reference;             // matched to the study's cases
 

@@ -1,7 +1,7 @@
 #include "study/study_particles.hpp"
 
 #include "support/error.hpp"
-#include "support/file_spec.hpp"
+#include "support/io/file_spec.hpp"
 
 #include <fmt/format.h>
 

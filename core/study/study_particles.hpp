@@ -5,7 +5,7 @@
 #include "particles/particle_analysis.hpp"
 #include "particles/sources/particle_source.hpp"
 #include "relax/relax_settings.hpp"
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -1,8 +1,8 @@
 #include "study/study_provenance.hpp"
 
-#include "analysis/results_json.hpp"
-#include "support/json_input.hpp"
-#include "support/sha256.hpp"
+#include "lattices/lattice_json.hpp"
+#include "support/io/json_input.hpp"
+#include "support/io/sha256.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -16,7 +16,7 @@ if(NOT BUILD_TYPE)
 endif()
 file(WRITE "${OUTPUT}.in" [=[
 // Written by share/cmake/BuildInfo.cmake at build time.
-#include "support/build_info.hpp"
+#include "support/io/build_info.hpp"
 
 namespace sphkern::build_info {
 

@@ -896,6 +896,9 @@ early_study s_early_surface '"surface": {"volume_coefficient": "voronio"}'
 expect 3 's_early_surface.json: /surface/volume_coefficient: lattice fcc has no volume coefficient "voronio" \(did you mean "voronoi"\?\)' -- run "$work/s_early_surface.json" -o "$work/out_early_surface"
 early_study s_early_size '"particles": {"sources": [{"lattice": "fcc", "size": [4, 4]}], "nh": {"min": 30, "max": 60, "steps": 1}}'
 expect 3 's_early_size.json: /particles/sources/0: size: the lattice is 3D, expected 3 cell counts' -- run "$work/s_early_size.json" -o "$work/out_early_size"
+printf 'x,y,z\n0,0,0\n0.5,nan,0\n' >"$work/early_nan.csv"
+early_study s_early_file '"particles": {"sources": [{"file": "early_nan.csv"}], "nh": {"min": 30, "max": 60, "steps": 1}}'
+expect 3 'early_nan.csv.*(y|id 1|particle 1)' -- run "$work/s_early_file.json" -o "$work/out_early_file"
 # The same with a bulk section that runs for seconds (16 x 3 cases of 40000 samples): refused first, nothing left.
 study s_early_long '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic", "liu_quartic", "wendland_c4"], "lattices": ["fcc", "bcc", "sc", "hcp"], "volume_coefficients": ["voronoi", "ball", "cube"], "k": {"samples": 40000}, "plots": false, "compare_with": "ref_early.json"}'
 expect 3 'ref_early.json: /rows/0/eps_gradp: expected a number, got a string' -- run "$work/s_early_long.json" -o "$work/out_early_long"
@@ -908,6 +911,9 @@ expect 0 'cases in' -- run "$work/s_key20.json" -o "$work/out_key20"
 check "shells keyed \"2.0\" give the curves of \"2\"" cmp -s "$work/out_key2/curves.csv" "$work/out_key20/curves.csv"
 study s_key_twice '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "plots": false, "modes": [{"name": "p", "shells": {"2": [1], "2.0": [1, 2]}}]}'
 expect 3 's_key_twice.json: /modes/0/shells/2.0: a second shell list for R = 2.0, expected one per R' -- run "$work/s_key_twice.json" -o "$work/out_key_twice"
+# A kernel named in continue_past_support that the study does not have (it used to be ignored).
+study s_continue '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["triangular"], "plots": false, "modes": [{"name": "p", "shells": {"2": [1]}, "continue_past_support": ["cubic_bsplin"]}]}'
+expect 3 's_continue.json: /modes/0/continue_past_support/0: "cubic_bsplin" is not one of the study.s kernels \(did you mean "cubic_bspline"\?\)' -- run "$work/s_continue.json" -o "$work/out_continue"
 # A volume coefficient written as text is a number all the same.
 study s_ap_text '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": ["0.75", 0.75], "k": {"samples": 21}, "plots": false}'
 expect 0 'cases in' -- run "$work/s_ap_text.json" -o "$work/out_ap_text"

@@ -3,7 +3,7 @@
 #include "lattices/lattice.hpp"
 #include "lattices/shells.hpp"
 #include "support/error.hpp"
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <cstddef>
 #include <cstdint>

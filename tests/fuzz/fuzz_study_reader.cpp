@@ -1,7 +1,7 @@
 // libFuzzer harness: any bytes as a study file (parsing and validation, no run).
 #include "study/study.hpp"
 #include "support/error.hpp"
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <cstddef>
 #include <cstdint>

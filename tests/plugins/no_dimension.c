@@ -1,34 +1,4 @@
 /* A deliberately broken kernel plugin for the loader tests: no supported dimension */
-#include <math.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return 1.0 - q * q;
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return -2.0 * q;
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
-    .name = "no_dimension",
-    .title = "broken",
-    .reference = "",
-    .support = 1.0,
-    .dimensions = 0u,
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#define PARABOLA_NAME "no_dimension"
+#define PARABOLA_DIMENSIONS 0u
+#include "parabola_plugin.h"

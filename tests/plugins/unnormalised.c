@@ -1,34 +1,4 @@
 /* A deliberately broken kernel plugin for the loader tests: valid but not normalised (check must fail it) */
-#include <math.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return q <= 1.0 ? 1.0 - q * q : 0.0;
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return -2.0 * q;
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
-    .name = "unnormalised",
-    .title = "broken",
-    .reference = "",
-    .support = 1.0,
-    .dimensions = SPHKERN_DIM(2),
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#define PARABOLA_NAME "unnormalised"
+#define PARABOLA_W_BODY(q) return q <= 1.0 ? 1.0 - q * q : 0.0;
+#include "parabola_plugin.h"

@@ -3,8 +3,8 @@
 #include "analysis/acceptance.hpp"
 #include "analysis/roots.hpp"
 #include "helpers.hpp"
-#include "support/install_paths.hpp"
-#include "support/json_input.hpp"
+#include "support/io/install_paths.hpp"
+#include "support/io/json_input.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 // Text from plugins and data files: valid UTF-8 kept, invalid bytes replaced, controls shown.
-#include "support/printable_text.hpp"
+#include "support/text/printable_text.hpp"
 
 #include <doctest/doctest.h>
 

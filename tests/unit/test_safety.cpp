@@ -1,11 +1,11 @@
 // The safety rules of the support layer: JSON duplicates and pointers, the parallel
 // executor's error handling, output folders that never replace what sphkern did not write.
 #include "support/error.hpp"
-#include "support/json_input.hpp"
-#include "support/output_folder.hpp"
-#include "support/parallel_for.hpp"
-#include "support/plugin_call_guard.hpp"
-#include "support/work_budget.hpp"
+#include "support/io/json_input.hpp"
+#include "support/io/output_folder.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/process/plugin_call_guard.hpp"
+#include "support/process/work_budget.hpp"
 
 #include <doctest/doctest.h>
 

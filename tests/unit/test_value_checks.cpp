@@ -1,5 +1,5 @@
 // The one set of input validators: each refusal names its source and keeps its exit code.
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 #include "particles/formats/particle_writers.hpp"
 
-#include "support/atomic_file.hpp"
 #include "support/error.hpp"
+#include "support/io/atomic_file.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>

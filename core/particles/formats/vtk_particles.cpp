@@ -6,7 +6,7 @@
 
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
 

@@ -2,8 +2,8 @@
 #include "study/sections/sections.hpp"
 
 #include "analysis/site_errors.hpp"
-#include "support/interruption.hpp"
-#include "support/progress.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/progress.hpp"
 
 #include <algorithm>
 #include <cmath>

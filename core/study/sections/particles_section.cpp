@@ -5,7 +5,7 @@
 #include "relax/relaxation.hpp"
 #include "study/study_error.hpp"
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -13,11 +13,6 @@
 namespace sphkern {
 
 namespace {
-
-ParticleSet load_source(const Study& study, const StudyParticleSource& s)
-{
-    return at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); });
-}
 
 // The source relaxed by the study kernel it names (resolved with the study's inputs).
 ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticleSource& s, ParticleSet set)
@@ -65,9 +60,11 @@ void run_particles_section(const Study& study, const StudyInputs& inputs, StudyR
     if (!study.particles) return;
     const auto& sources = study.particles->sources;
     for (std::size_t i = 0; i < sources.size(); ++i) {
-        ParticleSet set = load_source(study, sources[i]);
-        if (const auto kernel = inputs.relax_kernel[i]) set = relaxed(study, inputs.kernels[*kernel], sources[i], std::move(set));
-        analyse_source(study, inputs, sources[i], set, results);
+        if (const auto kernel = inputs.relax_kernel[i])
+            analyse_source(study, inputs, sources[i], relaxed(study, inputs.kernels[*kernel], sources[i], inputs.particle_sets[i]),
+                           results);
+        else
+            analyse_source(study, inputs, sources[i], inputs.particle_sets[i], results);
     }
 }
 

@@ -6,8 +6,8 @@
 #include "stability/brillouin_zone.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
-#include "support/parallel_for.hpp"
-#include "support/progress.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/process/progress.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -2,7 +2,7 @@
 #include "study/sections/sections.hpp"
 
 #include "study/study_error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 namespace sphkern {
 

@@ -1,4 +1,4 @@
-#include "support/output_targets.hpp"
+#include "support/io/output_targets.hpp"
 
 #include "support/error.hpp"
 

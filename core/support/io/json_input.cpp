@@ -1,8 +1,8 @@
-#include "support/json_input.hpp"
+#include "support/io/json_input.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/value_checks.hpp"
+#include "support/process/interruption.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <algorithm>
 #include <cerrno>

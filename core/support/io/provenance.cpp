@@ -1,6 +1,6 @@
-#include "support/provenance.hpp"
+#include "support/io/provenance.hpp"
 
-#include "support/build_info.hpp"
+#include "support/io/build_info.hpp"
 
 #include <ctime>
 #include <fstream>

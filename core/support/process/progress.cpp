@@ -1,4 +1,4 @@
-#include "support/progress.hpp"
+#include "support/process/progress.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

@@ -1,9 +1,9 @@
-#include "support/plugin_watchdog.hpp"
+#include "support/process/plugin_watchdog.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/plugin_call_guard.hpp"
-#include "support/plugin_faults.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/plugin_call_guard.hpp"
+#include "support/process/plugin_faults.hpp"
 
 #include <spdlog/spdlog.h>
 

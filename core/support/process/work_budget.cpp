@@ -1,4 +1,4 @@
-#include "support/work_budget.hpp"
+#include "support/process/work_budget.hpp"
 
 #include "support/error.hpp"
 

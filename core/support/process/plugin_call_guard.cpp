@@ -1,7 +1,7 @@
-#include "support/plugin_call_guard.hpp"
+#include "support/process/plugin_call_guard.hpp"
 
-#include "support/plugin_faults.hpp"
-#include "support/printable_text.hpp"
+#include "support/process/plugin_faults.hpp"
+#include "support/text/printable_text.hpp"
 
 #include <atomic>
 #include <csignal>

@@ -1,4 +1,4 @@
-#include "support/resource_errors.hpp"
+#include "support/process/resource_errors.hpp"
 
 #include "support/error.hpp"
 

@@ -1,7 +1,7 @@
-#include "support/child_process.hpp"
+#include "support/process/child_process.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/spdlog.h>
 

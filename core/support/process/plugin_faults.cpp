@@ -1,8 +1,8 @@
-#include "support/plugin_faults.hpp"
+#include "support/process/plugin_faults.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
-#include "support/plugin_call_guard.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/plugin_call_guard.hpp"
 
 #include <cstdlib>
 #include <cstring>

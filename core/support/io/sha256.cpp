@@ -1,4 +1,4 @@
-#include "support/sha256.hpp"
+#include "support/io/sha256.hpp"
 
 #include "support/error.hpp"
 

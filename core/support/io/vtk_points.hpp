@@ -2,7 +2,7 @@
 // start of their point data. The caller adds its SCALARS and VECTORS after it.
 #pragma once
 
-#include "support/chunked_writer.hpp"
+#include "support/io/chunked_writer.hpp"
 
 #include <cstddef>
 

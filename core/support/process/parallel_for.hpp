@@ -5,7 +5,7 @@
 #pragma once
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,7 @@
-#include "support/atomic_file.hpp"
+#include "support/io/atomic_file.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "support/file_spec.hpp"
+#include "support/io/file_spec.hpp"
 
 namespace sphkern {
 

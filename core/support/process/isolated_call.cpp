@@ -1,8 +1,8 @@
-#include "support/isolated_call.hpp"
+#include "support/process/isolated_call.hpp"
 
-#include "support/resource_errors.hpp"
+#include "support/process/resource_errors.hpp"
 
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <algorithm>
 #include <cerrno>

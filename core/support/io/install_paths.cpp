@@ -1,4 +1,4 @@
-#include "support/install_paths.hpp"
+#include "support/io/install_paths.hpp"
 
 #include <system_error>
 

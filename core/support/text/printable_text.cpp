@@ -1,4 +1,4 @@
-#include "support/printable_text.hpp"
+#include "support/text/printable_text.hpp"
 
 namespace sphkern {
 

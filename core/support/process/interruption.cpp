@@ -1,8 +1,8 @@
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include "support/error.hpp"
-#include "support/plugin_faults.hpp"
-#include "support/plugin_watchdog.hpp"
+#include "support/process/plugin_faults.hpp"
+#include "support/process/plugin_watchdog.hpp"
 
 #include <atomic>
 #include <csignal>

@@ -1,4 +1,4 @@
-#include "support/value_checks.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 

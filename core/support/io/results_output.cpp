@@ -1,4 +1,4 @@
-#include "support/results_output.hpp"
+#include "support/io/results_output.hpp"
 
 #include "support/error.hpp"
 

@@ -1,7 +1,7 @@
-#include "support/output_folder.hpp"
+#include "support/io/output_folder.hpp"
 
 #include "support/error.hpp"
-#include "support/interruption.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/spdlog.h>
 
