@@ -1,11 +1,14 @@
-// The typed requests of eps, roots, surface and design: each refusal names its source (the command line's
+// The typed requests of eps, roots, surface, design, spectrum, check and block: each refusal names its source (the command line's
 // option or Python's argument) and keeps its exit code; a good request's result equals an
 // independent brute-force lattice sum.
 #include "helpers.hpp"
 
+#include "requests/block_request.hpp"
+#include "requests/check_request.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/roots_request.hpp"
+#include "requests/spectrum_request.hpp"
 #include "requests/surface_request.hpp"
 
 #include <doctest/doctest.h>
@@ -293,4 +296,123 @@ TEST_CASE("design request: a bad window is refused naming it; each solution is a
         CHECK(std::abs(brute.eps_rho) < 1e-9);
         CHECK(std::abs(brute.eps_gradp) < 1e-9);
     }
+}
+
+namespace {
+
+const SpectrumSources spectrum_options{ValueSource::option("--dim"), ValueSource::option("--k"),
+                                       ValueSource::option("--max"), ValueSource::option("--points")};
+
+SpectrumRequest spectrum_in(int dimension)
+{
+    SpectrumRequest r;
+    r.dimension = dimension;
+    return r;
+}
+
+} // namespace
+
+TEST_CASE("spectrum request: each value out of range is refused naming its option")
+{
+    auto dimension = refusal([] { check_spectrum_request(spectrum_in(4), spectrum_options); });
+    CHECK(dimension.first == "--dim 4, expected 1 to 3");
+    CHECK(dimension.second == ExitCode::usage);
+    auto points = spectrum_in(3);
+    points.points = 0;
+    CHECK(refusal([&] { check_spectrum_request(points, spectrum_options); }).first == "--points 0, expected 1 to 100000");
+    auto kh_max = spectrum_in(3);
+    kh_max.kh_max = std::numeric_limits<double>::quiet_NaN();
+    CHECK(refusal([&] { check_spectrum_request(kh_max, spectrum_options); }).first == "--max nan, expected 0.1 to 1000");
+    auto k = spectrum_in(3);
+    k.k = 200;
+    CHECK(refusal([&] { check_spectrum_request(k, spectrum_options); }).first == "--k 200, expected 0.001 to 100");
+    CHECK(refusal([] { run_spectrum(spectrum_in(3), spectrum_options, test::shipped_kernel("composite")); }).first ==
+          "kernel composite is defined in 2D only, not on the 3D lattice (--dim 3)");
+}
+
+TEST_CASE("spectrum request: the cubic B-spline's 1D transform is sinc^4(kappa h / 2)")
+{
+    // Four boxes of width h convolved: each transforms to sin(kappa h / 2) / (kappa h / 2).
+    auto request = spectrum_in(1);
+    request.kh_max = 20;
+    request.points = 40;
+    check_spectrum_request(request, spectrum_options);
+    const auto result = run_spectrum(request, spectrum_options, test::shipped_kernel("cubic_bspline"));
+    REQUIRE(result.curve.size() == 41);
+    for (const auto& [kh, value] : result.curve) {
+        CAPTURE(kh);
+        const double x = kh / 2, sinc = x == 0 ? 1 : std::sin(x) / x;
+        CHECK(value == doctest::Approx(std::pow(sinc, 4)).epsilon(1e-6).scale(1));
+    }
+    // Its minimum, 0, is touched (not crossed) at every multiple of 2 pi.
+    CHECK(result.summary.minimum == doctest::Approx(0).scale(1).epsilon(1e-9));
+    CHECK(std::abs(std::remainder(result.summary.at, 2 * M_PI)) < 1e-3);
+}
+
+TEST_CASE("check request: nothing to check is refused; the verdict is a status, strict counts a warning")
+{
+    auto nothing = refusal([] { check_check_request(CheckRequest{}); });
+    CHECK(nothing.first == "check: name a kernel, give --plugin FILE, or use --all");
+    CHECK(nothing.second == ExitCode::usage);
+    CheckRequest slow;
+    slow.names = {"cubic_bspline"};
+    slow.timeout = 0;
+    CHECK(refusal([&] { check_check_request(slow); }).first == "check: timeout 0 s, expected 0.1 to 3600");
+    CHECK(check_status_named("warn") == CheckStatus::warn);
+    CHECK(std::string(check_status_name(CheckStatus::fail)) == "fail");
+    CHECK(refusal([] { check_status_named("fine"); }).second == ExitCode::plugin);
+    CheckRequest request;
+    request.names = {"cubic_bspline", "super_gaussian"};
+    check_check_request(request);
+    auto registry = check_registry(request);
+    const auto kernels = kernels_to_check(request, registry);
+    REQUIRE(kernels.size() == 2);
+    const auto fine = run_check(request, kernels[0]);
+    CHECK(fine.verdict == CheckStatus::ok);
+    CHECK(fine.document["verdict"] == "ok");
+    CHECK_FALSE(check_fails(fine, true));
+    // The 2D super-Gaussian's second moment is negative: a warning.
+    const auto warned = run_check(request, kernels[1]);
+    CHECK(warned.verdict == CheckStatus::warn);
+    CHECK_FALSE(check_fails(warned, false));
+    CHECK(check_fails(warned, true));
+}
+
+TEST_CASE("block request: sizes are refused naming the option; deep inside a periodic block the errors are the bulk's")
+{
+    const BlockSources sources{ValueSource::option("--size 10,10"), ValueSource::option("--threads")};
+    const auto kernel = test::shipped_kernel("cubic_bspline");
+    BlockRequest request;
+    request.k = 1.2;
+    request.cells = {1, 2, 3, 4};
+    CHECK(refusal([&] { check_block_request(request, sources); }).first == "--size 10,10: expected N1,N2[,N3] integers");
+    request.cells = {10, 10};
+    check_block_request(request, sources);
+    auto dimension = refusal([&] { run_block(request, sources, kernel, load_lattice("fcc")); });
+    CHECK(dimension.first == "--size 10,10: the lattice is 3D, give 3 sizes");
+    CHECK(dimension.second == ExitCode::usage);
+    request.threads = -1;
+    CHECK(refusal([&] { check_block_request(request, sources); }).first == "--threads -1, expected 0 to 1024");
+    // sc, layers d apart, support 2.4 d: layers 3 to 6 of 10 see complete neighbourhoods.
+    const auto lattice = load_lattice("sc");
+    request = BlockRequest{};
+    request.k = 1.2;
+    request.cells = {8, 8, 10};
+    request.periodic = true;
+    request.threads = 1;
+    const auto run = run_block(request, sources, kernel, lattice);
+    CHECK(run.result.particles() == 640);
+    CHECK(run.options.a_p == 1.0); // the voronoi volume of sc
+    const auto bulk = test::brute_force_errors(kernel, lattice, 1.2, 1.0, run.result.gravity);
+    int deep = 0;
+    for (const auto& l : run.result.layers()) {
+        if (l.layer < 3 || l.layer > 6) continue;
+        CAPTURE(l.layer);
+        ++deep;
+        CHECK(l.rho_min == doctest::Approx(bulk.eps_rho).epsilon(1e-10).scale(1));
+        CHECK(l.rho_max == doctest::Approx(bulk.eps_rho).epsilon(1e-10).scale(1));
+        CHECK(l.gradp_min == doctest::Approx(bulk.eps_gradp).epsilon(1e-10).scale(1));
+        CHECK(l.gradp_max == doctest::Approx(bulk.eps_gradp).epsilon(1e-10).scale(1));
+    }
+    CHECK(deep == 4);
 }
