@@ -68,26 +68,24 @@ void add_evaluation_options(CLI::App& command, EvaluationOptions& options)
                      "Evaluate the kernel's formula past q = R instead of truncating (needs --shells)");
 }
 
-EvaluationMode evaluation_mode(const EvaluationOptions& options)
+EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
 {
-    EvaluationMode mode;
-    mode.continue_past_support = options.continue_past_support;
-    if (!options.shells.empty()) {
-        const auto radii = parse_number_list(options.shells, ValueSource::option("--shells"));
-        for (double r : radii)
-            if (r <= 0)
-                throw Error(ExitCode::usage, fmt::format("--shells {}: \"{}\" is not a positive number", options.shells, r));
-        mode.shell_radii = radii;
-    } else if (options.continue_past_support) {
+    EvaluationInputs inputs;
+    inputs.a_p = options.ap;
+    // The lattice's gravity parser's names, so that its refusals read as before.
+    if (!options.gravity.empty())
+        inputs.gravity = parse_number_list(options.gravity, ValueSource::argument("--gravity"), 0);
+    inputs.site = options.site;
+    if (!options.shells.empty()) inputs.shell_radii = parse_number_list(options.shells, ValueSource::option("--shells"));
+    else if (options.continue_past_support)
         throw Error(ExitCode::usage, "--continue-past-support needs an explicit --shells list");
-    }
-    return mode;
+    inputs.continue_past_support = options.continue_past_support;
+    return inputs;
 }
 
-Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options)
+EvaluationSources evaluation_sources(const EvaluationOptions& options)
 {
-    return options.gravity.empty() ? lattice.gravity
-                                   : parse_direction(options.gravity, lattice.dimension, "--gravity");
+    return {"--gravity \"" + options.gravity + "\"", "--site", ValueSource::option("--shells " + options.shells)};
 }
 
 std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options)

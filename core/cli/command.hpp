@@ -6,6 +6,7 @@
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "requests/evaluation_inputs.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -46,8 +47,9 @@ struct EvaluationOptions {
     bool continue_past_support = false;
 };
 void add_evaluation_options(CLI::App& command, EvaluationOptions& options);
-EvaluationMode evaluation_mode(const EvaluationOptions& options);
-Eigen::Vector3d gravity_of(const Lattice& lattice, const EvaluationOptions& options);
+// The options as numbers, for a request; the option names, for its errors.
+EvaluationInputs evaluation_inputs(const EvaluationOptions& options);
+EvaluationSources evaluation_sources(const EvaluationOptions& options);
 
 
 // The output options a command was given (an option given as '' too, for the check to refuse).

@@ -1,13 +1,7 @@
 // `sphkern surface`: the error profile below a free surface, layer by layer.
 #include "cli/command.hpp"
-#include "support/io/results_output.hpp"
+#include "requests/surface_request.hpp"
 
-#include "analysis/results_json.hpp"
-#include "support/error.hpp"
-
-#include <fmt/format.h>
-
-#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -15,39 +9,32 @@ namespace sphkern::cli {
 
 namespace {
 
-// The layers below the surface, then the bulk, as text.
-void print_surface(const Kernel& kernel, const Lattice& lattice, double k, double a_p, GradientForm form,
-                   const SurfaceProfile& profile)
+struct SurfaceOptions : CommonOptions {
+    std::string kernel, lattice, form = "sum";
+    double k = 0;
+    int layers = 4;
+    std::optional<int> termination;
+    std::vector<std::string> sets;
+    EvaluationOptions evaluation;
+};
+
+SurfaceRequest request_from(const SurfaceOptions& o)
 {
-    const bool one_site = lattice.sites() == 1;
-    if (one_site)
-        fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n", kernel.label(),
-                   lattice.name, k, a_p, gradient_form_name(form), profile.spacing);
-    else {
-        std::string names;
-        for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
-            names += fmt::format("{}{}: {}", t ? ", " : "", t, profile.planes.name(static_cast<int>(t)));
-        fmt::print(results_file(),
-                   "{} on {}, k = {}, a_p = {:.10g}, form {}; the occupied planes repeat every {:.6f} d; "
-                   "terminations {}; on top: {}\n",
-                   kernel.label(), lattice.name, k, a_p, gradient_form_name(form), profile.spacing, names,
-                   profile.termination);
-    }
-    fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site",
-               "N", "eps_rho", "eps_gradP");
-    for (const auto& l : profile.layers)
-        for (const auto& v : l.sites)
-            fmt::print(results_file(), "{:>5} {:>10.5f} {}{:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth,
-                       one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
-    for (const auto& v : profile.bulk.sites)
-        fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14.8f} {:>14.8f}\n", "bulk", "",
-                   one_site ? "" : fmt::format("{:>5}", v.site), v.neighbours, v.eps_rho, v.eps_gradp);
-    for (std::size_t s = 0; s < profile.first_moments.size(); ++s)
-        if (profile.first_moments[s].norm() > 1e-9)
-            fmt::print(results_file(),
-                       "site {} is not a centre of inversion (first moment {:.3g}): with the sum form its gradient "
-                       "error grows with depth by 2 P_i m1; the bulk row leaves that term out\n",
-                       s, profile.first_moments[s].norm());
+    SurfaceRequest r;
+    r.k = o.k;
+    r.layers = o.layers;
+    r.form = parse_gradient_form(o.form);
+    r.termination = o.termination;
+    r.evaluation = evaluation_inputs(o.evaluation);
+    return r;
+}
+
+// The profile refuses k and the site itself, in the words it has always used.
+SurfaceSources option_sources(const SurfaceOptions& o)
+{
+    auto evaluation = evaluation_sources(o.evaluation);
+    evaluation.site = std::nullopt;
+    return {std::nullopt, evaluation};
 }
 
 } // namespace
@@ -55,15 +42,7 @@ void print_surface(const Kernel& kernel, const Lattice& lattice, double k, doubl
 Action add_surface_command(CLI::App& app)
 {
     auto* command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
-    struct Options : CommonOptions {
-        std::string kernel, lattice, form = "sum";
-        double k = 0;
-        int layers = 4;
-        std::optional<int> termination;
-        std::vector<std::string> sets;
-        EvaluationOptions evaluation;
-    };
-    auto options = std::make_shared<Options>();
+    auto options = std::make_shared<SurfaceOptions>();
     command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
     command->add_option("lattice", options->lattice, "Lattice name or file")->required();
     command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
@@ -80,19 +59,17 @@ Action add_surface_command(CLI::App& app)
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);
     return [options] {
-        auto form = parse_gradient_form(options->form);
+        const auto request = request_from(*options);
+        const auto sources = option_sources(*options);
+        check_surface_request(request, sources);
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);
         auto kernel = make_kernel(registry, options->kernel, options->sets);
-        double a_p = lattice.volume_coefficient(options->evaluation.ap);
-        auto profile = surface_profile(kernel, lattice, options->evaluation.site, a_p,
-                                       gravity_of(lattice, options->evaluation), options->k, options->layers, form,
-                                       options->termination);
-        if (options->json) {
-            print_json(surface_document(kernel, lattice, options->k, a_p, form, profile), command_inputs(&kernel, &lattice));
-            return 0;
-        }
-        print_surface(kernel, lattice, options->k, a_p, form, profile);
+        const auto result = run_surface(request, sources, kernel, lattice);
+        if (options->json)
+            print_json(surface_request_document(request, result, kernel, lattice), command_inputs(&kernel, &lattice));
+        else
+            print_surface(request, result, kernel, lattice);
         return 0;
     };
 }

@@ -1,5 +1,6 @@
 #include "kernels/kernel_check.hpp"
 
+#include "kernels/check_status.hpp"
 #include "kernels/kernel_integrals.hpp"
 
 #include "kernels/fourier_transform.hpp"
@@ -27,15 +28,6 @@ std::string format(double v, int digits = 10)
     s.precision(digits);
     s << v;
     return s.str();
-}
-
-// A check's status, worst last; text only in the rendered result.
-enum class CheckStatus { ok, warn, fail };
-
-const char* check_status_name(CheckStatus status)
-{
-    static constexpr const char* names[] = {"ok", "warn", "fail"}; // in the enum's order
-    return names[static_cast<int>(status)];
 }
 
 struct CheckItem {

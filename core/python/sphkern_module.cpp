@@ -11,20 +11,24 @@
 #include "analysis/site_errors.hpp"
 #include "analysis/site_roots.hpp"
 #include "analysis/surface_profile.hpp"
-#include "kernels/kernel.hpp"
 #include "kernels/kernel_json.hpp"
-#include "kernels/kernel_registry.hpp"
-#include "lattices/lattice.hpp"
 #include "lattices/lattice_json.hpp"
-#include "lattices/numeric_inputs.hpp"
 #include "particles_binding.hpp"
 #include "python_arrays.hpp"
-#include "requests/stability_request.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "lattices/lattice.hpp"
+#include "lattices/numeric_inputs.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/roots_convention.hpp"
 #include "stability/roots_stability.hpp"
 #include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
+#include "requests/design_request.hpp"
+#include "requests/eps_request.hpp"
+#include "requests/roots_request.hpp"
+#include "requests/stability_request.hpp"
+#include "requests/surface_request.hpp"
 #include "support/error.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/process/interruption.hpp"
@@ -88,29 +92,50 @@ Kernel kernel_of(const std::string& spec, const py::object& params)
     return Kernel(registry().find(spec), values);
 }
 
-double ap_of(const Lattice& lattice, const py::object& a_p)
+// a_p as given: a name the lattice offers or a number.
+VolumeCoefficientInput ap_input(const py::object& a_p)
 {
-    if (py::isinstance<py::str>(a_p)) return lattice.volume_coefficient(a_p.cast<std::string>());
-    double v;
+    if (py::isinstance<py::str>(a_p)) return a_p.cast<std::string>();
     try {
-        v = a_p.cast<double>();
+        return a_p.cast<double>();
     } catch (const py::cast_error&) {
         fail_input("a_p: expected a name the lattice offers or a positive number");
     }
-    return checked_volume_coefficient(v, fmt::format("{}", v));
+}
+
+// Gravity as given: none (the lattice's) or a sequence of `dimension` numbers.
+std::optional<std::vector<double>> gravity_input(const py::object& gravity, int dimension)
+{
+    if (gravity.is_none()) return std::nullopt;
+    try {
+        return gravity.cast<std::vector<double>>();
+    } catch (const py::cast_error&) {
+        fail_input("gravity: expected a sequence of " + std::to_string(dimension) + " numbers");
+    }
+}
+
+// The argument names; gravity named as the command line names "--gravity 0,0,1", so that
+// both say the same line. `site`: whether the request refuses a site itself ("site: ...").
+EvaluationSources argument_sources(const std::optional<std::vector<double>>& gravity, bool site)
+{
+    return {fmt::format("gravity \"{}\"", fmt::join(gravity.value_or(std::vector<double>{}), ",")),
+            site ? std::optional<std::string>("site") : std::nullopt, ValueSource::argument("shells")};
+}
+
+EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, const py::object& gravity, int site)
+{
+    EvaluationInputs inputs;
+    inputs.a_p = ap_input(a_p);
+    inputs.gravity = gravity_input(gravity, lattice.dimension);
+    inputs.site = site;
+    return inputs;
 }
 
 Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
 {
-    if (gravity.is_none()) return lattice.gravity;
-    std::vector<double> components;
-    try {
-        components = gravity.cast<std::vector<double>>();
-    } catch (const py::cast_error&) {
-        fail_input("gravity: expected a sequence of " + std::to_string(lattice.dimension) + " numbers");
-    }
-    // Named as the command line names "--gravity 0,0,1", so that both say the same line.
-    return direction_of(components, lattice.dimension, fmt::format("gravity \"{}\"", fmt::join(components, ",")));
+    const auto components = gravity_input(gravity, lattice.dimension);
+    if (!components) return lattice.gravity;
+    return direction_of(*components, lattice.dimension, argument_sources(components, false).gravity);
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
@@ -119,31 +144,28 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     const DoubleArray k = real_array(k_values, "k", "a number or an array of numbers");
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
-    const double ap = ap_of(lattice, a_p);
-    const auto g = gravity_of(lattice, gravity);
-    const std::size_t n = static_cast<std::size_t>(k.size());
-    const double* ks = k.data();
-    if (n == 0) fail_input("k: an empty array");
-    double k_max = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        check_k(ks[i], ValueSource::argument("k"));
-        k_max = std::max(k_max, ks[i]);
+    EpsRequest request;
+    request.k.assign(k.data(), k.data() + k.size());
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    // The errors engine refuses a site that does not exist in its own words.
+    const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"),
+                             argument_sources(request.evaluation.gravity, false)};
+    check_eps_request(request, sources);
+    std::vector<ErrorValues> values;
+    {
+        py::gil_scoped_release unlocked; // one C++ loop over the whole array
+        values = run_eps_series(request, sources, kernel, lattice);
     }
     std::vector<py::ssize_t> shape(k.shape(), k.shape() + k.ndim());
     py::array_t<double> rho(shape), gradp(shape), lateral(shape);
     py::array_t<long long> nh(shape);
     double *r = rho.mutable_data(), *gp = gradp.mutable_data(), *l = lateral.mutable_data();
     long long* h = nh.mutable_data();
-    {
-        py::gil_scoped_release unlocked; // one C++ loop over the whole array
-        HydrostaticErrors errors(kernel, lattice, site, ap, g, k_max);
-        for (std::size_t i = 0; i < n; ++i) {
-            auto v = errors.at(ks[i]);
-            r[i] = v.eps_rho;
-            gp[i] = v.eps_gradp;
-            l[i] = v.lateral;
-            h[i] = v.neighbours;
-        }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        r[i] = values[i].eps_rho;
+        gp[i] = values[i].eps_gradp;
+        l[i] = values[i].lateral;
+        h[i] = values[i].neighbours;
     }
     py::dict out;
     out["eps_rho"] = rho;
@@ -151,6 +173,92 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     out["eps_lateral"] = lateral;
     out["nh"] = nh;
     return out;
+}
+
+py::object surface(const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
+                   int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params)
+{
+    auto lattice = load_lattice(lattice_spec);
+    auto kernel = kernel_of(kernel_spec, params);
+    SurfaceRequest request;
+    request.k = k;
+    request.layers = layers;
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    request.form = parse_gradient_form(form);
+    // The profile refuses a site that does not exist in its own words.
+    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity, false)};
+    check_surface_request(request, sources);
+    const auto result = run_surface(request, sources, kernel, lattice);
+    return to_python(surface_request_document(request, result, kernel, lattice));
+}
+
+// The roots request from its arguments: the texts as types, the stability model checked with or without `stability`.
+RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis, bool stability,
+                           double gamma, int steps, double horizon, const std::string& h_model,
+                           const py::object& convention)
+{
+    RootsRequest r;
+    r.window_min = kmin;
+    r.window_max = kmax;
+    r.axis = parse_axis(axis, "axis");
+    r.epsilon = epsilon;
+    r.lateral = lateral;
+    r.stability = stability;
+    r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model")};
+    if (!convention.is_none()) r.convention = &code_convention(convention.cast<std::string>(), "convention");
+    return r;
+}
+
+py::object roots(const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
+                 const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
+                 bool lateral, const std::string& axis, bool details, bool stability, double gamma, int steps,
+                 double horizon, const std::string& h_model, const py::object& convention)
+{
+    auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
+                                 convention);
+    RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
+                         ValueSource::argument("gamma"), ValueSource::argument("horizon"),
+                         ValueSource::argument("steps"), argument_sources(std::nullopt, true)};
+    check_roots_request(request, sources);
+    auto lattice = load_lattice(lattice_spec);
+    auto kernel = kernel_of(kernel_spec, params);
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    sources.evaluation = argument_sources(request.evaluation.gravity, true);
+    nlohmann::json document;
+    {
+        py::gil_scoped_release unlocked;
+        const auto result = run_roots(request, sources, kernel, lattice);
+        document = roots_request_document(request, result, kernel, lattice);
+    }
+    return to_python(details || stability || request.convention ? document : document["roots"]);
+}
+
+py::object design(const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
+                  const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
+                  int site, const py::object& params)
+{
+    DesignRequest request;
+    request.parameter = param;
+    request.k_min = kmin;
+    request.k_max = kmax;
+    // The design refuses a site that does not exist in its own words.
+    DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources(std::nullopt, false)};
+    check_design_request(request, sources);
+    auto lattice = load_lattice(lattice_spec);
+    auto kernel = kernel_of(kernel_spec, params);
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    sources.evaluation = argument_sources(request.evaluation.gravity, false);
+    if (!range.is_none()) {
+        const auto r = range.cast<std::vector<double>>();
+        if (r.size() != 2) fail_input("range: expected two numbers [min, max]");
+        request.range = std::pair(r[0], r[1]);
+    }
+    DesignOutcome outcome;
+    {
+        py::gil_scoped_release unlocked;
+        outcome = run_design(request, sources, kernel, lattice);
+    }
+    return to_python(design_json(kernel, outcome.problem, outcome.result));
 }
 
 // A kernel's functions, vectorised over q.
@@ -278,17 +386,7 @@ void bind_accuracy(py::module_& m, const Guard& guard)
           },
           py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
           "Neighbour shells of a site, as `sphkern shells --json`.", guard);
-    m.def("surface",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
-             int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params) {
-              check_k(k, ValueSource::argument("k"));
-              auto lattice = load_lattice(lattice_spec);
-              auto kernel = kernel_of(kernel_spec, params);
-              const double ap = ap_of(lattice, a_p);
-              const auto f = parse_gradient_form(form);
-              auto profile = surface_profile(kernel, lattice, site, ap, gravity_of(lattice, gravity), k, layers, f);
-              return to_python(surface_document(kernel, lattice, k, ap, f, profile));
-          },
+    m.def("surface", &surface,
           py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.", guard);
@@ -297,47 +395,7 @@ void bind_accuracy(py::module_& m, const Guard& guard)
 // The roots in k of both errors, with stability and a code's convention on request.
 void bind_roots(py::module_& m, const Guard& guard)
 {
-    m.def("roots",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
-             const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
-             bool lateral, const std::string& axis_text, bool details, bool stability, double gamma, int steps,
-             double horizon, const std::string& h_model, const py::object& convention) {
-              const Axis axis = parse_axis(axis_text, "axis");
-              check_gamma(gamma, "gamma");
-              check_horizon(horizon, "horizon");
-              if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
-              const RootsStabilityOptions model{gamma, horizon, steps, parse_h_model(h_model, "h_model")};
-              const CodeConvention* code =
-                  convention.is_none() ? nullptr : &code_convention(convention.cast<std::string>(), "convention");
-              if (axis == Axis::k) check_k_interval(kmin, kmax, ValueSource::argument("kmin/kmax"));
-              if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) fail_input("epsilon must be in (0, 1)");
-              auto lattice = load_lattice(lattice_spec);
-              auto kernel = kernel_of(kernel_spec, params);
-              const double ap = ap_of(lattice, a_p);
-              const auto g = gravity_of(lattice, gravity);
-              check_sites(lattice, {site}, "site");
-              const auto [k_lo, k_hi] = k_window(axis, kmin, kmax, kernel, lattice, site, ap, "kmin/kmax");
-              nlohmann::json document;
-              {
-                  py::gil_scoped_release unlocked;
-                  auto sites = errors_per_site(kernel, lattice, every_site(lattice), ap, g, k_hi);
-                  std::vector<const HydrostaticErrors*> all;
-                  for (const auto& s : sites) all.push_back(s.get());
-                  const auto analysis = analyse_roots(all, k_lo, k_hi, epsilon, lateral);
-                  document = roots_document(kernel, lattice, ap, k_lo, k_hi, epsilon, lateral, site, analysis, axis,
-                                            kmin, kmax);
-                  RootsStability stable;
-                  if (stability) {
-                      stable = roots_stability(kernel, lattice, k_lo, k_hi, model, analysis.all_along.intervals,
-                                               *sites[static_cast<std::size_t>(site)]);
-                      document["stability"] = stable.json;
-                  }
-                  if (code)
-                      document["convention"] = roots_convention_json(*code, kernel, lattice.dimension, ap,
-                                                                     analysis.all_along, stable.recommended);
-              }
-              return to_python(details || stability || code ? document : document["roots"]);
-          },
+    m.def("roots", &roots,
           py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
           py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
@@ -389,36 +447,7 @@ void bind_stability(py::module_& m, const Guard& guard)
 // Kernel design: where both errors vanish.
 void bind_design(py::module_& m, const Guard& guard)
 {
-    m.def("design",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
-             const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
-             int site, const py::object& params) {
-              check_k_interval(kmin, kmax, ValueSource::argument("kmin/kmax"));
-              auto lattice = load_lattice(lattice_spec);
-              auto kernel = kernel_of(kernel_spec, params);
-              DesignProblem problem;
-              problem.lattice = &lattice;
-              problem.site = site;
-              problem.a_p = ap_of(lattice, a_p);
-              problem.gravity = gravity_of(lattice, gravity);
-              problem.k_min = kmin;
-              problem.k_max = kmax;
-              problem.parameter = param;
-              if (range.is_none()) {
-                  std::tie(problem.parameter_min, problem.parameter_max) = default_parameter_range(kernel, param);
-              } else {
-                  auto r = range.cast<std::vector<double>>();
-                  if (r.size() != 2) fail_input("range: expected two numbers [min, max]");
-                  problem.parameter_min = r[0];
-                  problem.parameter_max = r[1];
-              }
-              DesignResult result;
-              {
-                  py::gil_scoped_release unlocked;
-                  result = design_kernel(kernel, problem);
-              }
-              return to_python(design_json(kernel, problem, result));
-          },
+    m.def("design", &design,
           py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
           py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
           py::arg("site") = 0, py::arg("params") = py::none(),

@@ -1,0 +1,67 @@
+#include "requests/check_request.hpp"
+
+#include "kernels/kernel_check.hpp"
+#include "support/error.hpp"
+#include "support/io/results_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphkern {
+
+namespace {
+
+bool only_files(const CheckRequest& r) { return r.names.empty() && !r.all; }
+
+} // namespace
+
+void check_check_request(const CheckRequest& r)
+{
+    if (only_files(r) && r.plugins.empty())
+        throw Error(ExitCode::usage, "check: name a kernel, give --plugin FILE, or use --all");
+    if (!(r.timeout >= 0.1 && r.timeout <= 3600))
+        throw Error(ExitCode::usage, fmt::format("check: timeout {} s, expected 0.1 to 3600", r.timeout));
+}
+
+KernelRegistry check_registry(const CheckRequest& r)
+{
+    return only_files(r) ? KernelRegistry::from_files(r.plugins) : KernelRegistry::discover(r.plugins);
+}
+
+std::vector<Kernel> kernels_to_check(const CheckRequest& r, KernelRegistry& registry)
+{
+    std::vector<Kernel> kernels;
+    if (r.all || only_files(r))
+        for (const auto& p : registry.plugins()) kernels.emplace_back(p, r.parameters);
+    for (const auto& name : r.names) kernels.emplace_back(registry.find(name), r.parameters);
+    return kernels;
+}
+
+KernelCheck run_check(const CheckRequest& r, const Kernel& kernel)
+{
+    auto document = check_kernel_isolated(kernel, r.timeout);
+    const auto verdict = check_status_named(document["verdict"].get<std::string>());
+    return {&kernel, verdict, std::move(document)};
+}
+
+bool check_fails(const KernelCheck& check, bool strict)
+{
+    return check.verdict == CheckStatus::fail || (strict && check.verdict == CheckStatus::warn);
+}
+
+void print_check(const KernelCheck& check)
+{
+    const auto& d = check.document;
+    fmt::print(results_file(), "{} ({}): {}\n", check.kernel->label(), check.kernel->definition().source,
+               check_status_name(check.verdict));
+    for (const auto& c : d["checks"])
+        fmt::print(results_file(), "  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
+                   c["status"].get<std::string>(), c["detail"].get<std::string>());
+    for (const auto& c : d["checks"])
+        if (c.contains("hint"))
+            fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
+                       c["hint"].get<std::string>());
+}
+
+} // namespace sphkern

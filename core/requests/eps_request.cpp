@@ -1,0 +1,101 @@
+#include "requests/eps_request.hpp"
+
+#include "support/error.hpp"
+#include "support/io/results_output.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace sphkern {
+
+void check_eps_request(const EpsRequest& r, const EpsSources& sources)
+{
+    if (r.k.empty()) sources.k.fail("an empty array");
+    for (double k : r.k) check_k(k, sources.k);
+    // Refused as input (exit 3) since the axis is valid, only not here.
+    if (r.axis == Axis::nh)
+        fail_input(fmt::format("{} nh names a window, not one value: give {} on the k or eta axis", sources.axis.name,
+                               sources.k.name));
+    check_evaluation(r.evaluation, sources.evaluation);
+}
+
+EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice)
+{
+    const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
+    EpsAtK result;
+    result.kernel = kernel.label();
+    result.lattice = lattice.name;
+    result.dimension = lattice.dimension;
+    result.axis = r.axis;
+    result.a_p = evaluation.a_p;
+    result.site = evaluation.site;
+    const double given = r.k.at(0);
+    result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
+    if (!k_in_range(result.k))
+        fail_input(fmt::format("{} on the eta axis is k = {}, expected k in (0, 100]", sources.k.about(given), result.k));
+    result.eta = eta_of_k(result.k, evaluation.a_p, lattice.dimension);
+    result.support_radius = kernel.support() * result.k;
+    // Every site: the top-level values describe the chosen one.
+    auto sites = errors_per_site(kernel, lattice, every_site(lattice), evaluation.a_p, evaluation.gravity, result.k,
+                                 evaluation.mode);
+    for (const auto& s : sites) result.sites.push_back(site_report(*s, result.k));
+    result.worst = worst_site(result.sites);
+    return result;
+}
+
+std::vector<ErrorValues> run_eps_series(const EpsRequest& r, const EpsSources& sources, const Kernel& kernel,
+                                        const Lattice& lattice)
+{
+    const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
+    const double k_max = *std::max_element(r.k.begin(), r.k.end());
+    HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max, evaluation.mode);
+    std::vector<ErrorValues> values;
+    values.reserve(r.k.size());
+    for (double k : r.k) values.push_back(errors.at(k));
+    return values;
+}
+
+nlohmann::json eps_document(const EpsAtK& r)
+{
+    nlohmann::json per_site = nlohmann::json::array();
+    for (const auto& s : r.sites) per_site.push_back(site_report_json(s, r.dimension));
+    const auto& v = r.chosen();
+    return {{"kernel", r.kernel}, {"lattice", r.lattice}, {"k", r.k}, {"a_p", r.a_p}, {"eta", r.eta},
+            {"site", r.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp}, {"lateral", v.lateral},
+            {"neighbours", v.neighbours}, {"support_radius", r.support_radius}, {"sites", per_site},
+            {"worst_site", r.sites[r.worst].site}};
+}
+
+namespace {
+
+// Every site's values, when the lattice has more than one.
+void print_every_site(const EpsAtK& r)
+{
+    if (r.sites.size() <= 1) return;
+    fmt::print(results_file(), "every site (the values above are site {}; worst site {}):\n", r.site,
+               r.sites[r.worst].site);
+    fmt::print(results_file(), "  {:>4} {:>14} {:>14} {:>10} {:>5}  {:<34} {}\n", "site", "eps_rho", "eps_gradP",
+               "lateral", "N_H", "eigenvalues of E", "|first moment|");
+    for (const auto& s : r.sites) {
+        std::string eigen;
+        for (double e : s.gradient.eigenvalues) eigen += fmt::format("{}{:+.6f}", eigen.empty() ? "" : " ", e);
+        fmt::print(results_file(), "  {:>4} {:>14.8f} {:>14.8f} {:>10.3g} {:>5}  {:<34} {:.3g}\n", s.site,
+                   s.values.eps_rho, s.values.eps_gradp, s.values.lateral, s.values.neighbours, eigen,
+                   s.gradient.first_moment.norm());
+    }
+}
+
+} // namespace
+
+void print_eps(const EpsAtK& r)
+{
+    const auto& v = r.chosen();
+    fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", r.kernel, r.lattice, r.k, r.a_p,
+               r.axis == Axis::eta ? fmt::format(" (eta = {:.10g})", r.eta) : "");
+    fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
+               v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, r.support_radius);
+    print_every_site(r);
+}
+
+} // namespace sphkern

@@ -1,0 +1,170 @@
+#include "requests/roots_request.hpp"
+
+#include "analysis/site_errors.hpp"
+#include "stability/dispersion.hpp"
+#include "stability/recommended_k.hpp"
+#include "stability/roots_convention.hpp"
+#include "stability/stability_scan.hpp"
+#include "support/error.hpp"
+#include "support/io/results_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <tuple>
+
+namespace sphkern {
+
+void check_roots_request(const RootsRequest& r, const RootsSources& sources)
+{
+    if (r.axis == Axis::k) check_k_interval(r.window_min, r.window_max, sources.window);
+    if (!std::isfinite(r.epsilon) || r.epsilon <= 0 || r.epsilon >= 1)
+        throw Error(sources.epsilon.code, sources.epsilon.name + " must be in (0, 1)");
+    check_gamma(r.model.gamma, sources.gamma.name);
+    check_horizon(r.model.horizon, sources.horizon.name);
+    if (r.model.steps < 1 || r.model.steps > 2000)
+        fail_input(fmt::format("{}, expected 1 to 2000", sources.steps.about(r.model.steps)));
+    check_evaluation(r.evaluation, sources.evaluation);
+}
+
+RootsResult run_roots(const RootsRequest& r, const RootsSources& sources, const Kernel& kernel, const Lattice& lattice)
+{
+    const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
+    RootsResult result;
+    result.a_p = evaluation.a_p;
+    // The window in k for this kernel, lattice and a_p, from the axis it was given on.
+    std::tie(result.k_min, result.k_max) = k_window(r.axis, r.window_min, r.window_max, kernel, lattice,
+                                                    evaluation.site, evaluation.a_p, sources.window.name);
+    auto sites = errors_per_site(kernel, lattice, every_site(lattice), evaluation.a_p, evaluation.gravity,
+                                 result.k_max, evaluation.mode);
+    std::vector<const HydrostaticErrors*> all;
+    for (const auto& s : sites) all.push_back(s.get());
+    result.analysis = analyse_roots(all, result.k_min, result.k_max, r.epsilon, r.lateral);
+    // The stable k of the same window, and where condition (22) at every site holds there too.
+    if (r.stability)
+        result.stability = roots_stability(kernel, lattice, result.k_min, result.k_max, r.model,
+                                           result.analysis.all_along.intervals,
+                                           *sites[static_cast<std::size_t>(evaluation.site)]);
+    return result;
+}
+
+nlohmann::json roots_request_document(const RootsRequest& r, const RootsResult& result, const Kernel& kernel,
+                                      const Lattice& lattice)
+{
+    auto document = roots_document(kernel, lattice, result.a_p, result.k_min, result.k_max, r.epsilon, r.lateral,
+                                   r.evaluation.site, result.analysis, r.axis, r.window_min, r.window_max);
+    if (r.stability) document["stability"] = result.stability.json;
+    if (r.convention)
+        document["convention"] = roots_convention_json(*r.convention, kernel, lattice.dimension, result.a_p,
+                                                       result.analysis.all_along, result.stability.recommended);
+    return document;
+}
+
+namespace {
+
+std::string intervals_text(const std::vector<KInterval>& intervals)
+{
+    std::string s;
+    for (const auto& i : intervals) s += fmt::format(" [{:.6f}, {:.6f}]", i.from, i.to);
+    return s.empty() ? " none" : s;
+}
+
+std::string acceptance_text(const Acceptance& a)
+{
+    std::string s = a.passes() ? "passes for k in" : "fails";
+    for (const auto& i : a.intervals) s += fmt::format(" [{:.6f}, {:.6f}]", i.from, i.to);
+    return s + fmt::format("; best k = {:.6f} with max |eps| = {:.3g}", a.best_k, a.best_error);
+}
+
+void print_scan(const RootScan& scan)
+{
+    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
+    for (const auto& r : scan.roots)
+        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", function_name(r.function), r.k,
+                   r.values.eps_rho, r.values.eps_gradp, r.values.neighbours, r.support_radius);
+    if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
+    for (const auto& j : scan.jumps)
+        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", function_name(j.function), j.k, jump_kind_name(j.kind),
+                   j.left, j.right);
+}
+
+void print_roots_stability(const RootsRequest& r, const RootsStability& stability)
+{
+    if (!r.stability) return;
+    const auto& m = r.model;
+    if (stability.refused())
+        fmt::print(results_file(), "stability (gamma = {:.6g}, {} h): not available: {}\n", m.gamma,
+                   h_model_name(m.h_model), stability.json["refused"].get<std::string>());
+    else
+        fmt::print(results_file(), "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
+                                   "accurate (condition (22), every site) and stable:{}\n  {}\n",
+                   m.gamma, h_model_name(m.h_model), m.horizon, intervals_text(stability.stable),
+                   intervals_text(stability.both), recommended_text(stability.recommended));
+}
+
+void print_roots_convention(const RootsRequest& r, const RootsResult& result, const Kernel& kernel, int dimension)
+{
+    if (!r.convention) return;
+    const auto& c = *r.convention;
+    if (const auto why = convention_undefined(c, kernel, dimension); !why.empty())
+        return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
+    auto in = [&](double k) { return in_convention(c, kernel, dimension, result.a_p, k); };
+    const auto& all_along = result.analysis.all_along;
+    const auto& recommended = result.stability.recommended;
+    std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
+                                c.quantity, in(all_along.best_k));
+    for (const auto& i : all_along.intervals)
+        s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", c.quantity, in(i.from), in(i.to));
+    if (recommended.found)
+        s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", c.quantity, in(recommended.k),
+                         in(recommended.widest.from), in(recommended.widest.to));
+    fmt::print(results_file(), "{}\n", s);
+}
+
+// Every site but the chosen one, after it.
+void print_other_sites(const RootsAnalysis& analysis, int chosen)
+{
+    for (const auto& s : analysis.sites) {
+        if (s.site == chosen) continue;
+        fmt::print(results_file(), "site {}:\n", s.site);
+        print_scan(s.scan);
+        fmt::print(results_file(), "condition (22): {}\n  for every direction: {}\n", acceptance_text(s.along),
+                   acceptance_text(s.every));
+    }
+}
+
+// What follows the sites: the best k at the window's edge, stability, the convention.
+void print_roots_tail(const RootsRequest& r, const RootsResult& result, const Kernel& kernel, int dimension)
+{
+    if (at_window_edge(result.analysis.all_along.best_k, result.k_min, result.k_max))
+        fmt::print(results_file(), "best k of condition (22) = {:.6f}: {}\n", result.analysis.all_along.best_k,
+                   window_edge_note);
+    print_roots_stability(r, result.stability);
+    print_roots_convention(r, result, kernel, dimension);
+}
+
+} // namespace
+
+void print_roots(const RootsRequest& r, const RootsResult& result, const Kernel& kernel, const Lattice& lattice)
+{
+    const auto& analysis = result.analysis;
+    const int site = r.evaluation.site;
+    const auto& chosen = analysis.sites[static_cast<std::size_t>(site)];
+    const bool many_sites = analysis.sites.size() > 1;
+    const std::string lateral = r.lateral ? ", lateral error included" : "";
+    fmt::print(results_file(), "{} on {}, a_p = {:.10g}, k in [{}, {}]{}{}\n", kernel.label(), lattice.name, result.a_p,
+               result.k_min, result.k_max,
+               r.axis == Axis::k ? "" : fmt::format(" ({} in [{}, {}])", axis_name(r.axis), r.window_min, r.window_max),
+               many_sites ? fmt::format(", site {}", site) : "");
+    print_scan(chosen.scan);
+    fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", r.epsilon, lateral, acceptance_text(chosen.along));
+    fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
+    if (many_sites) {
+        print_other_sites(analysis, site);
+        fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
+                   acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
+    }
+    print_roots_tail(r, result, kernel, lattice.dimension);
+}
+
+} // namespace sphkern
