@@ -216,7 +216,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
         if (grid.is_ghost(p)) continue;
         const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
         for (int d = 0; d < 3; ++d) lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
-        out.reach = std::max(out.reach, reach[grid.source(p)]);
+        out.reach = std::max(out.reach, reach[p]);
         any = true;
     }
     if (!any) return;

@@ -34,8 +34,8 @@ struct ClusterCandidates {
     void reserve(std::size_t n);
 };
 
-// The candidates of cluster c for particles whose support radius is reach[particle] (by
-// source index), with a[j] and, unless b is null, b[j] per point. count = 0 for a cluster of ghosts.
+// The candidates of cluster c for particles whose support radius is reach[point] (in the
+// grid's point order), with a[j] and, unless b is null, b[j] per point. count = 0 for a cluster of ghosts.
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
                     ClusterCandidates& out);
 

@@ -87,7 +87,9 @@ struct Sweep {
     const MeasureInputs& in;
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
-    std::vector<double> reach;        // support radius of each particle (by source index), with its edge
+    // h and the support radius (with its edge) in point order: read in sweep order, not by
+    // the particles' own (file) order, which on a disordered set is random in memory.
+    std::vector<double> h, reach;
 
     // The candidates of a cluster gathered once, then one fused pass per particle of it:
     // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
@@ -103,8 +105,8 @@ struct Sweep {
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = in.h[i], k = h / in.spacing;
-        gather_from_cluster(grid, cluster, p, reach[i] * reach[i], set.name, nb);
+        const double h = this->h[p], k = h / in.spacing;
+        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
         distances(nb.r2.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
@@ -172,7 +174,8 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     std::vector<double> reach(inputs.h.size());
     for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = kernel.support() * inputs.h[i] * std::sqrt(1 + 2 * support_edge);
     const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume),
-                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass), std::move(reach)};
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass), grid.gather(inputs.h),
+                      grid.gather(reach)};
 
     ParticleMeasures out;
     const std::size_t n = set.size();

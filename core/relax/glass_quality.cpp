@@ -21,7 +21,7 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
     const NeighbourGrid grid(set, reach);
     const std::vector<double> zeros(grid.points(), 0.0);
-    const std::vector<double> reaches(set.size(), reach);
+    const std::vector<double> reaches(grid.points(), reach);
     ParallelFor pass;
     pass.run(grid.clusters(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;

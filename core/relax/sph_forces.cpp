@@ -56,7 +56,7 @@ void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double
                        const std::vector<double>* b, int threads, const Visit& visit)
 {
     const double reach2 = reach * reach * (1 + 2 * support_edge);
-    const std::vector<double> reaches(set.size(), std::sqrt(reach2));
+    const std::vector<double> reaches(grid.points(), std::sqrt(reach2));
     ParallelFor pass;
     pass.run(grid.clusters(), threads, [&](int, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;

@@ -441,13 +441,14 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
             std::vector<double> reaches(set.size());
             for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
             const NeighbourGrid grid(set, reach);
+            const std::vector<double> point_reaches = grid.gather(reaches);
             std::vector<double> ids(grid.points());
             std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
             ClusterCandidates cluster;
             Neighbours nb;
             std::size_t checked = 0, wrong = 0, neighbours = 0;
             for (std::size_t b = 0; b < grid.clusters(); ++b) {
-                gather_cluster(grid, b, reaches.data(), ids.data(), nullptr, cluster);
+                gather_cluster(grid, b, point_reaches.data(), ids.data(), nullptr, cluster);
                 std::vector<int> seen(grid.points(), 0);
                 for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
                 for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
