@@ -1,6 +1,7 @@
 /* The 2D parabola W = 1 - q^2 of the deliberately broken plugins that differ only in W or in
    their descriptor. A plugin defines PARABOLA_NAME and may define PARABOLA_W_BODY(q) (the
-   statements of W, returning its value), PARABOLA_SUPPORT and PARABOLA_DIMENSIONS; then
+   statements of W, returning its value), PARABOLA_SUPPORT, PARABOLA_DIMENSIONS and
+   PARABOLA_VERSION (the descriptor's version fields); then
    includes this. */
 #include <math.h>
 #include <sphkern/kernel_plugin.h>
@@ -11,6 +12,9 @@
 #endif
 #ifndef PARABOLA_SUPPORT
 #define PARABOLA_SUPPORT 1.0
+#endif
+#ifndef PARABOLA_VERSION
+#define PARABOLA_VERSION SPHKERN_DESCRIPTOR_VERSION
 #endif
 #ifndef PARABOLA_DIMENSIONS
 #define PARABOLA_DIMENSIONS SPHKERN_DIM(2)
@@ -32,7 +36,7 @@ SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
 SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
+    PARABOLA_VERSION,
     .name = PARABOLA_NAME,
     .title = "broken",
     .reference = "",

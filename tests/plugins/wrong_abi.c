@@ -1,34 +1,4 @@
 /* A deliberately broken kernel plugin for the loader tests: a future ABI version */
-#include <math.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return 1.0 - q * q;
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)dim; (void)k; (void)p;
-    return -2.0 * q;
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const sphkern_kernel_descriptor descriptor = {
-    .abi_major = 999u, .abi_minor = 0u, .struct_size = (uint32_t)sizeof(sphkern_kernel_descriptor),
-    .name = "wrong_abi",
-    .title = "broken",
-    .reference = "",
-    .support = 1.0,
-    .dimensions = SPHKERN_DIM(2),
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#define PARABOLA_NAME "wrong_abi"
+#define PARABOLA_VERSION .abi_major = 999u, .abi_minor = 0u, .struct_size = (uint32_t)sizeof(sphkern_kernel_descriptor)
+#include "parabola_plugin.h"

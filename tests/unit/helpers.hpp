@@ -3,6 +3,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "support/error.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 
@@ -11,9 +12,22 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <cstdlib>
 
 namespace sphkern::test {
+
+// The message and exit code of what f throws; an empty message and ExitCode::ok if nothing.
+template <class F>
+std::pair<std::string, ExitCode> refusal(F&& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return {e.what(), e.code()};
+    }
+    return {"", ExitCode::ok};
+}
 
 inline KernelRegistry& shipped_kernels()
 {

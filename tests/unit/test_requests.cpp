@@ -17,20 +17,9 @@
 #include <limits>
 
 using namespace sphkern;
+using test::refusal;
 
 namespace {
-
-// The message and exit code of what f throws.
-template <class F>
-std::pair<std::string, ExitCode> refusal(F&& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return {e.what(), e.code()};
-    }
-    return {"", ExitCode::ok};
-}
 
 EvaluationSources option_evaluation(const std::string& gravity, const std::string& shells)
 {

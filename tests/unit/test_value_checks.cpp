@@ -1,4 +1,5 @@
 // The one set of input validators: each refusal names its source and keeps its exit code.
+#include "helpers.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <doctest/doctest.h>
@@ -7,22 +8,7 @@
 #include <limits>
 
 using namespace sphkern;
-
-namespace {
-
-// The message and exit code of what f throws.
-template <class F>
-std::pair<std::string, ExitCode> refusal(F&& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return {e.what(), e.code()};
-    }
-    return {"", ExitCode::ok};
-}
-
-} // namespace
+using test::refusal;
 
 TEST_CASE("value checks: k from 0 (excluded) to 100 named by option or argument")
 {
