@@ -2,15 +2,9 @@
 // command line's --json prints (as Python objects), or numpy arrays where the input is
 // an array; bad input raises ValueError and a broken plugin RuntimeError, with the
 // command line's one-line message.
-#include "analysis/acceptance.hpp"
-#include "analysis/design.hpp"
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/results_json.hpp"
-#include "analysis/roots.hpp"
-#include "analysis/site_errors.hpp"
-#include "analysis/site_roots.hpp"
-#include "analysis/surface_profile.hpp"
 #include "kernels/kernel_json.hpp"
 #include "lattices/lattice_json.hpp"
 #include "particles_binding.hpp"
@@ -19,10 +13,6 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "lattices/numeric_inputs.hpp"
-#include "stability/dispersion.hpp"
-#include "stability/roots_convention.hpp"
-#include "stability/roots_stability.hpp"
-#include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"

@@ -1,6 +1,5 @@
 #include "requests/evaluation_inputs.hpp"
 
-#include "analysis/site_errors.hpp"
 #include "lattices/numeric_inputs.hpp"
 
 #include <fmt/format.h>
