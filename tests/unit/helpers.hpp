@@ -31,11 +31,8 @@ std::pair<std::string, ExitCode> refusal(F&& f)
 
 inline KernelRegistry& shipped_kernels()
 {
-    // The build tree's plugins, also when the test binary runs outside ctest.
-    static KernelRegistry registry = [] {
-        ::setenv("SPHKERN_PLUGIN_PATH", SPHKERN_BUILD_DIR "/plugins", 0);
-        return KernelRegistry::discover({});
-    }();
+    // The build tree's plugins (SPHKERN_PLUGIN_PATH, set by the tests' main).
+    static KernelRegistry registry = KernelRegistry::discover({});
     return registry;
 }
 

@@ -27,7 +27,7 @@ TEST_CASE("SWIFT's kernel gamma H / (2 sigma) is the value SWIFT lists for its 3
     }
 }
 
-TEST_CASE("each convention follows from h = k d and H = R h; SWIFT's eta 1.2348 with the cubic spline is GADGET's 48 neighbours")
+TEST_CASE("each convention follows from h = k d and H = R h, and SWIFT's eta 1.2348 with the cubic spline is GADGET's 48 neighbours")
 {
     const Kernel cubic = shipped_kernel("cubic_bspline"); // R = 2
     const double k = 1.3, a_p = 1;                       // sc: dp = d

@@ -73,7 +73,7 @@ TEST_CASE("roots agree with a brute-force evaluation to 1e-9 in 2D and 3D")
         }
 }
 
-TEST_CASE("a sign change across a breakpoint is a jump, not a root; the composite pole is harmless")
+TEST_CASE("a sign change across a breakpoint is a jump, not a root, and the composite pole is harmless")
 {
     // The super-Gaussian truncated at R = 3 (W'(3) != 0): eps_gradP changes sign where the
     // sqrt(7) shell enters the support, at k = sqrt(7)/3.

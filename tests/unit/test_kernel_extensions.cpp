@@ -160,7 +160,7 @@ TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-de
     }
 }
 
-TEST_CASE("the fused W and W' of every shipped plugin equal its scalar functions; without the extension the batches give them")
+TEST_CASE("the fused W and W' of every shipped plugin equal its scalar functions, and without the extension the batches give them")
 {
     std::vector<double> q;
     for (int i = 0; i <= 400; ++i) q.push_back(1.5 * i / 400); // in units of R below

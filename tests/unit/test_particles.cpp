@@ -176,7 +176,7 @@ TEST_CASE("on an unperturbed periodic lattice block every particle has the latti
     }
 }
 
-TEST_CASE("Voronoi volumes: a lattice's cell is a_p d^D to 1e-12; a random set's cells fill its box")
+TEST_CASE("Voronoi volumes: a lattice's cell is a_p d^D to 1e-12, and a random set's cells fill its box")
 {
     for (const std::string name : {"triangular", "fcc", "hcp", "bcc", "hex_prism"}) {
         CAPTURE(name);
@@ -256,7 +256,7 @@ TEST_CASE("Poisson sets: the mean of e0 is V W(0) - 1/N and its variance V int W
     }
 }
 
-TEST_CASE("a perturbed lattice is the same for a seed; results do not depend on the thread count")
+TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend on the thread count")
 {
     const auto lattice = load_lattice("fcc");
     LatticeBlockSpec spec;

@@ -244,7 +244,7 @@ TEST_CASE("hcp: the long-wave figure is the acoustic branches', finite, while an
     CHECK(scan.growth_time() == doctest::Approx(1 / std::sqrt(-scan.lowest().omega2)));
 }
 
-TEST_CASE("mode kinds: bcc's two-site cubic cell has no optical modes once unfolded; one site: kappa and its polarisation")
+TEST_CASE("mode kinds: bcc's two-site cubic cell has no optical modes once unfolded, and one site: kappa and its polarisation")
 {
     const Kernel kernel = shipped_kernel("wendland_c2");
     const auto bcc = load_lattice("bcc");
