@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <ctime>
 #include <optional>
@@ -38,6 +39,42 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 // n is a multiple of the lanes (gather_from_cluster pads with neighbours that add zero).
 enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
 constexpr std::size_t lanes = neighbour_lanes;
+
+// One particle's results in sweep order, before they go to the particle's own (file) place.
+struct PointResult {
+    double e0, eps_rho, eps_gradp, eps_gradp_sum;
+    std::array<double, 3> e1, m1;
+    std::array<double, 6> E;
+    int neighbours;
+    std::uint32_t i;
+};
+
+// The results of a run of clusters, kept contiguous in sweep order and written to the file
+// order of the particles once per block: on a disordered set that order is random in memory,
+// and stores scattered among the sums stall them. A block is small (it stays in L2), so its
+// memory does not grow with the set.
+class ResultBlock {
+public:
+    static constexpr std::size_t flush_at = 1024;
+    PointResult& next()
+    {
+        results_.emplace_back();
+        return results_.back();
+    }
+    bool full() const { return results_.size() >= flush_at; }
+    void flush(ParticleMeasures& out)
+    {
+        for (const PointResult& r : results_) {
+            out.e0[r.i] = r.e0, out.eps_rho[r.i] = r.eps_rho, out.eps_gradp[r.i] = r.eps_gradp;
+            out.eps_gradp_sum[r.i] = r.eps_gradp_sum, out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
+            out.neighbours[r.i] = r.neighbours;
+        }
+        results_.clear();
+    }
+
+private:
+    std::vector<PointResult> results_;
+};
 
 // r = sqrt(r2), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite).
 SPHKERN_VECTOR_CLONES void distances(const double* __restrict r2, std::size_t n, std::size_t live, double inv_h,
@@ -94,14 +131,14 @@ struct Sweep {
     // The candidates of a cluster gathered once, then one fused pass per particle of it:
     // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
     // call, and every sum, over arrays that stay in L1.
-    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
         gather_cluster(grid, c, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
     }
 
-    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
@@ -122,32 +159,34 @@ struct Sweep {
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
         const std::optional<double> sm_total =
             mass.empty() ? std::nullopt : std::optional<double>(t[sm] + mass[p] * w0);
-        store(i, n, h, s0_total, sm_total, m1, e1, E, out);
+        PointResult& r = out.next();
+        r.i = static_cast<std::uint32_t>(i);
+        store(n, h, s0_total, sm_total, m1, e1, E, r);
     }
 
     // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).
-    void store(std::size_t i, std::size_t n, double h, double s0, std::optional<double> sm, const double* m1,
-               const double* e1, const double* E, ParticleMeasures& out) const
+    void store(std::size_t n, double h, double s0, std::optional<double> sm, const double* m1, const double* e1,
+               const double* E, PointResult& out) const
     {
         const int dim = set.dimension;
         const double hd = dim == 3 ? h * h * h : h * h, hd1 = hd * h; // std::pow costs more than the sums of a particle
-        out.e0[i] = s0 / hd - 1;
-        out.eps_rho[i] = sm ? *sm / hd / in.rho0 - 1 : out.e0[i];
-        for (int a = 0; a < 3; ++a) out.m1[i][static_cast<std::size_t>(a)] = m1[a] / hd / h;
-        for (int a = 0; a < 3; ++a) out.e1[i][static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
+        out.e0 = s0 / hd - 1;
+        out.eps_rho = sm ? *sm / hd / in.rho0 - 1 : out.e0;
+        for (int a = 0; a < 3; ++a) out.m1[static_cast<std::size_t>(a)] = m1[a] / hd / h;
+        for (int a = 0; a < 3; ++a) out.e1[static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
         std::array<double, 6> tensor;
         for (int a = 0; a < 6; ++a) tensor[static_cast<std::size_t>(a)] = E[a] / hd1 - (a < dim ? 1.0 : 0.0);
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
-        out.E[i] = tensor;
+        out.E = tensor;
         const Eigen::Vector3d g = set.gravity;
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
-        out.eps_gradp[i] = g.dot(T * g);
-        const Eigen::Vector3d e1v(out.e1[i][0], out.e1[i][1], out.e1[i][2]);
-        out.eps_gradp_sum[i] = out.eps_gradp[i] + 2 * in.depth * e1v.dot(g);
-        out.neighbours[i] = static_cast<int>(n);
-        if (!std::isfinite(out.e0[i]) || !std::isfinite(out.eps_gradp[i]) || !std::isfinite(out.eps_rho[i]))
-            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", i, set.name),
+        out.eps_gradp = g.dot(T * g);
+        const Eigen::Vector3d e1v(out.e1[0], out.e1[1], out.e1[2]);
+        out.eps_gradp_sum = out.eps_gradp + 2 * in.depth * e1v.dot(g);
+        out.neighbours = static_cast<int>(n);
+        if (!std::isfinite(out.e0) || !std::isfinite(out.eps_gradp) || !std::isfinite(out.eps_rho))
+            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", out.i, set.name),
                                 fmt::format("h = {:.6g}", h));
     }
 };
@@ -190,13 +229,16 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     pass.run(grid.clusters(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         Neighbours nb;
         ClusterCandidates cluster;
+        ResultBlock results;
         // The first thread's share stands for the whole: every thread has as many clusters.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} clusters", b - begin + 1));
-            sweep.measure_cluster(b, cluster, nb, out);
+            sweep.measure_cluster(b, cluster, nb, results);
+            if (results.full()) results.flush(out);
         }
+        results.flush(out);
     });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
