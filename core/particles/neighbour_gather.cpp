@@ -39,8 +39,8 @@ struct Compacted {
 };
 
 // Branch-free: every point is written, and the count moves on only for those inside.
-// Without b (with_b false), the b arrays are not touched.
-template <bool with_b>
+// Without b (with_b false), the b arrays are not touched; without r2 (with_r2 false), r2 is not.
+template <bool with_b, bool with_r2>
 std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
 {
     // Local copies: the compiler need not reload them after every store.
@@ -54,7 +54,8 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
         const double r2 = ex * ex + ey * ey + ez * ez;
-        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c];
+        dx[m] = ex, dy[m] = ey, dz[m] = ez, va[m] = a[c];
+        if constexpr (with_r2) r2_out[m] = r2;
         if constexpr (with_b) vb[m] = b[c];
         at_zero += r2 == 0;
         m += r2 <= in.reach2 && r2 > 0;
@@ -66,7 +67,7 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
 // Eight points at a time: compress in registers, then a full store (a compressing store to
 // memory is slow on some processors); the outputs have room for eight more.
-template <bool with_b>
+template <bool with_b, bool with_r2>
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
                                                                      std::size_t& zeros)
 {
@@ -88,7 +89,7 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
         _mm512_storeu_pd(dx + m, _mm512_maskz_compress_pd(inside, ex));
         _mm512_storeu_pd(dy + m, _mm512_maskz_compress_pd(inside, ey));
         _mm512_storeu_pd(dz + m, _mm512_maskz_compress_pd(inside, ez));
-        _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
+        if constexpr (with_r2) _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
         _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
         if constexpr (with_b)
             _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
@@ -101,13 +102,13 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
 
 using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
 
-template <bool with_b>
+template <bool with_b, bool with_r2>
 AppendWithin choose_append_within()
 {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b>;
+    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b, with_r2>;
 #endif
-    return append_within_scalar<with_b>;
+    return append_within_scalar<with_b, with_r2>;
 }
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
@@ -234,14 +235,16 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
 }
 
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
-                         const std::string& set_name, Neighbours& nb)
+                         const std::string& set_name, Neighbours& nb, bool with_r2)
 {
-    static const AppendWithin with_b = choose_append_within<true>(), without_b = choose_append_within<false>();
+    // [with b][with r2]
+    static const AppendWithin append[2][2] = {{choose_append_within<false, false>(), choose_append_within<false, true>()},
+                                              {choose_append_within<true, false>(), choose_append_within<true, true>()}};
     const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.a.data(), cluster.b.data(),
                       cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m = (cluster.with_b ? with_b : without_b)(
+    const std::size_t m = append[cluster.with_b][with_r2](
         in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, 0, zeros);
     require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)

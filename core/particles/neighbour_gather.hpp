@@ -43,10 +43,12 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
 // the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
 // the processor has it), with r2, dx, dy, dz, a and b (b not written if the cluster has none;
 // r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,
-// entries with a = b = dx = dy = dz = 0 and r2 = reach2. Throws Error(input) naming both ids
-// for another particle at p's position.
+// entries with a = b = dx = dy = dz = 0 and r2 = reach2. Without r2 (with_r2 false) the
+// neighbours' r2 is not written (one compress fewer per eight candidates, for a caller that
+// computes it again from dx, dy, dz). Throws Error(input) naming both ids for another particle
+// at p's position.
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
-                         const std::string& set_name, Neighbours& nb);
+                         const std::string& set_name, Neighbours& nb, bool with_r2 = true);
 
 // `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
 // both ids for two, std::logic_error for none.

@@ -87,12 +87,15 @@ private:
     std::vector<PointResult> results_;
 };
 
-// r = sqrt(r2), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite).
-SPHKERN_VECTOR_CLONES void distances(const double* __restrict r2, std::size_t n, std::size_t live, double inv_h,
+// r = sqrt(dx^2 + dy^2 + dz^2) (r2 as the gather computes it, in the same order and without
+// contraction: the same bits), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and
+// W'(0) are finite).
+SPHKERN_VECTOR_CLONES void distances(const double* __restrict dx, const double* __restrict dy,
+                                     const double* __restrict dz, std::size_t n, std::size_t live, double inv_h,
                                      double* __restrict q, double* __restrict inv_r)
 {
     for (std::size_t j = 0; j < n; ++j) {
-        const double r = std::sqrt(r2[j]);
+        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
         q[j] = r * inv_h;
         inv_r[j] = 1.0 / r;
     }
@@ -154,9 +157,9 @@ struct Sweep {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
         const double h = this->h[p], k = h / in.spacing;
-        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb);
+        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
-        distances(nb.r2.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
+        distances(nb.dx.data(), nb.dy.data(), nb.dz.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
         if (mass.empty())
