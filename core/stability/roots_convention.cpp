@@ -1,6 +1,5 @@
 #include "stability/roots_convention.hpp"
 
-#include "analysis/results_json.hpp"
 
 namespace sphkern {
 

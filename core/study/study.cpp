@@ -3,7 +3,6 @@
 #include "study/study_error.hpp"
 #include "support/text/printable_text.hpp"
 
-#include "analysis/results_json.hpp"
 #include "analysis/surface_profile.hpp"
 #include "stability/stability_budget.hpp"
 #include "support/error.hpp"

@@ -1,5 +1,5 @@
 // Errors in a study's inputs name the study file and the JSON Pointer of the entry at
-// fault: "file: /pointer: what is wrong, what was expected" (support/value_checks.hpp's
+// fault: "file: /pointer: what is wrong, what was expected" (support/text/value_checks.hpp's
 // ValueSource::json).
 #pragma once
 

@@ -132,18 +132,20 @@ void check_source_size(const Study& study, const StudyParticleSource& s)
 }
 
 // Each particle source read (a bad file is refused before any section runs); all of them
-// are held at once, so their count together is bounded by the memory budget.
+// are held at once, so their count together is bounded by the memory budget (a source
+// that is relaxed counts twice: it is relaxed in a copy).
 void load_particle_sets(const Study& study, StudyInputs& inputs)
 {
     std::size_t total = 0;
     for (const auto& s : study.particles->sources) {
         check_source_size(study, s);
         inputs.particle_sets.push_back(at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); }));
-        total += inputs.particle_sets.back().size();
+        total += inputs.particle_sets.back().size() * (s.relax ? 2 : 1);
         if (total > max_particles())
             fail_study_input(study.file, s.json_path,
                              "the particle sources up to this one hold " + std::to_string(total) +
-                                 " particles, more than the " + std::to_string(max_particles()) +
+                                 " particles (a relaxed one counted twice), more than the " +
+                                 std::to_string(max_particles()) +
                                  " the memory budget allows (three quarters of the available memory)");
     }
 }
