@@ -102,11 +102,12 @@ SPHKERN_VECTOR_CLONES void distances(const double* __restrict dx, const double* 
     for (std::size_t j = live; j < n; ++j) q[j] = inv_r[j] = 0;
 }
 
-// Without masses (m null), acc[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0.
-template <bool with_mass>
+// Without masses (m null), acc[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0. With one volume
+// for all (uniform_volume), V_j is v_all and v is not read; the padding then needs W = W' = 0.
+template <bool with_mass, bool uniform_volume>
 SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const double* __restrict dy,
                                           const double* __restrict dz, const double* __restrict inv_r,
-                                          const double* __restrict v, const double* __restrict m,
+                                          const double* __restrict v, double v_all, const double* __restrict m,
                                           const double* __restrict w, const double* __restrict dw, std::size_t n,
                                           double* __restrict total)
 {
@@ -114,9 +115,10 @@ SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const dou
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::size_t k = base + l;
-            const double vw = v[k] * w[k];
+            const double vk = uniform_volume ? v_all : v[k];
+            const double vw = vk * w[k];
             // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
-            const double g = -v[k] * dw[k] * inv_r[k];
+            const double g = -vk * dw[k] * inv_r[k];
             const double x = dx[k], y = dy[k], z = dz[k];
             acc[s0][l] += vw;
             if constexpr (with_mass) acc[sm][l] += m[k] * w[k];
@@ -138,6 +140,9 @@ struct Sweep {
     const MeasureInputs& in;
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
+    // The one volume of every particle, or 0 when they differ: then V_j is not gathered per
+    // neighbour (one compress fewer per eight candidates, on every lattice and Poisson set).
+    double uniform_volume;
     // h and the support radius (with its edge) in point order: read in sweep order, not by
     // the particles' own (file) order, which on a disordered set is random in memory.
     std::vector<double> h, reach;
@@ -147,7 +152,8 @@ struct Sweep {
     // call, and every sum, over arrays that stay in L1.
     void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
-        gather_cluster(grid, c, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
+        gather_cluster(grid, c, reach.data(), uniform_volume > 0 ? nullptr : volume.data(),
+                       mass.empty() ? nullptr : mass.data(), cluster);
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
     }
@@ -162,12 +168,7 @@ struct Sweep {
         distances(nb.dx.data(), nb.dy.data(), nb.dz.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
-        if (mass.empty())
-            neighbour_sums<false>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nullptr,
-                                  nb.w.data(), nb.dw.data(), padded, t);
-        else
-            neighbour_sums<true>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nb.b.data(),
-                                 nb.w.data(), nb.dw.data(), padded, t);
+        sum_neighbours(nb, n, padded, t);
         const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume[p] * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
@@ -176,6 +177,22 @@ struct Sweep {
         PointResult& r = out.next();
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
+    }
+
+    // The sums over the `padded` gathered neighbours, the first n of them live.
+    void sum_neighbours(Neighbours& nb, std::size_t n, std::size_t padded, double* t) const
+    {
+        const double* m = mass.empty() ? nullptr : nb.b.data();
+        const double *v = nb.a.data(), *w = nb.w.data(), *dw = nb.dw.data();
+        const double *dx = nb.dx.data(), *dy = nb.dy.data(), *dz = nb.dz.data(), *inv_r = nb.inv_r.data();
+        if (uniform_volume > 0) {
+            for (std::size_t j = n; j < padded; ++j) nb.w[j] = nb.dw[j] = 0; // no V_j = 0 on the padding
+            if (m) neighbour_sums<true, true>(dx, dy, dz, inv_r, v, uniform_volume, m, w, dw, padded, t);
+            else neighbour_sums<false, true>(dx, dy, dz, inv_r, v, uniform_volume, m, w, dw, padded, t);
+        } else if (m)
+            neighbour_sums<true, false>(dx, dy, dz, inv_r, v, 0, m, w, dw, padded, t);
+        else
+            neighbour_sums<false, false>(dx, dy, dz, inv_r, v, 0, m, w, dw, padded, t);
     }
 
     // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).
@@ -205,6 +222,15 @@ struct Sweep {
     }
 };
 
+// The volume every particle has, or 0 if they differ (or are not positive).
+double one_volume(const std::vector<double>& volume)
+{
+    if (volume.empty()) return 0.0;
+    const double v = volume.front();
+    const bool all = v > 0 && std::all_of(volume.begin(), volume.end(), [v](double u) { return u == v; });
+    return all ? v : 0.0;
+}
+
 void check_inputs(const ParticleSet& set, const MeasureInputs& in)
 {
     const std::size_t n = set.size();
@@ -226,8 +252,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     const NeighbourGrid grid(set, kernel.support() * h_max);
     std::vector<double> reach(inputs.h.size());
     for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = kernel.support() * inputs.h[i] * std::sqrt(1 + 2 * support_edge);
-    const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume),
-                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass), grid.gather(inputs.h),
+    const Sweep sweep{kernel,
+                      set,
+                      inputs,
+                      grid,
+                      grid.gather(inputs.volume),
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
+                      one_volume(inputs.volume),
+                      grid.gather(inputs.h),
                       grid.gather(reach)};
 
     ParticleMeasures out;
