@@ -83,9 +83,11 @@ struct Plane {
 void require_surface_inputs(const Kernel& kernel, const Lattice& lattice, int site, double k, int min_layers)
 {
     kernel.require_dimension(lattice.dimension, lattice.name);
+    // Guards only: every front end refuses k and the site first, naming them (the surface
+    // request for the command line and Python; a study reads k in [1e-3, 100] and uses site 0).
     check_k(k, ValueSource::argument("k"));
-    if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
     check_site(site, lattice.sites(), lattice.name, {});
+    if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
 }
 
 // The plane type on top: `termination` if given, else the type holding `site`.

@@ -85,7 +85,9 @@ EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
 
 EvaluationSources evaluation_sources(const EvaluationOptions& options)
 {
-    return {"--gravity \"" + options.gravity + "\"", "--site", ValueSource::option("--shells " + options.shells)};
+    // A site the lattice lacks is refused as input (exit 3), as it always was.
+    return {"--gravity \"" + options.gravity + "\"", {"--site", ExitCode::input},
+            ValueSource::option("--shells " + options.shells)};
 }
 
 std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options)

@@ -22,7 +22,7 @@ struct BlockCommandOptions : CommonOptions {
     std::string ap = "voronoi";
 };
 
-// "N1,N2[,N3]": whole numbers (their count is checked against the lattice).
+// "N1,N2[,N3]": whole numbers (the request checks their count).
 std::vector<long long> parse_size(const std::string& text)
 {
     std::vector<long long> cells;
@@ -31,7 +31,7 @@ std::vector<long long> parse_size(const std::string& text)
     while (std::getline(list, item, ',')) {
         char* end = nullptr;
         long long v = std::strtoll(item.c_str(), &end, 10);
-        if (item.empty() || *end != '\0' || cells.size() >= 3)
+        if (item.empty() || *end != '\0')
             throw Error(ExitCode::usage, "--size " + text + ": expected N1,N2[,N3] integers");
         cells.push_back(v);
     }
@@ -58,7 +58,7 @@ void add_block_options(CLI::App& command, BlockCommandOptions& o)
     command.add_option("--size", o.size, "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)")->required();
     command.add_flag("--periodic", o.periodic, "Periodic lateral sides (the top is always free)");
     command.add_option("--form", o.form, "Gradient form: sum, difference or monaghan")->capture_default_str();
-    command.add_option("--threads", o.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    command.add_option("--threads", o.threads, "Threads (default: every core)");
     command.add_option("--ap", o.ap, "Volume coefficient: a name or a positive number")->capture_default_str();
     command.add_option("--vtk", o.vtk, "Write per-particle results as a legacy VTK file (ParaView)");
     command.add_option("--csv", o.csv, "Write per-particle results as CSV");
@@ -78,7 +78,8 @@ Action add_block_command(CLI::App& app)
         check_output_targets(given_outputs(*command, {{"--vtk", options->vtk}, {"--csv", options->csv}}),
                              read_inputs(options->lattice, options->kernel, options->plugins));
         const auto request = request_from(*options);
-        const BlockSources sources{ValueSource::option("--size " + options->size), ValueSource::option("--threads")};
+        const BlockSources sources{ValueSource::option("--size " + options->size), ValueSource::option("--threads"),
+                                   ValueSource::option("--k")};
         check_block_request(request, sources);
         auto lattice = load_lattice(options->lattice);
         auto registry = discover_kernels(*options);

@@ -29,12 +29,10 @@ DesignRequest request_from(const DesignOptions& o)
     return r;
 }
 
-// The window refused as input (exit 3); the design refuses the site itself.
+// The window refused as input (exit 3).
 DesignSources option_sources(const DesignOptions& o)
 {
-    auto evaluation = evaluation_sources(o.evaluation);
-    evaluation.site = std::nullopt;
-    return {ValueSource::argument("--kmin/--kmax"), evaluation};
+    return {ValueSource::argument("--kmin/--kmax"), evaluation_sources(o.evaluation)};
 }
 
 } // namespace

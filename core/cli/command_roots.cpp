@@ -85,8 +85,7 @@ Action add_roots_command(CLI::App& app)
     command->add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
                                                         "stability) and where condition (22) holds there");
     command->add_option("--gamma", options->gamma, "With --stability: adiabatic index")->capture_default_str();
-    command->add_option("--steps", options->steps, "With --stability: k intervals of the scan")->capture_default_str()
-        ->check(CLI::Range(1, 2000));
+    command->add_option("--steps", options->steps, "With --stability: k intervals of the scan")->capture_default_str();
     command->add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
                                                              "dualsphysics (coefh), swift (eta), gadget (N_ngb), "
                                                              "splishsplash (H/r_p)");

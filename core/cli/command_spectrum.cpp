@@ -18,12 +18,10 @@ Action add_spectrum_command(CLI::App& app)
     auto options = std::make_shared<Options>();
     auto& request = options->request;
     command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("--dim", request.dimension, "Dimension D (1, 2 or 3)")->required()->check(CLI::Range(1, 3));
-    command->add_option("--k", request.k, "k for kernels whose formula depends on it")->capture_default_str()
-        ->check(CLI::Range(1e-3, 100.0));
-    command->add_option("--max", request.kh_max, "Largest kappa h")->capture_default_str()->check(CLI::Range(0.1, 1000.0));
-    command->add_option("--points", request.points, "Intervals on [0, max]")->capture_default_str()
-        ->check(CLI::Range(1, 100000));
+    command->add_option("--dim", request.dimension, "Dimension D (1, 2 or 3)")->required();
+    command->add_option("--k", request.k, "k for kernels whose formula depends on it")->capture_default_str();
+    command->add_option("--max", request.kh_max, "Largest kappa h")->capture_default_str();
+    command->add_option("--points", request.points, "Intervals on [0, max]")->capture_default_str();
     add_set_option(*command, options->sets);
     add_plugin_option(*command, *options);
     add_json_option(*command, *options);

@@ -29,12 +29,9 @@ SurfaceRequest request_from(const SurfaceOptions& o)
     return r;
 }
 
-// The profile refuses k and the site itself, in the words it has always used.
 SurfaceSources option_sources(const SurfaceOptions& o)
 {
-    auto evaluation = evaluation_sources(o.evaluation);
-    evaluation.site = std::nullopt;
-    return {std::nullopt, evaluation};
+    return {ValueSource::option("--k"), evaluation_sources(o.evaluation)};
 }
 
 } // namespace

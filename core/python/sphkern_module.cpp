@@ -2,15 +2,9 @@
 // command line's --json prints (as Python objects), or numpy arrays where the input is
 // an array; bad input raises ValueError and a broken plugin RuntimeError, with the
 // command line's one-line message.
-#include "analysis/acceptance.hpp"
-#include "analysis/design.hpp"
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/results_json.hpp"
-#include "analysis/roots.hpp"
-#include "analysis/site_errors.hpp"
-#include "analysis/site_roots.hpp"
-#include "analysis/surface_profile.hpp"
 #include "kernels/kernel_json.hpp"
 #include "lattices/lattice_json.hpp"
 #include "particles_binding.hpp"
@@ -19,10 +13,6 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "lattices/numeric_inputs.hpp"
-#include "stability/dispersion.hpp"
-#include "stability/roots_convention.hpp"
-#include "stability/roots_stability.hpp"
-#include "stability/stability_json.hpp"
 #include "stability/stability_scan.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
@@ -115,11 +105,11 @@ std::optional<std::vector<double>> gravity_input(const py::object& gravity, int 
 }
 
 // The argument names; gravity named as the command line names "--gravity 0,0,1", so that
-// both say the same line. `site`: whether the request refuses a site itself ("site: ...").
-EvaluationSources argument_sources(const std::optional<std::vector<double>>& gravity, bool site)
+// both say the same line.
+EvaluationSources argument_sources(const std::optional<std::vector<double>>& gravity)
 {
     return {fmt::format("gravity \"{}\"", fmt::join(gravity.value_or(std::vector<double>{}), ",")),
-            site ? std::optional<std::string>("site") : std::nullopt, ValueSource::argument("shells")};
+            ValueSource::argument("site"), ValueSource::argument("shells")};
 }
 
 EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, const py::object& gravity, int site)
@@ -135,7 +125,7 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
 {
     const auto components = gravity_input(gravity, lattice.dimension);
     if (!components) return lattice.gravity;
-    return direction_of(*components, lattice.dimension, argument_sources(components, false).gravity);
+    return direction_of(*components, lattice.dimension, argument_sources(components).gravity);
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
@@ -147,9 +137,8 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     EpsRequest request;
     request.k.assign(k.data(), k.data() + k.size());
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    // The errors engine refuses a site that does not exist in its own words.
     const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"),
-                             argument_sources(request.evaluation.gravity, false)};
+                             argument_sources(request.evaluation.gravity)};
     check_eps_request(request, sources);
     std::vector<ErrorValues> values;
     {
@@ -185,8 +174,7 @@ py::object surface(const std::string& kernel_spec, const std::string& lattice_sp
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
-    // The profile refuses a site that does not exist in its own words.
-    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity, false)};
+    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity)};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);
     return to_python(surface_request_document(request, result, kernel, lattice));
@@ -218,12 +206,12 @@ py::object roots(const std::string& kernel_spec, const std::string& lattice_spec
                                  convention);
     RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
                          ValueSource::argument("gamma"), ValueSource::argument("horizon"),
-                         ValueSource::argument("steps"), argument_sources(std::nullopt, true)};
+                         ValueSource::argument("steps"), argument_sources(std::nullopt)};
     check_roots_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    sources.evaluation = argument_sources(request.evaluation.gravity, true);
+    sources.evaluation = argument_sources(request.evaluation.gravity);
     nlohmann::json document;
     {
         py::gil_scoped_release unlocked;
@@ -241,13 +229,12 @@ py::object design(const std::string& kernel_spec, const std::string& lattice_spe
     request.parameter = param;
     request.k_min = kmin;
     request.k_max = kmax;
-    // The design refuses a site that does not exist in its own words.
-    DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources(std::nullopt, false)};
+    DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources(std::nullopt)};
     check_design_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    sources.evaluation = argument_sources(request.evaluation.gravity, false);
+    sources.evaluation = argument_sources(request.evaluation.gravity);
     if (!range.is_none()) {
         const auto r = range.cast<std::vector<double>>();
         if (r.size() != 2) fail_input("range: expected two numbers [min, max]");
@@ -299,33 +286,22 @@ std::filesystem::path module_folder()
     return std::filesystem::absolute(info.dli_fname).parent_path();
 }
 
-// The adapter: which arguments go together and the ranges the command line's options check.
+// The adapter: the arguments as given (0 grid or path: none); the request checks them and which go together.
 StabilityRequest stability_request(std::optional<double> k, double gamma, const std::optional<std::vector<double>>& wavevector,
                                    std::optional<double> kmin, std::optional<double> kmax, int steps, int grid, int path,
                                    int threads, double horizon, const std::string& h_model)
 {
     StabilityRequest r;
     r.h_model = parse_h_model(h_model, "h_model");
-    if (steps < 1 || steps > 2000) fail_input(fmt::format("steps = {}, expected 1 to 2000", steps));
-    if (grid != 0 && (grid < 2 || grid > 400)) fail_input(fmt::format("grid = {}, expected 2 to 400", grid));
-    if (path != 0 && (path < 2 || path > 100000)) fail_input(fmt::format("path = {}, expected 2 to 100000", path));
-    if (kmin || kmax) {
-        if (!kmin || !kmax || k || wavevector || path) fail_input("kmin and kmax go together, without k, wavevector or path");
-        r.mode = StabilityMode::over_k;
-        r.k_min = *kmin;
-        r.k_max = *kmax;
-    } else {
-        if (!k) fail_input("k: expected a number (or kmin and kmax)");
-        if (wavevector && path) fail_input("wavevector and path: give one of them");
-        r.mode = wavevector ? StabilityMode::wavevector : path ? StabilityMode::path : StabilityMode::zone_scan;
-        r.k = *k;
-        r.wavevector = wavevector.value_or(std::vector<double>{});
-    }
+    r.k = k;
+    r.k_min = kmin;
+    r.k_max = kmax;
+    r.wavevector = wavevector;
     r.steps = steps;
-    r.path_points = path;
+    if (path != 0) r.path_points = path;
     r.gamma = gamma;
     r.horizon = horizon;
-    r.grid = grid;
+    if (grid != 0) r.grid = grid;
     r.threads = threads;
     return r;
 }
@@ -420,9 +396,11 @@ void bind_stability(py::module_& m, const Guard& guard)
              const std::string& h_model) {
               const auto request = stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads,
                                                      horizon, h_model);
-              const StabilitySources sources{ValueSource::argument("k"), ValueSource::argument("kmin"),
-                                             ValueSource::argument("kmax"), ValueSource::argument("gamma"),
-                                             ValueSource::argument("horizon"), ValueSource::argument("wavevector"), ""};
+              const StabilitySources sources{ValueSource::argument("k"),       ValueSource::argument("kmin"),
+                                             ValueSource::argument("kmax"),    ValueSource::argument("gamma"),
+                                             ValueSource::argument("horizon"), ValueSource::argument("wavevector"),
+                                             ValueSource::argument("steps"),   ValueSource::argument("grid"),
+                                             ValueSource::argument("path"),    ""};
               check_stability_request(request, sources);
               auto lattice = load_lattice(lattice_spec);
               auto kernel = kernel_of(kernel_spec, params);

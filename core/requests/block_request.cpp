@@ -13,9 +13,9 @@ namespace sphkern {
 
 void check_block_request(const BlockRequest& r, const BlockSources& sources)
 {
+    check_k(r.k, sources.k);
     if (r.cells.size() > 3) sources.size.fail("expected N1,N2[,N3] integers");
-    if (r.threads < 0 || r.threads > 1024)
-        throw Error(sources.threads.code, fmt::format("{}, expected 0 to 1024", sources.threads.about(r.threads)));
+    check_range(r.threads, 0, 1024, sources.threads);
 }
 
 BlockRun run_block(const BlockRequest& r, const BlockSources& sources, const Kernel& kernel, const Lattice& lattice)

@@ -27,7 +27,7 @@ struct BlockRequest {
 
 // How the front end names each value in its errors: the size as given ("--size 4,4").
 struct BlockSources {
-    ValueSource size, threads;
+    ValueSource size, threads, k;
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.

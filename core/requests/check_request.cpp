@@ -6,8 +6,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 namespace sphkern {
 
 namespace {
@@ -16,12 +14,11 @@ bool only_files(const CheckRequest& r) { return r.names.empty() && !r.all; }
 
 } // namespace
 
-void check_check_request(const CheckRequest& r)
+void check_check_request(const CheckRequest& r, const CheckSources& sources)
 {
     if (only_files(r) && r.plugins.empty())
         throw Error(ExitCode::usage, "check: name a kernel, give --plugin FILE, or use --all");
-    if (!(r.timeout >= 0.1 && r.timeout <= 3600))
-        throw Error(ExitCode::usage, fmt::format("check: timeout {} s, expected 0.1 to 3600", r.timeout));
+    check_range(r.timeout, 0.1, 3600, sources.timeout);
 }
 
 KernelRegistry check_registry(const CheckRequest& r)

@@ -5,6 +5,7 @@
 #include "kernels/check_status.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -24,8 +25,13 @@ struct CheckRequest {
     double timeout = 60;                        // seconds per kernel
 };
 
-// Nothing to check, or a timeout outside [0.1, 3600] s: Error(usage).
-void check_check_request(const CheckRequest& request);
+// How the front end names each value in its errors.
+struct CheckSources {
+    ValueSource timeout;
+};
+
+// Nothing to check (Error(usage)), or a timeout outside [0.1, 3600] s (named by its source).
+void check_check_request(const CheckRequest& request, const CheckSources& sources);
 
 // Where the kernels come from: only the plugin files, or every kernel found and them. The
 // caller keeps it while the kernels live.

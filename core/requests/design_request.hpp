@@ -8,8 +8,6 @@
 #include "requests/evaluation_inputs.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 #include <utility>

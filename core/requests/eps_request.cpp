@@ -32,8 +32,8 @@ EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel
     result.site = evaluation.site;
     const double given = r.k.at(0);
     result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
-    if (!k_in_range(result.k))
-        fail_input(fmt::format("{} on the eta axis is k = {}, expected k in (0, 100]", sources.k.about(given), result.k));
+    // Refused as input (exit 3): the k is the conversion's, not a value given.
+    check_k(result.k, ValueSource::argument("k"), fmt::format(" ({} on the eta axis)", sources.k.about(given)));
     result.eta = eta_of_k(result.k, evaluation.a_p, lattice.dimension);
     result.support_radius = kernel.support() * result.k;
     // Every site: the top-level values describe the chosen one.

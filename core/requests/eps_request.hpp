@@ -38,10 +38,11 @@ struct EpsAtK {
     int dimension = 0;
     Axis axis = Axis::k;
     double k = 0, a_p = 0, eta = 0, support_radius = 0; // support_radius: H/d = R k
-    int site = 0;
-    std::vector<SiteReport> sites;
-    std::size_t worst = 0; // index into sites
-    const ErrorValues& chosen() const { return sites[static_cast<std::size_t>(site)].values; }
+    int site = 0;                  // the chosen site, checked against the lattice by run_eps_at_k
+    std::vector<SiteReport> sites; // every site of the lattice, in order: sites[s].site == s
+    std::size_t worst = 0;         // index into sites
+    // Bounds-checked: an EpsAtK built by hand with a site it lacks throws, never reads past the end.
+    const ErrorValues& chosen() const { return sites.at(static_cast<std::size_t>(site)).values; }
 };
 // The request's one k (converted from eta when given on that axis).
 EpsAtK run_eps_at_k(const EpsRequest& request, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice);

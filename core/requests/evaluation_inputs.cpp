@@ -1,6 +1,5 @@
 #include "requests/evaluation_inputs.hpp"
 
-#include "analysis/site_errors.hpp"
 #include "lattices/numeric_inputs.hpp"
 
 #include <fmt/format.h>
@@ -24,7 +23,7 @@ Evaluation resolve_evaluation(const EvaluationInputs& inputs, const EvaluationSo
 {
     Evaluation e;
     e.a_p = volume_coefficient_of(lattice, inputs.a_p);
-    if (sources.site) check_sites(lattice, {inputs.site}, *sources.site);
+    check_site(inputs.site, lattice.sites(), lattice.name, sources.site);
     e.site = inputs.site;
     e.gravity = inputs.gravity ? direction_of(*inputs.gravity, lattice.dimension, sources.gravity) : lattice.gravity;
     if (!inputs.shell_radii.empty()) e.mode.shell_radii = inputs.shell_radii;

@@ -31,8 +31,7 @@ struct EvaluationInputs {
 // How the front end names the values in its errors.
 struct EvaluationSources {
     std::string gravity; // the direction as given, e.g. "--gravity \"0,0,0\"" or "gravity \"0,0,0\""
-    // "--site" or "site"; none: the computation refuses a site that does not exist in its own words.
-    std::optional<std::string> site;
+    ValueSource site;    // "--site" or "site" (a site the lattice lacks is refused as input, exit 3)
     ValueSource shells;  // e.g. "--shells 1,-1"
 };
 
@@ -50,7 +49,7 @@ void check_evaluation(const EvaluationInputs& inputs, const EvaluationSources& s
 // The volume coefficient a_p: a name the lattice offers or a positive number up to 1e6.
 double volume_coefficient_of(const Lattice& lattice, const VolumeCoefficientInput& a_p);
 
-// a_p, then the site (when `sources` names it), then gravity (as many components as the lattice has dimensions).
+// a_p, then the site, then gravity (as many components as the lattice has dimensions).
 Evaluation resolve_evaluation(const EvaluationInputs& inputs, const EvaluationSources& sources, const Lattice& lattice);
 
 } // namespace sphkern

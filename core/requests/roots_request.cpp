@@ -22,8 +22,7 @@ void check_roots_request(const RootsRequest& r, const RootsSources& sources)
         throw Error(sources.epsilon.code, sources.epsilon.name + " must be in (0, 1)");
     check_gamma(r.model.gamma, sources.gamma.name);
     check_horizon(r.model.horizon, sources.horizon.name);
-    if (r.model.steps < 1 || r.model.steps > 2000)
-        fail_input(fmt::format("{}, expected 1 to 2000", sources.steps.about(r.model.steps)));
+    check_steps(r.model.steps, sources.steps);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

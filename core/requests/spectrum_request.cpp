@@ -10,16 +10,6 @@
 
 namespace sphkern {
 
-namespace {
-
-// value in [min, max], else "--points 0, expected 1 to 100000" (NaN refused too).
-void check_range(double value, double min, double max, const ValueSource& source)
-{
-    if (!(value >= min && value <= max)) throw Error(source.code, fmt::format("{}, expected {} to {}", source.about(value), min, max));
-}
-
-} // namespace
-
 void check_spectrum_request(const SpectrumRequest& r, const SpectrumSources& sources)
 {
     check_range(r.dimension, 1, 3, sources.dimension);

@@ -2,18 +2,60 @@
 
 #include "stability/dispersion.hpp"
 #include "stability/stability_json.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <thread>
 
 namespace sphkern {
 
+StabilityMode stability_mode(const StabilityRequest& r)
+{
+    if (r.k_min || r.k_max) return StabilityMode::over_k;
+    if (r.wavevector) return StabilityMode::wavevector;
+    return r.path_points ? StabilityMode::path : StabilityMode::zone_scan;
+}
+
+namespace {
+
+// The option or argument alone: "--wavevector 1,0" -> "--wavevector".
+std::string bare_name(const ValueSource& source)
+{
+    return source.name.substr(0, source.name.find(' '));
+}
+
+// A k range or one k; a wave vector or a path.
+void check_combination(const StabilityRequest& r, const StabilitySources& sources)
+{
+    if (r.k_min || r.k_max) {
+        if (!r.k_min || !r.k_max || r.k || r.wavevector || r.path_points)
+            throw Error(sources.k_min.code, fmt::format("{} and {} go together, without {}, {} or {}", sources.k_min.name,
+                                                        sources.k_max.name, sources.k.name,
+                                                        bare_name(sources.wavevector), sources.path.name));
+        return;
+    }
+    if (!r.k)
+        throw Error(sources.k.code, fmt::format("{}: expected a number (or {} and {})", sources.k.name,
+                                                sources.k_min.name, sources.k_max.name));
+    if (r.wavevector && r.path_points)
+        throw Error(sources.wavevector.code,
+                    fmt::format("{} and {}: give one of them", bare_name(sources.wavevector), sources.path.name));
+}
+
+} // namespace
+
 void check_stability_request(const StabilityRequest& r, const StabilitySources& sources)
 {
-    if (r.mode == StabilityMode::over_k)
-        check_k_interval(r.k_min, r.k_max, sources.k_min, sources.k_max);
+    check_combination(r, sources);
+    if (stability_mode(r) == StabilityMode::over_k)
+        check_k_interval(*r.k_min, *r.k_max, sources.k_min, sources.k_max);
     else
-        check_k(r.k, sources.k, sources.k_hint);
+        check_k(*r.k, sources.k, sources.k_hint);
+    check_steps(r.steps, sources.steps);
+    if (r.grid) check_range(*r.grid, 2, 400, sources.grid);
+    if (r.path_points) check_range(*r.path_points, 2, 100000, sources.path);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
 }
@@ -22,19 +64,20 @@ nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& 
                              const Lattice& lattice)
 {
     const int threads = r.threads > 0 ? r.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    switch (r.mode) {
+    const int grid = r.grid.value_or(0);
+    switch (stability_mode(r)) {
     case StabilityMode::path:
-        return dispersion_path_document(kernel, lattice, r.k, r.gamma, r.path_points, r.h_model);
+        return dispersion_path_document(kernel, lattice, *r.k, r.gamma, *r.path_points, r.h_model);
     case StabilityMode::wavevector: {
-        const auto kappa = checked_wavevector(r.wavevector, lattice.dimension, sources.wavevector.name);
-        return dispersion_document(kernel, lattice, r.k, r.gamma, kappa, r.h_model);
+        const auto kappa = checked_wavevector(*r.wavevector, lattice.dimension, sources.wavevector.name);
+        return dispersion_document(kernel, lattice, *r.k, r.gamma, kappa, r.h_model);
     }
     case StabilityMode::over_k:
-        return stability_over_k_document(kernel, lattice, r.k_min, r.k_max, r.steps, r.gamma, r.grid, threads,
+        return stability_over_k_document(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid, threads,
                                          r.horizon, r.h_model);
     case StabilityMode::zone_scan: break;
     }
-    return stability_document(kernel, lattice, r.k, r.gamma, r.grid, threads, r.horizon, r.h_model);
+    return stability_document(kernel, lattice, *r.k, r.gamma, grid, threads, r.horizon, r.h_model);
 }
 
 } // namespace sphkern

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace sphkern {
@@ -21,27 +23,31 @@ enum class StabilityMode {
     over_k,     // stability against k: stable intervals over [k_min, k_max]
 };
 
+// The values as given: which of them are given chooses the mode (stability_mode).
 struct StabilityRequest {
-    StabilityMode mode = StabilityMode::zone_scan;
-    double k = 0;                   // every mode but over_k
-    double k_min = 0, k_max = 0;    // over_k
-    int steps = 50;                 // over_k: intervals of the k scan
-    std::vector<double> wavevector; // wavevector: Cartesian components in 1/d, as many as the lattice's dimension
-    int path_points = 0;            // path
+    std::optional<double> k;                       // every mode but over_k
+    std::optional<double> k_min, k_max;            // over_k: both
+    int steps = 50;                                // over_k: intervals of the k scan, 1 to 2000
+    std::optional<std::vector<double>> wavevector; // wavevector: Cartesian components in 1/d
+    std::optional<int> path_points;                // path: about this many points, 2 to 100000
     double gamma = 5.0 / 3.0;
     double horizon = default_horizon; // d/c: slower growth is weak
     HModel h_model = HModel::fixed;
-    int grid = 0;    // 0: the default zone grid
-    int threads = 0; // 0: every core
+    std::optional<int> grid; // the first zone grid, 2 to 400; none: the default
+    int threads = 0;         // 0: every core
 };
+
+// over_k when a k range is given, else wavevector, path or the zone scan.
+StabilityMode stability_mode(const StabilityRequest& request);
 
 // How the front end names each value in its errors ("--k" or "k").
 struct StabilitySources {
-    ValueSource k, k_min, k_max, gamma, horizon, wavevector;
+    ValueSource k, k_min, k_max, gamma, horizon, wavevector, steps, grid, path;
     std::string k_hint; // said after a k out of range, e.g. " (or give --kmin and --kmax)"
 };
 
-// Every value that does not need the kernel or lattice; an Error naming its source.
+// Every value that does not need the kernel or lattice, and which of them go together;
+// an Error naming its source.
 void check_stability_request(const StabilityRequest& request, const StabilitySources& sources);
 
 // The document `sphkern stability --json` prints for the request's mode.

@@ -9,7 +9,7 @@ namespace sphkern {
 
 void check_surface_request(const SurfaceRequest& r, const SurfaceSources& sources)
 {
-    if (sources.k) check_k(r.k, *sources.k);
+    check_k(r.k, sources.k);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

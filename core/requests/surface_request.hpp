@@ -23,10 +23,9 @@ struct SurfaceRequest {
     EvaluationInputs evaluation;     // a_p, gravity and the site on top (every shell)
 };
 
-// How the front end names each value in its errors; a k left to the profile (which
-// refuses it in its own words) when `k` is unset.
+// How the front end names each value in its errors.
 struct SurfaceSources {
-    std::optional<ValueSource> k;
+    ValueSource k;
     EvaluationSources evaluation;
 };
 

@@ -127,8 +127,25 @@ expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 8,8,8 --periodic --vtk "
 expect 3 'the number of layers must be in \[1, 10000\]' -- surface cubic_bspline fcc --k 1.2 --layers 0
 expect 3 '--site: site 5 does not exist; lattice fcc has sites 0 to 0' -- eps cubic_bspline fcc --k 1 --site 5
 expect 2 '--epsilon must be in \(0, 1\)' -- roots cubic_bspline fcc --epsilon 2
-expect 2 'error: --threads' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --threads -1
-expect 2 'error: --timeout' -- check cubic_bspline --timeout 0
+expect 2 'error: --threads -1, expected 0 to 1024$' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --threads -1
+expect 2 'error: --timeout 0, expected 0.1 to 3600$' -- check cubic_bspline --timeout 0
+# Each value is checked once, by its request, naming the option.
+expect 2 'error: --k -1 is not allowed, expected a number in \(0, 100\]$' -- surface cubic_bspline fcc --k -1
+expect 2 'error: --k -1 is not allowed, expected a number in \(0, 100\]$' -- block cubic_bspline fcc --k -1 --size 4,4,4
+expect 2 'error: --dim 4, expected 1 to 3$' -- spectrum cubic_bspline --dim 4
+expect 2 'error: --k 0, expected 0.001 to 100$' -- spectrum cubic_bspline --dim 3 --k 0
+expect 2 'error: --max 0, expected 0.1 to 1000$' -- spectrum cubic_bspline --dim 3 --max 0
+expect 2 'error: --points 0, expected 1 to 100000$' -- spectrum cubic_bspline --dim 3 --points 0
+expect 3 'error: --site: site 3 does not exist; lattice triangular has sites 0 to 0$' -- \
+    design cubic_bspline+desbrun_spiky triangular --param alpha --site 3
+expect 3 'error: k = 120 is not allowed, expected a number in \(0, 100\] \(--k 60 on the eta axis\)$' -- \
+    eps cubic_bspline fcc --axis eta --k 60 --ap 8
+expect 2 'error: --steps 0, expected 1 to 2000$' -- stability cubic_bspline fcc --kmin 1 --kmax 1.2 --steps 0
+expect 2 'error: --grid 1, expected 2 to 400$' -- stability cubic_bspline fcc --k 1.2 --grid 1
+expect 2 'error: --grid 0, expected 2 to 400$' -- stability cubic_bspline fcc --k 1.2 --grid 0
+expect 2 'error: --path 0, expected 2 to 100000$' -- stability cubic_bspline fcc --k 1.2 --path 0
+expect 2 'error: --kmin and --kmax go together, without --k, --wavevector or --path$' -- \
+    stability cubic_bspline fcc --kmin 1 --kmax 1.2 --wavevector 1,0,0
 expect 3 'kernel cubic_bspline has no parameter "beta"' -- design cubic_bspline fcc --param beta
 
 # Plugins named on the command line.
@@ -208,7 +225,7 @@ for bad in 'dispersion_k:"worst":/stability/dispersion_k: expected a number or "
     study s_stability_field "{\"name\": \"s\", \"kernels\": [\"cubic_bspline\"], \"lattices\": [\"fcc\"], \"stability\": {\"$key\": $value}}"
     expect 3 "s_stability_field.json: $message" -- run "$work/s_stability_field.json" -o "$work/out12"
 done
-expect 2 '--steps: Value 0 not in range 1 to 2000' -- roots cubic_bspline fcc --stability --steps 0
+expect 2 'error: --steps 0, expected 1 to 2000$' -- roots cubic_bspline fcc --stability --steps 0
 study s_stability_budget '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"grid": 200, "k": {"steps": 2000}}}'
 expect 3 'kernels x lattices x stability k samples x wave vectors' -- run "$work/s_stability_budget.json" -o "$work/out12"
 study s_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "sweeps": [{"kernel": "cubic_bspline", "parameter": "beta", "range": [0, 1]}]}'
@@ -431,7 +448,7 @@ line.json" --radius 2
 # Several sites: indices out of range, empty lists, terminations that do not exist.
 honeycomb="$examples/honeycomb.json"
 expect 3 '--site: site 2 does not exist; lattice honeycomb has sites 0 to 1' -- roots cubic_bspline "$honeycomb" --site 2
-expect 3 'site 7 does not exist; lattice honeycomb has sites 0 to 1' -- surface cubic_bspline "$honeycomb" --k 1.2 --site 7
+expect 3 'error: --site: site 7 does not exist; lattice honeycomb has sites 0 to 1$' -- surface cubic_bspline "$honeycomb" --k 1.2 --site 7
 expect 3 'termination 2 does not exist; lattice honeycomb has 2 plane type\(s\) normal to this gravity, 0 to 1' -- \
     surface cubic_bspline "$honeycomb" --k 1.2 --termination 2
 study s_sites '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["'"$honeycomb"'"], "sites": [0, 5], "plots": false}'
@@ -530,7 +547,7 @@ expect 2 'gamma 0 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- sta
 expect 2 'gamma -1 is not allowed' -- stability cubic_bspline fcc --k 1.2 --gamma -1
 expect 2 'kmin 1.2 --kmax 1: expected 0 < kmin < kmax' -- stability cubic_bspline fcc --kmin 1.2 --kmax 1
 expect 3 'do not see one SPH density' -- stability cubic_bspline "$examples/lieb.json" --k 1.2
-expect 2 '--path: Value 1 not in range 2 to 100000' -- stability cubic_bspline fcc --k 1.2 --path 1
+expect 2 'error: --path 1, expected 2 to 100000$' -- stability cubic_bspline fcc --k 1.2 --path 1
 expect 2 '--gamma -1 is not allowed, expected a number in \[1e-06, 1e\+06\]' -- roots cubic_bspline fcc --stability --gamma -1
 check "roots --stability: the stable intervals of stability --kmin/--kmax, and their overlap with (22)" python3 -c "
 import json, subprocess

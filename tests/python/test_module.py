@@ -222,6 +222,17 @@ def test_bad_numbers_and_types_raise_instead_of_crashing():
         sphkern.eps(None, "fcc", 1.0)
 
 
+def test_a_site_the_lattice_lacks_is_refused_by_every_function_in_one_wording():
+    for call, lattice in [(lambda: sphkern.eps("cubic_bspline", "fcc", 1.0, site=3), "fcc"),
+                          (lambda: sphkern.surface("cubic_bspline", "fcc", 1.2, site=3), "fcc"),
+                          (lambda: sphkern.roots("cubic_bspline", "fcc", site=3), "fcc"),
+                          (lambda: sphkern.design("cubic_bspline+desbrun_spiky", "triangular", "alpha", site=3),
+                           "triangular")]:
+        with pytest.raises(ValueError) as raised:
+            call()
+        assert str(raised.value) == f"site: site 3 does not exist; lattice {lattice} has sites 0 to 0"
+
+
 def test_plugins_are_probed_as_the_command_line_probes_them(tmp_path):
     with pytest.raises(RuntimeError, match="crash_in_w.so: plugin crashed with signal 11"):
         sphkern.load_plugin(os.path.join(BROKEN, "crash_in_w.so"))

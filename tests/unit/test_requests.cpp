@@ -1,4 +1,4 @@
-// The typed requests of eps, roots, surface, design, spectrum, check and block: each refusal names its source (the command line's
+// The typed requests of eps, roots, surface, design, spectrum, check, block and stability: each refusal names its source (the command line's
 // option or Python's argument) and keeps its exit code; a good request's result equals an
 // independent brute-force lattice sum.
 #include "helpers.hpp"
@@ -9,6 +9,7 @@
 #include "requests/eps_request.hpp"
 #include "requests/roots_request.hpp"
 #include "requests/spectrum_request.hpp"
+#include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
 
 #include <doctest/doctest.h>
@@ -23,7 +24,7 @@ namespace {
 
 EvaluationSources option_evaluation(const std::string& gravity, const std::string& shells)
 {
-    return {"--gravity \"" + gravity + "\"", "--site", ValueSource::option("--shells " + shells)};
+    return {"--gravity \"" + gravity + "\"", {"--site", ExitCode::input}, ValueSource::option("--shells " + shells)};
 }
 
 EpsSources eps_options(const std::string& gravity = "", const std::string& shells = "")
@@ -34,7 +35,7 @@ EpsSources eps_options(const std::string& gravity = "", const std::string& shell
 EpsSources eps_arguments()
 {
     return {ValueSource::argument("k"), ValueSource::argument("axis"),
-            {"gravity \"0,0,0\"", "site", ValueSource::argument("shells")}};
+            {"gravity \"0,0,0\"", ValueSource::argument("site"), ValueSource::argument("shells")}};
 }
 
 EpsRequest eps_at(std::vector<double> k)
@@ -97,7 +98,7 @@ TEST_CASE("eps request: the values that need the lattice are refused naming thei
     eta.axis = Axis::eta;
     eta.evaluation.a_p = 8.0; // k = eta a_p^(1/3) = 120
     auto far = refusal([&] { run_eps_at_k(eta, eps_options(), kernel, lattice); });
-    CHECK(far.first == "--k 60 on the eta axis is k = 120, expected k in (0, 100]");
+    CHECK(far.first == "k = 120 is not allowed, expected a number in (0, 100] (--k 60 on the eta axis)");
     CHECK(far.second == ExitCode::input);
 }
 
@@ -152,7 +153,7 @@ RootsSources roots_arguments()
 {
     return {ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"), ValueSource::argument("gamma"),
             ValueSource::argument("horizon"), ValueSource::argument("steps"),
-            {"gravity \"\"", "site", ValueSource::argument("shells")}};
+            {"gravity \"\"", ValueSource::argument("site"), ValueSource::argument("shells")}};
 }
 
 } // namespace
@@ -222,7 +223,7 @@ TEST_CASE("surface request: k and the values that need the lattice are refused n
 {
     const auto kernel = test::shipped_kernel("cubic_bspline");
     const auto lattice = load_lattice("fcc");
-    const EvaluationSources evaluation{"gravity \"0,0,0\"", std::nullopt, ValueSource::argument("shells")};
+    const EvaluationSources evaluation{"gravity \"0,0,0\"", ValueSource::argument("site"), ValueSource::argument("shells")};
     SurfaceRequest bad_k;
     bad_k.k = -1;
     auto k = refusal([&] { check_surface_request(bad_k, {ValueSource::argument("k"), evaluation}); });
@@ -234,6 +235,16 @@ TEST_CASE("surface request: k and the values that need the lattice are refused n
     CHECK_NOTHROW(check_surface_request(gravity, {ValueSource::argument("k"), evaluation}));
     CHECK(refusal([&] { run_surface(gravity, {ValueSource::argument("k"), evaluation}, kernel, lattice); }).first ==
           "gravity \"0,0,0\" has zero length, expected a direction");
+    // The request names the site, not the profile in its own words.
+    SurfaceRequest site;
+    site.k = 1.2;
+    site.evaluation.site = 3;
+    auto missing = refusal([&] { run_surface(site, {ValueSource::argument("k"), evaluation}, kernel, lattice); });
+    CHECK(missing.first == "site: site 3 does not exist; lattice fcc has sites 0 to 0");
+    CHECK(missing.second == ExitCode::input);
+    auto option = refusal([&] { check_surface_request(bad_k, {ValueSource::option("--k"), evaluation}); });
+    CHECK(option.first == "--k -1 is not allowed, expected a number in (0, 100]");
+    CHECK(option.second == ExitCode::usage);
 }
 
 TEST_CASE("surface request: deep below the surface the errors are the bulk's brute-force sum")
@@ -244,8 +255,9 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
         const auto lattice = load_lattice(name);
         SurfaceRequest request;
         request.k = 1.2;
+        request.layers = 16; // past 2 R k = 4.8 d on both lattices
         request.evaluation.a_p = 0.9;
-        const SurfaceSources sources{ValueSource::argument("k"), {"gravity", "site", ValueSource::argument("shells")}};
+        const SurfaceSources sources{ValueSource::argument("k"), {"gravity", ValueSource::argument("site"), ValueSource::argument("shells")}};
         check_surface_request(request, sources);
         const auto result = run_surface(request, sources, kernel, lattice);
         CHECK(result.a_p == 0.9);
@@ -253,6 +265,23 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
         REQUIRE(result.profile.bulk.sites.size() == 1);
         CHECK(result.profile.bulk.sites[0].eps_rho == doctest::Approx(brute.eps_rho).epsilon(1e-10));
         CHECK(result.profile.bulk.sites[0].eps_gradp == doctest::Approx(brute.eps_gradp).epsilon(1e-10));
+        // A layer deeper than twice the support radius H = R k has every neighbour, and so
+        // has each of its neighbours (the Monaghan form reads their densities): its sums run
+        // over the brute-force bulk's neighbours, only in another order. Both errors are sums
+        // of under a hundred terms of order 1, so rounding stays below 1e-13; 1e-10 leaves room
+        // for that, while a neighbour missing inside 0.99 H would shift eps_rho by over 1e-7.
+        const double complete = 2 * kernel.support() * request.k;
+        int deep = 0;
+        for (const auto& layer : result.profile.layers) {
+            if (layer.depth <= complete + 1e-9) continue;
+            CAPTURE(layer.n);
+            ++deep;
+            for (const auto& v : layer.sites) {
+                CHECK(std::abs(v.eps_rho - brute.eps_rho) < 1e-10);
+                CHECK(std::abs(v.eps_gradp - brute.eps_gradp) < 1e-10);
+            }
+        }
+        CHECK(deep >= 2);
         // The top layer misses the neighbours above it: its density error is far below the bulk's.
         REQUIRE(!result.profile.layers.empty());
         CHECK(result.profile.layers.front().sites.at(0).eps_rho < brute.eps_rho - 0.1);
@@ -262,7 +291,7 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
 TEST_CASE("design request: a bad window is refused naming it; each solution is a zero of both brute-force sums")
 {
     const DesignSources arguments{ValueSource::argument("kmin/kmax"),
-                                  {"gravity", std::nullopt, ValueSource::argument("shells")}};
+                                  {"gravity", ValueSource::argument("site"), ValueSource::argument("shells")}};
     DesignRequest window;
     window.k_min = 2;
     window.k_max = 1;
@@ -270,6 +299,13 @@ TEST_CASE("design request: a bad window is refused naming it; each solution is a
     CHECK(k.first == "kmin/kmax: [2, 1] is not allowed, expected 0 < min < max <= 100");
     CHECK(k.second == ExitCode::input);
     const auto lattice = load_lattice("triangular");
+    DesignRequest site;
+    site.parameter = "alpha";
+    site.evaluation.site = 3;
+    const Kernel spiky_blend(test::shipped_kernels().find("cubic_bspline+desbrun_spiky"));
+    auto missing = refusal([&] { run_design(site, arguments, spiky_blend, lattice); });
+    CHECK(missing.first == "site: site 3 does not exist; lattice triangular has sites 0 to 0");
+    CHECK(missing.second == ExitCode::input);
     const Kernel blend(test::shipped_kernels().find("cubic_bspline+desbrun_spiky"));
     DesignRequest request;
     request.parameter = "alpha";
@@ -340,19 +376,22 @@ TEST_CASE("spectrum request: the cubic B-spline's 1D transform is sinc^4(kappa h
 
 TEST_CASE("check request: nothing to check is refused; the verdict is a status, strict counts a warning")
 {
-    auto nothing = refusal([] { check_check_request(CheckRequest{}); });
+    const CheckSources sources{ValueSource::option("--timeout")};
+    auto nothing = refusal([&] { check_check_request(CheckRequest{}, sources); });
     CHECK(nothing.first == "check: name a kernel, give --plugin FILE, or use --all");
     CHECK(nothing.second == ExitCode::usage);
     CheckRequest slow;
     slow.names = {"cubic_bspline"};
     slow.timeout = 0;
-    CHECK(refusal([&] { check_check_request(slow); }).first == "check: timeout 0 s, expected 0.1 to 3600");
+    auto timeout = refusal([&] { check_check_request(slow, sources); });
+    CHECK(timeout.first == "--timeout 0, expected 0.1 to 3600");
+    CHECK(timeout.second == ExitCode::usage);
     CHECK(check_status_named("warn") == CheckStatus::warn);
     CHECK(std::string(check_status_name(CheckStatus::fail)) == "fail");
     CHECK(refusal([] { check_status_named("fine"); }).second == ExitCode::plugin);
     CheckRequest request;
     request.names = {"cubic_bspline", "super_gaussian"};
-    check_check_request(request);
+    check_check_request(request, sources);
     auto registry = check_registry(request);
     const auto kernels = kernels_to_check(request, registry);
     REQUIRE(kernels.size() == 2);
@@ -369,9 +408,15 @@ TEST_CASE("check request: nothing to check is refused; the verdict is a status, 
 
 TEST_CASE("block request: sizes are refused naming the option; deep inside a periodic block the errors are the bulk's")
 {
-    const BlockSources sources{ValueSource::option("--size 10,10"), ValueSource::option("--threads")};
+    const BlockSources sources{ValueSource::option("--size 10,10"), ValueSource::option("--threads"),
+                               ValueSource::option("--k")};
     const auto kernel = test::shipped_kernel("cubic_bspline");
     BlockRequest request;
+    request.k = -1;
+    request.cells = {10, 10, 10};
+    auto k = refusal([&] { check_block_request(request, sources); });
+    CHECK(k.first == "--k -1 is not allowed, expected a number in (0, 100]");
+    CHECK(k.second == ExitCode::usage);
     request.k = 1.2;
     request.cells = {1, 2, 3, 4};
     CHECK(refusal([&] { check_block_request(request, sources); }).first == "--size 10,10: expected N1,N2[,N3] integers");
@@ -404,4 +449,59 @@ TEST_CASE("block request: sizes are refused naming the option; deep inside a per
         CHECK(l.gradp_max == doctest::Approx(bulk.eps_gradp).epsilon(1e-10).scale(1));
     }
     CHECK(deep == 4);
+}
+
+namespace {
+
+StabilitySources stability_sources(bool options)
+{
+    auto named = [&](const std::string& name) {
+        return options ? ValueSource::option("--" + name) : ValueSource::argument(name);
+    };
+    return {named("k"),       named("kmin"),  named("kmax"), named("gamma"), named("horizon"),
+            named("wavevector"), named("steps"), named("grid"), named("path"), ""};
+}
+
+} // namespace
+
+TEST_CASE("stability request: ranges and which values go together are refused naming their source")
+{
+    StabilityRequest at_k;
+    at_k.k = 1.2;
+    CHECK_NOTHROW(check_stability_request(at_k, stability_sources(true)));
+    CHECK(stability_mode(at_k) == StabilityMode::zone_scan);
+    auto steps = at_k;
+    steps.steps = 0;
+    CHECK(refusal([&] { check_stability_request(steps, stability_sources(false)); }).first ==
+          "steps = 0, expected 1 to 2000");
+    auto steps_option = refusal([&] { check_stability_request(steps, stability_sources(true)); });
+    CHECK(steps_option.first == "--steps 0, expected 1 to 2000");
+    CHECK(steps_option.second == ExitCode::usage);
+    auto grid = at_k;
+    grid.grid = 401;
+    CHECK(refusal([&] { check_stability_request(grid, stability_sources(false)); }).first ==
+          "grid = 401, expected 2 to 400");
+    auto path = at_k;
+    path.path_points = 1;
+    CHECK(refusal([&] { check_stability_request(path, stability_sources(true)); }).first ==
+          "--path 1, expected 2 to 100000");
+    path.path_points = 10;
+    CHECK(stability_mode(path) == StabilityMode::path);
+    path.wavevector = std::vector<double>{1, 0, 0};
+    CHECK(refusal([&] { check_stability_request(path, stability_sources(false)); }).first ==
+          "wavevector and path: give one of them");
+    StabilityRequest range;
+    range.k_min = 0.8;
+    CHECK(refusal([&] { check_stability_request(range, stability_sources(false)); }).first ==
+          "kmin and kmax go together, without k, wavevector or path");
+    range.k_max = 1.2;
+    CHECK(stability_mode(range) == StabilityMode::over_k);
+    CHECK_NOTHROW(check_stability_request(range, stability_sources(true)));
+    range.wavevector = std::vector<double>{1, 0, 0};
+    auto together = refusal([&] { check_stability_request(range, stability_sources(true)); });
+    CHECK(together.first == "--kmin and --kmax go together, without --k, --wavevector or --path");
+    CHECK(together.second == ExitCode::usage);
+    auto no_k = refusal([&] { check_stability_request(StabilityRequest{}, stability_sources(false)); });
+    CHECK(no_k.first == "k: expected a number (or kmin and kmax)");
+    CHECK(no_k.second == ExitCode::input);
 }

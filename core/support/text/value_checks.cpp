@@ -30,6 +30,17 @@ void check_k(double k, const ValueSource& source, std::string_view hint)
         throw Error(source.code, fmt::format("{} is not allowed, expected a number in (0, 100]{}", source.about(k), hint));
 }
 
+void check_range(double value, double min, double max, const ValueSource& source)
+{
+    if (!(value >= min && value <= max))
+        throw Error(source.code, fmt::format("{}, expected {} to {}", source.about(value), min, max));
+}
+
+void check_steps(int steps, const ValueSource& source)
+{
+    check_range(steps, 1, max_scan_steps, source);
+}
+
 namespace {
 
 bool valid_interval(double k_min, double k_max, IntervalEnds kind)

@@ -50,6 +50,12 @@ bool k_in_range(double k);
 // "--k -1 is not allowed, expected a number in (0, 100]" (and `hint` after it).
 void check_k(double k, const ValueSource& source, std::string_view hint = {});
 
+// A number in [min, max] (NaN refused): "--points 0, expected 1 to 100000", "steps = 0, expected 1 to 2000".
+void check_range(double value, double min, double max, const ValueSource& source);
+// The intervals of a k scan (roots --stability, stability over k): 1 to 2000.
+constexpr int max_scan_steps = 2000;
+void check_steps(int steps, const ValueSource& source);
+
 // A k interval: 0 < min < max <= 100, or min <= max where one point is a valid interval.
 enum class IntervalEnds { distinct, may_meet };
 // Named as one value: "k interval: [1.3, 1] is not allowed, expected 0 < min < max <= 100".
