@@ -39,8 +39,8 @@ struct Compacted {
 };
 
 // Branch-free: every point is written, and the count moves on only for those inside.
-// Without b (with_b false), the b arrays are not touched.
-template <bool with_b>
+// Without b (with_b false), the b arrays are not touched; without r2 (with_r2 false), r2 is not.
+template <bool with_b, bool with_r2>
 std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
 {
     // Local copies: the compiler need not reload them after every store.
@@ -54,7 +54,9 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
         const double r2 = ex * ex + ey * ey + ez * ez;
-        dx[m] = ex, dy[m] = ey, dz[m] = ez, r2_out[m] = r2, va[m] = a[c];
+        dx[m] = ex, dy[m] = ey, dz[m] = ez;
+        if (a) va[m] = a[c];
+        if constexpr (with_r2) r2_out[m] = r2;
         if constexpr (with_b) vb[m] = b[c];
         at_zero += r2 == 0;
         m += r2 <= in.reach2 && r2 > 0;
@@ -66,7 +68,7 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
 // Eight points at a time: compress in registers, then a full store (a compressing store to
 // memory is slow on some processors); the outputs have room for eight more.
-template <bool with_b>
+template <bool with_b, bool with_r2>
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
                                                                      std::size_t& zeros)
 {
@@ -88,8 +90,8 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
         _mm512_storeu_pd(dx + m, _mm512_maskz_compress_pd(inside, ex));
         _mm512_storeu_pd(dy + m, _mm512_maskz_compress_pd(inside, ey));
         _mm512_storeu_pd(dz + m, _mm512_maskz_compress_pd(inside, ez));
-        _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
-        _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
+        if constexpr (with_r2) _mm512_storeu_pd(r2_out + m, _mm512_maskz_compress_pd(inside, r2));
+        if (a) _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
         if constexpr (with_b)
             _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
         m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
@@ -101,13 +103,13 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
 
 using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
 
-template <bool with_b>
+template <bool with_b, bool with_r2>
 AppendWithin choose_append_within()
 {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b>;
+    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b, with_r2>;
 #endif
-    return append_within_scalar<with_b>;
+    return append_within_scalar<with_b, with_r2>;
 }
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
@@ -151,7 +153,8 @@ std::size_t append_near_box_scalar(const RunInput& in, const double* lo, const d
         const double ex = std::max({0.0, lo[0] - x[c], x[c] - hi[0]});
         const double ey = std::max({0.0, lo[1] - y[c], y[c] - hi[1]});
         const double ez = std::max({0.0, lo[2] - z[c], z[c] - hi[2]});
-        ox[m] = x[c], oy[m] = y[c], oz[m] = z[c], oa[m] = a[c];
+        ox[m] = x[c], oy[m] = y[c], oz[m] = z[c];
+        if (a) oa[m] = a[c];
         if (b) ob[m] = b[c];
         m += ex * ex + ey * ey + ez * ez <= in.reach2;
     }
@@ -185,7 +188,7 @@ __attribute__((target("avx512f"))) std::size_t append_near_box_avx512(const RunI
         _mm512_storeu_pd(ox + m, _mm512_maskz_compress_pd(inside, px));
         _mm512_storeu_pd(oy + m, _mm512_maskz_compress_pd(inside, py));
         _mm512_storeu_pd(oz + m, _mm512_maskz_compress_pd(inside, pz));
-        _mm512_storeu_pd(oa + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
+        if (a) _mm512_storeu_pd(oa + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
         if (b) _mm512_storeu_pd(ob + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
         m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
     }
@@ -209,7 +212,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
                     ClusterCandidates& out)
 {
     static const AppendNearBox append_near_box = choose_append_near_box();
-    out.count = 0, out.reach = 0, out.with_b = b != nullptr;
+    out.count = 0, out.reach = 0, out.with_a = a != nullptr, out.with_b = b != nullptr;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
     for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
@@ -225,7 +228,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
     std::size_t m = 0;
     grid.for_each_run_near_box(lo, hi, out.reach, [&](std::size_t begin, std::size_t end) {
         in.n = end - begin;
-        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a + begin;
+        in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a ? a + begin : nullptr;
         in.b = b ? b + begin : nullptr;
         out.reserve(m + in.n + neighbour_lanes);
         m = append_near_box(in, lo, hi, out, m);
@@ -234,14 +237,17 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
 }
 
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
-                         const std::string& set_name, Neighbours& nb)
+                         const std::string& set_name, Neighbours& nb, bool with_r2)
 {
-    static const AppendWithin with_b = choose_append_within<true>(), without_b = choose_append_within<false>();
-    const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.a.data(), cluster.b.data(),
+    // [with b][with r2]
+    static const AppendWithin append[2][2] = {{choose_append_within<false, false>(), choose_append_within<false, true>()},
+                                              {choose_append_within<true, false>(), choose_append_within<true, true>()}};
+    const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.with_a ? cluster.a.data() : nullptr,
+                      cluster.b.data(),
                       cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m = (cluster.with_b ? with_b : without_b)(
+    const std::size_t m = append[cluster.with_b][with_r2](
         in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, 0, zeros);
     require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)

@@ -27,26 +27,29 @@ inline constexpr std::size_t neighbour_lanes = 8;
 // particles) of the box around them, in the grid's fixed order, contiguous, so that each
 // particle's pass over them stays in L1 and the rows are cut once per cluster, not per particle.
 struct ClusterCandidates {
-    std::vector<double> x, y, z, a, b; // b only when gathered with b
+    std::vector<double> x, y, z, a, b; // a and b only when gathered with them
     std::size_t count = 0;
     double reach = 0;
-    bool with_b = false;
+    bool with_a = true, with_b = false;
     void reserve(std::size_t n);
 };
 
 // The candidates of cluster c for particles whose support radius is reach[point] (in the
-// grid's point order), with a[j] and, unless b is null, b[j] per point. count = 0 for a cluster of ghosts.
+// grid's point order), with a[j] unless a is null and b[j] unless b is null per point. count = 0
+// for a cluster of ghosts.
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
                     ClusterCandidates& out);
 
 // The neighbours of point p of the cluster within sqrt(reach2), p itself left out, from
 // the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
-// the processor has it), with r2, dx, dy, dz, a and b (b not written if the cluster has none;
+// the processor has it), with r2, dx, dy, dz, a and b (a or b not written if the cluster has none;
 // r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,
-// entries with a = b = dx = dy = dz = 0 and r2 = reach2. Throws Error(input) naming both ids
-// for another particle at p's position.
+// entries with a = b = dx = dy = dz = 0 and r2 = reach2. Without r2 (with_r2 false) the
+// neighbours' r2 is not written (one compress fewer per eight candidates, for a caller that
+// computes it again from dx, dy, dz). Throws Error(input) naming both ids for another particle
+// at p's position.
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
-                         const std::string& set_name, Neighbours& nb);
+                         const std::string& set_name, Neighbours& nb, bool with_r2 = true);
 
 // `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
 // both ids for two, std::logic_error for none.

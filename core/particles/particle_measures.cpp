@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <ctime>
 #include <optional>
@@ -39,23 +40,74 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
 constexpr std::size_t lanes = neighbour_lanes;
 
-// r = sqrt(r2), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite).
-SPHKERN_VECTOR_CLONES void distances(const double* __restrict r2, std::size_t n, std::size_t live, double inv_h,
+// One particle's results in sweep order, before they go to the particle's own (file) place.
+struct PointResult {
+    double e0, eps_rho, eps_gradp, eps_gradp_sum;
+    std::array<double, 3> e1, m1;
+    std::array<double, 6> E;
+    int neighbours;
+    std::uint32_t i;
+};
+
+// The results of a run of clusters, kept contiguous in sweep order and written to the file
+// order of the particles once per block: on a disordered set that order is random in memory,
+// and stores scattered among the sums stall them. A block is small (it stays in L2), so its
+// memory does not grow with the set.
+class ResultBlock {
+public:
+    static constexpr std::size_t flush_at = 1024;
+    PointResult& next()
+    {
+        results_.emplace_back();
+        return results_.back();
+    }
+    bool full() const { return results_.size() >= flush_at; }
+    void flush(ParticleMeasures& out)
+    {
+        constexpr std::size_t ahead = 8;
+        for (std::size_t k = 0; k < results_.size(); ++k) {
+            if (k + ahead < results_.size()) prefetch(out, results_[k + ahead].i);
+            const PointResult& r = results_[k];
+            out.e0[r.i] = r.e0, out.eps_rho[r.i] = r.eps_rho, out.eps_gradp[r.i] = r.eps_gradp;
+            out.eps_gradp_sum[r.i] = r.eps_gradp_sum, out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
+            out.neighbours[r.i] = r.neighbours;
+        }
+        results_.clear();
+    }
+
+private:
+    // The destinations of a result a few ahead: the stores then find their lines in cache.
+    static void prefetch(ParticleMeasures& out, std::size_t i)
+    {
+        __builtin_prefetch(&out.e0[i], 1), __builtin_prefetch(&out.eps_rho[i], 1);
+        __builtin_prefetch(&out.eps_gradp[i], 1), __builtin_prefetch(&out.eps_gradp_sum[i], 1);
+        __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
+        __builtin_prefetch(&out.neighbours[i], 1);
+    }
+    std::vector<PointResult> results_;
+};
+
+// r = sqrt(dx^2 + dy^2 + dz^2) (r2 as the gather computes it, in the same order and without
+// contraction: the same bits), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and
+// W'(0) are finite).
+SPHKERN_VECTOR_CLONES void distances(const double* __restrict dx, const double* __restrict dy,
+                                     const double* __restrict dz, std::size_t n, std::size_t live, double inv_h,
                                      double* __restrict q, double* __restrict inv_r)
 {
     for (std::size_t j = 0; j < n; ++j) {
-        const double r = std::sqrt(r2[j]);
+        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
         q[j] = r * inv_h;
         inv_r[j] = 1.0 / r;
     }
     for (std::size_t j = live; j < n; ++j) q[j] = inv_r[j] = 0;
 }
 
-// Without masses (m null), acc[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0.
-template <bool with_mass>
+// Without masses (m null), acc[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0. With one volume
+// for all (uniform_volume), V_j is v_all and v is not read; the padding then needs W = W' = 0.
+template <bool with_mass, bool uniform_volume>
 SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const double* __restrict dy,
                                           const double* __restrict dz, const double* __restrict inv_r,
-                                          const double* __restrict v, const double* __restrict m,
+                                          const double* __restrict v, double v_all, const double* __restrict m,
                                           const double* __restrict w, const double* __restrict dw, std::size_t n,
                                           double* __restrict total)
 {
@@ -63,9 +115,10 @@ SPHKERN_VECTOR_CLONES void neighbour_sums(const double* __restrict dx, const dou
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::size_t k = base + l;
-            const double vw = v[k] * w[k];
+            const double vk = uniform_volume ? v_all : v[k];
+            const double vw = vk * w[k];
             // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
-            const double g = -v[k] * dw[k] * inv_r[k];
+            const double g = -vk * dw[k] * inv_r[k];
             const double x = dx[k], y = dy[k], z = dz[k];
             acc[s0][l] += vw;
             if constexpr (with_mass) acc[sm][l] += m[k] * w[k];
@@ -87,6 +140,9 @@ struct Sweep {
     const MeasureInputs& in;
     const NeighbourGrid& grid;
     std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
+    // The one volume of every particle, or 0 when they differ: then V_j is not gathered per
+    // neighbour (one compress fewer per eight candidates, on every lattice and Poisson set).
+    double uniform_volume;
     // h and the support radius (with its edge) in point order: read in sweep order, not by
     // the particles' own (file) order, which on a disordered set is random in memory.
     std::vector<double> h, reach;
@@ -94,63 +150,86 @@ struct Sweep {
     // The candidates of a cluster gathered once, then one fused pass per particle of it:
     // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
     // call, and every sum, over arrays that stay in L1.
-    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
-        gather_cluster(grid, c, reach.data(), volume.data(), mass.empty() ? nullptr : mass.data(), cluster);
+        gather_cluster(grid, c, reach.data(), uniform_volume > 0 ? nullptr : volume.data(),
+                       mass.empty() ? nullptr : mass.data(), cluster);
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
     }
 
-    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ParticleMeasures& out) const
+    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
         const double h = this->h[p], k = h / in.spacing;
-        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb);
+        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
-        distances(nb.r2.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
+        distances(nb.dx.data(), nb.dy.data(), nb.dz.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
-        if (mass.empty())
-            neighbour_sums<false>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nullptr,
-                                  nb.w.data(), nb.dw.data(), padded, t);
-        else
-            neighbour_sums<true>(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.inv_r.data(), nb.a.data(), nb.b.data(),
-                                 nb.w.data(), nb.dw.data(), padded, t);
+        sum_neighbours(nb, n, padded, t);
         const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume[p] * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
         const std::optional<double> sm_total =
             mass.empty() ? std::nullopt : std::optional<double>(t[sm] + mass[p] * w0);
-        store(i, n, h, s0_total, sm_total, m1, e1, E, out);
+        PointResult& r = out.next();
+        r.i = static_cast<std::uint32_t>(i);
+        store(n, h, s0_total, sm_total, m1, e1, E, r);
+    }
+
+    // The sums over the `padded` gathered neighbours, the first n of them live.
+    void sum_neighbours(Neighbours& nb, std::size_t n, std::size_t padded, double* t) const
+    {
+        const double* m = mass.empty() ? nullptr : nb.b.data();
+        const double *v = nb.a.data(), *w = nb.w.data(), *dw = nb.dw.data();
+        const double *dx = nb.dx.data(), *dy = nb.dy.data(), *dz = nb.dz.data(), *inv_r = nb.inv_r.data();
+        if (uniform_volume > 0) {
+            for (std::size_t j = n; j < padded; ++j) nb.w[j] = nb.dw[j] = 0; // no V_j = 0 on the padding
+            if (m) neighbour_sums<true, true>(dx, dy, dz, inv_r, v, uniform_volume, m, w, dw, padded, t);
+            else neighbour_sums<false, true>(dx, dy, dz, inv_r, v, uniform_volume, m, w, dw, padded, t);
+        } else if (m)
+            neighbour_sums<true, false>(dx, dy, dz, inv_r, v, 0, m, w, dw, padded, t);
+        else
+            neighbour_sums<false, false>(dx, dy, dz, inv_r, v, 0, m, w, dw, padded, t);
     }
 
     // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).
-    void store(std::size_t i, std::size_t n, double h, double s0, std::optional<double> sm, const double* m1,
-               const double* e1, const double* E, ParticleMeasures& out) const
+    void store(std::size_t n, double h, double s0, std::optional<double> sm, const double* m1, const double* e1,
+               const double* E, PointResult& out) const
     {
         const int dim = set.dimension;
         const double hd = dim == 3 ? h * h * h : h * h, hd1 = hd * h; // std::pow costs more than the sums of a particle
-        out.e0[i] = s0 / hd - 1;
-        out.eps_rho[i] = sm ? *sm / hd / in.rho0 - 1 : out.e0[i];
-        for (int a = 0; a < 3; ++a) out.m1[i][static_cast<std::size_t>(a)] = m1[a] / hd / h;
-        for (int a = 0; a < 3; ++a) out.e1[i][static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
+        out.e0 = s0 / hd - 1;
+        out.eps_rho = sm ? *sm / hd / in.rho0 - 1 : out.e0;
+        for (int a = 0; a < 3; ++a) out.m1[static_cast<std::size_t>(a)] = m1[a] / hd / h;
+        for (int a = 0; a < 3; ++a) out.e1[static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
         std::array<double, 6> tensor;
         for (int a = 0; a < 6; ++a) tensor[static_cast<std::size_t>(a)] = E[a] / hd1 - (a < dim ? 1.0 : 0.0);
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
-        out.E[i] = tensor;
+        out.E = tensor;
         const Eigen::Vector3d g = set.gravity;
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
-        out.eps_gradp[i] = g.dot(T * g);
-        const Eigen::Vector3d e1v(out.e1[i][0], out.e1[i][1], out.e1[i][2]);
-        out.eps_gradp_sum[i] = out.eps_gradp[i] + 2 * in.depth * e1v.dot(g);
-        out.neighbours[i] = static_cast<int>(n);
-        if (!std::isfinite(out.e0[i]) || !std::isfinite(out.eps_gradp[i]) || !std::isfinite(out.eps_rho[i]))
-            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", i, set.name),
+        out.eps_gradp = g.dot(T * g);
+        const Eigen::Vector3d e1v(out.e1[0], out.e1[1], out.e1[2]);
+        out.eps_gradp_sum = out.eps_gradp + 2 * in.depth * e1v.dot(g);
+        out.neighbours = static_cast<int>(n);
+        if (!std::isfinite(out.e0) || !std::isfinite(out.eps_gradp) || !std::isfinite(out.eps_rho))
+            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", out.i, set.name),
                                 fmt::format("h = {:.6g}", h));
     }
 };
+
+// The volume every particle has, or 0 if they differ (or are not positive).
+double one_volume(const std::vector<double>& volume)
+{
+    if (volume.empty()) return 0.0;
+    const double v = volume.front();
+    const bool all = v > 0 && std::all_of(volume.begin(), volume.end(), [v](double u) { return u == v; });
+    return all ? v : 0.0;
+}
 
 void check_inputs(const ParticleSet& set, const MeasureInputs& in)
 {
@@ -173,8 +252,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     const NeighbourGrid grid(set, kernel.support() * h_max);
     std::vector<double> reach(inputs.h.size());
     for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = kernel.support() * inputs.h[i] * std::sqrt(1 + 2 * support_edge);
-    const Sweep sweep{kernel, set, inputs, grid, grid.gather(inputs.volume),
-                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass), grid.gather(inputs.h),
+    const Sweep sweep{kernel,
+                      set,
+                      inputs,
+                      grid,
+                      grid.gather(inputs.volume),
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
+                      one_volume(inputs.volume),
+                      grid.gather(inputs.h),
                       grid.gather(reach)};
 
     ParticleMeasures out;
@@ -190,13 +275,16 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     pass.run(grid.clusters(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
         Neighbours nb;
         ClusterCandidates cluster;
+        ResultBlock results;
         // The first thread's share stands for the whole: every thread has as many clusters.
         std::optional<Progress> progress;
         if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
             if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} clusters", b - begin + 1));
-            sweep.measure_cluster(b, cluster, nb, out);
+            sweep.measure_cluster(b, cluster, nb, results);
+            if (results.full()) results.flush(out);
         }
+        results.flush(out);
     });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
