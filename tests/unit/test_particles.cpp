@@ -18,6 +18,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <random>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -409,6 +410,30 @@ TEST_CASE("statistics: percentiles interpolate between order statistics as numpy
     CHECK(s.mean == doctest::Approx(3.875).epsilon(1e-15));
     CHECK(s.rms == doctest::Approx(std::sqrt(173.0 / 8)).epsilon(1e-15));
     CHECK(s.std == doctest::Approx(std::sqrt(173.0 / 8 - 3.875 * 3.875)).epsilon(1e-14));
+}
+
+TEST_CASE("statistics: percentiles equal numpy's linear interpolation of the sorted values, for every size and with ties")
+{
+    // The reference sorts; summarise selects (nth_element).
+    auto reference = [](std::vector<double> v, double p) {
+        std::sort(v.begin(), v.end());
+        const double rank = p * static_cast<double>(v.size() - 1);
+        const auto lo = static_cast<std::size_t>(std::floor(rank));
+        const double above = lo + 1 < v.size() ? v[lo + 1] : v[lo];
+        return v[lo] + (rank - static_cast<double>(lo)) * (above - v[lo]);
+    };
+    std::mt19937_64 random(5);
+    for (std::size_t n = 1; n <= 420; n += (n < 40 ? 1 : 37))
+        for (int ties : {0, 1}) {
+            CAPTURE(n);
+            CAPTURE(ties);
+            std::vector<double> values(n);
+            for (auto& v : values) v = ties ? static_cast<double>(random() % 5) : static_cast<double>(random() % 100000) / 7.0;
+            const auto s = summarise(values);
+            CHECK(s.p1 == reference(values, 0.01));
+            CHECK(s.p50 == reference(values, 0.5));
+            CHECK(s.p99 == reference(values, 0.99));
+        }
 }
 
 TEST_CASE("the runs cut to a point's support hold every point within it once, about 3 (3D) or 2 (2D) candidates a neighbour")
