@@ -87,7 +87,8 @@ void require_surface_inputs(const Kernel& kernel, const Lattice& lattice, int si
     // request for the command line and Python; a study reads k in [1e-3, 100] and uses site 0).
     check_k(k, ValueSource::argument("k"));
     check_site(site, lattice.sites(), lattice.name, {});
-    if (min_layers < 1 || min_layers > 10000) fail_input("the number of layers must be in [1, 10000]");
+    if (min_layers < 1 || min_layers > max_surface_layers)
+        fail_input("the number of layers must be in [1, " + std::to_string(max_surface_layers) + "]");
 }
 
 // The plane type on top: `termination` if given, else the type holding `site`.

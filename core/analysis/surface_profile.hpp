@@ -58,6 +58,8 @@ struct SurfaceProfile {
     std::vector<Eigen::Vector3d> first_moments;
 };
 
+inline constexpr int max_surface_layers = 10000; // of min_layers
+
 // Planes 0 .. max(min_layers, the first plane whose neighbourhood and whose neighbours'
 // neighbourhoods are complete) - 1. The termination is the plane type holding `site`,
 // unless `termination` names one (an index into planes.types).

@@ -31,7 +31,7 @@ SurfaceRequest request_from(const SurfaceOptions& o)
 
 SurfaceSources option_sources(const SurfaceOptions& o)
 {
-    return {ValueSource::option("--k"), evaluation_sources(o.evaluation)};
+    return {ValueSource::option("--k"), evaluation_sources(o.evaluation), ValueSource::option("--layers")};
 }
 
 } // namespace

@@ -174,7 +174,8 @@ py::object surface(const std::string& kernel_spec, const std::string& lattice_sp
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
-    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity)};
+    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity),
+                                 ValueSource::argument("layers")};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);
     return to_python(surface_request_document(request, result, kernel, lattice));

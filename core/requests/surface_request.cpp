@@ -10,6 +10,7 @@ namespace sphkern {
 void check_surface_request(const SurfaceRequest& r, const SurfaceSources& sources)
 {
     check_k(r.k, sources.k);
+    check_range(r.layers, 1, max_surface_layers, sources.layers);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

@@ -27,6 +27,7 @@ struct SurfaceRequest {
 struct SurfaceSources {
     ValueSource k;
     EvaluationSources evaluation;
+    ValueSource layers;
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.

@@ -124,7 +124,7 @@ expect 0 '^$' -- block cubic_bspline fcc --k 1.2 --size 8,8,8 --periodic --vtk "
     failed=$((failed + 1))
 }
 
-expect 3 'the number of layers must be in \[1, 10000\]' -- surface cubic_bspline fcc --k 1.2 --layers 0
+expect 2 '^sphkern: error: --layers 0, expected 1 to 10000$' -- surface cubic_bspline fcc --k 1.2 --layers 0
 expect 3 '--site: site 5 does not exist; lattice fcc has sites 0 to 0' -- eps cubic_bspline fcc --k 1 --site 5
 expect 2 '--epsilon must be in \(0, 1\)' -- roots cubic_bspline fcc --epsilon 2
 expect 2 'error: --threads -1, expected 0 to 1024$' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --threads -1
