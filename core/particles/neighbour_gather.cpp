@@ -9,6 +9,7 @@
 #if defined(__GNUC__) && defined(__x86_64__)
 #include <immintrin.h>
 #define SPHKERN_HAVE_AVX512_COMPRESS 1
+#define SPHKERN_HAVE_AVX2_COMPRESS 1
 #endif
 
 #include <algorithm>
@@ -101,15 +102,91 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
 }
 #endif
 
+#ifdef SPHKERN_HAVE_AVX2_COMPRESS
+// AVX2 has no compress: the lanes of four doubles whose mask bit is set are moved to the
+// front by a permutation of eight 32-bit halves, one table row per mask.
+struct CompressTable {
+    alignas(32) std::int32_t row[16][8];
+    constexpr CompressTable() : row{}
+    {
+        for (int mask = 0; mask < 16; ++mask) {
+            int to = 0;
+            for (int lane = 0; lane < 4; ++lane)
+                if (mask >> lane & 1) row[mask][2 * to] = 2 * lane, row[mask][2 * to + 1] = 2 * lane + 1, ++to;
+        }
+    }
+};
+inline constexpr CompressTable compress_table{};
+
+__attribute__((target("avx2"))) inline __m256d compress4(__m256d v, __m256i order)
+{
+    return _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), order));
+}
+
+// The first `n - c` (at most four) lanes live.
+__attribute__((target("avx2"))) inline __m256i live_lanes(std::size_t left)
+{
+    const std::int64_t k = left >= 4 ? 4 : static_cast<std::int64_t>(left);
+    return _mm256_cmpgt_epi64(_mm256_set1_epi64x(k), _mm256_setr_epi64x(0, 1, 2, 3));
+}
+
+// As append_within_avx512, four points at a time (the outputs have room for eight more).
+template <bool with_b, bool with_r2>
+__attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& in, Compacted out, std::size_t m,
+                                                               std::size_t& zeros)
+{
+    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
+    double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
+    const std::size_t n = in.n;
+    const __m256d xi = _mm256_set1_pd(in.xi), yi = _mm256_set1_pd(in.yi), zi = _mm256_set1_pd(in.zi);
+    const __m256d reach2 = _mm256_set1_pd(in.reach2), zero = _mm256_setzero_pd();
+    unsigned at_zero = 0;
+    for (std::size_t c = 0; c < n; c += 4) {
+        const __m256i live = live_lanes(n - c);
+        const __m256d ex = _mm256_sub_pd(_mm256_maskload_pd(x + c, live), xi);
+        const __m256d ey = _mm256_sub_pd(_mm256_maskload_pd(y + c, live), yi);
+        const __m256d ez = _mm256_sub_pd(_mm256_maskload_pd(z + c, live), zi);
+        const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+        const unsigned live_bits = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live)));
+        const unsigned zeros_here = live_bits & static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, zero, _CMP_EQ_OQ)));
+        const unsigned inside =
+            live_bits & ~zeros_here & static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, reach2, _CMP_LE_OQ)));
+        at_zero += static_cast<unsigned>(std::popcount(zeros_here));
+        const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(compress_table.row[inside]));
+        _mm256_storeu_pd(dx + m, compress4(ex, order));
+        _mm256_storeu_pd(dy + m, compress4(ey, order));
+        _mm256_storeu_pd(dz + m, compress4(ez, order));
+        if constexpr (with_r2) _mm256_storeu_pd(r2_out + m, compress4(r2, order));
+        if (a) _mm256_storeu_pd(va + m, compress4(_mm256_maskload_pd(a + c, live), order));
+        if constexpr (with_b) _mm256_storeu_pd(vb + m, compress4(_mm256_maskload_pd(b + c, live), order));
+        m += static_cast<std::size_t>(std::popcount(inside));
+    }
+    zeros += at_zero;
+    return m;
+}
+#endif
+
 using AppendWithin = std::size_t (*)(const RunInput&, Compacted, std::size_t, std::size_t&);
 
-template <bool with_b, bool with_r2>
-AppendWithin choose_append_within()
+// The widest path the processor has, or a narrower one a test chose.
+CompressPath& chosen_path()
 {
+    static CompressPath path = widest_compress_path();
+    return path;
+}
+
+template <bool with_b, bool with_r2>
+AppendWithin append_within_for(CompressPath path)
+{
+    switch (path) {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    if (__builtin_cpu_supports("avx512f")) return append_within_avx512<with_b, with_r2>;
+    case CompressPath::avx512: return append_within_avx512<with_b, with_r2>;
 #endif
-    return append_within_scalar<with_b, with_r2>;
+#ifdef SPHKERN_HAVE_AVX2_COMPRESS
+    case CompressPath::avx2: return append_within_avx2<with_b, with_r2>;
+#endif
+    default: return append_within_scalar<with_b, with_r2>;
+    }
 }
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
@@ -125,6 +202,23 @@ AppendWithin choose_append_within()
 }
 
 } // namespace
+
+CompressPath widest_compress_path()
+{
+#ifdef SPHKERN_HAVE_AVX512_COMPRESS
+    if (__builtin_cpu_supports("avx512f")) return CompressPath::avx512;
+#endif
+#ifdef SPHKERN_HAVE_AVX2_COMPRESS
+    if (__builtin_cpu_supports("avx2")) return CompressPath::avx2;
+#endif
+    return CompressPath::scalar;
+}
+
+void use_compress_path(CompressPath path)
+{
+    if (path > widest_compress_path()) throw std::logic_error("this processor cannot take that path");
+    chosen_path() = path;
+}
 
 void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, const std::string& set_name)
 {
@@ -196,14 +290,51 @@ __attribute__((target("avx512f"))) std::size_t append_near_box_avx512(const RunI
 }
 #endif
 
+#ifdef SPHKERN_HAVE_AVX2_COMPRESS
+// As append_near_box_avx512, four points at a time.
+__attribute__((target("avx2"))) std::size_t append_near_box_avx2(const RunInput& in, const double* lo, const double* hi,
+                                                                 ClusterCandidates& out, std::size_t m)
+{
+    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
+    double *ox = out.x.data(), *oy = out.y.data(), *oz = out.z.data(), *oa = out.a.data(), *ob = out.b.data();
+    const __m256d zero = _mm256_setzero_pd(), reach2 = _mm256_set1_pd(in.reach2);
+    const __m256d lx = _mm256_set1_pd(lo[0]), ly = _mm256_set1_pd(lo[1]), lz = _mm256_set1_pd(lo[2]);
+    const __m256d hx = _mm256_set1_pd(hi[0]), hy = _mm256_set1_pd(hi[1]), hz = _mm256_set1_pd(hi[2]);
+    for (std::size_t c = 0; c < in.n; c += 4) {
+        const __m256i live = live_lanes(in.n - c);
+        const __m256d px = _mm256_maskload_pd(x + c, live), py = _mm256_maskload_pd(y + c, live);
+        const __m256d pz = _mm256_maskload_pd(z + c, live);
+        const __m256d ex = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(lx, px)), _mm256_sub_pd(px, hx));
+        const __m256d ey = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(ly, py)), _mm256_sub_pd(py, hy));
+        const __m256d ez = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(lz, pz)), _mm256_sub_pd(pz, hz));
+        const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+        const unsigned inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live))) &
+                                static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, reach2, _CMP_LE_OQ)));
+        const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(compress_table.row[inside]));
+        _mm256_storeu_pd(ox + m, compress4(px, order));
+        _mm256_storeu_pd(oy + m, compress4(py, order));
+        _mm256_storeu_pd(oz + m, compress4(pz, order));
+        if (a) _mm256_storeu_pd(oa + m, compress4(_mm256_maskload_pd(a + c, live), order));
+        if (b) _mm256_storeu_pd(ob + m, compress4(_mm256_maskload_pd(b + c, live), order));
+        m += static_cast<std::size_t>(std::popcount(inside));
+    }
+    return m;
+}
+#endif
+
 using AppendNearBox = std::size_t (*)(const RunInput&, const double*, const double*, ClusterCandidates&, std::size_t);
 
-AppendNearBox choose_append_near_box()
+AppendNearBox append_near_box_for(CompressPath path)
 {
+    switch (path) {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    if (__builtin_cpu_supports("avx512f")) return append_near_box_avx512;
+    case CompressPath::avx512: return append_near_box_avx512;
 #endif
-    return append_near_box_scalar;
+#ifdef SPHKERN_HAVE_AVX2_COMPRESS
+    case CompressPath::avx2: return append_near_box_avx2;
+#endif
+    default: return append_near_box_scalar;
+    }
 }
 
 } // namespace
@@ -211,7 +342,7 @@ AppendNearBox choose_append_near_box()
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
                     ClusterCandidates& out)
 {
-    static const AppendNearBox append_near_box = choose_append_near_box();
+    const AppendNearBox append_near_box = append_near_box_for(chosen_path());
     out.count = 0, out.reach = 0, out.with_a = a != nullptr, out.with_b = b != nullptr;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
@@ -239,15 +370,15 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
                          const std::string& set_name, Neighbours& nb, bool with_r2)
 {
-    // [with b][with r2]
-    static const AppendWithin append[2][2] = {{choose_append_within<false, false>(), choose_append_within<false, true>()},
-                                              {choose_append_within<true, false>(), choose_append_within<true, true>()}};
+    const CompressPath path = chosen_path();
+    const AppendWithin append = cluster.with_b ? (with_r2 ? append_within_for<true, true>(path) : append_within_for<true, false>(path))
+                                               : (with_r2 ? append_within_for<false, true>(path) : append_within_for<false, false>(path));
     const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.with_a ? cluster.a.data() : nullptr,
                       cluster.b.data(),
                       cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m = append[cluster.with_b][with_r2](
+    const std::size_t m = append(
         in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, 0, zeros);
     require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)

@@ -22,6 +22,13 @@ struct Neighbours {
 // The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
 
+// How the candidate passes keep the points inside: one at a time (branch-free), four at a
+// time (AVX2, a permutation per mask) or eight (AVX-512 compress). Each keeps the same points
+// in the same order; the widest the processor has is used unless a test chooses another.
+enum class CompressPath { scalar, avx2, avx512 };
+CompressPath widest_compress_path();
+void use_compress_path(CompressPath path); // not thread-safe: for tests, before any pass
+
 // The candidates shared by the particles of one cluster of the grid (as in GROMACS's cluster
 // pairs): every point within the cluster's reach (the largest support radius of its
 // particles) of the box around them, in the grid's fixed order, contiguous, so that each

@@ -472,44 +472,49 @@ TEST_CASE("the runs cut to a point's support hold every point within it once, ab
 
 TEST_CASE("a cluster's shared candidates hold, once each, every point within each of its particles' support")
 {
-    for (int dim : {2, 3})
-        for (bool periodic : {true, false}) {
-            CAPTURE(dim);
-            CAPTURE(periodic);
-            const auto set = random_set(dim, dim == 3 ? 2000 : 1000, periodic, 31 + dim);
-            // Variable h: each particle's reach between 0.5 and 1 of the grid's.
-            const double reach = dim == 3 ? 0.18 : 0.12;
-            std::vector<double> reaches(set.size());
-            for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
-            const NeighbourGrid grid(set, reach);
-            const std::vector<double> point_reaches = grid.gather(reaches);
-            std::vector<double> ids(grid.points());
-            std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
-            ClusterCandidates cluster;
-            Neighbours nb;
-            std::size_t checked = 0, wrong = 0, neighbours = 0;
-            for (std::size_t b = 0; b < grid.clusters(); ++b) {
-                gather_cluster(grid, b, point_reaches.data(), ids.data(), nullptr, cluster);
-                std::vector<int> seen(grid.points(), 0);
-                for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
-                for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
-                    if (grid.is_ghost(p)) continue;
-                    const double r = reaches[grid.source(p)];
-                    gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
-                    std::vector<int> kept(grid.points(), 0);
-                    for (std::size_t j = 0; j < nb.count; ++j) kept[static_cast<std::size_t>(nb.a[j])] += 1;
-                    for (std::size_t j = 0; j < grid.points(); ++j) {
-                        const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
-                                     dz = grid.z()[j] - grid.z()[p];
-                        const bool near = j != p && dx * dx + dy * dy + dz * dz <= r * r;
-                        wrong += (near && seen[j] != 1) || kept[j] != (near ? 1 : 0);
-                        neighbours += near;
+    // Every path the processor can take (scalar, AVX2, AVX-512) keeps the same points.
+    for (int path = 0; path <= static_cast<int>(widest_compress_path()); ++path)
+        for (int dim : {2, 3})
+            for (bool periodic : {true, false}) {
+                use_compress_path(static_cast<CompressPath>(path));
+                CAPTURE(path);
+                CAPTURE(dim);
+                CAPTURE(periodic);
+                const auto set = random_set(dim, dim == 3 ? 2000 : 1000, periodic, 31 + dim);
+                // Variable h: each particle's reach between 0.5 and 1 of the grid's.
+                const double reach = dim == 3 ? 0.18 : 0.12;
+                std::vector<double> reaches(set.size());
+                for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
+                const NeighbourGrid grid(set, reach);
+                const std::vector<double> point_reaches = grid.gather(reaches);
+                std::vector<double> ids(grid.points());
+                std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+                ClusterCandidates cluster;
+                Neighbours nb;
+                std::size_t checked = 0, wrong = 0, neighbours = 0;
+                for (std::size_t b = 0; b < grid.clusters(); ++b) {
+                    gather_cluster(grid, b, point_reaches.data(), ids.data(), nullptr, cluster);
+                    std::vector<int> seen(grid.points(), 0);
+                    for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
+                    for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
+                        if (grid.is_ghost(p)) continue;
+                        const double r = reaches[grid.source(p)];
+                        gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
+                        std::vector<int> kept(grid.points(), 0);
+                        for (std::size_t j = 0; j < nb.count; ++j) kept[static_cast<std::size_t>(nb.a[j])] += 1;
+                        for (std::size_t j = 0; j < grid.points(); ++j) {
+                            const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
+                                         dz = grid.z()[j] - grid.z()[p];
+                            const bool near = j != p && dx * dx + dy * dy + dz * dz <= r * r;
+                            wrong += (near && seen[j] != 1) || kept[j] != (near ? 1 : 0);
+                            neighbours += near;
+                        }
+                        ++checked;
                     }
-                    ++checked;
                 }
+                CHECK(checked == set.size());
+                CHECK(wrong == 0);
+                CHECK(neighbours > 10 * set.size());
             }
-            CHECK(checked == set.size());
-            CHECK(wrong == 0);
-            CHECK(neighbours > 10 * set.size());
-        }
+    use_compress_path(widest_compress_path());
 }
