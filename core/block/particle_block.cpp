@@ -1,8 +1,8 @@
 #include "block/particle_block.hpp"
 
 #include "block/block_geometry.hpp"
-#include "block/block_sweep.hpp"
-#include "block/cell_list.hpp"
+#include "block/block_particle_set.hpp"
+#include "block/block_sums.hpp"
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
@@ -75,12 +75,11 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.spacing = surface_planes(lattice, result.gravity).period;
     result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     result.sites = lattice.sites();
-    BlockGeometry geometry;
-    geometry.size[0] = options.cells[0], geometry.size[1] = options.cells[1], geometry.size[2] = options.cells[2];
-    geometry.cells = count / static_cast<std::size_t>(lattice.sites());
-    // The cell list before any allocation: it refuses cells too skewed or too few.
-    const CellList cells(lattice, geometry, options.periodic, kernel.support() * options.k);
-    geometry = place_particles(lattice, options, result);
+    const double reach = kernel.support() * options.k * std::sqrt(1 + 2 * support_edge);
+    require_periodic_width(lattice, options, reach); // before anything is allocated
+    BlockGeometry geometry = place_particles(lattice, options, result);
+    // The block is a particle set: its neighbours are the particle engine's.
+    const NeighbourGrid grid(block_particle_set(lattice, options, result, reach), reach);
     result.timings.setup = seconds_since(started);
 
     // Sum and difference forms need no densities: one sweep computes each pair's distance
@@ -91,15 +90,15 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     auto t0 = Clock::now();
     if (result.timings.fused) {
         // The densities are not read by these forms: any array will do.
-        result.pair_interactions = sweep_block(kernel, cells, geometry, parameters, true, true, geometry.depth.data(), result);
+        result.pair_interactions = sum_block(kernel, grid, geometry, parameters, true, true, nullptr, result);
     } else {
-        result.pair_interactions = sweep_block(kernel, cells, geometry, parameters, true, false, nullptr, result);
+        result.pair_interactions = sum_block(kernel, grid, geometry, parameters, true, false, nullptr, result);
         HugeArray<double> density(count);
         ParallelFor fill_density;
         fill_density.run(count, result.threads, [&](int, std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) density[i] = 1 + result.eps_rho[i];
         });
-        sweep_block(kernel, cells, geometry, parameters, false, true, density.data(), result);
+        sum_block(kernel, grid, geometry, parameters, false, true, density.data(), result);
     }
     result.timings.evaluation = seconds_since(t0);
     for (std::size_t i = 0; i < count; ++i)

@@ -15,7 +15,9 @@
 
 namespace sphkern {
 
-inline constexpr std::size_t max_block_particles = 20'000'000;
+// Bytes of memory per particle of a block: its positions, layers and results, the particle
+// set and neighbour grid the engine builds from it (with ghosts), and their sort.
+inline constexpr std::size_t bytes_per_block_particle = 200;
 
 struct BlockOptions {
     std::array<long long, 3> cells = {1, 1, 1}; // along the basis vectors; the last is vertical

@@ -1,0 +1,87 @@
+#include "block/block_particle_set.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphkern {
+
+namespace {
+
+// The box's edges per cell: the lateral basis vectors, and the upward normal of unit length
+// in place of the vertical one (in 2D the third edge is e_z, which the engine ignores).
+Eigen::Matrix3d unit_edges(const Lattice& lattice, const Eigen::Vector3d& gravity)
+{
+    const int vertical = lattice.dimension - 1;
+    Eigen::Matrix3d edges = Eigen::Matrix3d::Identity();
+    for (int a = 0; a < vertical; ++a) edges.col(a) = lattice.basis.col(a);
+    edges.col(vertical) = -gravity;
+    return edges;
+}
+
+} // namespace
+
+// Along each lateral edge, the cells a periodic block needs so that its box is at least
+// twice the reach wide between opposite faces.
+void require_periodic_width(const Lattice& lattice, const BlockOptions& options, double reach)
+{
+    if (!options.periodic) return;
+    Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
+    if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    for (int a = 0; a < lattice.dimension - 1; ++a) {
+        const double per_cell = 1 / inverse.row(a).norm(); // the distance between the faces of one cell
+        const double needed = std::ceil(2 * reach / per_cell);
+        if (static_cast<double>(options.cells[static_cast<std::size_t>(a)]) < needed)
+            fail_input(fmt::format("a periodic block needs more than {} cells along basis vector {} at this support "
+                                   "(R k = {:.6g} d)",
+                                   needed - 1, a + 1, reach));
+    }
+}
+
+ParticleSet block_particle_set(const Lattice& lattice, const BlockOptions& options, const BlockResult& result,
+                               double reach)
+{
+    const int dim = lattice.dimension;
+    ParticleSet set;
+    set.name = "the block";
+    set.dimension = dim;
+    set.spacing = 1;
+    set.gravity = result.gravity;
+    const std::size_t n = result.particles();
+    set.x.assign(result.x.begin(), result.x.end());
+    set.y.assign(result.y.begin(), result.y.end());
+    set.z.assign(result.z.begin(), result.z.end());
+    if (!options.periodic) return set;
+
+    const Eigen::Matrix3d unit = unit_edges(lattice, result.gravity);
+    // Heights above the lowest particle, and the box's height: the block's and twice a
+    // reach of empty space (more than the engine's margin for images, a reach).
+    const Eigen::Vector3d up = -result.gravity;
+    double low = INFINITY, high = -INFINITY;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double height = up.dot(set.position(i));
+        low = std::min(low, height), high = std::max(high, height);
+    }
+    PeriodicBox box;
+    box.edges = unit;
+    for (int a = 0; a < dim - 1; ++a) box.edges.col(a) *= static_cast<double>(options.cells[static_cast<std::size_t>(a)]);
+    box.edges.col(dim - 1) *= high - low + 4 * reach;
+    Eigen::Matrix3d cell = box.edges;
+    if (dim == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    const Eigen::Vector3d lift = up * (2 * reach - low);
+    for (std::size_t i = 0; i < n; ++i) {
+        Eigen::Vector3d f = inverse * (set.position(i) + lift);
+        for (int a = 0; a < dim - 1; ++a) f[a] -= std::floor(f[a]);
+        const Eigen::Vector3d p = cell * f;
+        set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = dim == 3 ? p.z() : 0.0;
+    }
+    set.box = box;
+    return set;
+}
+
+} // namespace sphkern

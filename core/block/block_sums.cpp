@@ -1,0 +1,159 @@
+#include "block/block_sums.hpp"
+
+#include "analysis/gradient_form.hpp"
+#include "particles/neighbour_gather.hpp"
+#include "support/process/parallel_for.hpp"
+
+#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+
+#include <cmath>
+#include <type_traits>
+#include <vector>
+
+namespace sphkern {
+
+namespace {
+
+constexpr std::size_t lanes = neighbour_lanes;
+
+// q = r / k, 1 / r and height = e . (x_j - x_i) over the padded neighbours, r^2 as the
+// gather computes it; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite, and the sums
+// skip them).
+SPHKERN_VECTOR_CLONES void distances_heights(const Neighbours& nb, std::size_t n, std::size_t live, double inv_k,
+                                             const double* e, double* __restrict q, double* __restrict height,
+                                             double* __restrict inv_r)
+{
+    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
+    for (std::size_t j = 0; j < n; ++j) {
+        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
+        q[j] = j < live ? r * inv_k : 0.0;
+        inv_r[j] = j < live ? 1.0 / r : 0.0;
+        height[j] = e[0] * dx[j] + e[1] * dy[j] + e[2] * dz[j];
+    }
+}
+
+// The sum of W over the `live` neighbours, in eight lanes added in a fixed order.
+SPHKERN_VECTOR_CLONES double density_sum(const double* __restrict w, std::size_t n, std::size_t live)
+{
+    double acc[lanes] = {};
+    for (std::size_t base = 0; base < n; base += lanes)
+        for (std::size_t l = 0; l < lanes; ++l) acc[l] += base + l < live ? w[base + l] : 0.0;
+    double t = 0;
+    for (double a : acc) t += a;
+    return t;
+}
+
+// The sum of weight_ij W'(r) (x_i - x_j) . e / r with (x_i - x_j) . e = -height and the
+// weight of each form for P = rho0 g depth (inv_r = 0 past the live neighbours). Gravity is
+// normal to the lateral sides, so a neighbour's depth is depth_i + height, through a periodic
+// side too: it is not gathered.
+template <GradientForm form>
+SPHKERN_VECTOR_CLONES double gradient_sum(double depth_i, double rho_i, const double* __restrict rho_j,
+                                          const double* __restrict dw, const double* __restrict height,
+                                          const double* __restrict inv_r, std::size_t n)
+{
+    double acc[lanes] = {};
+    for (std::size_t base = 0; base < n; base += lanes)
+        for (std::size_t l = 0; l < lanes; ++l) {
+            const std::size_t j = base + l;
+            const double rj = form == GradientForm::monaghan ? rho_j[j] : 1.0;
+            const double weight = gradient_form_weight<form>(depth_i, depth_i + height[j], rho_i, rj);
+            acc[l] += weight * dw[j] * -height[j] * inv_r[j];
+        }
+    double t = 0;
+    for (double a : acc) t += a;
+    return t;
+}
+
+struct BlockSweep {
+    const Kernel& kernel;
+    const NeighbourGrid& grid;
+    const SweepParameters& parameters;
+    bool with_density, with_gradient;
+    const double* depth;                  // in the block's order
+    const double* rho;                    // in the block's order (Monaghan's form only)
+    std::vector<double> point_rho, reach; // in the grid's point order
+    double self, kd, kd1;
+
+    // The candidates of cluster c gathered once, then each particle's neighbours kept from them.
+    std::size_t sum_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
+    {
+        const bool monaghan = parameters.form == GradientForm::monaghan && with_gradient;
+        gather_cluster(grid, c, reach.data(), nullptr, monaghan ? point_rho.data() : nullptr, cluster);
+        std::size_t pairs = 0;
+        for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
+            if (!grid.is_ghost(p)) pairs += sum_particle(p, cluster, nb, result);
+        return pairs;
+    }
+
+    std::size_t sum_particle(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
+    {
+        const int dim = parameters.dimension;
+        const double k = parameters.k;
+        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], "the block", nb, false);
+        const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
+        for (std::size_t j = n; j < padded; ++j) nb.b[j] = 1; // Monaghan's weight divides by rho_j
+        const double e[3] = {result.gravity.x(), result.gravity.y(), result.gravity.z()};
+        distances_heights(nb, padded, n, 1 / k, e, nb.q.data(), nb.r.data(), nb.inv_r.data());
+        const std::size_t i = grid.source(p);
+        if (with_density && !with_gradient) kernel.w_batch(nb.q.data(), nb.w.data(), padded, dim, k);
+        else kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
+        if (with_density) result.eps_rho[i] = parameters.a_p * (self + density_sum(nb.w.data(), padded, n)) / kd - 1;
+        if (with_gradient) result.eps_gradp[i] = parameters.a_p * gradient(i, nb, padded) / kd1 - 1;
+        return n;
+    }
+
+    // Particle i's gradient sum (i in the block's order).
+    double gradient(std::size_t i, const Neighbours& nb, std::size_t padded) const
+    {
+        const double rho_i = rho ? rho[i] : 1.0;
+        auto call = [&](auto form) {
+            return gradient_sum<decltype(form)::value>(depth[i], rho_i, nb.b.data(), nb.dw.data(), nb.r.data(),
+                                                       nb.inv_r.data(), padded);
+        };
+        switch (parameters.form) {
+        case GradientForm::sum: return call(std::integral_constant<GradientForm, GradientForm::sum>{});
+        case GradientForm::difference: return call(std::integral_constant<GradientForm, GradientForm::difference>{});
+        case GradientForm::monaghan: break;
+        }
+        return call(std::integral_constant<GradientForm, GradientForm::monaghan>{});
+    }
+};
+
+} // namespace
+
+std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const BlockGeometry& geometry,
+                      const SweepParameters& parameters, bool with_density, bool with_gradient, const double* rho,
+                      BlockResult& result)
+{
+    const int dim = parameters.dimension;
+    const double k = parameters.k, kd = std::pow(k, dim);
+    const bool monaghan = with_gradient && parameters.form == GradientForm::monaghan;
+    const double reach = kernel.support() * k * std::sqrt(1 + 2 * support_edge); // as the lattice sums
+    BlockSweep sweep{kernel,
+                     grid,
+                     parameters,
+                     with_density,
+                     with_gradient,
+                     geometry.depth.data(),
+                     monaghan ? rho : nullptr,
+                     monaghan ? grid.gather(std::vector<double>(rho, rho + grid.particles())) : std::vector<double>(),
+                     std::vector<double>(grid.points(), reach),
+                     kernel.w(0, dim, k),
+                     kd,
+                     kd * k};
+    std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
+    ParallelFor pass;
+    pass.run(grid.clusters(), result.threads, [&](int thread, std::size_t begin, std::size_t end) {
+        Neighbours nb;
+        ClusterCandidates cluster;
+        std::size_t found = 0;
+        for (std::size_t c = begin; c < end && pass.keep_going(); ++c) found += sweep.sum_cluster(c, cluster, nb, result);
+        pairs[static_cast<std::size_t>(thread)] = found;
+    });
+    std::size_t total = 0;
+    for (auto p : pairs) total += p;
+    return total;
+}
+
+} // namespace sphkern
