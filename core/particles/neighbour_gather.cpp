@@ -24,6 +24,7 @@ void Neighbours::reserve(std::size_t n)
     if (dx.size() >= n) return;
     const std::size_t size = std::max(n, 2 * dx.size());
     for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw, &inv_r}) v->resize(size);
+    index.resize(size);
 }
 
 namespace {
@@ -37,6 +38,7 @@ struct RunInput {
 };
 struct Compacted {
     double *dx, *dy, *dz, *r2, *a, *b;
+    std::uint32_t* index; // room for the AVX2 pass's indices of the points kept
 };
 
 // Branch-free: every point is written, and the count moves on only for those inside.
@@ -130,39 +132,76 @@ __attribute__((target("avx2"))) inline __m256i live_lanes(std::size_t left)
     return _mm256_cmpgt_epi64(_mm256_set1_epi64x(k), _mm256_setr_epi64x(0, 1, 2, 3));
 }
 
-// As append_within_avx512, four points at a time (the outputs have room for eight more).
+// Eight 32-bit lanes moved to the front where their mask bit is set, one row per mask.
+struct IndexCompressTable {
+    alignas(32) std::int32_t row[256][8];
+    constexpr IndexCompressTable() : row{}
+    {
+        for (int mask = 0; mask < 256; ++mask) {
+            int to = 0;
+            for (int lane = 0; lane < 8; ++lane)
+                if (mask >> lane & 1) row[mask][to++] = lane;
+        }
+    }
+};
+inline constexpr IndexCompressTable index_compress_table{};
+
+// The mask of four r2 at most reach2 (near) and of those at 0.
+__attribute__((target("avx2"))) inline void near_and_zero(const double* x, const double* y, const double* z,
+                                                         __m256d xi, __m256d yi, __m256d zi, __m256d reach2,
+                                                         unsigned& near, unsigned& zero)
+{
+    const __m256d ex = _mm256_sub_pd(_mm256_loadu_pd(x), xi);
+    const __m256d ey = _mm256_sub_pd(_mm256_loadu_pd(y), yi);
+    const __m256d ez = _mm256_sub_pd(_mm256_loadu_pd(z), zi);
+    const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+    near = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, reach2, _CMP_LE_OQ)));
+    zero = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_setzero_pd(), _CMP_EQ_OQ)));
+}
+
+// As append_within_avx512, in two steps: the indices of the points inside, eight candidates
+// at a time (a 32-bit permutation per mask: AVX2 moves eight indices as cheaply as four
+// doubles), then x_j - x_i and the values of just those points. The inputs have room for
+// eight more points than in.n (a cluster's candidates), the outputs too.
 template <bool with_b, bool with_r2>
 __attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& in, Compacted out, std::size_t m,
                                                                std::size_t& zeros)
 {
-    const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
-    double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
-    const std::size_t n = in.n;
     const __m256d xi = _mm256_set1_pd(in.xi), yi = _mm256_set1_pd(in.yi), zi = _mm256_set1_pd(in.zi);
-    const __m256d reach2 = _mm256_set1_pd(in.reach2), zero = _mm256_setzero_pd();
+    const __m256d reach2 = _mm256_set1_pd(in.reach2);
+    std::uint32_t* index = out.index;
+    std::size_t kept = 0;
     unsigned at_zero = 0;
-    for (std::size_t c = 0; c < n; c += 4) {
-        const __m256i live = live_lanes(n - c);
-        const __m256d ex = _mm256_sub_pd(_mm256_maskload_pd(x + c, live), xi);
-        const __m256d ey = _mm256_sub_pd(_mm256_maskload_pd(y + c, live), yi);
-        const __m256d ez = _mm256_sub_pd(_mm256_maskload_pd(z + c, live), zi);
-        const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
-        const unsigned live_bits = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live)));
-        const unsigned zeros_here = live_bits & static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, zero, _CMP_EQ_OQ)));
-        const unsigned inside =
-            live_bits & ~zeros_here & static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, reach2, _CMP_LE_OQ)));
-        at_zero += static_cast<unsigned>(std::popcount(zeros_here));
-        const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(compress_table.row[inside]));
-        _mm256_storeu_pd(dx + m, compress4(ex, order));
-        _mm256_storeu_pd(dy + m, compress4(ey, order));
-        _mm256_storeu_pd(dz + m, compress4(ez, order));
-        if constexpr (with_r2) _mm256_storeu_pd(r2_out + m, compress4(r2, order));
-        if (a) _mm256_storeu_pd(va + m, compress4(_mm256_maskload_pd(a + c, live), order));
-        if constexpr (with_b) _mm256_storeu_pd(vb + m, compress4(_mm256_maskload_pd(b + c, live), order));
-        m += static_cast<std::size_t>(std::popcount(inside));
+    const __m256i step = _mm256_set1_epi32(8);
+    __m256i ids = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (std::size_t c = 0; c < in.n; c += 8, ids = _mm256_add_epi32(ids, step)) {
+        unsigned near_lo, zero_lo, near_hi, zero_hi;
+        near_and_zero(in.x + c, in.y + c, in.z + c, xi, yi, zi, reach2, near_lo, zero_lo);
+        near_and_zero(in.x + c + 4, in.y + c + 4, in.z + c + 4, xi, yi, zi, reach2, near_hi, zero_hi);
+        const unsigned live = in.n - c >= 8 ? 0xffu : (1u << (in.n - c)) - 1;
+        const unsigned zero = (zero_lo | zero_hi << 4) & live, inside = (near_lo | near_hi << 4) & live & ~zero;
+        at_zero += static_cast<unsigned>(std::popcount(zero));
+        const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(index_compress_table.row[inside]));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(index + kept), _mm256_permutevar8x32_epi32(ids, order));
+        kept += static_cast<std::size_t>(std::popcount(inside));
     }
     zeros += at_zero;
-    return m;
+    // Local copies: the compiler need not reload them after every store.
+    const double *__restrict x = in.x, *__restrict y = in.y, *__restrict z = in.z;
+    const double *__restrict a = in.a, *__restrict b = in.b;
+    const double x0 = in.xi, y0 = in.yi, z0 = in.zi;
+    double *__restrict dx = out.dx + m, *__restrict dy = out.dy + m, *__restrict dz = out.dz + m;
+    double *__restrict r2 = out.r2 + m, *__restrict va = out.a + m, *__restrict vb = out.b + m;
+    const std::uint32_t* __restrict kept_index = index;
+    for (std::size_t j = 0; j < kept; ++j) {
+        const std::uint32_t k = kept_index[j];
+        const double ex = x[k] - x0, ey = y[k] - y0, ez = z[k] - z0;
+        dx[j] = ex, dy[j] = ey, dz[j] = ez;
+        if constexpr (with_r2) r2[j] = ex * ex + ey * ey + ez * ez;
+        if (a) va[j] = a[k];
+        if constexpr (with_b) vb[j] = b[k];
+    }
+    return m + kept;
 }
 #endif
 
@@ -378,8 +417,10 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
                       cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m = append(
-        in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data()}, 0, zeros);
+    const std::size_t m = append(in,
+                                 {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(),
+                                  nb.index.data()},
+                                 0, zeros);
     require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)
         nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;

@@ -15,6 +15,7 @@ namespace sphkern {
 // room for q, W, W' and 1 / r of a caller.
 struct Neighbours {
     std::vector<double> r2, dx, dy, dz, r, q, a, b, w, dw, inv_r;
+    std::vector<std::uint32_t> index; // scratch of the candidate pass
     std::size_t count = 0;
     void reserve(std::size_t n);
 };
