@@ -23,8 +23,9 @@ struct Neighbours {
 // The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
 
-// How the candidate passes keep the points inside: one at a time (branch-free), four at a
-// time (AVX2, a permutation per mask) or eight (AVX-512 compress). Each keeps the same points
+// How the candidate passes keep the points inside: one at a time (branch-free), with AVX2
+// (a permutation per mask: of four points near a box, of eight indices of a particle's
+// neighbours, whose points are then gathered) or eight at a time (AVX-512 compress). Each keeps the same points
 // in the same order; the widest the processor has is used unless a test chooses another.
 enum class CompressPath { scalar, avx2, avx512 };
 CompressPath widest_compress_path();

@@ -1,6 +1,7 @@
 #include "particles/particle_analysis.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -45,12 +46,19 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
     for (std::size_t i = 0; i < m.size(); ++i) frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
     const std::pair<const char*, const std::vector<double>*> fields[] = {
         {"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}};
-    for (const auto& [name, values] : fields) point.statistics.emplace_back(name, summarise(*values));
     const auto e1 = magnitudes(m.e1), m1 = magnitudes(m.m1);
-    point.statistics.emplace_back("|e1|", summarise(e1));
-    point.statistics.emplace_back("|m1|", summarise(m1));
-    point.statistics.emplace_back("||E||_F", summarise(frobenius));
-    point.statistics.emplace_back("neighbours", summarise(neighbours));
+    const std::pair<const char*, const std::vector<double>*> summarised[] = {
+        fields[0], fields[1], fields[2], fields[3], {"|e1|", &e1}, {"|m1|", &m1}, {"||E||_F", &frobenius},
+        {"neighbours", &neighbours}};
+    // Each summary on its own (their quantiles are most of the time after the sums): the
+    // threads of the sums share them out, and each is the same whatever thread computes it.
+    constexpr std::size_t count = std::size(summarised);
+    point.statistics.resize(count);
+    ParallelFor pass;
+    pass.run(count, m.threads, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t s = begin; s < end && pass.keep_going(); ++s)
+            point.statistics[s] = {summarised[s].first, summarise(*summarised[s].second)};
+    });
     if (bins)
         for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins));
     point.mean_neighbours = point.statistics.back().second.mean;
