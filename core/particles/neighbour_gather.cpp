@@ -105,20 +105,24 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
 #endif
 
 #ifdef SPHKERN_HAVE_AVX2_COMPRESS
-// AVX2 has no compress: the lanes of four doubles whose mask bit is set are moved to the
-// front by a permutation of eight 32-bit halves, one table row per mask.
+// AVX2 has no compress: the lanes whose mask bit is set are moved to the front by a
+// permutation of eight 32-bit halves, one table row per mask; a lane is `width` halves (two
+// for four doubles, one for eight indices).
+template <int lanes, int width>
 struct CompressTable {
-    alignas(32) std::int32_t row[16][8];
+    alignas(32) std::int32_t row[1 << lanes][8];
     constexpr CompressTable() : row{}
     {
-        for (int mask = 0; mask < 16; ++mask) {
+        for (int mask = 0; mask < 1 << lanes; ++mask) {
             int to = 0;
-            for (int lane = 0; lane < 4; ++lane)
-                if (mask >> lane & 1) row[mask][2 * to] = 2 * lane, row[mask][2 * to + 1] = 2 * lane + 1, ++to;
+            for (int lane = 0; lane < lanes; ++lane)
+                if (mask >> lane & 1)
+                    for (int half = 0; half < width; ++half) row[mask][to++] = width * lane + half;
         }
     }
 };
-inline constexpr CompressTable compress_table{};
+inline constexpr CompressTable<4, 2> compress_table{};
+inline constexpr CompressTable<8, 1> index_compress_table{};
 
 __attribute__((target("avx2"))) inline __m256d compress4(__m256d v, __m256i order)
 {
@@ -131,20 +135,6 @@ __attribute__((target("avx2"))) inline __m256i live_lanes(std::size_t left)
     const std::int64_t k = left >= 4 ? 4 : static_cast<std::int64_t>(left);
     return _mm256_cmpgt_epi64(_mm256_set1_epi64x(k), _mm256_setr_epi64x(0, 1, 2, 3));
 }
-
-// Eight 32-bit lanes moved to the front where their mask bit is set, one row per mask.
-struct IndexCompressTable {
-    alignas(32) std::int32_t row[256][8];
-    constexpr IndexCompressTable() : row{}
-    {
-        for (int mask = 0; mask < 256; ++mask) {
-            int to = 0;
-            for (int lane = 0; lane < 8; ++lane)
-                if (mask >> lane & 1) row[mask][to++] = lane;
-        }
-    }
-};
-inline constexpr IndexCompressTable index_compress_table{};
 
 // The mask of four r2 at most reach2 (near) and of those at 0.
 __attribute__((target("avx2"))) inline void near_and_zero(const double* x, const double* y, const double* z,
