@@ -26,7 +26,8 @@ std::size_t checked_block_size(const Lattice& lattice, const BlockOptions& optio
         total *= static_cast<long double>(n);
     }
     // The memory the machine has available now, at the bytes a block particle takes on the
-    // particle engine (peak 155 measured on 10^6 fcc particles, BENCHMARKS.md), not a fixed count.
+    // particle engine (a peak of 150.5 MiB for 10^6 fcc particles, BENCHMARKS.md), not a fixed
+    // count; evaluate_block counts the periodic images too, once it knows the support.
     const double limit = static_cast<double>(memory_limit_bytes() / bytes_per_block_particle);
     check_work_budget("the block", "cells x sites, its particles", static_cast<double>(total), limit);
     return static_cast<std::size_t>(total);
@@ -72,9 +73,8 @@ std::vector<int> plane_ranks(const Lattice& lattice, long long vertical, double 
     return plane_of;
 }
 
-// Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
-// so that a row of cells is a contiguous run for every site. Every per-particle array is
-// allocated here and first touched by the thread that fills it.
+// Site-major order: particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1.
+// Every per-particle array is allocated here and first touched by the threads that fill it.
 void allocate_particles(std::size_t count, BlockGeometry& geometry, BlockResult& result)
 {
     result.x = HugeArray<double>(count);
@@ -120,7 +120,7 @@ BlockGeometry place_particles(const Lattice& lattice, const BlockOptions& option
             depth[i] = top + result.gravity.dot(p);
             const long long vertical_cell = dim == 3 ? cc / (n1 * n2) : (cc / n1) % n2;
             result.layer[i] = plane_of[static_cast<std::size_t>(vertical_cell) * static_cast<std::size_t>(sites) + s];
-            result.eps_rho[i] = 0; // touched here, in this thread, rather than in the sweep
+            result.eps_rho[i] = 0; // touched here, in these threads
             result.eps_gradp[i] = 0;
         }
     });

@@ -1,6 +1,6 @@
 // The block's particles: sizes checked before anything is allocated, positions in
-// site-major order (particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1,
-// so that a row of cells is a contiguous run for every site), depths below the top
+// site-major order (particle (site s, cell c) is s * cells + c, c = (c3 * n2 + c2) * n1 + c1:
+// the order of the block's outputs, whatever order the engine sums in), depths below the top
 // particle and the layers, the occupied planes ranked from the top.
 #pragma once
 

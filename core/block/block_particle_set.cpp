@@ -25,21 +25,40 @@ Eigen::Matrix3d unit_edges(const Lattice& lattice, const Eigen::Vector3d& gravit
 } // namespace
 
 // Along each lateral edge, the cells a periodic block needs so that its box is at least
-// twice the reach wide between opposite faces.
+// twice the reach wide between opposite faces: the engine's rule, with a relative margin of
+// 1e-12 so that no block it passes is refused by the engine's own check of the box (whose
+// height, and so its rounding, is only known once the particles are placed).
 void require_periodic_width(const Lattice& lattice, const BlockOptions& options, double reach)
 {
     if (!options.periodic) return;
     Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
     if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
     const Eigen::Matrix3d inverse = cell.inverse();
+    const double wanted = 2 * reach * (1 + 1e-12);
     for (int a = 0; a < lattice.dimension - 1; ++a) {
         const double per_cell = 1 / inverse.row(a).norm(); // the distance between the faces of one cell
-        const double needed = std::ceil(2 * reach / per_cell);
+        auto width = [&](double cells) { return cells * per_cell; };
+        double needed = std::max(1.0, std::ceil(wanted / per_cell) - 1);
+        while (width(needed) < wanted) needed += 1;
         if (static_cast<double>(options.cells[static_cast<std::size_t>(a)]) < needed)
             fail_input(fmt::format("a periodic block needs more than {} cells along basis vector {} at this support "
                                    "(R k = {:.6g} d)",
                                    needed - 1, a + 1, reach));
     }
+}
+
+double block_points_per_particle(const Lattice& lattice, const BlockOptions& options, double reach)
+{
+    if (!options.periodic) return 1;
+    Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
+    if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    double points = 1;
+    for (int a = 0; a < lattice.dimension - 1; ++a) {
+        const double width = static_cast<double>(options.cells[static_cast<std::size_t>(a)]) / inverse.row(a).norm();
+        points *= 1 + 2 * reach / width;
+    }
+    return points;
 }
 
 ParticleSet block_particle_set(const Lattice& lattice, const BlockOptions& options, const BlockResult& result,

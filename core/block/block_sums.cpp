@@ -129,7 +129,6 @@ std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const Blo
     const int dim = parameters.dimension;
     const double k = parameters.k, kd = std::pow(k, dim);
     const bool monaghan = with_gradient && parameters.form == GradientForm::monaghan;
-    const double reach = kernel.support() * k * std::sqrt(1 + 2 * support_edge); // as the lattice sums
     BlockSweep sweep{kernel,
                      grid,
                      parameters,
@@ -138,7 +137,7 @@ std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const Blo
                      geometry.depth.data(),
                      monaghan ? rho : nullptr,
                      monaghan ? grid.gather(std::vector<double>(rho, rho + grid.particles())) : std::vector<double>(),
-                     std::vector<double>(grid.points(), reach),
+                     std::vector<double>(grid.points(), parameters.reach),
                      kernel.w(0, dim, k),
                      kd,
                      kd * k};

@@ -13,6 +13,7 @@ struct SweepParameters {
     int dimension = 3;
     double k = 1, a_p = 1;
     GradientForm form = GradientForm::sum;
+    double reach = 0; // the radius searched: the grid's (search_reach)
 };
 
 // One sweep over every particle of the grid (the block as a particle set, in the block's

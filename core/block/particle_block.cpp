@@ -4,8 +4,11 @@
 #include "block/block_particle_set.hpp"
 #include "block/block_sums.hpp"
 #include "kernels/kernel_validity.hpp"
+#include "particles/neighbour_gather.hpp"
+#include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
+#include "support/process/work_budget.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
@@ -75,8 +78,11 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.spacing = surface_planes(lattice, result.gravity).period;
     result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     result.sites = lattice.sites();
-    const double reach = kernel.support() * options.k * std::sqrt(1 + 2 * support_edge);
+    const double reach = search_reach(kernel.support() * options.k);
     require_periodic_width(lattice, options, reach); // before anything is allocated
+    check_work_budget("the block", "its particles and their periodic images",
+                      static_cast<double>(count) * block_points_per_particle(lattice, options, reach),
+                      static_cast<double>(memory_limit_bytes() / bytes_per_block_particle));
     BlockGeometry geometry = place_particles(lattice, options, result);
     // The block is a particle set: its neighbours are the particle engine's.
     const NeighbourGrid grid(block_particle_set(lattice, options, result, reach), reach);
@@ -84,12 +90,12 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
 
     // Sum and difference forms need no densities: one sweep computes each pair's distance
     // once and both sums from it. Monaghan's form needs every density first.
-    const SweepParameters parameters{dim, options.k, options.a_p, options.form};
+    const SweepParameters parameters{dim, options.k, options.a_p, options.form, reach};
     result.timings.fused = options.form != GradientForm::monaghan;
     spdlog::debug("evaluating a block of {} particles on {} threads", count, result.threads);
     auto t0 = Clock::now();
     if (result.timings.fused) {
-        // The densities are not read by these forms: any array will do.
+        // The densities are not read by these forms.
         result.pair_interactions = sum_block(kernel, grid, geometry, parameters, true, true, nullptr, result);
     } else {
         result.pair_interactions = sum_block(kernel, grid, geometry, parameters, true, false, nullptr, result);

@@ -58,7 +58,7 @@ struct BlockResult {
 };
 
 // Builds the block and evaluates every particle's density and pressure gradient by
-// direct sums over the neighbours found with a cell list. Sizes and memory are
+// direct sums over the neighbours the particle engine finds. Sizes and memory are
 // checked before anything is allocated; throws Error(input) with one line.
 BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const BlockOptions& options);
 

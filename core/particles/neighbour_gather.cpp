@@ -1,5 +1,6 @@
 #include "particles/neighbour_gather.hpp"
 
+#include "kernels/kernel.hpp"
 #include "support/error.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
@@ -129,7 +130,7 @@ __attribute__((target("avx2"))) inline __m256d compress4(__m256d v, __m256i orde
     return _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), order));
 }
 
-// The first `n - c` (at most four) lanes live.
+// The first `left` (at most four) lanes live.
 __attribute__((target("avx2"))) inline __m256i live_lanes(std::size_t left)
 {
     const std::int64_t k = left >= 4 ? 4 : static_cast<std::int64_t>(left);
@@ -416,6 +417,8 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
         nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
     nb.count = m;
 }
+
+double search_reach(double support_radius) { return support_radius * std::sqrt(1 + 2 * support_edge); }
 
 SPHKERN_VECTOR_CLONES void fill_distances(Neighbours& nb)
 {

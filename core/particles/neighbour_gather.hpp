@@ -50,8 +50,8 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reac
                     ClusterCandidates& out);
 
 // The neighbours of point p of the cluster within sqrt(reach2), p itself left out, from
-// the cluster's candidates in one pass that keeps the points inside (AVX-512 compress where
-// the processor has it), with r2, dx, dy, dz, a and b (a or b not written if the cluster has none;
+// the cluster's candidates in one pass that keeps the points inside (by the widest
+// CompressPath), with r2, dx, dy, dz, a and b (a or b not written if the cluster has none;
 // r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,
 // entries with a = b = dx = dy = dz = 0 and r2 = reach2. Without r2 (with_r2 false) the
 // neighbours' r2 is not written (one compress fewer per eight candidates, for a caller that
@@ -63,6 +63,10 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
 // `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
 // both ids for two, std::logic_error for none.
 void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, const std::string& set_name);
+
+// The radius the engine searches for a support radius R h: a hair beyond it, as the lattice
+// sums count a neighbour at the support's edge (support_edge).
+double search_reach(double support_radius);
 
 // r = sqrt(r2) of the `count` neighbours.
 void fill_distances(Neighbours& nb);

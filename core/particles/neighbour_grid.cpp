@@ -66,19 +66,24 @@ void NeighbourGrid::sort_into_bins(double reach)
 {
     const std::size_t count = x_.size();
     const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
+    double extent[3];
     for (int a = 0; a < 3; ++a) {
         const auto [mn, mx] = std::minmax_element(coordinates[a], coordinates[a] + count);
-        const double extent = *mx - *mn;
-        // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
-        // block of bins around a bin holds every neighbour; not many more bins than points,
-        // so that sparse sets stay small.
-        const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
-        const double bins = std::floor(extent / reach * per_reach);
-        const double most = std::max(1.0, std::cbrt(static_cast<double>(count)) * 4 * (a == 0 ? x_bins_per_reach : 1));
-        n_[a] = static_cast<std::size_t>(std::clamp(bins, 1.0, most));
+        extent[a] = *mx - *mn;
         lo_[a] = *mn;
-        scale_[a] = extent > 0 ? static_cast<double>(n_[a]) / extent : 0.0;
+        // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
+        // block of bins around a bin holds every neighbour (wider bins are never wrong).
+        const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
+        n_[a] = static_cast<std::size_t>(std::clamp(std::floor(extent[a] / reach * per_reach), 1.0, 1e9));
     }
+    // Not many more bins than points, so that sparse or long thin sets stay small: the axis
+    // with the most bins is halved until they are few enough.
+    const double most = 4 * static_cast<double>(count) + 64;
+    while (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) > most) {
+        std::size_t& widest = *std::max_element(n_, n_ + 3);
+        widest = (widest + 1) / 2;
+    }
+    for (int a = 0; a < 3; ++a) scale_[a] = extent[a] > 0 ? static_cast<double>(n_[a]) / extent[a] : 0.0;
     const std::size_t total_bins = n_[0] * n_[1] * n_[2];
     std::vector<std::uint64_t> bin(count), fill(total_bins + 1, 0);
     for (std::size_t p = 0; p < count; ++p) {

@@ -61,22 +61,6 @@ public:
         return bin_begin(c / clusters_per_row() * n_[0] + last);
     }
 
-    // visit(begin, end) for each run of points that may lie within reach of a point of bin b.
-    template <class Visit>
-    void for_each_run_of_bin(std::size_t b, Visit&& visit) const
-    {
-        const std::size_t bx = b % n_[0], by = b / n_[0] % n_[1], bz = b / (n_[0] * n_[1]);
-        constexpr std::size_t s = stencil_reach, sx = stencil_reach * x_bins_per_reach;
-        const std::size_t x0 = bx > sx ? bx - sx : 0, x1 = std::min(bx + sx, n_[0] - 1);
-        const std::size_t z0 = bz > s ? bz - s : 0, z1 = std::min(bz + s, n_[2] - 1);
-        const std::size_t y0 = by > s ? by - s : 0, y1 = std::min(by + s, n_[1] - 1);
-        for (std::size_t cz = z0; cz <= z1; ++cz)
-            for (std::size_t cy = y0; cy <= y1; ++cy) {
-                const std::size_t row = (cz * n_[1] + cy) * n_[0];
-                visit(static_cast<std::size_t>(start_[row + x0]), static_cast<std::size_t>(start_[row + x1 + 1]));
-            }
-    }
-
     // visit(begin, end) for each run of points that may lie within `reach` (at most the
     // grid's reach) of point p: the rows of bins around p's bin, each cut along x to the
     // chord of the sphere of radius `reach` through the row. In a fixed order.

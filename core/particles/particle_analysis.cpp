@@ -55,7 +55,7 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
     constexpr std::size_t count = std::size(summarised);
     point.statistics.resize(count);
     ParallelFor pass;
-    pass.run(count, m.threads, [&](int, std::size_t begin, std::size_t end) {
+    pass.run(count, std::min(m.threads, static_cast<int>(count)), [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t s = begin; s < end && pass.keep_going(); ++s)
             point.statistics[s] = {summarised[s].first, summarise(*summarised[s].second)};
     });

@@ -286,7 +286,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
     const NeighbourGrid grid(set, kernel.support() * h_max);
     std::vector<double> reach(inputs.h.size());
-    for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = kernel.support() * inputs.h[i] * std::sqrt(1 + 2 * support_edge);
+    for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = search_reach(kernel.support() * inputs.h[i]);
     const Sweep sweep{kernel,
                       set,
                       inputs,

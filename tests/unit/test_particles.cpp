@@ -518,3 +518,37 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
             }
     use_compress_path(widest_compress_path());
 }
+
+TEST_CASE("a long thin set gets no more bins than four per point, and every neighbour is still found")
+{
+    // A diagonal line of points, 2000 reaches long: the per-axis bin counts alone would multiply
+    // to about 2000^3 / 16 bins.
+    ParticleSet set;
+    set.name = "line";
+    set.dimension = 3;
+    const double reach = 1.0;
+    for (int i = 0; i < 4000; ++i) {
+        const double t = 0.5 * i;
+        set.x.push_back(t), set.y.push_back(t + 0.1 * (i % 3)), set.z.push_back(t + 0.1 * (i % 5));
+    }
+    const NeighbourGrid grid(set, reach);
+    CHECK(static_cast<double>(grid.bins()) <= 4.0 * static_cast<double>(grid.points()) + 64);
+    std::vector<double> reaches(grid.points(), reach);
+    ClusterCandidates cluster;
+    Neighbours nb;
+    std::size_t found = 0, expected = 0;
+    for (std::size_t c = 0; c < grid.clusters(); ++c) {
+        gather_cluster(grid, c, reaches.data(), nullptr, nullptr, cluster);
+        for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
+            gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
+            found += nb.count;
+        }
+    }
+    for (std::size_t i = 0; i < set.size(); ++i)
+        for (std::size_t j = 0; j < set.size(); ++j) {
+            const double dx = set.x[j] - set.x[i], dy = set.y[j] - set.y[i], dz = set.z[j] - set.z[i];
+            expected += j != i && dx * dx + dy * dy + dz * dz <= reach * reach;
+        }
+    CHECK(expected > set.size());
+    CHECK(found == expected);
+}

@@ -367,3 +367,29 @@ TEST_CASE("block: every particle equals a brute-force sum over all pairs, free a
                 CHECK(worst < 1e-12);
             }
 }
+
+TEST_CASE("a periodic block at the engine's minimum width is refused by the block's own check, naming the cells")
+{
+    // 2 R k is within rounding of a whole number of cells here: the block's check and the
+    // engine's must not disagree (the engine's message names h, which a block has not).
+    struct Case {
+        const char* lattice;
+        double k;
+    };
+    for (const auto& c : {Case{"sc", 1.4999999999985003}, Case{"hcp", 1.5155444566212526}, Case{"fcc", 1.2}})
+        for (long long n = 4; n <= 16; ++n) {
+            auto lattice = load_lattice(c.lattice);
+            Kernel kernel = shipped_kernel("cubic_bspline");
+            BlockOptions options;
+            options.cells = {n, n, 2};
+            options.periodic = true;
+            options.k = c.k;
+            CAPTURE(std::string(c.lattice));
+            CAPTURE(n);
+            try {
+                evaluate_block(kernel, lattice, options);
+            } catch (const Error& e) {
+                CHECK(std::string(e.what()).find("a periodic block needs more than") != std::string::npos);
+            }
+        }
+}
