@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sphkern {
@@ -22,6 +23,16 @@ Eigen::Matrix3d unit_edges(const Lattice& lattice, const Eigen::Vector3d& gravit
     return edges;
 }
 
+// The distance between the opposite faces of one cell across each lateral edge (1 / the
+// norm of that row of the inverse, as PeriodicBox::smallest_width).
+std::array<double, 2> cell_widths(const Lattice& lattice)
+{
+    Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
+    if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d inverse = cell.inverse();
+    return {1 / inverse.row(0).norm(), 1 / inverse.row(1).norm()};
+}
+
 } // namespace
 
 // Along each lateral edge, the cells a periodic block needs so that its box is at least
@@ -31,12 +42,10 @@ Eigen::Matrix3d unit_edges(const Lattice& lattice, const Eigen::Vector3d& gravit
 void require_periodic_width(const Lattice& lattice, const BlockOptions& options, double reach)
 {
     if (!options.periodic) return;
-    Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
-    if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
-    const Eigen::Matrix3d inverse = cell.inverse();
+    const auto widths = cell_widths(lattice);
     const double wanted = 2 * reach * (1 + 1e-12);
     for (int a = 0; a < lattice.dimension - 1; ++a) {
-        const double per_cell = 1 / inverse.row(a).norm(); // the distance between the faces of one cell
+        const double per_cell = widths[static_cast<std::size_t>(a)];
         auto width = [&](double cells) { return cells * per_cell; };
         double needed = std::max(1.0, std::ceil(wanted / per_cell) - 1);
         while (width(needed) < wanted) needed += 1;
@@ -50,14 +59,10 @@ void require_periodic_width(const Lattice& lattice, const BlockOptions& options,
 double block_points_per_particle(const Lattice& lattice, const BlockOptions& options, double reach)
 {
     if (!options.periodic) return 1;
-    Eigen::Matrix3d cell = unit_edges(lattice, block_gravity(lattice));
-    if (lattice.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
-    const Eigen::Matrix3d inverse = cell.inverse();
+    const auto widths = cell_widths(lattice);
     double points = 1;
-    for (int a = 0; a < lattice.dimension - 1; ++a) {
-        const double width = static_cast<double>(options.cells[static_cast<std::size_t>(a)]) / inverse.row(a).norm();
-        points *= 1 + 2 * reach / width;
-    }
+    for (std::size_t a = 0; a + 1 < static_cast<std::size_t>(lattice.dimension); ++a)
+        points *= 1 + 2 * reach / (static_cast<double>(options.cells[a]) * widths[a]);
     return points;
 }
 
