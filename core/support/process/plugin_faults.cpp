@@ -4,6 +4,7 @@
 #include "support/process/interruption.hpp"
 #include "support/process/plugin_call_guard.hpp"
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -82,6 +83,12 @@ void watch_exit_in_plugin_calls()
 
 void end_process_with_line(int code, const char* const* parts, int count)
 {
+    // One line, whichever thread comes first: threads calling the same faulty plugin can
+    // fault together, and the others wait here for the process to end.
+    static std::atomic<bool> ending{false};
+    static_assert(std::atomic<bool>::is_always_lock_free, "used in a signal handler");
+    if (ending.exchange(true))
+        for (;;) ::pause();
     char line[8192] = "sphkern: error: ";
     std::size_t used = std::strlen(line);
     for (int i = 0; i < count; ++i)
