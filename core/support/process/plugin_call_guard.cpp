@@ -9,7 +9,9 @@
 
 namespace sphkern {
 
-struct CallSlot {
+// One cache line each: the threads of a pass write their own slot around every plugin call,
+// and slots sharing a line made each of those writes take the line from the other threads.
+struct alignas(64) CallSlot {
     std::atomic<const PluginCall*> call{nullptr};
     std::atomic<std::uint64_t> sequence{0};
     std::atomic<bool> taken{false};
