@@ -16,22 +16,6 @@ namespace {
 
 constexpr std::size_t lanes = neighbour_lanes;
 
-// q = r / k, 1 / r and height = e . (x_j - x_i) over the padded neighbours, r^2 as the
-// gather computes it; past `live`, q = 1 / r = 0 (W(0) and W'(0) are finite, and the sums
-// skip them).
-SPHKERN_VECTOR_CLONES void distances_heights(const Neighbours& nb, std::size_t n, std::size_t live, double inv_k,
-                                             const double* e, double* __restrict q, double* __restrict height,
-                                             double* __restrict inv_r)
-{
-    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
-    for (std::size_t j = 0; j < n; ++j) {
-        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
-        q[j] = j < live ? r * inv_k : 0.0;
-        inv_r[j] = j < live ? 1.0 / r : 0.0;
-        height[j] = e[0] * dx[j] + e[1] * dy[j] + e[2] * dz[j];
-    }
-}
-
 // The sum of W over the `live` neighbours, in eight lanes added in a fixed order.
 SPHKERN_VECTOR_CLONES double density_sum(const double* __restrict w, std::size_t n, std::size_t live)
 {
@@ -43,22 +27,25 @@ SPHKERN_VECTOR_CLONES double density_sum(const double* __restrict w, std::size_t
     return t;
 }
 
-// The sum of weight_ij W'(r) (x_i - x_j) . e / r with (x_i - x_j) . e = -height and the
-// weight of each form for P = rho0 g depth (inv_r = 0 past the live neighbours). Gravity is
-// normal to the lateral sides, so a neighbour's depth is depth_i + height, through a periodic
-// side too: it is not gathered.
+// The sum of weight_ij W'(r) (x_i - x_j) . e / r over the `padded` neighbours, with
+// (x_i - x_j) . e = -height, height = e . (x_j - x_i), and the weight of each form for
+// P = rho0 g depth (inv_r = 0 past the live neighbours). Gravity is normal to the lateral
+// sides, so a neighbour's depth is depth_i + height, through a periodic side too: it is not
+// gathered.
 template <GradientForm form>
-SPHKERN_VECTOR_CLONES double gradient_sum(double depth_i, double rho_i, const double* __restrict rho_j,
-                                          const double* __restrict dw, const double* __restrict height,
-                                          const double* __restrict inv_r, std::size_t n)
+SPHKERN_VECTOR_CLONES double gradient_sum(double depth_i, double rho_i, const Neighbours& nb, const double* e,
+                                          std::size_t n)
 {
+    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
+    const double *__restrict rho_j = nb.b.data(), *__restrict dw = nb.dw.data(), *__restrict inv_r = nb.inv_r.data();
     double acc[lanes] = {};
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {
             const std::size_t j = base + l;
+            const double height = e[0] * dx[j] + e[1] * dy[j] + e[2] * dz[j];
             const double rj = form == GradientForm::monaghan ? rho_j[j] : 1.0;
-            const double weight = gradient_form_weight<form>(depth_i, depth_i + height[j], rho_i, rj);
-            acc[l] += weight * dw[j] * -height[j] * inv_r[j];
+            const double weight = gradient_form_weight<form>(depth_i, depth_i + height, rho_i, rj);
+            acc[l] += weight * dw[j] * -height * inv_r[j];
         }
     double t = 0;
     for (double a : acc) t += a;
@@ -93,24 +80,20 @@ struct BlockSweep {
         gather_from_cluster(grid, cluster, p, reach[p] * reach[p], "the block", nb, false);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
         for (std::size_t j = n; j < padded; ++j) nb.b[j] = 1; // Monaghan's weight divides by rho_j
-        const double e[3] = {result.gravity.x(), result.gravity.y(), result.gravity.z()};
-        distances_heights(nb, padded, n, 1 / k, e, nb.q.data(), nb.r.data(), nb.inv_r.data());
+        distances(nb, padded, 1 / k);
         const std::size_t i = grid.source(p);
         if (with_density && !with_gradient) kernel.w_batch(nb.q.data(), nb.w.data(), padded, dim, k);
         else kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         if (with_density) result.eps_rho[i] = parameters.a_p * (self + density_sum(nb.w.data(), padded, n)) / kd - 1;
-        if (with_gradient) result.eps_gradp[i] = parameters.a_p * gradient(i, nb, padded) / kd1 - 1;
+        if (with_gradient) result.eps_gradp[i] = parameters.a_p * gradient(i, nb, padded, result.gravity) / kd1 - 1;
         return n;
     }
 
     // Particle i's gradient sum (i in the block's order).
-    double gradient(std::size_t i, const Neighbours& nb, std::size_t padded) const
+    double gradient(std::size_t i, const Neighbours& nb, std::size_t padded, const Eigen::Vector3d& gravity) const
     {
-        const double rho_i = rho ? rho[i] : 1.0;
-        auto call = [&](auto form) {
-            return gradient_sum<decltype(form)::value>(depth[i], rho_i, nb.b.data(), nb.dw.data(), nb.r.data(),
-                                                       nb.inv_r.data(), padded);
-        };
+        const double rho_i = rho ? rho[i] : 1.0, e[3] = {gravity.x(), gravity.y(), gravity.z()};
+        auto call = [&](auto form) { return gradient_sum<decltype(form)::value>(depth[i], rho_i, nb, e, padded); };
         switch (parameters.form) {
         case GradientForm::sum: return call(std::integral_constant<GradientForm, GradientForm::sum>{});
         case GradientForm::difference: return call(std::integral_constant<GradientForm, GradientForm::difference>{});

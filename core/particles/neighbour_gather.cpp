@@ -420,6 +420,18 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
 
 double search_reach(double support_radius) { return support_radius * std::sqrt(1 + 2 * support_edge); }
 
+SPHKERN_VECTOR_CLONES void distances(Neighbours& nb, std::size_t padded, double inv_h)
+{
+    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
+    double *__restrict q = nb.q.data(), *__restrict inv_r = nb.inv_r.data();
+    for (std::size_t j = 0; j < padded; ++j) {
+        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
+        q[j] = r * inv_h;
+        inv_r[j] = 1.0 / r;
+    }
+    for (std::size_t j = nb.count; j < padded; ++j) q[j] = inv_r[j] = 0;
+}
+
 SPHKERN_VECTOR_CLONES void fill_distances(Neighbours& nb)
 {
     const double* __restrict r2 = nb.r2.data();

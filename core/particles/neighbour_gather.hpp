@@ -68,6 +68,12 @@ void require_alone(const NeighbourGrid& grid, std::size_t p, std::size_t zeros, 
 // sums count a neighbour at the support's edge (support_edge).
 double search_reach(double support_radius);
 
+// Over the first `padded` entries of nb (count neighbours, then padding): q = r / h (from
+// inv_h) and 1 / r, with r = sqrt(dx^2 + dy^2 + dz^2) (r2 as the gather computes it, in the
+// same order and without contraction: the same bits); past the neighbours, q = 1 / r = 0
+// (W(0) and W'(0) are finite, and a term times 1 / r adds nothing).
+void distances(Neighbours& nb, std::size_t padded, double inv_h);
+
 // r = sqrt(r2) of the `count` neighbours.
 void fill_distances(Neighbours& nb);
 

@@ -87,21 +87,6 @@ private:
     std::vector<PointResult> results_;
 };
 
-// r = sqrt(dx^2 + dy^2 + dz^2) (r2 as the gather computes it, in the same order and without
-// contraction: the same bits), q = r / h and 1 / r; past `live`, q = 1 / r = 0 (W(0) and
-// W'(0) are finite).
-SPHKERN_VECTOR_CLONES void distances(const double* __restrict dx, const double* __restrict dy,
-                                     const double* __restrict dz, std::size_t n, std::size_t live, double inv_h,
-                                     double* __restrict q, double* __restrict inv_r)
-{
-    for (std::size_t j = 0; j < n; ++j) {
-        const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
-        q[j] = r * inv_h;
-        inv_r[j] = 1.0 / r;
-    }
-    for (std::size_t j = live; j < n; ++j) q[j] = inv_r[j] = 0;
-}
-
 // Eight lanes of partial sums per quantity, as two vectors of four in GCC's vector type:
 // the accumulators stay in registers (an array of them was kept in memory, a load and a store
 // per term; a vector of eight is split badly where registers hold four), and every lane adds
@@ -200,7 +185,7 @@ struct Sweep {
         const double h = this->h[p], k = h / in.spacing;
         gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
         const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
-        distances(nb.dx.data(), nb.dy.data(), nb.dz.data(), padded, n, 1 / h, nb.q.data(), nb.inv_r.data());
+        distances(nb, padded, 1 / h);
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[sums];
         sum_neighbours(nb, n, padded, t);
