@@ -3,6 +3,7 @@
 #include "analysis/surface_profile.hpp"
 #include "block/particle_block.hpp"
 #include "helpers.hpp"
+#include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 
 #include <doctest/doctest.h>
@@ -392,4 +393,30 @@ TEST_CASE("a periodic block at the engine's minimum width is refused by the bloc
                 CHECK(std::string(e.what()).find("a periodic block needs more than") != std::string::npos);
             }
         }
+}
+
+TEST_CASE("a periodic block whose images overrun the memory budget is refused before anything is allocated")
+{
+    // 1 MiB at 200 bytes a point: 5242 points. 12 x 12 x 30 fcc cells are 4320 particles, within
+    // it; with the images within reach of the sides they are more than twice that.
+    set_memory_limit_gib(1.0 / 1024);
+    struct Restore {
+        ~Restore() { set_memory_limit_gib(0); } // the machine's budget again, however the case ends
+    } restore;
+    auto lattice = load_lattice("fcc");
+    Kernel kernel = shipped_kernel("cubic_bspline");
+    BlockOptions options;
+    options.cells = {12, 12, 30};
+    options.k = 1.2;
+    CHECK_NOTHROW(evaluate_block(kernel, lattice, options)); // free sides: no images
+    options.periodic = true;
+    try {
+        evaluate_block(kernel, lattice, options);
+        FAIL("a periodic block over the budget was evaluated");
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        CHECK(message.find("the block asks for its particles and their periodic images") != std::string::npos);
+        CHECK(message.find('\n') == std::string::npos);
+        CHECK(e.code() == ExitCode::input);
+    }
 }
