@@ -59,14 +59,13 @@ struct BlockSweep {
     bool with_density, with_gradient;
     const double* depth;                  // in the block's order
     const double* rho;                    // in the block's order (Monaghan's form only)
-    std::vector<double> point_rho, reach; // in the grid's point order
+    std::vector<double> point_rho, reach; // in the grid's point order (point_rho empty but for Monaghan's form)
     double self, kd, kd1;
 
     // The candidates of cluster c gathered once, then each particle's neighbours kept from them.
     std::size_t sum_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
     {
-        const bool monaghan = parameters.form == GradientForm::monaghan && with_gradient;
-        gather_cluster(grid, c, reach.data(), nullptr, monaghan ? point_rho.data() : nullptr, cluster);
+        gather_cluster(grid, c, reach.data(), nullptr, point_rho.empty() ? nullptr : point_rho.data(), cluster);
         std::size_t pairs = 0;
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) pairs += sum_particle(p, cluster, nb, result);
