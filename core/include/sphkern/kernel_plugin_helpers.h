@@ -40,10 +40,8 @@
                                            double* SPHKERN_RESTRICT dw_out, size_t n, int dim, double k,      \
                                            const double* params)                                              \
     {                                                                                         \
-        for (size_t i = 0; i < n; ++i) {                                                      \
-            w_out[i] = w(q[i], dim, k, params);                                               \
-            dw_out[i] = dw(q[i], dim, k, params);                                             \
-        }                                                                                     \
+        for (size_t i = 0; i < n; ++i) w_out[i] = w(q[i], dim, k, params);                     \
+        for (size_t i = 0; i < n; ++i) dw_out[i] = dw(q[i], dim, k, params);                   \
     }
 
 /* Defines `name` as a get_extension function that gives the fused evaluation `fused`
