@@ -33,8 +33,11 @@
 #endif
 
 /* Defines `name` as the fused function of SPHKERN_EXTENSION_FUSED_EVALUATION from the
- * scalar functions `w` and `dw`: one loop writes both, and vectorises when they are
- * branch-free. Pair it with SPHKERN_FUSED_EXTENSION or return &name's struct yourself. */
+ * scalar functions `w` and `dw`: one call writes both, a loop for each (GCC turns one loop
+ * over two piecewise functions into branches, not vector code). The loops vectorise when the
+ * functions are branch-free and the plugin is built without trapping math, as
+ * sphkern_add_kernel_plugin builds it. Pair it with SPHKERN_FUSED_EXTENSION or return
+ * &name's struct yourself. */
 #define SPHKERN_FUSED_FROM_SCALAR(name, w, dw)                                                  \
     SPHKERN_VECTOR_CLONES static void name(const double* SPHKERN_RESTRICT q, double* SPHKERN_RESTRICT w_out, \
                                            double* SPHKERN_RESTRICT dw_out, size_t n, int dim, double k,      \
