@@ -2,11 +2,10 @@
 
 #include "kernels/kernel_validity.hpp"
 #include "particles/neighbour_gather.hpp"
+#include "particles/neighbour_sums.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
-
-#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -33,12 +32,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// The sums over one particle's neighbours, in eight lanes of partial sums added in a fixed
-// order at the end: the loop vectorises, and the result does not depend on the thread count.
-// n is a multiple of the lanes (gather_from_cluster pads with neighbours that add zero).
-enum Sum { s0, sm, m1x, m1y, m1z, e1x, e1y, e1z, exx, eyy, ezz, exy, exz, eyz, sums };
-constexpr std::size_t lanes = neighbour_lanes;
 
 // One particle's results in sweep order, before they go to the particle's own (file) place.
 struct PointResult {
@@ -87,73 +80,6 @@ private:
     std::vector<PointResult> results_;
 };
 
-// Eight lanes of partial sums per quantity, as two vectors of four in GCC's vector type:
-// the accumulators stay in registers (an array of them was kept in memory, a load and a store
-// per term; a vector of eight is split badly where registers hold four), and every lane adds
-// in the same order on every instruction set, so the sums are the same bits on any machine. A
-// pass takes only as many quantities as sixteen AVX2 registers hold.
-using Quad = double __attribute__((vector_size(4 * sizeof(double))));
-using UnalignedQuad = double __attribute__((vector_size(4 * sizeof(double)), aligned(alignof(double))));
-static_assert(lanes == 8);
-struct Partial {
-    Quad lo = {}, hi = {};
-};
-const UnalignedQuad* as_quads(const double* p) { return reinterpret_cast<const UnalignedQuad*>(p); }
-
-double total_of(const Partial& p)
-{
-    return p.lo[0] + p.lo[1] + p.lo[2] + p.lo[3] + p.hi[0] + p.hi[1] + p.hi[2] + p.hi[3];
-}
-
-// The gathered arrays of one particle's neighbours, padded to a multiple of the lanes.
-struct PairArrays {
-    const double *dx, *dy, *dz, *inv_r, *v, *m, *w, *dw;
-    double v_all; // the one volume of every particle, or 0: then v holds V_j
-    std::size_t n;
-    bool with_z;
-};
-
-// Without masses (m null), total[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0. With one
-// volume for all (uniform_volume), v is not read; the padding then needs W = W' = 0.
-template <bool with_mass, bool uniform_volume>
-SPHKERN_VECTOR_CLONES void neighbour_sums(const PairArrays& in, double* __restrict total)
-{
-    const UnalignedQuad *dx = as_quads(in.dx), *dy = as_quads(in.dy), *dz = as_quads(in.dz);
-    const UnalignedQuad *inv_r = as_quads(in.inv_r), *v = as_quads(in.v), *m = as_quads(in.m);
-    const UnalignedQuad *w = as_quads(in.w), *dw = as_quads(in.dw);
-    const Quad v_all = {in.v_all, in.v_all, in.v_all, in.v_all};
-    const std::size_t quads = in.n / 4;
-    Partial a0, a1, a2, a3, a4;
-    // Quad q of the neighbours adds to lanes 0 to 3 when q is even, 4 to 7 when it is odd.
-    auto add = [](Partial& p, std::size_t q, const Quad& term) { (q % 2 ? p.hi : p.lo) += term; };
-    for (std::size_t q = 0; q < quads; ++q) { // the values and their first moments
-        const Quad vw = (uniform_volume ? v_all : v[q]) * w[q];
-        add(a0, q, vw), add(a2, q, vw * dx[q]), add(a3, q, vw * dy[q]), add(a4, q, vw * dz[q]);
-        if constexpr (with_mass) add(a1, q, m[q] * w[q]);
-    }
-    total[s0] = total_of(a0), total[sm] = total_of(a1);
-    total[m1x] = total_of(a2), total[m1y] = total_of(a3), total[m1z] = total_of(a4);
-    // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
-    a0 = a1 = a2 = Partial{};
-    for (std::size_t q = 0; q < quads; ++q) { // the gradient of a constant
-        const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q];
-        add(a0, q, g * dx[q]), add(a1, q, g * dy[q]), add(a2, q, g * dz[q]);
-    }
-    total[e1x] = total_of(a0), total[e1y] = total_of(a1), total[e1z] = total_of(a2);
-    a0 = a1 = a2 = Partial{};
-    for (std::size_t q = 0; q < quads; ++q) { // E in the plane of x and y
-        const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q], x = dx[q], y = dy[q];
-        add(a0, q, g * x * x), add(a1, q, g * y * y), add(a2, q, g * x * y);
-    }
-    total[exx] = total_of(a0), total[eyy] = total_of(a1), total[exy] = total_of(a2);
-    a0 = a1 = a2 = Partial{};
-    for (std::size_t q = 0; in.with_z && q < quads; ++q) { // E's terms with z, zero in 2D
-        const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q], z = dz[q];
-        add(a0, q, g * z * z), add(a1, q, g * dx[q] * z), add(a2, q, g * dy[q] * z);
-    }
-    total[ezz] = total_of(a0), total[exz] = total_of(a1), total[eyz] = total_of(a2);
-}
-
 struct Sweep {
     const Kernel& kernel;
     const ParticleSet& set;
@@ -184,11 +110,11 @@ struct Sweep {
         const int dim = set.dimension;
         const double h = this->h[p], k = h / in.spacing;
         gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
-        const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
+        const std::size_t n = nb.count, padded = (n + neighbour_lanes - 1) / neighbour_lanes * neighbour_lanes;
         distances(nb, padded, 1 / h);
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
-        double t[sums];
-        sum_neighbours(nb, n, padded, t);
+        double t[neighbour_sum_count];
+        neighbour_sums(nb, padded, uniform_volume, !mass.empty(), set.dimension == 3, t);
         const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume[p] * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
@@ -197,22 +123,6 @@ struct Sweep {
         PointResult& r = out.next();
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
-    }
-
-    // The sums over the `padded` gathered neighbours, the first n of them live.
-    void sum_neighbours(Neighbours& nb, std::size_t n, std::size_t padded, double* t) const
-    {
-        const PairArrays in{nb.dx.data(),  nb.dy.data(), nb.dz.data(), nb.inv_r.data(),
-                            nb.a.data(),   mass.empty() ? nullptr : nb.b.data(),
-                            nb.w.data(),   nb.dw.data(), uniform_volume, padded, set.dimension == 3};
-        if (uniform_volume > 0) {
-            for (std::size_t j = n; j < padded; ++j) nb.w[j] = nb.dw[j] = 0; // no V_j = 0 on the padding
-            if (in.m) neighbour_sums<true, true>(in, t);
-            else neighbour_sums<false, true>(in, t);
-        } else if (in.m)
-            neighbour_sums<true, false>(in, t);
-        else
-            neighbour_sums<false, false>(in, t);
     }
 
     // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).

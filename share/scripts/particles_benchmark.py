@@ -3,7 +3,8 @@
 `sphkern particles` on fcc blocks and Poisson sets of 10^6 and 8 10^6 particles (cubic
 spline, about 80 and 60 neighbours), 1 and 2 threads, against the machine's pair ceiling
 (`fused_pair_ceiling` of kernel_call_benchmark), and a 10^6-particle SWIFT file read and
-evaluated, whole process. Medians of three runs. Prints Markdown. With a second build
+evaluated, whole process. Also against the measures' own floor (`measures_pair_floor`: the
+engine's per-pair arithmetic on data in L1, without the search). Medians of three runs. Prints Markdown. With a second build
 (an earlier commit built with the same flags), each case also runs there, alternating
 with this build, and the table gains the earlier sums and the ratio of the two.
 Usage: share/scripts/particles_benchmark.py [BUILD [BASE_BUILD]]   (needs python3-h5py and numpy)"""
@@ -22,11 +23,12 @@ sphkern = str(build / "sphkern")
 base = str(pathlib.Path(sys.argv[2]).resolve() / "sphkern") if len(sys.argv) > 2 else None
 
 
-def ceiling():
+def ceiling(name):
+    """Pairs per second of one core in the benchmark `name` of kernel_call_benchmark."""
     bench = build / "tests" / "kernel_call_benchmark"
     if not bench.exists():
         return None
-    out = subprocess.run([str(bench), "--benchmark_filter=^fused_pair_ceiling$", "--benchmark_repetitions=5",
+    out = subprocess.run([str(bench), f"--benchmark_filter=^{name}$", "--benchmark_repetitions=5",
                           "--benchmark_format=json"], capture_output=True, text=True, check=True).stdout
     rates = [b["items_per_second"] for b in json.loads(out)["benchmarks"] if b.get("run_type") == "iteration"]
     return statistics.median(rates)
@@ -58,11 +60,12 @@ def run(args, threads):
     return doc, median, [statistics.median(column) for column in zip(*base_runs)] if base else None
 
 
-per_core = ceiling()
+per_core = ceiling("fused_pair_ceiling")
+floor = ceiling("measures_pair_floor")  # the measures' own arithmetic, no search
 extra = " base sums [s] | base / this, sums | base / this, process CPU |" if base else ""
 print("| set | particles | neighbours | threads | pairs | sums [s] | sums, CPU [s] | whole process [s] | "
-      "pairs per second | of the ceiling | pairs per CPU second | of the ceiling (CPU) |" + extra)
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|---:|---:|" if base else ""))
+      "pairs per second | of the ceiling | pairs per CPU second | of the ceiling (CPU) | of the floor (CPU) |" + extra)
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|---:|---:|" if base else ""))
 cases = [("fcc, k = 1.2", ["fcc", "--size", "100,100,100", "--k", "1.2"], (1, 2)),
          ("Poisson, N_H = 60", ["poisson", "--count", "1000000", "--nh", "60"], (1, 2)),
          ("fcc, k = 1.2", ["fcc", "--size", "200,200,200", "--k", "1.2"], (2,)),
@@ -90,12 +93,17 @@ with tempfile.TemporaryDirectory() as work:
             rate, cpu_rate = doc["pairs"] / sums, doc["pairs"] / sums_cpu
             share = f"{rate / (per_core * t):.2f}" if per_core else "-"
             cpu_share = f"{cpu_rate / per_core:.2f}" if per_core else "-"
+            floor_share = f"{cpu_rate / floor:.2f}" if floor else "-"
             row = (f"| {name} | {doc['source']['particles']} | {doc['mean_neighbours']:.1f} | {t} | {doc['pairs']} | "
-                   f"{sums:.3f} | {sums_cpu:.3f} | {wall:.3f} | {rate:.3g} | {share} | {cpu_rate:.3g} | {cpu_share} |")
+                   f"{sums:.3f} | {sums_cpu:.3f} | {wall:.3f} | {rate:.3g} | {share} | {cpu_rate:.3g} | {cpu_share} | "
+                   f"{floor_share} |")
             if base:
                 base_sums, base_cpu = base_median
                 row += f" {base_sums:.3f} | {base_sums / sums:.2f} | {base_cpu / cpu:.2f} |"
             print(row, flush=True)
 if per_core:
     print(f"\nCeiling: fused_pair_ceiling, {per_core:.3g} pairs per second of CPU time on one core (median of 5).")
+if floor:
+    print(f"Floor of the measures: measures_pair_floor, {floor:.3g} pairs per second on one core (median of 5), "
+          f"{floor / per_core:.2f} of the ceiling.")
 print(f"Load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores.")

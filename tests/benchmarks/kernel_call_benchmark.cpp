@@ -4,11 +4,14 @@
 // fused sweep: its per-pair arithmetic on a run of pairs that stays in L1.
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
+#include "particles/neighbour_gather.hpp"
+#include "particles/neighbour_sums.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <random>
 #include <vector>
 
 namespace inline_cubic_bspline {
@@ -130,6 +133,38 @@ void pair_ceiling(benchmark::State& state)
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * run_length));
 }
 
+// The particle engine's own arithmetic per particle, on one particle's 78 neighbours (fcc at
+// k = 1.2) in L1: r, q and 1 / r, the plugin's fused W and W', and the fourteen sums of the
+// measures (sphkern particles), with no neighbour search, no gather and no stores of results.
+// The engine cannot do better than this per pair; BENCHMARKS.md divides its rate by it too.
+void measures_pair_floor(benchmark::State& state)
+{
+    const auto& kernel = plugin_kernel();
+    constexpr std::size_t count = 78;
+    constexpr double h = 1.2, reach = 2 * h;
+    sphkern::Neighbours nb;
+    nb.reserve(count + sphkern::neighbour_lanes);
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coordinate(-reach, reach);
+    for (std::size_t j = 0; j < count;) { // points inside the support, none at its centre
+        const double x = coordinate(random), y = coordinate(random), z = coordinate(random);
+        const double r2 = x * x + y * y + z * z;
+        if (r2 > reach * reach || r2 < 1e-6) continue;
+        nb.dx[j] = x, nb.dy[j] = y, nb.dz[j] = z, ++j;
+    }
+    nb.count = count;
+    const std::size_t padded = (count + sphkern::neighbour_lanes - 1) / sphkern::neighbour_lanes * sphkern::neighbour_lanes;
+    double total[sphkern::neighbour_sum_count];
+    for (auto _ : state) {
+        sphkern::distances(nb, padded, 1 / h);
+        kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, 3, h);
+        sphkern::neighbour_sums(nb, padded, 0.7, false, true, total);
+        benchmark::DoNotOptimize(total);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * count));
+}
+
 void fused_pair_ceiling(benchmark::State& state) { pair_ceiling<false>(state); }
 void fused_pair_ceiling_one_call(benchmark::State& state) { pair_ceiling<true>(state); }
 
@@ -137,6 +172,7 @@ void fused_pair_ceiling_one_call(benchmark::State& state) { pair_ceiling<true>(s
 
 BENCHMARK(fused_pair_ceiling);
 BENCHMARK(fused_pair_ceiling_one_call);
+BENCHMARK(measures_pair_floor);
 BENCHMARK(inline_batch);
 BENCHMARK(plugin_batch);
 BENCHMARK(plugin_scalar);
