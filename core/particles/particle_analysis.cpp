@@ -99,8 +99,6 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     if (!request.rho0 && !set.mass.empty())
         answer.rho0 = std::accumulate(set.mass.begin(), set.mass.end(), 0.0) /
                       std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0);
-    ParticleSet oriented = set;
-    oriented.gravity = answer.gravity;
 
     std::vector<SmoothingSpec> specs;
     if (const auto& s = request.sweep)
@@ -111,8 +109,9 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
     for (std::size_t p = 0; p < specs.size(); ++p) {
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume);
-        MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, request.threads};
-        auto measures = measure_particles(kernel, oriented, inputs);
+        MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
+                             request.threads};
+        auto measures = measure_particles(kernel, set, inputs);
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
         for (std::size_t i = 0; i < measures.size(); ++i)
             if (measures.neighbours[i] == 0)

@@ -139,7 +139,7 @@ struct Sweep {
         for (int a = 0; a < 6; ++a) tensor[static_cast<std::size_t>(a)] = E[a] / hd1 - (a < dim ? 1.0 : 0.0);
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
         out.E = tensor;
-        const Eigen::Vector3d g = set.gravity;
+        const Eigen::Vector3d g = in.gravity.value_or(set.gravity);
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
         out.eps_gradp = g.dot(T * g);

@@ -8,6 +8,7 @@
 #include "particles/particle_set.hpp"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace sphkern {
@@ -19,6 +20,7 @@ struct MeasureInputs {
     double rho0 = 1;            // the reference density of eps_rho
     double spacing = 1;         // d of k = h / d, the argument of kernels that depend on k
     double depth = 1;           // of the sum form, in units of h
+    std::optional<Eigen::Vector3d> gravity; // the unit g of eps_gradp; none: the set's
     int threads = 0;            // 0: every core
 };
 

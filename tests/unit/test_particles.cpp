@@ -298,6 +298,35 @@ TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend
     CHECK(one.points[0].statistics[0].second.std > 1e-4);
 }
 
+TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with that g, not the set's")
+{
+    const auto lattice = load_lattice("fcc");
+    LatticeBlockSpec spec;
+    spec.cells = {6, 6, 6};
+    spec.sigma = 0.05;
+    spec.seed = 3;
+    const auto set = lattice_particles(lattice, spec, plenty);
+    const auto kernel = shipped_kernel("cubic_bspline");
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::k, 1.2, 0};
+    for (const Eigen::Vector3d& g : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 3, 4)}) {
+        CAPTURE(g.transpose());
+        request.gravity = g;
+        const auto answer = analyse_particles(kernel, set, request);
+        const auto& m = *answer.measures;
+        const Eigen::Vector3d u = g.normalized();
+        double largest_change = 0;
+        for (std::size_t i = 0; i < m.size(); ++i) {
+            const auto& E = m.E[i]; // xx, yy, zz, xy, xz, yz
+            const double expected = u.x() * u.x() * E[0] + u.y() * u.y() * E[1] + u.z() * u.z() * E[2] +
+                                    2 * (u.x() * u.y() * E[3] + u.x() * u.z() * E[4] + u.y() * u.z() * E[5]);
+            CHECK(m.eps_gradp[i] == doctest::Approx(expected).epsilon(1e-12).scale(1));
+            largest_change = std::max(largest_change, std::abs(m.eps_gradp[i] - E[2])); // the set's g is -z
+        }
+        CHECK(largest_change > 1e-3);
+    }
+}
+
 TEST_CASE("the neighbour number gives h: a Poisson set's mean neighbour count is N_H (N - 1)/N")
 {
     const auto kernel = shipped_kernel("cubic_bspline");
