@@ -273,13 +273,19 @@ TEST_CASE("Poisson sets: the mean of e0 is V W(0) - 1/N and its variance V int W
     }
 }
 
+LatticeBlockSpec perturbed_block(long long cells, std::uint64_t seed)
+{
+    LatticeBlockSpec spec;
+    spec.cells = {cells, cells, cells};
+    spec.sigma = 0.05;
+    spec.seed = seed;
+    return spec;
+}
+
 TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend on the thread count")
 {
     const auto lattice = load_lattice("fcc");
-    LatticeBlockSpec spec;
-    spec.cells = {8, 8, 8};
-    spec.sigma = 0.05;
-    spec.seed = 7;
+    LatticeBlockSpec spec = perturbed_block(8, 7);
     const auto a = lattice_particles(lattice, spec, plenty), b = lattice_particles(lattice, spec, plenty);
     CHECK(a.x == b.x);
     CHECK(a.z == b.z);
@@ -300,12 +306,7 @@ TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend
 
 TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with that g, not the set's")
 {
-    const auto lattice = load_lattice("fcc");
-    LatticeBlockSpec spec;
-    spec.cells = {6, 6, 6};
-    spec.sigma = 0.05;
-    spec.seed = 3;
-    const auto set = lattice_particles(lattice, spec, plenty);
+    const auto set = lattice_particles(load_lattice("fcc"), perturbed_block(6, 3), plenty);
     const auto kernel = shipped_kernel("cubic_bspline");
     ParticleRequest request;
     request.smoothing = {SmoothingRule::k, 1.2, 0};
