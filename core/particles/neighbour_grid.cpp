@@ -78,23 +78,41 @@ void NeighbourGrid::sort_into_bins(double reach)
     }
     // Not many more bins than points, so that sparse or long thin sets stay small: the axis
     // with the most bins is halved until they are few enough.
-    const double most = 4 * static_cast<double>(count) + 64;
+    // Fewer than 2^32 bins in all, so that a row or a bin along x is a 32-bit number.
+    const double most = std::min(4 * static_cast<double>(count) + 64, 4294967295.0);
     while (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) > most) {
         std::size_t& widest = *std::max_element(n_, n_ + 3);
         widest = (widest + 1) / 2;
     }
     for (int a = 0; a < 3; ++a) scale_[a] = extent[a] > 0 ? static_cast<double>(n_[a]) / extent[a] : 0.0;
-    const std::size_t total_bins = n_[0] * n_[1] * n_[2];
-    std::vector<std::uint64_t> bin(count), fill(total_bins + 1, 0);
+    // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
+    // along x within each row: every step's counters stay in cache, where one pass over all
+    // the bins' counters (megabytes on a large set) missed it at every point.
+    const std::size_t rows = n_[1] * n_[2];
+    std::vector<std::uint32_t> row(count), along(count);
+    std::vector<std::uint64_t> row_start(rows + 1, 0);
     for (std::size_t p = 0; p < count; ++p) {
-        bin[p] = (bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p])) * n_[0] + bin_along(0, x_[p]);
-        ++fill[bin[p] + 1];
+        row[p] = static_cast<std::uint32_t>(bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p]));
+        along[p] = static_cast<std::uint32_t>(bin_along(0, x_[p]));
+        ++row_start[row[p] + 1];
     }
-    for (std::size_t b = 0; b < total_bins; ++b) fill[b + 1] += fill[b];
-    start_ = fill;
-    // A stable counting sort: particles keep their order inside a bin.
-    std::vector<std::uint64_t> where(count);
-    for (std::size_t p = 0; p < count; ++p) where[p] = fill[bin[p]]++;
+    for (std::size_t r = 0; r < rows; ++r) row_start[r + 1] += row_start[r];
+    std::vector<std::uint32_t> by_row(count); // the points, row after row, each row in their order
+    {
+        std::vector<std::uint64_t> next(row_start.begin(), row_start.end() - 1);
+        for (std::size_t p = 0; p < count; ++p) by_row[next[row[p]]++] = static_cast<std::uint32_t>(p);
+    }
+    start_.assign(rows * n_[0] + 1, 0);
+    std::vector<std::uint64_t> where(count), fill(n_[0] + 1);
+    for (std::size_t r = 0; r < rows; ++r) {
+        std::fill(fill.begin(), fill.end(), 0);
+        for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[along[by_row[k]] + 1];
+        fill[0] = row_start[r];
+        for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
+        std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
+        for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) where[by_row[k]] = fill[along[by_row[k]]]++;
+    }
+    start_.back() = count;
     auto permute = [&](auto& values) {
         std::remove_reference_t<decltype(values)> sorted(values.size());
         for (std::size_t p = 0; p < count; ++p) sorted[where[p]] = values[p];
