@@ -4,6 +4,7 @@
 #include "particles/neighbour_gather.hpp"
 #include "particles/neighbour_sums.hpp"
 #include "support/error.hpp"
+#include "support/process/huge_pages.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
 
@@ -194,8 +195,10 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
 
     ParticleMeasures out;
     const std::size_t n = set.size();
-    out.e0.resize(n), out.eps_rho.resize(n), out.eps_gradp.resize(n), out.eps_gradp_sum.resize(n);
-    out.e1.resize(n), out.m1.resize(n), out.E.resize(n), out.neighbours.resize(n);
+    // Written in the particles' own order, random in memory on a disordered set.
+    resize_on_huge_pages(out.e0, n), resize_on_huge_pages(out.eps_rho, n), resize_on_huge_pages(out.eps_gradp, n);
+    resize_on_huge_pages(out.eps_gradp_sum, n), resize_on_huge_pages(out.e1, n), resize_on_huge_pages(out.m1, n);
+    resize_on_huge_pages(out.E, n), resize_on_huge_pages(out.neighbours, n);
     out.threads = inputs.threads > 0 ? inputs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
