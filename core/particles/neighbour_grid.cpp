@@ -26,6 +26,10 @@ NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach)
                                    "expected a larger box or a smaller h",
                                    set.name, width, reach));
         add_ghosts(set, reach);
+        // The sort numbers points (particles and ghosts) in 32 bits.
+        if (x_.size() >= std::numeric_limits<std::uint32_t>::max())
+            fail_input(fmt::format("{}: {} particles and their periodic images, more than this engine indexes",
+                                   set.name, x_.size()));
     }
     sort_into_bins(reach);
 }

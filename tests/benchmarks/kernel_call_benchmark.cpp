@@ -133,9 +133,10 @@ void pair_ceiling(benchmark::State& state)
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * run_length));
 }
 
-// The particle engine's own arithmetic per particle, on one particle's 78 neighbours (fcc at
-// k = 1.2) in L1: r, q and 1 / r, the plugin's fused W and W', and the fourteen sums of the
-// measures (sphkern particles), with no neighbour search, no gather and no stores of results.
+// The particle engine's own arithmetic per particle, on one particle's 78 neighbours (as many
+// as fcc has at k = 1.2, here at random inside the support) in L1: r, q and 1 / r, the
+// plugin's fused W and W', and the sums of the measures (sphkern particles; thirteen, as the
+// set has no masses), with no neighbour search, no gather and no stores of results.
 // The engine cannot do better than this per pair; BENCHMARKS.md divides its rate by it too.
 void measures_pair_floor(benchmark::State& state)
 {

@@ -310,6 +310,7 @@ TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with th
     const auto kernel = shipped_kernel("cubic_bspline");
     ParticleRequest request;
     request.smoothing = {SmoothingRule::k, 1.2, 0};
+    request.depth = 2.5;
     for (const Eigen::Vector3d& g : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 3, 4)}) {
         CAPTURE(g.transpose());
         request.gravity = g;
@@ -322,6 +323,9 @@ TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with th
             const double expected = u.x() * u.x() * E[0] + u.y() * u.y() * E[1] + u.z() * u.z() * E[2] +
                                     2 * (u.x() * u.y() * E[3] + u.x() * u.z() * E[4] + u.y() * u.z() * E[5]);
             CHECK(m.eps_gradp[i] == doctest::Approx(expected).epsilon(1e-12).scale(1));
+            // The sum form at depth D: eps_gradp + 2 D (e1 . g).
+            const double e1_g = u.x() * m.e1[i][0] + u.y() * m.e1[i][1] + u.z() * m.e1[i][2];
+            CHECK(m.eps_gradp_sum[i] == doctest::Approx(expected + 2 * request.depth * e1_g).epsilon(1e-12).scale(1));
             largest_change = std::max(largest_change, std::abs(m.eps_gradp[i] - E[2])); // the set's g is -z
         }
         CHECK(largest_change > 1e-3);
