@@ -77,7 +77,7 @@ struct BlockSweep {
         const int dim = parameters.dimension;
         const double k = parameters.k;
         gather_from_cluster(grid, cluster, p, reach[p] * reach[p], "the block", nb, false);
-        const std::size_t n = nb.count, padded = (n + lanes - 1) / lanes * lanes;
+        const std::size_t n = nb.count, padded = padded_count(n);
         for (std::size_t j = n; j < padded; ++j) nb.b[j] = 1; // Monaghan's weight divides by rho_j
         distances(nb, padded, 1 / k);
         const std::size_t i = grid.source(p);

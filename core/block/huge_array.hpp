@@ -3,6 +3,8 @@
 // first touch (which faults the pages in) happens in the threads that fill it.
 #pragma once
 
+#include "support/process/huge_pages.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <new>
@@ -21,10 +23,10 @@ public:
     explicit HugeArray(std::size_t n) : size_(n)
     {
         if (n == 0) return;
-        bytes_ = (n * sizeof(T) + huge_page - 1) / huge_page * huge_page;
+        bytes_ = (n * sizeof(T) + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
         void* p = ::mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (p == MAP_FAILED) throw std::bad_alloc();
-        ::madvise(p, bytes_, MADV_HUGEPAGE); // a hint: fewer page faults where the kernel allows it
+        advise_huge_pages(p, bytes_);
         data_ = static_cast<T*>(p);
     }
     ~HugeArray()
@@ -58,7 +60,6 @@ public:
     }
 
 private:
-    static constexpr std::size_t huge_page = std::size_t{2} << 20;
     void swap(HugeArray& other) noexcept
     {
         std::swap(data_, other.data_);

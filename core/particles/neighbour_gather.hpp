@@ -22,6 +22,11 @@ struct Neighbours {
 
 // The fused pair loops take neighbours in groups of this many; gather_from_cluster pads to it.
 inline constexpr std::size_t neighbour_lanes = 8;
+// n neighbours and their padding: n rounded up to a multiple of neighbour_lanes.
+inline constexpr std::size_t padded_count(std::size_t n)
+{
+    return (n + neighbour_lanes - 1) / neighbour_lanes * neighbour_lanes;
+}
 
 // How the candidate passes keep the points inside: one at a time (branch-free), with AVX2
 // (a permutation per mask: of four points near a box, of eight indices of a particle's

@@ -81,8 +81,8 @@ void NeighbourGrid::sort_into_bins(double reach)
         n_[a] = static_cast<std::size_t>(std::clamp(std::floor(extent[a] / reach * per_reach), 1.0, 1e9));
     }
     // Not many more bins than points, so that sparse or long thin sets stay small: the axis
-    // with the most bins is halved until they are few enough.
-    // Fewer than 2^32 bins in all, so that a row or a bin along x is a 32-bit number.
+    // with the most bins is halved until they are few enough; and fewer than 2^32 bins in all,
+    // so that a row or a bin along x is a 32-bit number.
     const double most = std::min(4 * static_cast<double>(count) + 64, 4294967295.0);
     while (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) > most) {
         std::size_t& widest = *std::max_element(n_, n_ + 3);

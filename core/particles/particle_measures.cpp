@@ -111,7 +111,7 @@ struct Sweep {
         const int dim = set.dimension;
         const double h = this->h[p], k = h / in.spacing;
         gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
-        const std::size_t n = nb.count, padded = (n + neighbour_lanes - 1) / neighbour_lanes * neighbour_lanes;
+        const std::size_t n = nb.count, padded = padded_count(n);
         distances(nb, padded, 1 / h);
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[neighbour_sum_count];

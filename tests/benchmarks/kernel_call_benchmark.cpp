@@ -154,7 +154,7 @@ void measures_pair_floor(benchmark::State& state)
         nb.dx[j] = x, nb.dy[j] = y, nb.dz[j] = z, ++j;
     }
     nb.count = count;
-    const std::size_t padded = (count + sphkern::neighbour_lanes - 1) / sphkern::neighbour_lanes * sphkern::neighbour_lanes;
+    const std::size_t padded = sphkern::padded_count(count);
     double total[sphkern::neighbour_sum_count];
     for (auto _ : state) {
         sphkern::distances(nb, padded, 1 / h);
