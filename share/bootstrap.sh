@@ -27,15 +27,17 @@ fi
 multiarch=$(gcc -print-multiarch 2>/dev/null || true)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPHKERN_WERROR="${SPHKERN_WERROR:-OFF}" \
     ${multiarch:+-DCMAKE_INSTALL_LIBDIR="lib/$multiarch"} >/dev/null
-cmake --build build -j "$(nproc)" >&2
 
 case "${1:-run}" in
 run)
+    # The program and its kernel plugins only: the tests, benchmarks and the Python module are for `test`.
+    cmake --build build -j "$(nproc)" --target sphkern >&2
     shift || true
     if (($#)) && [[ $1 != -* ]]; then study=$1; shift; else study=potapov2021; fi
     exec build/sphkern run "$study" --force "$@"
     ;;
 test)
+    cmake --build build -j "$(nproc)" >&2
     exec ctest --test-dir build --output-on-failure -j 2
     ;;
 *)

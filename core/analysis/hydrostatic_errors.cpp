@@ -3,6 +3,7 @@
 #include "kernels/kernel_validity.hpp"
 #include "support/error.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include "lattices/lattice.hpp"
 #include "lattices/shells.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <optional>
 #include <vector>

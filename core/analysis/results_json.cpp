@@ -2,6 +2,8 @@
 
 #include "support/error.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <sstream>
 

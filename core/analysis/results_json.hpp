@@ -7,7 +7,7 @@
 #include "analysis/roots.hpp"
 #include "analysis/surface_profile.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

@@ -3,6 +3,8 @@
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 namespace sphkern {

@@ -5,7 +5,7 @@
 
 #include "analysis/hydrostatic_errors.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <memory>
 #include <string>

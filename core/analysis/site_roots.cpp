@@ -2,6 +2,8 @@
 
 #include "analysis/results_json.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace sphkern {
 
 nlohmann::json site_roots_json(const SiteRoots& s, double epsilon)

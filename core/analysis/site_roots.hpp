@@ -6,7 +6,7 @@
 #include "analysis/resolution_axis.hpp"
 #include "analysis/roots.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <vector>
 

@@ -11,6 +11,7 @@
 #include "support/process/work_budget.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 

@@ -7,7 +7,7 @@
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <array>
 #include <string>

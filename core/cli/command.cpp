@@ -15,17 +15,17 @@
 
 namespace sphkern::cli {
 
-void add_plugin_option(CLI::App& command, CommonOptions& options)
+void add_plugin_option(Command command, CommonOptions& options)
 {
     command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)");
 }
 
-void add_json_option(CLI::App& command, CommonOptions& options)
+void add_json_option(Command command, CommonOptions& options)
 {
     command.add_flag("--json", options.json, "Print machine-readable JSON on stdout");
 }
 
-void add_set_option(CLI::App& command, std::vector<std::string>& sets)
+void add_set_option(Command command, std::vector<std::string>& sets)
 {
     command.add_option("--set", sets, "Kernel parameter NAME=VALUE (repeatable)");
 }
@@ -56,12 +56,12 @@ Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std:
     return Kernel(registry.find(spec), parse_sets(sets));
 }
 
-void add_evaluation_options(CLI::App& command, EvaluationOptions& options)
+void add_evaluation_options(Command command, EvaluationOptions& options)
 {
     command.add_option("--ap", options.ap, "Volume coefficient: a name the lattice offers or a positive number")
-        ->capture_default_str();
+        .capture_default_str();
     command.add_option("--gravity", options.gravity, "Gravity direction x,y[,z] (default: the lattice's)");
-    command.add_option("--site", options.site, "Motif site of the particle")->capture_default_str();
+    command.add_option("--site", options.site, "Motif site of the particle").capture_default_str();
     command.add_option("--shells", options.shells,
                        "Sum over these shell radii only (in d, comma-separated), as the paper does");
     command.add_flag("--continue-past-support", options.continue_past_support,
@@ -90,7 +90,7 @@ EvaluationSources evaluation_sources(const EvaluationOptions& options)
             ValueSource::option("--shells " + options.shells)};
 }
 
-std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options)
+std::vector<OutputTarget> given_outputs(const Command& command, const std::vector<OutputTarget>& options)
 {
     std::vector<OutputTarget> given;
     for (const auto& target : options)

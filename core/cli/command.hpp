@@ -10,7 +10,7 @@
 #include "support/io/output_targets.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <CLI/CLI.hpp>
+#include "cli/options.hpp"
 #include <nlohmann/json.hpp>
 
 #include <functional>
@@ -28,11 +28,11 @@ struct CommonOptions {
     bool json = false;
 };
 
-void add_plugin_option(CLI::App& command, CommonOptions& options);
-void add_json_option(CLI::App& command, CommonOptions& options);
+void add_plugin_option(Command command, CommonOptions& options);
+void add_json_option(Command command, CommonOptions& options);
 
 // --set NAME=VALUE pairs for kernel parameters.
-void add_set_option(CLI::App& command, std::vector<std::string>& sets);
+void add_set_option(Command command, std::vector<std::string>& sets);
 std::map<std::string, double> parse_sets(const std::vector<std::string>& sets);
 
 KernelRegistry discover_kernels(const CommonOptions& options);
@@ -46,14 +46,14 @@ struct EvaluationOptions {
     std::string shells;   // explicit radii "1,1.732,2"
     bool continue_past_support = false;
 };
-void add_evaluation_options(CLI::App& command, EvaluationOptions& options);
+void add_evaluation_options(Command command, EvaluationOptions& options);
 // The options as numbers, for a request; the option names, for its errors.
 EvaluationInputs evaluation_inputs(const EvaluationOptions& options);
 EvaluationSources evaluation_sources(const EvaluationOptions& options);
 
 
 // The output options a command was given (an option given as '' too, for the check to refuse).
-std::vector<OutputTarget> given_outputs(const CLI::App& command, const std::vector<OutputTarget>& options);
+std::vector<OutputTarget> given_outputs(const Command& command, const std::vector<OutputTarget>& options);
 // The files a command reads, named on its command line: a source or lattice, a kernel file, plugins.
 std::vector<std::string> read_inputs(const std::string& source, const std::string& kernel,
                                      const std::vector<std::string>& plugins);
@@ -67,21 +67,21 @@ void print_json(nlohmann::json document, const nlohmann::json& inputs = nullptr)
 // (either may be null), as results.json records a study's.
 nlohmann::json command_inputs(const Kernel* kernel, const Lattice* lattice);
 
-Action add_kernels_command(CLI::App& app);
-Action add_check_command(CLI::App& app);
-Action add_lattices_command(CLI::App& app);
-Action add_shells_command(CLI::App& app);
-Action add_eps_command(CLI::App& app);
-Action add_roots_command(CLI::App& app);
-Action add_run_command(CLI::App& app);
-Action add_surface_command(CLI::App& app);
-Action add_block_command(CLI::App& app);
-Action add_design_command(CLI::App& app);
-Action add_stability_command(CLI::App& app);
-Action add_spectrum_command(CLI::App& app);
-Action add_particles_command(CLI::App& app);
-Action add_relax_command(CLI::App& app);
-Action add_pairing_command(CLI::App& app);
-Action add_studies_command(CLI::App& app);
+Action add_kernels_command(Command app);
+Action add_check_command(Command app);
+Action add_lattices_command(Command app);
+Action add_shells_command(Command app);
+Action add_eps_command(Command app);
+Action add_roots_command(Command app);
+Action add_run_command(Command app);
+Action add_surface_command(Command app);
+Action add_block_command(Command app);
+Action add_design_command(Command app);
+Action add_stability_command(Command app);
+Action add_spectrum_command(Command app);
+Action add_particles_command(Command app);
+Action add_relax_command(Command app);
+Action add_pairing_command(Command app);
+Action add_studies_command(Command app);
 
 } // namespace sphkern::cli

@@ -50,32 +50,32 @@ BlockRequest request_from(const BlockCommandOptions& o)
     return r;
 }
 
-void add_block_options(CLI::App& command, BlockCommandOptions& o)
+void add_block_options(Command command, BlockCommandOptions& o)
 {
-    command.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
-    command.add_option("lattice", o.lattice, "Lattice name or file")->required();
-    command.add_option("--k", o.k, "Smoothing coefficient, h = k d")->required();
-    command.add_option("--size", o.size, "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)")->required();
+    command.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
+    command.add_option("lattice", o.lattice, "Lattice name or file").required();
+    command.add_option("--k", o.k, "Smoothing coefficient, h = k d").required();
+    command.add_option("--size", o.size, "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)").required();
     command.add_flag("--periodic", o.periodic, "Periodic lateral sides (the top is always free)");
-    command.add_option("--form", o.form, "Gradient form: sum, difference or monaghan")->capture_default_str();
+    command.add_option("--form", o.form, "Gradient form: sum, difference or monaghan").capture_default_str();
     command.add_option("--threads", o.threads, "Threads (default: every core)");
-    command.add_option("--ap", o.ap, "Volume coefficient: a name or a positive number")->capture_default_str();
+    command.add_option("--ap", o.ap, "Volume coefficient: a name or a positive number").capture_default_str();
     command.add_option("--vtk", o.vtk, "Write per-particle results as a legacy VTK file (ParaView)");
     command.add_option("--csv", o.csv, "Write per-particle results as CSV");
 }
 
 } // namespace
 
-Action add_block_command(CLI::App& app)
+Action add_block_command(Command app)
 {
-    auto* command = app.add_subcommand("block", "Direct SPH sums over a finite block of lattice cells");
+    Command command = app.add_subcommand("block", "Direct SPH sums over a finite block of lattice cells");
     auto options = std::make_shared<BlockCommandOptions>();
-    add_block_options(*command, *options);
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    add_block_options(command, *options);
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options, command] {
-        check_output_targets(given_outputs(*command, {{"--vtk", options->vtk}, {"--csv", options->csv}}),
+        check_output_targets(given_outputs(command, {{"--vtk", options->vtk}, {"--csv", options->csv}}),
                              read_inputs(options->lattice, options->kernel, options->plugins));
         const auto request = request_from(*options);
         const BlockSources sources{ValueSource::option("--size " + options->size), ValueSource::option("--threads"),

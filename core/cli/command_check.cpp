@@ -31,17 +31,17 @@ CheckRequest request_from(const CheckOptions& o)
 
 } // namespace
 
-Action add_check_command(CLI::App& app)
+Action add_check_command(Command app)
 {
-    auto* command = app.add_subcommand("check", "Check kernels: normalisation, derivative, continuity, moments");
+    Command command = app.add_subcommand("check", "Check kernels: normalisation, derivative, continuity, moments");
     auto options = std::make_shared<CheckOptions>();
-    command->add_option("kernel", options->names, "Kernel names (default with --plugin: that plugin)");
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
-    add_set_option(*command, options->sets);
-    command->add_flag("--all", options->all, "Check every kernel found");
-    command->add_flag("--strict", options->strict, "Exit 1 on a warning too");
-    command->add_option("--timeout", options->timeout, "Seconds a kernel may take")->capture_default_str();
+    command.add_option("kernel", options->names, "Kernel names (default with --plugin: that plugin)");
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
+    add_set_option(command, options->sets);
+    command.add_flag("--all", options->all, "Check every kernel found");
+    command.add_flag("--strict", options->strict, "Exit 1 on a warning too");
+    command.add_option("--timeout", options->timeout, "Seconds a kernel may take").capture_default_str();
     return [options] {
         auto request = request_from(*options);
         check_check_request(request, {ValueSource::option("--timeout")});

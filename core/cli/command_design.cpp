@@ -37,24 +37,24 @@ DesignSources option_sources(const DesignOptions& o)
 
 } // namespace
 
-Action add_design_command(CLI::App& app)
+Action add_design_command(Command app)
 {
-    auto* command = app.add_subcommand("design", "Find (k, parameter) where eps_rho and eps_gradP both vanish");
+    Command command = app.add_subcommand("design", "Find (k, parameter) where eps_rho and eps_gradP both vanish");
     auto options = std::make_shared<DesignOptions>();
-    command->add_option("kernel", options->kernel, "Kernel (a blend A+B, or one with parameters)")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    command->add_option("--param", options->parameter, "The parameter to vary (alpha for a blend)")->required();
-    command->add_option("--range", options->range, "Parameter range A B (default: blends [-1, 2], else the declared range)")
-        ->expected(2);
-    command->add_option("--kmin", options->k_min, "Smallest k")->capture_default_str();
-    command->add_option("--kmax", options->k_max, "Largest k")->capture_default_str();
-    command->add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
-        ->capture_default_str();
-    command->add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z] (default: the lattice's)");
-    command->add_option("--site", options->evaluation.site, "Motif site")->capture_default_str();
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    command.add_option("kernel", options->kernel, "Kernel (a blend A+B, or one with parameters)").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_option("--param", options->parameter, "The parameter to vary (alpha for a blend)").required();
+    command.add_option("--range", options->range, "Parameter range A B (default: blends [-1, 2], else the declared range)")
+        .expected(2);
+    command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
+    command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
+    command.add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
+        .capture_default_str();
+    command.add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z] (default: the lattice's)");
+    command.add_option("--site", options->evaluation.site, "Motif site").capture_default_str();
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);

@@ -32,18 +32,18 @@ EpsSources option_sources(const EpsOptions& o)
 
 } // namespace
 
-Action add_eps_command(CLI::App& app)
+Action add_eps_command(Command app)
 {
-    auto* command = app.add_subcommand("eps", "eps_rho and eps_gradP of a kernel on a lattice at one k");
+    Command command = app.add_subcommand("eps", "eps_rho and eps_gradP of a kernel on a lattice at one k");
     auto options = std::make_shared<EpsOptions>();
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
-    command->add_option("--axis", options->axis, "The scale of --k: k (h/d) or eta (h/V^(1/D))")->capture_default_str();
-    add_evaluation_options(*command, options->evaluation);
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_option("--k", options->k, "Smoothing coefficient, h = k d").required();
+    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or eta (h/V^(1/D))").capture_default_str();
+    add_evaluation_options(command, options->evaluation);
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);

@@ -9,12 +9,12 @@
 
 namespace sphkern::cli {
 
-Action add_kernels_command(CLI::App& app)
+Action add_kernels_command(Command app)
 {
-    auto* command = app.add_subcommand("kernels", "List the kernel plugins found");
+    Command command = app.add_subcommand("kernels", "List the kernel plugins found");
     auto options = std::make_shared<CommonOptions>();
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         auto registry = discover_kernels(*options);
         if (options->json) {

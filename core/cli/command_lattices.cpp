@@ -51,19 +51,19 @@ void print_examples()
 
 } // namespace
 
-Action add_lattices_command(CLI::App& app)
+Action add_lattices_command(Command app)
 {
-    auto* command = app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
+    Command command = app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
     struct Options : CommonOptions {
         std::vector<std::string> lattices;
         double radius = 3;
     };
     auto options = std::make_shared<Options>();
-    command->add_option("lattice", options->lattices, "Lattice names or files to describe in full");
-    command->add_option("--radius", options->radius, "Shells up to this radius, in d, when describing")
-        ->capture_default_str();
-    add_json_option(*command, *options);
-    add_plugin_option(*command, *options);
+    command.add_option("lattice", options->lattices, "Lattice names or files to describe in full");
+    command.add_option("--radius", options->radius, "Shells up to this radius, in d, when describing")
+        .capture_default_str();
+    add_json_option(command, *options);
+    add_plugin_option(command, *options);
     return [options] {
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         if (!options->lattices.empty()) {

@@ -19,23 +19,23 @@ struct PairingOptions : CommonOptions {
     PairingRequest request;
 };
 
-void add_options(CLI::App& c, PairingOptions& o)
+void add_options(Command c, PairingOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
-    c.add_option("lattice", o.lattice, "Lattice name or JSON file")->required();
+    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
+    c.add_option("lattice", o.lattice, "Lattice name or JSON file").required();
     auto& r = o.request;
     c.add_option("--k", o.k, "One k (h = k d)");
     c.add_option("--kmin", r.k_min, "Smallest k of the range");
     c.add_option("--kmax", r.k_max, "Largest k of the range");
-    c.add_option("--samples", r.samples, "Evenly spaced k over [kmin, kmax]")->capture_default_str();
-    c.add_option("--noise", r.noise, "Gaussian displacement per axis at the start, in units of d")->capture_default_str();
-    c.add_option("--duration", r.duration, "Time of motion, in units of d / c")->capture_default_str();
-    c.add_option("--damping", r.damping, "Velocity damping rate, in units of c / h")->capture_default_str();
-    c.add_option("--dt", r.time_step, "Time step, in units of h / c")->capture_default_str();
-    c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")->capture_default_str();
-    c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak")->capture_default_str();
-    c.add_option("--seed", r.seed, "Seed of the noise")->capture_default_str();
-    c.add_option("--threads", r.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    c.add_option("--samples", r.samples, "Evenly spaced k over [kmin, kmax]").capture_default_str();
+    c.add_option("--noise", r.noise, "Gaussian displacement per axis at the start, in units of d").capture_default_str();
+    c.add_option("--duration", r.duration, "Time of motion, in units of d / c").capture_default_str();
+    c.add_option("--damping", r.damping, "Velocity damping rate, in units of c / h").capture_default_str();
+    c.add_option("--dt", r.time_step, "Time step, in units of h / c").capture_default_str();
+    c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma").capture_default_str();
+    c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak").capture_default_str();
+    c.add_option("--seed", r.seed, "Seed of the noise").capture_default_str();
+    c.add_option("--threads", r.threads, "Threads (default: every core)").check_range(0, 1024);
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -43,17 +43,17 @@ void add_options(CLI::App& c, PairingOptions& o)
 
 } // namespace
 
-Action add_pairing_command(CLI::App& app)
+Action add_pairing_command(Command app)
 {
-    auto* command = app.add_subcommand("pairing", "Linear stability against the motion of a disturbed lattice, k by k");
+    Command command = app.add_subcommand("pairing", "Linear stability against the motion of a disturbed lattice, k by k");
     auto options = std::make_shared<PairingOptions>();
-    add_options(*command, *options);
+    add_options(command, *options);
     return [options, command] {
         auto& o = *options;
-        const bool range = command->count("--kmin") + command->count("--kmax") > 0;
+        const bool range = command.count("--kmin") + command.count("--kmax") > 0;
         if (o.k.has_value() == range) throw Error(ExitCode::usage, "give --k, or --kmin and --kmax");
         if (o.k) o.request.k_min = o.request.k_max = *o.k, o.request.samples = 1;
-        else if (command->count("--kmin") != 1 || command->count("--kmax") != 1)
+        else if (command.count("--kmin") != 1 || command.count("--kmax") != 1)
             throw Error(ExitCode::usage, "a range needs both --kmin and --kmax");
         check_gamma(o.request.gamma, "--gamma");
         auto registry = discover_kernels(o);

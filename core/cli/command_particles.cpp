@@ -58,23 +58,23 @@ ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
     return request;
 }
 
-void add_options(CLI::App& c, ParticlesOptions& o)
+void add_options(Command c, ParticlesOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
+    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
     c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2 without a file h)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
-    c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]")->expected(2);
-    c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]")->expected(2);
-    c.add_option("--steps", o.steps, "Sweep: steps between A and B")->capture_default_str();
+    c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
+    c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
+    c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
     c.add_option("--volume", o.volume, "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
-    c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h")->capture_default_str();
+    c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();
     c.add_option("--rho0", o.rho0, "Reference density of eps_rho (default: the set's total mass over its volume)");
     c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho and eps_gradp");
-    c.add_option("--threads", o.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+    c.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
     c.add_option("--vtk", o.vtk, "Write the per-particle values as a legacy VTK file (ParaView)");
@@ -85,15 +85,15 @@ void add_options(CLI::App& c, ParticlesOptions& o)
 
 } // namespace
 
-Action add_particles_command(CLI::App& app)
+Action add_particles_command(Command app)
 {
-    auto* command = app.add_subcommand("particles", "Consistency errors of a kernel on any particle set");
+    Command command = app.add_subcommand("particles", "Consistency errors of a kernel on any particle set");
     auto options = std::make_shared<ParticlesOptions>();
-    add_options(*command, *options);
+    add_options(command, *options);
     return [options, command] {
         const auto& o = *options;
         set_memory_limit_gib(o.memory_limit);
-        check_output_targets(given_outputs(*command, {{"--csv", o.csv}, {"--vtk", o.vtk}}),
+        check_output_targets(given_outputs(command, {{"--csv", o.csv}, {"--vtk", o.vtk}}),
                              read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);

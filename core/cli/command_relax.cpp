@@ -30,26 +30,26 @@ struct RelaxOptions : CommonOptions, SourceOptions {
     std::size_t rdf_bins = 60;
 };
 
-void add_options(CLI::App& c, RelaxOptions& o)
+void add_options(Command c, RelaxOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file")->required();
+    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
     c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
     c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
-        ->capture_default_str();
+        .capture_default_str();
     auto& s = o.settings;
-    c.add_option("--steps", s.steps, "At most this many steps")->capture_default_str();
-    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)")->capture_default_str();
-    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")->capture_default_str();
-    c.add_option("--dt", s.time_step, "pressure: time step in units of h / c")->capture_default_str();
-    c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h")->capture_default_str();
-    c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij")->capture_default_str();
-    c.add_option("--max-move", s.max_move, "shift: largest move of a step, in units of h")->capture_default_str();
-    c.add_option("--threads", s.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
-    c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings")->capture_default_str();
-    c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins")->capture_default_str();
+    c.add_option("--steps", s.steps, "At most this many steps").capture_default_str();
+    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)").capture_default_str();
+    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma").capture_default_str();
+    c.add_option("--dt", s.time_step, "pressure: time step in units of h / c").capture_default_str();
+    c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h").capture_default_str();
+    c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij").capture_default_str();
+    c.add_option("--max-move", s.max_move, "shift: largest move of a step, in units of h").capture_default_str();
+    c.add_option("--threads", s.threads, "Threads (default: every core)").check_range(0, 1024);
+    c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
+    c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout) or .csv");
     c.add_option("--history", o.history, "Write the history of the run as CSV");
@@ -87,17 +87,17 @@ RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOption
 
 } // namespace
 
-Action add_relax_command(CLI::App& app)
+Action add_relax_command(Command app)
 {
-    auto* command = app.add_subcommand("relax", "Relax a particle set into a glass and judge it");
+    Command command = app.add_subcommand("relax", "Relax a particle set into a glass and judge it");
     auto options = std::make_shared<RelaxOptions>();
-    add_options(*command, *options);
+    add_options(command, *options);
     return [options, command] {
         auto& o = *options;
         set_memory_limit_gib(o.memory_limit);
         o.settings.method = parse_relax_method(o.method);
         check_relax_settings(o.settings);
-        check_output_targets(given_outputs(*command, {{"--output", o.output}, {"--history", o.history}}),
+        check_output_targets(given_outputs(command, {{"--output", o.output}, {"--history", o.history}}),
                              read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_particle_output_name(o.output);
         auto registry = discover_kernels(o);

@@ -70,34 +70,34 @@ std::vector<Kernel> kernels_of(const RootsOptions& o, KernelRegistry& registry)
 
 } // namespace
 
-Action add_roots_command(CLI::App& app)
+Action add_roots_command(Command app)
 {
-    auto* command = app.add_subcommand("roots", "Roots in k of eps_rho and eps_gradP, jumps and condition (22)");
+    Command command = app.add_subcommand("roots", "Roots in k of eps_rho and eps_gradP, jumps and condition (22)");
     auto options = std::make_shared<RootsOptions>();
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file, or all")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file, or all (every shipped lattice)")->required();
-    command->add_option("--kmin", options->k_min, "Smallest k")->capture_default_str();
-    command->add_option("--kmax", options->k_max, "Largest k")->capture_default_str();
-    command->add_option("--epsilon", options->epsilon, "Tolerance of condition (22)")->capture_default_str();
-    command->add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
-    command->add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), eta (h/V^(1/D)) or nh (neighbours)")
-        ->capture_default_str();
-    command->add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file, or all").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file, or all (every shipped lattice)").required();
+    command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
+    command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
+    command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
+    command.add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
+    command.add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), eta (h/V^(1/D)) or nh (neighbours)")
+        .capture_default_str();
+    command.add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
                                                         "stability) and where condition (22) holds there");
-    command->add_option("--gamma", options->gamma, "With --stability: adiabatic index")->capture_default_str();
-    command->add_option("--steps", options->steps, "With --stability: k intervals of the scan")->capture_default_str();
-    command->add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
+    command.add_option("--gamma", options->gamma, "With --stability: adiabatic index").capture_default_str();
+    command.add_option("--steps", options->steps, "With --stability: k intervals of the scan").capture_default_str();
+    command.add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
                                                              "dualsphysics (coefh), swift (eta), gadget (N_ngb), "
                                                              "splishsplash (H/r_p)");
-    command->add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
-                                                       "count as stable (weak)")->capture_default_str();
-    command->add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = eta (m/rho)^(1/D), "
+    command.add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
+                                                       "count as stable (weak)").capture_default_str();
+    command.add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = eta (m/rho)^(1/D), "
                                                        "grad-h terms); k is the equilibrium h = k d in both")
-        ->capture_default_str();
-    add_evaluation_options(*command, options->evaluation);
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+        .capture_default_str();
+    add_evaluation_options(command, options->evaluation);
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);

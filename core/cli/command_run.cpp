@@ -83,9 +83,9 @@ std::filesystem::path study_file(const std::string& study)
 
 } // namespace
 
-Action add_run_command(CLI::App& app)
+Action add_run_command(Command app)
 {
-    auto* command = app.add_subcommand("run", "Run a study (default: share/studies/potapov2021.json)");
+    Command command = app.add_subcommand("run", "Run a study (default: share/studies/potapov2021.json)");
     struct Options : CommonOptions {
         std::string study;
         std::string output;
@@ -95,16 +95,16 @@ Action add_run_command(CLI::App& app)
         std::string format = "svg";
     };
     auto options = std::make_shared<Options>();
-    command->add_option("study", options->study, "Study file, or the name of a shipped study");
-    command->add_option("-o,--output", options->output, "Results folder (default: sphkern-results/<study name>)");
-    command->add_flag("--no-plots", options->no_plots, "Do not draw the figures");
-    command->add_option("--format", options->format, "Figure formats, comma-separated: svg, png, pdf")
-        ->capture_default_str();
-    command->add_flag("--force", options->force, "Replace an existing results folder");
-    command->add_option("--reproduce", options->reproduce,
+    command.add_option("study", options->study, "Study file, or the name of a shipped study");
+    command.add_option("-o,--output", options->output, "Results folder (default: sphkern-results/<study name>)");
+    command.add_flag("--no-plots", options->no_plots, "Do not draw the figures");
+    command.add_option("--format", options->format, "Figure formats, comma-separated: svg, png, pdf")
+        .capture_default_str();
+    command.add_flag("--force", options->force, "Replace an existing results folder");
+    command.add_option("--reproduce", options->reproduce,
                         "Run the study a results.json records again and say whether the numbers agree (exit 1 if not)")
-        ->excludes(command->get_option("study"))->excludes("--output")->excludes("--force");
-    add_plugin_option(*command, *options);
+        .excludes(command.get_option("study")).excludes("--output").excludes("--force");
+    add_plugin_option(command, *options);
     return [options] {
         auto started = std::chrono::steady_clock::now();
         if (!options->reproduce.empty()) {

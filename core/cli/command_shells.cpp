@@ -11,9 +11,9 @@
 
 namespace sphkern::cli {
 
-Action add_shells_command(CLI::App& app)
+Action add_shells_command(Command app)
 {
-    auto* command = app.add_subcommand("shells", "Neighbour shells of a lattice site up to a radius");
+    Command command = app.add_subcommand("shells", "Neighbour shells of a lattice site up to a radius");
     struct Options : CommonOptions {
         std::string lattice;
         double radius = 0;
@@ -21,12 +21,12 @@ Action add_shells_command(CLI::App& app)
         std::string gravity;
     };
     auto options = std::make_shared<Options>();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    command->add_option("--radius", options->radius, "Largest radius, in units of d")->required();
-    command->add_option("--site", options->site, "Motif site")->capture_default_str();
-    command->add_option("--gravity", options->gravity, "Direction for the moments (default: the lattice's)");
-    add_json_option(*command, *options);
-    add_plugin_option(*command, *options);
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_option("--radius", options->radius, "Largest radius, in units of d").required();
+    command.add_option("--site", options->site, "Motif site").capture_default_str();
+    command.add_option("--gravity", options->gravity, "Direction for the moments (default: the lattice's)");
+    add_json_option(command, *options);
+    add_plugin_option(command, *options);
     return [options] {
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         auto lattice = load_lattice(options->lattice);

@@ -7,9 +7,9 @@
 
 namespace sphkern::cli {
 
-Action add_spectrum_command(CLI::App& app)
+Action add_spectrum_command(Command app)
 {
-    auto* command = app.add_subcommand("spectrum", "Fourier transform of a kernel against kappa h");
+    Command command = app.add_subcommand("spectrum", "Fourier transform of a kernel against kappa h");
     struct Options : CommonOptions {
         std::string kernel;
         SpectrumRequest request;
@@ -17,14 +17,14 @@ Action add_spectrum_command(CLI::App& app)
     };
     auto options = std::make_shared<Options>();
     auto& request = options->request;
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("--dim", request.dimension, "Dimension D (1, 2 or 3)")->required();
-    command->add_option("--k", request.k, "k for kernels whose formula depends on it")->capture_default_str();
-    command->add_option("--max", request.kh_max, "Largest kappa h")->capture_default_str();
-    command->add_option("--points", request.points, "Intervals on [0, max]")->capture_default_str();
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
+    command.add_option("--dim", request.dimension, "Dimension D (1, 2 or 3)").required();
+    command.add_option("--k", request.k, "k for kernels whose formula depends on it").capture_default_str();
+    command.add_option("--max", request.kh_max, "Largest kappa h").capture_default_str();
+    command.add_option("--points", request.points, "Intervals on [0, max]").capture_default_str();
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const SpectrumSources sources{ValueSource::option("--dim"), ValueSource::option("--k"),
                                       ValueSource::option("--max"), ValueSource::option("--points")};

@@ -210,42 +210,42 @@ StabilityRequest request_from(const StabilityOptions& o)
     return r;
 }
 
-void add_stability_options(CLI::App& command, StabilityOptions& o)
+void add_stability_options(Command command, StabilityOptions& o)
 {
-    auto* k_option = command.add_option("--k", o.k, "Smoothing coefficient, h = k d");
-    auto* kmin_option = command.add_option("--kmin", o.k_min, "Scan k from here (with --kmax): stable intervals");
-    auto* kmax_option = command.add_option("--kmax", o.k_max, "Scan k up to here");
-    command.add_option("--steps", o.steps, "Intervals of the k scan")->capture_default_str();
-    k_option->excludes(kmin_option)->excludes(kmax_option);
-    kmin_option->needs(kmax_option);
-    kmax_option->needs(kmin_option);
-    command.add_option("--gamma", o.gamma, "Adiabatic index of P = rho c^2 / gamma")->capture_default_str();
+    Option k_option = command.add_option("--k", o.k, "Smoothing coefficient, h = k d");
+    Option kmin_option = command.add_option("--kmin", o.k_min, "Scan k from here (with --kmax): stable intervals");
+    Option kmax_option = command.add_option("--kmax", o.k_max, "Scan k up to here");
+    command.add_option("--steps", o.steps, "Intervals of the k scan").capture_default_str();
+    k_option.excludes(kmin_option).excludes(kmax_option);
+    kmin_option.needs(kmax_option);
+    kmax_option.needs(kmin_option);
+    command.add_option("--gamma", o.gamma, "Adiabatic index of P = rho c^2 / gamma").capture_default_str();
     command.add_option("--wavevector", o.wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
-    auto* path_option = command.add_option("--path", o.path, "Dispersion curves along the high-symmetry "
+    Option path_option = command.add_option("--path", o.path, "Dispersion curves along the high-symmetry "
                                                              "path: about this many points");
-    path_option->excludes(kmin_option)->excludes(kmax_option);
+    path_option.excludes(kmin_option).excludes(kmax_option);
     command.add_option("--grid", o.grid, "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
                                          "in 2D; doubled until the minimum settles)");
-    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak")->capture_default_str();
+    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak").capture_default_str();
     command.add_option("--h-model", o.h_model, "Smoothing length: fixed (h = k d) or adaptive (h = eta "
                                                "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
-        ->capture_default_str();
-    command.add_option("--threads", o.threads, "Threads (default: every core)")->check(CLI::Range(0, 1024));
+        .capture_default_str();
+    command.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
 }
 
 } // namespace
 
-Action add_stability_command(CLI::App& app)
+Action add_stability_command(Command app)
 {
-    auto* command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
+    Command command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
                                                     "scan, long-wave sound speed");
     auto options = std::make_shared<StabilityOptions>();
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    add_stability_options(*command, *options);
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    add_stability_options(command, *options);
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);

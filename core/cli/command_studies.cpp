@@ -12,11 +12,11 @@
 
 namespace sphkern::cli {
 
-Action add_studies_command(CLI::App& app)
+Action add_studies_command(Command app)
 {
-    auto* command = app.add_subcommand("studies", "List the shipped studies (run them with sphkern run NAME)");
+    Command command = app.add_subcommand("studies", "List the shipped studies (run them with sphkern run NAME)");
     auto options = std::make_shared<CommonOptions>();
-    add_json_option(*command, *options);
+    add_json_option(command, *options);
     return [options] {
         std::vector<std::filesystem::path> files;
         std::error_code ec;

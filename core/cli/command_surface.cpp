@@ -36,25 +36,25 @@ SurfaceSources option_sources(const SurfaceOptions& o)
 
 } // namespace
 
-Action add_surface_command(CLI::App& app)
+Action add_surface_command(Command app)
 {
-    auto* command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
+    Command command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
     auto options = std::make_shared<SurfaceOptions>();
-    command->add_option("kernel", options->kernel, "Kernel name or plugin file")->required();
-    command->add_option("lattice", options->lattice, "Lattice name or file")->required();
-    command->add_option("--k", options->k, "Smoothing coefficient, h = k d")->required();
-    command->add_option("--layers", options->layers, "Report at least this many layers")->capture_default_str();
-    command->add_option("--form", options->form, "Gradient form: sum, difference or monaghan")->capture_default_str();
-    command->add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
-        ->capture_default_str();
-    command->add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
-    command->add_option("--site", options->evaluation.site, "Motif site on the top layer")->capture_default_str();
-    command->add_option("--termination", options->termination,
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_option("--k", options->k, "Smoothing coefficient, h = k d").required();
+    command.add_option("--layers", options->layers, "Report at least this many layers").capture_default_str();
+    command.add_option("--form", options->form, "Gradient form: sum, difference or monaghan").capture_default_str();
+    command.add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
+        .capture_default_str();
+    command.add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
+    command.add_option("--site", options->evaluation.site, "Motif site on the top layer").capture_default_str();
+    command.add_option("--termination", options->termination,
                         "Which plane type is on top (an index from the listed terminations; default: --site's)")
-        ->check(CLI::NonNegativeNumber);
-    add_set_option(*command, options->sets);
-    add_plugin_option(*command, *options);
-    add_json_option(*command, *options);
+        .check_non_negative();
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
     return [options] {
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);

@@ -5,6 +5,7 @@
 #include "support/io/results_output.hpp"
 #include "support/process/interruption.hpp"
 
+#include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -40,9 +41,10 @@ using Commands = std::vector<std::pair<CLI::App*, cli::Action>>;
 Commands add_commands(CLI::App& app)
 {
     Commands commands;
-    auto add = [&](cli::Action (*add_command)(CLI::App&)) {
+    cli::Command program(app);
+    auto add = [&](cli::Action (*add_command)(cli::Command)) {
         std::size_t before = app.get_subcommands({}).size();
-        cli::Action action = add_command(app);
+        cli::Action action = add_command(program);
         commands.emplace_back(app.get_subcommands({})[before], std::move(action));
     };
     for (auto* add_command : {cli::add_run_command, cli::add_kernels_command, cli::add_check_command,

@@ -5,21 +5,23 @@
 #include "support/io/sha256.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <optional>
 
 namespace sphkern::cli {
 
-void add_source_options(CLI::App& c, SourceOptions& o)
+void add_source_options(Command c, SourceOptions& o)
 {
     c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk)")
-        ->required();
+        .required();
     c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
     c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
-    c.add_option("--seed", o.seed, "Lattice and poisson: the random seed")->capture_default_str();
+    c.add_option("--seed", o.seed, "Lattice and poisson: the random seed").capture_default_str();
     c.add_option("--count", o.count, "Poisson: number of particles");
     c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate")
-        ->check(CLI::IsMember({2, 3}));
+        .check_member({2, 3});
     c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
     c.add_option("--array", o.array, "PySPH file: the particle array");
 }

@@ -5,8 +5,8 @@
 #include "kernels/kernel.hpp"
 #include "particles/sources/particle_source.hpp"
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
+#include "cli/options.hpp"
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 
@@ -19,7 +19,7 @@ struct SourceOptions {
     int dim = 0;
 };
 
-void add_source_options(CLI::App& command, SourceOptions& options);
+void add_source_options(Command command, SourceOptions& options);
 
 // Error(usage) for options that do not fit the kind of source.
 ParticleSource source_of(const SourceOptions& options);

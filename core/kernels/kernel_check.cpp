@@ -10,6 +10,7 @@
 #include "support/process/isolated_call.hpp"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>

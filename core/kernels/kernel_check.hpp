@@ -4,7 +4,7 @@
 
 #include "kernels/kernel.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

@@ -1,5 +1,7 @@
 #include "kernels/kernel_json.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace sphkern {
 
 nlohmann::json kernel_json(const KernelDefinition& p)

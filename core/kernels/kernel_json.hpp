@@ -3,7 +3,7 @@
 
 #include "kernels/kernel_definition.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

@@ -13,6 +13,7 @@
 #include "support/process/plugin_watchdog.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include <cerrno>

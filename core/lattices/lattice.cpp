@@ -10,6 +10,9 @@
 #include "support/io/json_input.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <Eigen/LU>
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

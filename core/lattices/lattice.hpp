@@ -3,8 +3,8 @@
 // distance is d = 1.
 #pragma once
 
-#include <Eigen/Dense>
-#include <nlohmann/json.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
 #include <string>

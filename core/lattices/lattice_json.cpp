@@ -2,6 +2,8 @@
 
 #include "lattices/shells.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace sphkern {
 
 nlohmann::json lattice_json(const Lattice& l)

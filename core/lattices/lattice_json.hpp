@@ -4,8 +4,8 @@
 
 #include "lattices/lattice.hpp"
 
-#include <Eigen/Dense>
-#include <nlohmann/json.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

@@ -4,6 +4,7 @@
 #include "support/process/interruption.hpp"
 #include "support/process/work_budget.hpp"
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <cmath>

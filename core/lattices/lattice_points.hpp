@@ -2,7 +2,7 @@
 // basis * (n + motif_t - motif_s) for integer n, so no error accumulates.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <cstddef>
 #include <functional>

@@ -3,7 +3,7 @@
 
 #include "lattices/lattice.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <vector>
 

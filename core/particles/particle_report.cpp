@@ -4,6 +4,7 @@
 #include "support/io/vtk_points.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <stdexcept>
 

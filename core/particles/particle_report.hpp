@@ -4,7 +4,7 @@
 
 #include "particles/particle_analysis.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <ostream>
 

@@ -2,6 +2,7 @@
 
 #include "support/error.hpp"
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // share/docs/method.md says what sphkern computes on it.
 #pragma once
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <optional>
 #include <string>

@@ -6,6 +6,7 @@
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 
+#include <Eigen/QR>
 #include <fmt/format.h>
 #include <voro++/voro++.hh>
 

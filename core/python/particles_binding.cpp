@@ -9,6 +9,7 @@
 #include "support/process/interruption.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

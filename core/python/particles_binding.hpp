@@ -3,7 +3,7 @@
 
 #include "kernels/kernel.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <pybind11/pybind11.h>
 
 #include <string>

@@ -10,6 +10,7 @@
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <algorithm>

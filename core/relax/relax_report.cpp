@@ -3,6 +3,7 @@
 #include "particles/particle_report.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 #include "relax/pairing_motion.hpp"
 #include "relax/relaxation.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdio>
 #include <ostream>

@@ -6,6 +6,7 @@
 #include "support/io/vtk_points.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 

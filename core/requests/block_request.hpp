@@ -9,7 +9,7 @@
 #include "requests/evaluation_inputs.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <ostream>
 #include <vector>

@@ -12,7 +12,7 @@
 #include "stability/roots_stability.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

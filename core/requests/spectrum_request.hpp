@@ -6,7 +6,7 @@
 #include "kernels/kernel_spectrum.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <utility>
 #include <vector>

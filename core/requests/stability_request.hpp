@@ -8,7 +8,7 @@
 #include "stability/stability_scan.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <optional>
 #include <string>

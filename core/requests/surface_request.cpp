@@ -4,6 +4,7 @@
 #include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 namespace sphkern {
 

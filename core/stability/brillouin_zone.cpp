@@ -2,6 +2,8 @@
 
 #include "lattices/lattice_points.hpp"
 
+#include <Eigen/LU>
+
 #include <array>
 #include <cmath>
 

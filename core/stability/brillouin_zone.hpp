@@ -6,7 +6,7 @@
 
 #include "lattices/lattice.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <string>
 #include <vector>

@@ -7,6 +7,8 @@
 #include "support/process/interruption.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -14,7 +14,7 @@
 #include "lattices/lattice.hpp"
 #include "stability/h_model.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <array>
 #include <string>

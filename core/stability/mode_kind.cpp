@@ -1,5 +1,7 @@
 #include "stability/mode_kind.hpp"
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <complex>
 

@@ -9,7 +9,7 @@
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <string>
 

@@ -1,6 +1,7 @@
 #include "stability/recommended_k.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 

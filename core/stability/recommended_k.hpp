@@ -6,7 +6,7 @@
 #include "analysis/acceptance.hpp"
 #include "analysis/hydrostatic_errors.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 #include <vector>

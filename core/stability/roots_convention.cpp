@@ -1,5 +1,7 @@
 #include "stability/roots_convention.hpp"
 
+#include <nlohmann/json.hpp>
+
 
 namespace sphkern {
 

@@ -6,7 +6,7 @@
 #include "analysis/code_conventions.hpp"
 #include "stability/recommended_k.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

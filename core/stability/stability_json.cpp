@@ -8,6 +8,8 @@
 #include "stability/stability_scan.hpp"
 #include "stability/zone_minimum.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 

@@ -8,8 +8,8 @@
 #include "stability/stability_over_k.hpp"
 #include "lattices/lattice.hpp"
 
-#include <Eigen/Dense>
-#include <nlohmann/json.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

@@ -3,6 +3,7 @@
 #include "stability/zone_minimum.hpp"
 #include "support/error.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <boost/math/tools/minima.hpp>

@@ -5,7 +5,7 @@
 
 #include "stability/dispersion.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <cstddef>
 #include <utility>

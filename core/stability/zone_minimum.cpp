@@ -4,6 +4,7 @@
 #include "stability/zone_symmetry.hpp"
 #include "support/process/interruption.hpp"
 
+#include <Eigen/LU>
 #include <boost/math/tools/minima.hpp>
 #include <spdlog/spdlog.h>
 

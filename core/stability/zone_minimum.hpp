@@ -9,7 +9,7 @@
 #include "stability/dispersion.hpp"
 #include "stability/zone_grid.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <optional>
 

@@ -6,7 +6,7 @@
 
 #include "stability/dispersion.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <utility>
 

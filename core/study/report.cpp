@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -430,7 +431,7 @@ std::string recommended_markdown(const StudyResults& results)
                 continue;
             }
             s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
-                             r.k, r.margin, r.at_window_edge ? std::string(" (") + window_edge_note + ")" : "",
+                             r.k, r.margin, r.at_window_edge ? fmt::format(" ({})", window_edge_note) : "",
                              r.neighbours, r.neighbours_from, r.neighbours_to);
             for (double v : o.in_conventions) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " not defined |";
             s += "\n";

@@ -3,6 +3,7 @@
 #include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +71,7 @@ Study study_from_results(const nlohmann::json& recorded, const std::string& resu
     root.expect_object();
     const auto file = root.at("study_file").string();
     root.at("study").expect_object();
-    return parse_study(recorded.at("study"), file);
+    return parse_study(recorded.at("study"), file, StudyOrigin{results_file, "/study"});
 }
 
 std::vector<std::string> changed_inputs(const nlohmann::json& recorded, const nlohmann::json& now)

@@ -7,6 +7,8 @@
 #include "support/io/chunked_writer.hpp"
 #include "support/io/provenance.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 namespace sphkern {

@@ -13,6 +13,7 @@
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -365,12 +366,13 @@ void read_sections(const JsonNode& root, const fs::path& file, Study& study)
 
 } // namespace
 
-Study parse_study(nlohmann::json document, const fs::path& file)
+Study parse_study(nlohmann::json document, const fs::path& file, std::optional<StudyOrigin> origin)
 {
     Study study;
     study.file = file.string();
+    study.origin = origin ? *origin : StudyOrigin{study.file, ""};
     study.document = std::move(document);
-    JsonNode root(study.document, study.file);
+    JsonNode root(study.document, study.origin.file, study.origin.pointer);
     root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
                       "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability", "particles"});
     study.name = read_name(root.at("name"));
@@ -390,6 +392,11 @@ Study parse_study(nlohmann::json document, const fs::path& file)
     read_sections(root, file, study);
     check_study_budget(study, root);
     return study;
+}
+
+ValueSource study_source(const Study& study, const std::string& pointer)
+{
+    return ValueSource::json(study.origin.file, study.origin.pointer + pointer);
 }
 
 } // namespace sphkern

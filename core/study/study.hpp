@@ -9,6 +9,7 @@
 #include "stability/h_model.hpp"
 #include "study/reference_table.hpp"
 #include "study/study_particles.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -88,8 +89,16 @@ inline constexpr double max_study_surface_layers = 1e6;
 inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples (as max_stability_points)
 inline constexpr double max_study_particle_evaluations = 1e8; // particles x N_H values, over all sources
 
+// Where a study's document was read, for its errors: the study file, or a results file
+// and the pointer of its "study" entry when `run --reproduce` reads the study back.
+struct StudyOrigin {
+    std::string file;
+    std::string pointer; // "" for a study file, "/study" in a results file
+};
+
 struct Study {
     std::string file;
+    StudyOrigin origin;
     nlohmann::json document; // echoed into results.json
     std::string name;
     std::string title;
@@ -113,8 +122,13 @@ struct Study {
 
 Study read_study(const std::filesystem::path& file);
 
-// Validates a parsed study document; `file` names it in errors and anchors relative paths.
-Study parse_study(nlohmann::json document, const std::filesystem::path& file);
+// Validates a parsed study document; `file` anchors relative paths and names it in errors,
+// unless `origin` says where else the document was read.
+Study parse_study(nlohmann::json document, const std::filesystem::path& file, std::optional<StudyOrigin> origin = {});
+
+// The place of `pointer` in the study's document, as its errors name it ("s.json: /k" or
+// "results.json: /study/k"), with exit code 3.
+ValueSource study_source(const Study& study, const std::string& pointer);
 
 // Parses a shell radius: a number or "sqrt(N)".
 std::optional<double> parse_radius(const nlohmann::json& value);

@@ -18,10 +18,4 @@ decltype(auto) at_study_path(const std::string& file, const std::string& pointer
     return at_source(ValueSource::json(file, pointer), std::forward<F>(f));
 }
 
-// Refuses an input of the study (exit 3) at `pointer`.
-[[noreturn]] inline void fail_study_input(const std::string& file, const std::string& pointer, const std::string& what)
-{
-    ValueSource::json(file, pointer).fail(what);
-}
-
 } // namespace sphkern

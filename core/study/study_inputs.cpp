@@ -5,7 +5,6 @@
 #include "analysis/site_errors.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/sources/particle_source.hpp"
-#include "study/study_error.hpp"
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -33,28 +32,26 @@ void check_names_differ(const Study& study, const StudyInputs& inputs)
     for (std::size_t i = 0; i < lattices.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (lattices[i].name == lattices[j].name)
-                fail_study_input(study.file, lattice_path(i),
-                                 "lattice name \"" + lattices[i].name + "\" is already used by " + lattice_path(j) +
+                study_source(study, lattice_path(i)).fail("lattice name \"" + lattices[i].name + "\" is already used by " + lattice_path(j) +
                                      "; give each lattice its own name");
     const auto& kernels = inputs.kernels;
     for (std::size_t i = 0; i < kernels.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (kernels[i].label() == kernels[j].label())
-                fail_study_input(study.file, study.kernels[i].json_path,
-                                 "kernel \"" + kernels[i].label() + "\" is listed twice (also at " +
+                study_source(study, study.kernels[i].json_path).fail("kernel \"" + kernels[i].label() + "\" is listed twice (also at " +
                                      study.kernels[j].json_path + ")");
 }
 
 void load_kernels_and_lattices(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
 {
     for (const auto& k : study.kernels)
-        inputs.kernels.push_back(at_study_path(study.file, k.json_path, [&] { return Kernel(registry.find(k.spec), k.parameters); }));
+        inputs.kernels.push_back(at_source(study_source(study, k.json_path), [&] { return Kernel(registry.find(k.spec), k.parameters); }));
     for (std::size_t i = 0; i < study.lattices.size(); ++i)
-        inputs.lattices.push_back(at_study_path(study.file, lattice_path(i), [&] { return load_lattice(study.lattices[i]); }));
+        inputs.lattices.push_back(at_source(study_source(study, lattice_path(i)), [&] { return load_lattice(study.lattices[i]); }));
     check_names_differ(study, inputs);
     for (std::size_t i = 0; i < inputs.kernels.size(); ++i)
         for (const auto& l : inputs.lattices)
-            at_study_path(study.file, study.kernels[i].json_path,
+            at_source(study_source(study, study.kernels[i].json_path),
                           [&] { inputs.kernels[i].require_dimension(l.dimension, l.name); });
 }
 
@@ -64,18 +61,18 @@ void resolve_lattice_values(const Study& study, StudyInputs& inputs)
     for (const auto& lattice : inputs.lattices) {
         auto& aps = inputs.a_p.emplace_back();
         for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i)
-            aps.push_back(at_study_path(study.file, "/volume_coefficients/" + std::to_string(i),
+            aps.push_back(at_source(study_source(study, "/volume_coefficients/" + std::to_string(i)),
                                         [&] { return study.volume_coefficients[i].on(lattice); }));
         if (study.surface)
             inputs.surface_a_p.push_back(
                 study.surface->volume_coefficient
-                    ? at_study_path(study.file, "/surface/volume_coefficient",
+                    ? at_source(study_source(study, "/surface/volume_coefficient"),
                                     [&] { return study.surface->volume_coefficient->on(lattice); })
                     : aps.front());
     }
     for (const auto& lattice : inputs.lattices) {
         const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
-        at_study_path(study.file, "/sites", [&] { check_sites(lattice, sites, "sites"); });
+        at_source(study_source(study, "/sites"), [&] { check_sites(lattice, sites, "sites"); });
         inputs.sites.push_back(sites);
     }
 }
@@ -88,8 +85,7 @@ EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const 
     const auto* radii = mode.shells_for(kernel.support());
     const std::string R = support_key(kernel.support());
     if (!radii)
-        fail_study_input(study.file, mode.json_path + "/shells",
-                         "no shell list for kernel " + kernel.name() + " with support R = " + R +
+        study_source(study, mode.json_path + "/shells").fail("no shell list for kernel " + kernel.name() + " with support R = " + R +
                              ", expected a key \"" + R + "\"");
     m.shell_radii = *radii;
     m.continue_past_support = mode.continues(kernel.name());
@@ -105,15 +101,14 @@ void check_continued_kernels(const Study& study, const StudyMode& mode, const st
     for (std::size_t i = 0; i < mode.continue_kernels.size(); ++i) {
         const std::string& name = mode.continue_kernels[i];
         if (std::find(names.begin(), names.end(), name) == names.end())
-            fail_study_input(study.file, mode.json_path + "/continue_past_support/" + std::to_string(i),
-                             "\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
+            study_source(study, mode.json_path + "/continue_past_support/" + std::to_string(i)).fail("\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
     }
 }
 
 void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
 {
     for (const auto& sweep : study.sweeps)
-        at_study_path(study.file, sweep.json_path, [&] {
+        at_source(study_source(study, sweep.json_path), [&] {
             const Kernel& kernel = inputs.sweep_kernels.emplace_back(registry.find(sweep.kernel), sweep.parameters);
             check_design_parameter(kernel, sweep.parameter, sweep.min, sweep.max);
         });
@@ -123,7 +118,7 @@ void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& i
 void check_source_size(const Study& study, const StudyParticleSource& s)
 {
     if (s.source.kind != SourceKind::lattice) return;
-    at_study_path(study.file, s.json_path, [&] {
+    at_source(study_source(study, s.json_path), [&] {
         const int dim = load_lattice(s.source.spec).dimension;
         if (static_cast<int>(s.sizes) != dim)
             fail_input("size: the lattice is " + std::to_string(dim) + "D, expected " + std::to_string(dim) +
@@ -139,11 +134,10 @@ void load_particle_sets(const Study& study, StudyInputs& inputs)
     std::size_t total = 0;
     for (const auto& s : study.particles->sources) {
         check_source_size(study, s);
-        inputs.particle_sets.push_back(at_study_path(study.file, s.json_path, [&] { return load_particles(s.source); }));
+        inputs.particle_sets.push_back(at_source(study_source(study, s.json_path), [&] { return load_particles(s.source); }));
         total += inputs.particle_sets.back().size() * (s.relax ? 2 : 1);
         if (total > max_particles())
-            fail_study_input(study.file, s.json_path,
-                             "the particle sources up to this one hold " + std::to_string(total) +
+            study_source(study, s.json_path).fail("the particle sources up to this one hold " + std::to_string(total) +
                                  " particles (a relaxed one counted twice), more than the " +
                                  std::to_string(max_particles()) +
                                  " the memory budget allows (three quarters of the available memory)");
@@ -165,8 +159,7 @@ void resolve_particle_sources(const Study& study, StudyInputs& inputs)
         if (it == k.end()) {
             std::vector<std::string> labels;
             for (const auto& kernel : k) labels.push_back(kernel.label());
-            fail_study_input(study.file, s.relax->json_path,
-                             "kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
+            study_source(study, s.relax->json_path).fail("kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
                                  did_you_mean(s.relax->kernel, labels));
         }
         index = static_cast<std::size_t>(it - k.begin());
@@ -181,7 +174,7 @@ void resolve_windows(const Study& study, StudyInputs& inputs)
         const StudyInputs::WindowKey key{l, k, site, a_p};
         if (inputs.windows.count(key)) return;
         const Kernel& kernel = k < inputs.kernels.size() ? inputs.kernels[k] : inputs.sweep_kernels[k - inputs.kernels.size()];
-        inputs.windows[key] = at_study_path(study.file, "/k", [&] {
+        inputs.windows[key] = at_source(study_source(study, "/k"), [&] {
             return k_window(study.axis, study.k_min, study.k_max, kernel, inputs.lattices[l], site, a_p, "window");
         });
     };

@@ -4,6 +4,8 @@
 #include "support/io/json_input.hpp"
 #include "support/io/sha256.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -8,7 +8,7 @@
 #include "study/study.hpp"
 #include "study/study_inputs.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 

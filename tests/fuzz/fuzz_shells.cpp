@@ -5,6 +5,7 @@
 #include "support/error.hpp"
 
 #include <fuzzer/FuzzedDataProvider.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>

@@ -3,6 +3,8 @@
 #include "support/error.hpp"
 #include "support/io/json_input.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>

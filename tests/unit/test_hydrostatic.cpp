@@ -7,6 +7,7 @@
 #include "support/io/json_input.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <map>

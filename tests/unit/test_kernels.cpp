@@ -5,6 +5,7 @@
 #include "kernels/kernel_integrals.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <functional>

@@ -3,6 +3,7 @@
 #include "study/reference_comparison.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <unistd.h>

@@ -8,6 +8,7 @@
 #include "support/process/work_budget.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>

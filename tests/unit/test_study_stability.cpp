@@ -7,6 +7,7 @@
 #include "study/study_runner.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 using namespace sphkern;
 using namespace sphkern::test;

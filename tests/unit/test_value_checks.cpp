@@ -3,6 +3,7 @@
 #include "support/text/value_checks.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <limits>

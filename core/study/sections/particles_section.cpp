@@ -3,7 +3,6 @@
 
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
-#include "study/study_error.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 
@@ -18,7 +17,7 @@ namespace {
 ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticleSource& s, ParticleSet set)
 {
     const StudyRelax& r = *s.relax;
-    return at_study_path(study.file, r.json_path, [&] {
+    return at_source(study_source(study, r.json_path), [&] {
         if (!set.box) fail_input("relaxation needs a periodic box");
         const double h = smoothing_lengths(set, kernel, r.smoothing, mean_volume(set)).front();
         spdlog::info("particles: relaxing {} with {}", s.label, kernel.label());
@@ -42,7 +41,7 @@ void analyse_source(const Study& study, const StudyInputs& inputs, const StudyPa
         c.kernel_label = kernel.label();
         c.dimension = set.dimension;
         c.particles = set.size();
-        at_study_path(study.file, s.json_path, [&] {
+        at_source(study_source(study, s.json_path), [&] {
             auto answer = analyse_particles(kernel, set, request);
             c.volume = answer.volume;
             c.points = std::move(answer.points);

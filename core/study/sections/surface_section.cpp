@@ -1,7 +1,6 @@
 // The free-surface section: a profile below the surface per lattice, kernel and form.
 #include "study/sections/sections.hpp"
 
-#include "study/study_error.hpp"
 #include "support/process/interruption.hpp"
 
 namespace sphkern {
@@ -27,7 +26,7 @@ void run_surface_section(const Study& study, const StudyInputs& inputs, StudyRes
             }
             for (const auto form : surface.forms) {
                 SurfaceCase c{lattice.name, kernel.label(), gradient_form_name(form), ap_name, a_p, k, {}};
-                c.profile = at_study_path(study.file, "/surface", [&] {
+                c.profile = at_source(study_source(study, "/surface"), [&] {
                     return surface_profile(kernel, lattice, 0, a_p, lattice.gravity, k, surface.layers, form);
                 });
                 results.surface.push_back(std::move(c));

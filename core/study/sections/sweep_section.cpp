@@ -1,7 +1,6 @@
 // The parameter sweeps: both errors over (k, parameter) and the kernels designed there.
 #include "study/sections/sections.hpp"
 
-#include "study/study_error.hpp"
 #include "support/process/interruption.hpp"
 
 #include <algorithm>
@@ -45,7 +44,7 @@ SweepCase sweep_case(const Study& study, const StudyInputs& inputs, std::size_t 
     // Sweeps keep one k grid per lattice: the window of the sweep's kernel at its declared parameters.
     const auto [k_min, k_max] = inputs.window(l, inputs.kernels.size() + s, 0, c.a_p);
     DesignProblem problem{&lattice, 0, c.a_p, lattice.gravity, k_min, k_max, sweep.parameter, sweep.min, sweep.max};
-    c.design = at_study_path(study.file, sweep.json_path, [&] { return design_kernel(kernel, problem); });
+    c.design = at_source(study_source(study, sweep.json_path), [&] { return design_kernel(kernel, problem); });
     const int k_samples = std::min(study.samples, 201);
     for (int j = 0; j < k_samples; ++j) c.ks.push_back(k_min + (k_max - k_min) * j / (k_samples - 1));
     sweep_grid(sweep, kernel, lattice, k_max, c);

@@ -2,6 +2,8 @@
 
 #include "support/io/build_info.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <ctime>
 #include <fstream>
 #include <string>

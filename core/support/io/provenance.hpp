@@ -3,7 +3,7 @@
 // "provenance"; the study layer adds the inputs in full (study/study_provenance.hpp).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace sphkern {
 
