@@ -77,6 +77,8 @@ int run_parsed(const Commands& commands)
     } catch (const std::bad_alloc&) {
         return fail("out of memory", ExitCode::input);
     } catch (const std::system_error& e) {
+        // A write to the results that failed (fmt throws when a full disk refuses it).
+        if (std::ferror(results_file())) return fail("cannot write the results to standard output", ExitCode::output);
         return fail(std::string("the system refused: ") + e.what(), ExitCode::input);
     } catch (const std::exception& e) {
         return fail(e.what(), ExitCode::input);

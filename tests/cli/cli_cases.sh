@@ -241,6 +241,13 @@ expect 3 'nowhere.json' -- run --reproduce "$work/nowhere.json"
 lattice notresults '{"cases": []}'
 expect 3 'notresults.json: /: missing required key "study_file"' -- run --reproduce "$work/notresults.json"
 expect 2 'excludes' -- run "$work/s_ok.json" --reproduce "$work/out10/results.json"
+# A value changed in the results file is blamed on the results file, at its own pointer and value.
+python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); d['study']['epsilon'] = -7
+json.dump(d, open(sys.argv[2], 'w'))
+" "$work/out10/results.json" "$work/tampered.json"
+expect 3 'tampered.json: /study/epsilon: expected a tolerance in \(0, 1\)' -- run --reproduce "$work/tampered.json"
 expect 2 '--format svg,gif: "gif" is not a figure format, expected svg, png or pdf' -- run "$work/s_ok.json" --format svg,gif -o "$work/out15"
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
 # A failed run leaves no output folder behind, partial or not.
@@ -941,6 +948,17 @@ assert len(rows) == 42 and rows[:21] == rows[21:] and rows[0]['a_p'] == '0.75'
 " "$work/out_ap_text/curves.csv"
 study s_ap_text0 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "volume_coefficients": ["voronoi", "0"]}'
 expect 3 's_ap_text0.json: /volume_coefficients/1: expected a positive volume coefficient up to 1e6' -- run "$work/s_ap_text0.json" -o "$work/out_ap_text0"
+
+# Results that cannot reach standard output (a full disk) are an output error, exit 5, in every
+# command: a write that fmt reports by throwing was once taken for a bad input (exit 3).
+for args in "kernels --json" "lattices --json" "relax wendland_c2 poisson --count 200 --steps 1 --json" \
+    "particles cubic_bspline poisson --count 200 --json" "eps cubic_bspline fcc --k 1.2 --json"; do
+    read -ra words <<<"$args"
+    "$sphkern" "${words[@]}" >/dev/full 2>"$work/stderr"
+    status=$?
+    check "sphkern $args >/dev/full -> exit $status, $(cat "$work/stderr") (expected 5, cannot write the results)" \
+        test $status -eq 5 -a "$(cat "$work/stderr")" = "sphkern: error: cannot write the results to standard output"
+done
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
