@@ -32,7 +32,7 @@ DesignRequest request_from(const DesignOptions& o)
 // The window refused as input (exit 3).
 DesignSources option_sources(const DesignOptions& o)
 {
-    return {ValueSource::argument("--kmin/--kmax"), evaluation_sources(o.evaluation)};
+    return {ValueSource::option("--kmin/--kmax"), evaluation_sources(o.evaluation)};
 }
 
 } // namespace

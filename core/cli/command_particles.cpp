@@ -93,11 +93,12 @@ Action add_particles_command(Command app)
     return [options, command] {
         const auto& o = *options;
         set_memory_limit_gib(o.memory_limit);
-        check_output_targets(given_outputs(command, {{"--csv", o.csv}, {"--vtk", o.vtk}}),
-                             read_inputs(o.source, o.kernel, o.plugins));
+        const auto outputs = given_outputs(command, {{"--csv", o.csv}, {"--vtk", o.vtk}});
+        check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const ParticleSet set = load_particles(source_of(o));
+        check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });

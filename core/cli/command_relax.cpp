@@ -97,12 +97,17 @@ Action add_relax_command(Command app)
         set_memory_limit_gib(o.memory_limit);
         o.settings.method = parse_relax_method(o.method);
         check_relax_settings(o.settings);
-        check_output_targets(given_outputs(command, {{"--output", o.output}, {"--history", o.history}}),
-                             read_inputs(o.source, o.kernel, o.plugins));
+        // Before the run: g(r) is drawn after it.
+        check_range(static_cast<double>(o.rdf_bins), 1, 100000, ValueSource::option("--rdf-bins"));
+        if (!(o.rdf_max > 0.5) || !std::isfinite(o.rdf_max))
+            throw Error(ExitCode::usage, fmt::format("--rdf-max {}: expected a finite number above 0.5 (mean spacings)", o.rdf_max));
+        const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
+        check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_particle_output_name(o.output);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         ParticleSet set = load_particles(source_of(o));
+        check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(o, set, kernel);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
         const RelaxResult run = relax_particles(kernel, std::move(set), h, o.settings);

@@ -43,7 +43,7 @@ RootsRequest request_from(const RootsOptions& o)
 // The command line's names for the request's values (the window refused as input, exit 3).
 RootsSources option_sources(const RootsOptions& o)
 {
-    return {ValueSource::argument("--kmin/--kmax"), ValueSource::option("--epsilon"), ValueSource::option("--gamma"),
+    return {ValueSource::option("--kmin/--kmax"), ValueSource::option("--epsilon"), ValueSource::option("--gamma"),
             ValueSource::option("--horizon"), ValueSource::option("--steps"), evaluation_sources(o.evaluation)};
 }
 

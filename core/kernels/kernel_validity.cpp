@@ -30,8 +30,13 @@ void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, in
                             kernel.label(), kernel.definition().source, what, q, dim, k));
 }
 
-void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where, const std::string& scale)
+void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where, const std::string& scale,
+                         std::span<const double> neighbour_q)
 {
+    for (double q : neighbour_q) {
+        if (!std::isfinite(kernel.w(q, dim, k))) fail_non_finite_kernel(kernel, "W", q, dim, k);
+        if (!std::isfinite(kernel.dw(q, dim, k))) fail_non_finite_kernel(kernel, "dW/dr", q, dim, k);
+    }
     const int samples = 64;
     for (int i = 0; i <= samples; ++i) {
         const double q = kernel.support() * i / samples;

@@ -6,6 +6,8 @@
 #include "kernels/kernel.hpp"
 #include "support/error.hpp"
 
+#include <span>
+
 namespace sphkern {
 
 // Plugins' faults are plugin errors (4); an expression file's are input errors (3).
@@ -19,9 +21,10 @@ void require_usable_kernel(const Kernel& kernel, int dim, double k);
 [[noreturn]] void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, int dim, double k);
 
 // A sum of kernel values came out non-finite at `where`: the kernel's fault if W or W' is
-// non-finite on [0, R] at this k (Error with its fault code), else the scale's (k or h so
-// small or large that the sum overflows: Error(input) naming `scale`).
+// non-finite at one of the sum's q (`neighbour_q`, where known) or on a sample of [0, R] at
+// this k (Error with its fault code), else the scale's (k or h so small or large that the
+// sum overflows: Error(input) naming `scale`).
 [[noreturn]] void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where,
-                                      const std::string& scale);
+                                      const std::string& scale, std::span<const double> neighbour_q = {});
 
 } // namespace sphkern

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -17,19 +18,19 @@ namespace {
 void check_request(const ParticleRequest& request)
 {
     if (request.threads < 0 || request.threads > 1024)
-        fail_input(fmt::format("--threads {}: expected 0 (every core) to 1024", request.threads));
-    if (request.histogram_bins > 100000) fail_input(fmt::format("--histogram {}: expected at most 100000 bins", request.histogram_bins));
+        fail_usage(fmt::format("--threads {}: expected 0 (every core) to 1024", request.threads));
+    if (request.histogram_bins > 100000) fail_usage(fmt::format("--histogram {}: expected at most 100000 bins", request.histogram_bins));
     if (const auto& s = request.sweep) {
         if (s->rule != SmoothingRule::eta && s->rule != SmoothingRule::nh) fail_input("a sweep runs over eta or N_H");
         if (!std::isfinite(s->from) || !std::isfinite(s->to) || s->from <= 0 || s->to <= s->from)
-            fail_input(fmt::format("sweep range {} {}: expected 0 < A < B", s->from, s->to));
-        if (s->steps < 1 || s->steps > 1000) fail_input(fmt::format("--steps {}: expected 1 to 1000", s->steps));
+            fail_usage(fmt::format("sweep range {} {}: expected 0 < A < B", s->from, s->to));
+        if (s->steps < 1 || s->steps > 1000) fail_usage(fmt::format("--steps {}: expected 1 to 1000", s->steps));
     }
-    if (request.gravity && request.gravity->norm() == 0) fail_input("--gravity: the direction is zero");
+    if (request.gravity && request.gravity->norm() == 0) fail_usage("--gravity: the direction is zero");
     if (request.rho0 && (!std::isfinite(*request.rho0) || *request.rho0 <= 0))
-        fail_input(fmt::format("--rho0 {}: expected a positive number", *request.rho0));
+        fail_usage(fmt::format("--rho0 {}: expected a positive number", *request.rho0));
     if (!std::isfinite(request.depth) || request.depth < 0 || request.depth > 1e6)
-        fail_input(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
+        fail_usage(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
 }
 
 std::vector<double> magnitudes(const std::vector<std::array<double, 3>>& v)
@@ -66,6 +67,22 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
     point.cpu_seconds = m.cpu_seconds;
     point.pairs = m.pairs;
     return point;
+}
+
+// No result is printed as a non-finite number: statistics that overflow a double (eps_rho
+// against a reference density far below the masses' density) are refused, naming the quantity.
+void require_finite(const ParticlePoint& point, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    for (const auto& [name, s] : point.statistics) {
+        const double fields[] = {s.mean, s.std, s.rms, s.min, s.max, s.p1, s.p50, s.p99};
+        if (std::all_of(std::begin(fields), std::end(fields), [](double v) { return std::isfinite(v); })) continue;
+        const std::string why = name == std::string("eps_rho") && !set.mass.empty()
+                                    ? fmt::format(" (the masses over rho0 = {:g}); expected a reference density "
+                                                  "(--rho0) nearer the set's mass density",
+                                                  answer.rho0)
+                                    : "; expected values within the range of a double";
+        fail_input(fmt::format("{}: the statistics of {} overflow a double{}", set.name, name, why));
+    }
 }
 
 } // namespace
@@ -119,6 +136,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
                                        "larger h (--eta, --nh) or a denser set",
                                        set.name, i, h[i]));
         ParticlePoint point = summarise_point(measures, dim, request.histogram_bins);
+        require_finite(point, set, answer);
         const double h_mean = std::accumulate(h.begin(), h.end(), 0.0) / n;
         point.eta = h_mean / unit;
         point.nh = neighbour_number(point.eta, R, dim);

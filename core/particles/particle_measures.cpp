@@ -124,6 +124,19 @@ struct Sweep {
         PointResult& r = out.next();
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
+        if (!std::isfinite(r.e0) || !std::isfinite(r.eps_gradp) || !std::isfinite(r.eps_rho)) fail_non_finite(r, nb, h);
+    }
+
+    // Names the cause of a result that is not finite: the reference density, or the kernel at
+    // a neighbour's q, or else an h the sums overflow at.
+    [[noreturn]] void fail_non_finite(const PointResult& r, const Neighbours& nb, double h) const
+    {
+        if (std::isfinite(r.e0) && std::isfinite(r.eps_gradp))
+            fail_input(fmt::format("{}: eps_rho of particle {} overflows a double (its masses over rho0 = {:g}); expected "
+                                   "a reference density (--rho0) nearer the set's mass density",
+                                   set.name, r.i, in.rho0));
+        fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", r.i, set.name),
+                            fmt::format("h = {:.6g}", h), {nb.q.data(), nb.count});
     }
 
     // sm: the sum of m_j W_ij, none when m_j = rho0 V_j (then eps_rho = e0).
@@ -147,9 +160,6 @@ struct Sweep {
         const Eigen::Vector3d e1v(out.e1[0], out.e1[1], out.e1[2]);
         out.eps_gradp_sum = out.eps_gradp + 2 * in.depth * e1v.dot(g);
         out.neighbours = static_cast<int>(n);
-        if (!std::isfinite(out.e0) || !std::isfinite(out.eps_gradp) || !std::isfinite(out.eps_rho))
-            fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", out.i, set.name),
-                                fmt::format("h = {:.6g}", h));
     }
 };
 

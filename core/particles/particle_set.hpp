@@ -24,6 +24,9 @@ struct PeriodicBox {
 
 struct ParticleSet {
     std::string name;  // the file, lattice or "poisson", for messages
+    // Other files the reader opened through the file (HDF5 external links, virtual datasets):
+    // inputs too, which no output may replace.
+    std::vector<std::string> linked_files;
     int dimension = 3;
     std::vector<double> x, y, z;         // z is 0 in 2D
     std::vector<double> h, mass, density; // each empty or one value per particle

@@ -35,16 +35,16 @@ std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kern
     switch (spec.rule) {
     case SmoothingRule::eta:
         if (!std::isfinite(spec.value) || spec.value <= 0 || spec.value > 100)
-            fail_input(fmt::format("--eta {}: expected a number in (0, 100]", spec.value));
+            fail_usage(fmt::format("--eta {}: expected a number in (0, 100]", spec.value));
         return uniform(spec.value * std::pow(mean_volume, 1.0 / dim));
     case SmoothingRule::nh:
         if (!std::isfinite(spec.value) || spec.value < 1 || spec.value > 1e5)
-            fail_input(fmt::format("--nh {}: expected a neighbour number in [1, 100000]", spec.value));
+            fail_usage(fmt::format("--nh {}: expected a neighbour number in [1, 100000]", spec.value));
         return uniform(eta_for_neighbour_number(spec.value, R, dim) * std::pow(mean_volume, 1.0 / dim));
     case SmoothingRule::k:
         if (set.spacing <= 0)
             fail_input(fmt::format("{}: --k needs a lattice (h = k d); for other sets give --eta or --nh", set.name));
-        if (!k_in_range(spec.value)) fail_input(fmt::format("--k {}: expected a number in (0, 100]", spec.value));
+        if (!k_in_range(spec.value)) fail_usage(fmt::format("--k {}: expected a number in (0, 100]", spec.value));
         return uniform(spec.value * set.spacing);
     case SmoothingRule::file: break;
     }

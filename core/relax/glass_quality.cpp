@@ -79,9 +79,12 @@ double paired_fraction(const ParticleSet& set, int threads)
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads)
 {
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
+    if (bins < 1 || bins > 100000) fail_input(fmt::format("g(r) bins {}: expected 1 to 100000", bins));
+    if (!(r_max > 0.5) || !std::isfinite(r_max))
+        fail_input(fmt::format("g(r) range {}: expected a finite number above 0.5 mean spacings", r_max));
     const double l = mean_spacing(set), width = set.box->smallest_width(set.dimension);
     r_max = std::min(r_max, width / 2 / l * (1 - 1e-9));
-    if (!(r_max > 0.5) || bins < 1 || bins > 100000)
+    if (!(r_max > 0.5))
         fail_input(fmt::format("{}: the box is {:.3g} mean spacings wide; g(r) needs at least 1", set.name, width / l));
     const int t = thread_count(threads);
     std::vector<std::vector<double>> counts(static_cast<std::size_t>(t), std::vector<double>(bins, 0.0));

@@ -24,14 +24,14 @@ namespace {
 
 void check_request(const PairingRequest& r)
 {
-    check_k_interval(r.k_min, r.k_max, ValueSource::argument("--kmin"), ValueSource::argument("--kmax"),
+    check_k_interval(r.k_min, r.k_max, ValueSource::option("--kmin"), ValueSource::option("--kmax"),
                      IntervalEnds::may_meet);
-    if (r.samples < 1 || r.samples > 1000) fail_input(fmt::format("--samples {}: expected 1 to 1000", r.samples));
-    if (r.samples > 1 && r.k_max == r.k_min) fail_input("--samples: several samples need kmin < kmax");
+    if (r.samples < 1 || r.samples > 1000) fail_usage(fmt::format("--samples {}: expected 1 to 1000", r.samples));
+    if (r.samples > 1 && r.k_max == r.k_min) fail_usage("--samples: several samples need kmin < kmax");
     if (!std::isfinite(r.noise) || r.noise <= 0 || r.noise > 0.01)
-        fail_input(fmt::format("--noise {:g}: expected a number in (0, 0.01] (units of d; the motion starts linear)", r.noise));
+        fail_usage(fmt::format("--noise {:g}: expected a number in (0, 0.01] (units of d; the motion starts linear)", r.noise));
     if (!std::isfinite(r.duration) || r.duration <= 0 || r.duration > 1e4)
-        fail_input(fmt::format("--duration {:g}: expected a number in (0, 10000] (units of d / c)", r.duration));
+        fail_usage(fmt::format("--duration {:g}: expected a number in (0, 10000] (units of d / c)", r.duration));
     check_horizon(r.horizon, "--horizon");
 }
 

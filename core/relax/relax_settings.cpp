@@ -23,7 +23,7 @@ void require_range(double value, double lo, double hi, bool open_lo, const char*
 {
     const bool above = open_lo ? value > lo : value >= lo;
     if (!std::isfinite(value) || !above || value > hi)
-        fail_input(fmt::format("{} {:g}: expected a number in {}{:g}, {:g}]{}", option, value, open_lo ? "(" : "[", lo, hi,
+        fail_usage(fmt::format("{} {:g}: expected a number in {}{:g}, {:g}]{}", option, value, open_lo ? "(" : "[", lo, hi,
                                unit));
 }
 
@@ -31,7 +31,7 @@ void require_range(double value, double lo, double hi, bool open_lo, const char*
 
 void check_relax_settings(const RelaxSettings& s)
 {
-    if (s.steps < 1 || s.steps > 10000000) fail_input(fmt::format("--steps {}: expected 1 to 10000000 steps", s.steps));
+    if (s.steps < 1 || s.steps > 10000000) fail_usage(fmt::format("--steps {}: expected 1 to 10000000 steps", s.steps));
     require_range(s.tolerance, 0, 1, false, "--tolerance", " (units of h per step)");
     require_range(s.gamma, 0, 1e3, true, "--gamma", "");
     // Kick-drift-kick is stable for omega dt < 2; the fastest SPH sound waves have omega ~ 2 c / h.
@@ -39,7 +39,7 @@ void check_relax_settings(const RelaxSettings& s)
     require_range(s.damping, 0, 100, false, "--damping", " (units of c / h)");
     require_range(s.alpha, 0, 10, true, "--alpha", "");
     require_range(s.max_move, 0, 0.5, true, "--max-move", " (units of h)");
-    if (s.threads < 0 || s.threads > 1024) fail_input(fmt::format("--threads {}: expected 0 to 1024", s.threads));
+    if (s.threads < 0 || s.threads > 1024) fail_usage(fmt::format("--threads {}: expected 0 to 1024", s.threads));
 }
 
 } // namespace sphkern

@@ -46,11 +46,26 @@ double move(RelaxState& s, std::size_t i, double dx, double dy, double dz)
     return dx * dx + dy * dy + (s.set.dimension == 3 ? dz * dz : 0.0);
 }
 
-void finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
+// False when the integration diverges: a move that is not finite, or longer than a quarter of
+// the box in one step, is no relaxation (and would be taken for a particle outside the box).
+bool finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
 {
-    wrap_into_box(s.set);
     step.rms_move = std::sqrt(sum2 / static_cast<double>(s.set.size())) / s.model.h;
     step.max_move = std::sqrt(max2) / s.model.h;
+    if (!std::isfinite(sum2) || !(std::sqrt(max2) <= s.set.box->smallest_width(s.set.dimension) / 4)) return false;
+    wrap_into_box(s.set);
+    return true;
+}
+
+[[noreturn]] void fail_diverged(const RelaxState& s, const RelaxSettings& settings, const RelaxStep& step, double dt)
+{
+    const std::string move = std::isfinite(step.max_move)
+                                 ? fmt::format("a particle moved {:.3g} h in one step", step.max_move)
+                                 : std::string("a particle's move in one step overflowed a double");
+    fail_input(fmt::format("{}: the relaxation diverged at step {} (t = {:.4g} d/c): {}; expected a smaller --dt (now "
+                           "{:g}), more --damping (now {:g}) or a --gamma nearer 1 (now {:g})",
+                           s.set.name, step.step, step.step * dt, move, settings.time_step, settings.damping,
+                           settings.gamma));
 }
 
 // Kick (exact damping over half a step, then the force), used twice a step.
@@ -64,7 +79,8 @@ void kick(RelaxState& s, double half_dt, double damping_factor)
     }
 }
 
-void pressure_step(const Kernel& kernel, RelaxState& s, double dt, double damping, RelaxStep& step)
+// False when the integration diverges (finish_moves).
+bool pressure_step(const Kernel& kernel, RelaxState& s, double dt, double damping, RelaxStep& step)
 {
     const double factor = std::exp(-damping * dt / 2);
     kick(s, dt / 2, factor);
@@ -73,16 +89,17 @@ void pressure_step(const Kernel& kernel, RelaxState& s, double dt, double dampin
         const double m2 = move(s, i, s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt);
         sum2 += m2, max2 = std::max(max2, m2);
     }
-    finish_moves(s, step, sum2, max2);
+    if (!finish_moves(s, step, sum2, max2)) return false;
     compute_forces(kernel, s.set, s.model, s.forces);
     kick(s, dt / 2, factor);
     double kinetic = 0;
     for (std::size_t i = 0; i < s.set.size(); ++i) kinetic += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
     step.kinetic = kinetic / 2 / static_cast<double>(s.set.size()) / (s.model.c * s.model.c);
+    return true;
 }
 
 // dx_i = -alpha h^2 sum_j V grad_i W_ij, shortened to max_move h where it is longer.
-void shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settings, RelaxStep& step)
+bool shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settings, RelaxStep& step)
 {
     const double h = s.model.h, limit = settings.max_move * h;
     double sum2 = 0, max2 = 0;
@@ -94,8 +111,9 @@ void shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settin
         const double m2 = move(s, i, dx, dy, dz);
         sum2 += m2, max2 = std::max(max2, m2);
     }
-    finish_moves(s, step, sum2, max2);
+    if (!finish_moves(s, step, sum2, max2)) return false;
     compute_forces(kernel, s.set, s.model, s.forces);
+    return true;
 }
 
 RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings, double d)
@@ -154,8 +172,9 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
         throw_if_interrupted();
         RelaxStep step;
         step.step = n;
-        if (settings.method == RelaxMethod::pressure) pressure_step(kernel, s, dt, damping, step);
-        else shift_step(kernel, s, settings, step);
+        const bool settled = settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
+                                                                      : shift_step(kernel, s, settings, step);
+        if (!settled) fail_diverged(s, settings, step, result.dt);
         step.time = settings.method == RelaxMethod::pressure ? n * result.dt : 0;
         record_errors(s, step);
         result.history.push_back(step);

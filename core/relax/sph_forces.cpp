@@ -91,12 +91,19 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
         out.density[i] = model.mass * (w0 + sum_of(nb.w.data(), nb.count)) / hd;
         if (!std::isfinite(out.density[i]))
             fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
-                                fmt::format("h = {:.6g}", model.h));
+                                fmt::format("h = {:.6g}", model.h), {nb.q.data(), nb.count});
     });
     // pi_j = P_j / rho_j^2 in point order, for the force.
     std::vector<double> pi(n, 0.0);
     if (model.pressure)
-        for (std::size_t i = 0; i < n; ++i) pi[i] = out.pressure(out.density[i], model) / (out.density[i] * out.density[i]);
+        for (std::size_t i = 0; i < n; ++i) {
+            pi[i] = out.pressure(out.density[i], model) / (out.density[i] * out.density[i]);
+            // The equation of state, not the kernel: (rho / rho0)^gamma past a double.
+            if (!std::isfinite(pi[i]))
+                fail_input(fmt::format("{}: the pressure of particle {} overflows a double (rho / rho0 = {:.4g}, gamma = "
+                                       "{:g}); expected a gamma nearer 1 or a smaller time step",
+                                       set.name, i, out.density[i] / model.rho0, model.gamma));
+        }
     const std::vector<double> pi_points = grid.gather(pi);
     for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
@@ -112,7 +119,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
             out.ax[i] = model.mass * s.a[0], out.ay[i] = model.mass * s.a[1], out.az[i] = model.mass * s.a[2];
         if (!std::isfinite(out.gx[i] + out.gy[i] + out.gz[i]) || (model.pressure && !std::isfinite(out.ax[i] + out.ay[i] + out.az[i])))
             fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
-                                fmt::format("h = {:.6g}", model.h));
+                                fmt::format("h = {:.6g}", model.h), {nb.q.data(), nb.count});
     });
 }
 

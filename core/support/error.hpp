@@ -27,6 +27,9 @@ private:
 };
 
 [[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
+// A value outside its range, named as the command line gives it (exit 2). at_source
+// (support/text/value_checks.hpp) makes it an input error (exit 3) when the value came from a file.
+[[noreturn]] inline void fail_usage(const std::string& message) { throw Error(ExitCode::usage, message); }
 
 // An error is one line, whatever a file name or a JSON key holds: control characters escaped.
 inline std::string one_line(const std::string& message)

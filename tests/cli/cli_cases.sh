@@ -101,8 +101,8 @@ expect 3 'a_p = -1 is not allowed' -- eps cubic_bspline fcc --k 1 --ap -1
 expect 3 'no volume coefficient "hexagon"' -- eps cubic_bspline triangular --k 1 --ap hexagon
 expect 3 'composite is defined in 2D only, not on the 3D lattice fcc' -- eps composite fcc --k 1
 expect 3 'unknown kernel "cubic";' -- eps cubic fcc --k 1
-expect 3 'min < max' -- roots cubic_bspline fcc --kmin 1.2 --kmax 0.8
-expect 3 'min < max' -- roots cubic_bspline fcc --kmin 0 --kmax 0.8
+expect 2 'min < max' -- roots cubic_bspline fcc --kmin 1.2 --kmax 0.8
+expect 2 'min < max' -- roots cubic_bspline fcc --kmin 0 --kmax 0.8
 expect 3 'no neighbour shell at radius 1.5 d' -- roots cubic_bspline triangular --shells 1,1.5
 expect 2 'needs an explicit --shells' -- roots cubic_bspline triangular --continue-past-support
 expect 2 '--set x: expected NAME=VALUE' -- eps cubic_bspline fcc --k 1 --set x
@@ -411,6 +411,9 @@ check "threads message" grep -qE '^sphkern: error: cannot start 1000 threads .*u
 # Numbers: nothing non-finite, nothing from a kernel outside its valid parameters.
 expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- eps nan_band fcc --k 1.4184397163120568 --plugin "$broken/nan_band.so"
 expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- roots nan_band fcc --kmin 1.40 --kmax 1.45 --plugin "$broken/nan_band.so"
+# On a particle set the q that is at fault is among a particle's neighbours: named, exit 4 (it
+# was blamed on h, exit 3, when a sample of q missed the band).
+expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- particles nan_band poisson --count 3000 --nh 60 --plugin "$broken/nan_band.so"
 expect 0 '^$' -- eps sign_flip fcc --k 1.2 --plugin "$broken/sign_flip.so"
 expect 4 'kernel sign_flip\(p=3\) .*: its 3D normalisation is -1 at k = 1.2, expected a finite positive integral' -- \
     eps sign_flip fcc --k 1.2 --set p=3 --plugin "$broken/sign_flip.so"
@@ -810,15 +813,15 @@ expect 3 '--count 1: expected 2 to' -- particles cubic_bspline poisson --count 1
 expect 3 'the memory limit, --memory-limit' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
 expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
 expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
-expect 3 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0
-expect 3 '--nh 0.5: expected a neighbour number' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
+expect 2 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0
+expect 2 '--nh 0.5: expected a neighbour number' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
 expect 2 'give one of --eta, --nh, --k' -- particles cubic_bspline fcc --size 8,8,8 --eta 1.2 --nh 50
 expect 2 '--volume cells: expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
-expect 3 'sweep range 2 1: expected 0 < A < B' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
+expect 2 'sweep range 2 1: expected 0 < A < B' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
 expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2 --csv "$work/p.csv"
 expect 2 '--csv: an empty value' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
 expect 3 '--gravity' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
-expect 3 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
+expect 2 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
 printf 'x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n' >"$work/free.csv"
 expect 3 'free.csv: uniform volumes need a box' -- particles cubic_bspline "$work/free.csv"
 expect 3 'free.csv: Voronoi volumes need a periodic box' -- particles cubic_bspline "$work/free.csv" --volume voronoi
@@ -843,14 +846,14 @@ assert lines[0] == 'id,x,y,z,h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,
 assert len(lines) == 1 + 8 * 8 * 8"
 check "particles --vtk: point data for every particle" grep -q '^POINT_DATA 512$' "$work/p.vtk"
 
-# relax and pairing: every setting out of range is one line and exit 3 (a usage slip 2).
-expect 3 '--steps 0: expected 1 to 10000000 steps' -- relax wendland_c2 poisson --count 500 --steps 0
-expect 3 '--tolerance -1: expected a number in \[0, 1\]' -- relax wendland_c2 poisson --count 500 --tolerance -1
-expect 3 '--dt 0.9: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --dt 0.9
-expect 3 '--damping -1: expected a number in \[0, 100\]' -- relax wendland_c2 poisson --count 500 --damping -1
-expect 3 '--alpha 0: expected a number in \(0, 10\]' -- relax wendland_c2 poisson --count 500 --method shift --alpha 0
-expect 3 '--max-move 1: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --method shift --max-move 1
-expect 3 '--gamma 0: expected a number in \(0, 1000\]' -- relax wendland_c2 poisson --count 500 --gamma 0
+# relax and pairing: every setting out of range is one line and exit 2, as for every option.
+expect 2 '--steps 0: expected 1 to 10000000 steps' -- relax wendland_c2 poisson --count 500 --steps 0
+expect 2 '--tolerance -1: expected a number in \[0, 1\]' -- relax wendland_c2 poisson --count 500 --tolerance -1
+expect 2 '--dt 0.9: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --dt 0.9
+expect 2 '--damping -1: expected a number in \[0, 100\]' -- relax wendland_c2 poisson --count 500 --damping -1
+expect 2 '--alpha 0: expected a number in \(0, 10\]' -- relax wendland_c2 poisson --count 500 --method shift --alpha 0
+expect 2 '--max-move 1: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --method shift --max-move 1
+expect 2 '--gamma 0: expected a number in \(0, 1000\]' -- relax wendland_c2 poisson --count 500 --gamma 0
 expect 2 '--method jiggle: expected pressure or shift' -- relax wendland_c2 poisson --count 500 --method jiggle
 expect 2 'give one of --eta, --nh and --k' -- relax wendland_c2 poisson --count 500 --eta 1.2 --nh 50
 expect 3 'free.csv: relaxation needs a periodic box' -- relax wendland_c2 "$work/free.csv"
@@ -876,10 +879,10 @@ check "particles reads the glass relax wrote, with its h (support per h from the
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 --kmin 1
 expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
-expect 3 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
-expect 3 '--samples 0: expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
-expect 3 '--duration -1: expected a number' -- pairing cubic_bspline fcc --k 1.2 --duration -1
-expect 3 'expected 0 < kmin <= kmax <= 100' -- pairing cubic_bspline fcc --kmin 2 --kmax 1
+expect 2 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
+expect 2 '--samples 0: expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
+expect 2 '--duration -1: expected a number' -- pairing cubic_bspline fcc --k 1.2 --duration -1
+expect 2 'expected 0 < kmin <= kmax <= 100' -- pairing cubic_bspline fcc --kmin 2 --kmax 1
 
 # A study source relaxed first: every field of "relax" refused with its JSON path.
 relax_study() { study "$1" '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500, "relax": '"$2"'}], "nh": {"min": 30, "max": 60, "steps": 1}}}'; }
@@ -959,6 +962,102 @@ for args in "kernels --json" "lattices --json" "relax wendland_c2 poisson --coun
     check "sphkern $args >/dev/full -> exit $status, $(cat "$work/stderr") (expected 5, cannot write the results)" \
         test $status -eq 5 -a "$(cat "$work/stderr")" = "sphkern: error: cannot write the results to standard output"
 done
+
+# Declared sizes are checked against the file and the memory budget before anything is
+# allocated for them (they were believed: "out of memory" with no file named).
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+with h5py.File(sys.argv[1], 'w') as f:
+    f.create_dataset('PartType0/Coordinates', shape=(10**12, 3), dtype='f8', chunks=(1024, 3))
+with h5py.File(sys.argv[2], 'w') as f:
+    f.create_dataset('PartType0/Coordinates', shape=(5 * 10**7, 3), dtype='f8', chunks=(4096, 3))
+with h5py.File(sys.argv[3], 'w') as f:
+    f.create_group('Header').attrs['Dimension'] = numpy.nan
+    f.create_dataset('PartType0/Coordinates', data=numpy.random.default_rng(1).random((100, 3)))
+" "$work/declared.h5" "$work/budget.h5" "$work/nandim.h5"
+expect 3 'declared.h5: dataset /PartType0/Coordinates declares 1000000000000 rows .*over the memory budget' -- particles cubic_bspline "$work/declared.h5" --nh 40
+expect 3 'budget.h5: dataset /PartType0/Coordinates declares 50000000 rows .*over the memory budget' -- particles cubic_bspline "$work/budget.h5" --nh 40 --memory-limit 0.05
+expect 3 'nandim.h5: /Header Dimension is nan; expected 2 or 3' -- particles cubic_bspline "$work/nandim.h5" --nh 40
+printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1099511627776 double\n0 0 0\n' >"$work/declared.vtk"
+expect 3 'declared.vtk.*unexpected end of file' -- particles cubic_bspline "$work/declared.vtk" --nh 40
+# PySPH files: no array at all, and an array name longer than 255 characters.
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+with h5py.File(sys.argv[1], 'w') as f:
+    f.create_group('particles')
+with h5py.File(sys.argv[2], 'w') as f:
+    rng = numpy.random.default_rng(2)
+    for axis in 'xyz':
+        f.create_dataset('particles/' + 'a' * 300 + '/arrays/' + axis, data=rng.random(500))
+" "$work/noarrays.h5" "$work/longname.h5"
+expect 3 'noarrays.h5: /particles holds no particle array' -- particles cubic_bspline "$work/noarrays.h5" --nh 40
+expect 0 '^$' -- particles cubic_bspline "$work/longname.h5" --nh 40 --box 1,1,1
+
+# Files reached through an HDF5 file's links are inputs too: an output may not replace them
+# (it did, exit 0), and a link is followed only to a regular file (a FIFO blocked the open).
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+work = sys.argv[1]
+rng = numpy.random.default_rng(5)
+with h5py.File(work + '/target.h5', 'w') as f:
+    f.create_dataset('PartType0/Coordinates', data=rng.random((500, 3)))
+    f['Header/BoxSize'] = 1.0
+with h5py.File(work + '/linking.h5', 'w') as f:
+    f['PartType0'] = h5py.ExternalLink('target.h5', '/PartType0')
+    f.create_group('Header').attrs['BoxSize'] = 1.0
+with h5py.File(work + '/to_pipe.h5', 'w') as f:
+    f['PartType0'] = h5py.ExternalLink('pipe.h5', '/PartType0')
+with h5py.File(work + '/to_nowhere.h5', 'w') as f:
+    f['PartType0'] = h5py.ExternalLink('nowhere.h5', '/PartType0')
+with h5py.File(work + '/source.h5', 'w') as f:
+    f['x'] = rng.random((500, 3))
+layout = h5py.VirtualLayout(shape=(500, 3), dtype='f8')
+layout[:] = h5py.VirtualSource(work + '/source.h5', 'x', shape=(500, 3))
+with h5py.File(work + '/virtual.h5', 'w') as f:
+    f.create_virtual_dataset('PartType0/Coordinates', layout)
+    f.create_group('Header').attrs['BoxSize'] = 1.0
+" "$work"
+mkfifo "$work/pipe.h5"
+cp "$work/target.h5" "$work/target.before"
+expect 0 '^$' -- particles cubic_bspline "$work/linking.h5" --nh 40
+expect 5 '--csv .*target.h5: is a file this run reads' -- particles cubic_bspline "$work/linking.h5" --nh 40 --csv "$work/target.h5"
+expect 5 '--output .*target.h5: is a file this run reads' -- relax wendland_c2 "$work/linking.h5" --nh 40 --steps 1 --output "$work/target.h5"
+check "a linked file stays as it was" cmp -s "$work/target.h5" "$work/target.before"
+expect 5 '--vtk .*source.h5: is a file this run reads' -- particles cubic_bspline "$work/virtual.h5" --nh 40 --vtk "$work/source.h5"
+expect 3 'to_pipe.h5: the external link in / to pipe.h5:/PartType0 leads to .*pipe.h5, which is not a regular file' -- particles cubic_bspline "$work/to_pipe.h5" --nh 40
+expect 3 'to_nowhere.h5: the external link in / to nowhere.h5:/PartType0 leads to nowhere.h5, which does not exist' -- particles cubic_bspline "$work/to_nowhere.h5" --nh 40
+
+# A relaxation that diverges is said to diverge, with its step and the settings to change; the
+# set sphkern made is not blamed ("particle 0 at (1.2e+67, ...) lies outside the periodic box").
+expect 3 'poisson: the relaxation diverged at step [0-9]+ \(t = .*\): .*; expected a smaller --dt \(now 0.2\), more --damping \(now 0.5\) or a --gamma nearer 1 \(now 1000\)' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50
+
+# One rule for every command: an option's value outside its range exits 2, naming the option.
+expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
+expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1
+expect 2 '^sphkern: error: --steps 0' -- stability cubic_bspline fcc --kmin 1 --kmax 2 --steps 0
+expect 2 '^sphkern: error: --eta 0' -- particles cubic_bspline poisson --count 1000 --eta 0
+expect 2 '^sphkern: error: --rho0 -1' -- particles cubic_bspline poisson --count 1000 --rho0 -1
+expect 2 '^sphkern: error: --histogram 100001' -- particles cubic_bspline poisson --count 1000 --histogram 100001
+expect 2 '^sphkern: error: --dt 0.6' -- relax wendland_c2 poisson --count 500 --dt 0.6
+expect 2 '^sphkern: error: --rdf-bins 0, expected 1 to 100000' -- relax wendland_c2 poisson --count 500 --steps 1 --rdf-bins 0
+expect 2 '^sphkern: error: --rdf-bins 100001, expected 1 to 100000' -- relax wendland_c2 poisson --count 500 --steps 1 --rdf-bins 100001
+expect 2 '^sphkern: error: --rdf-max 0: expected a finite number above 0.5' -- relax wendland_c2 poisson --count 500 --steps 1 --rdf-max 0
+expect 2 '^sphkern: error: --rdf-max nan: expected a finite number above 0.5' -- relax wendland_c2 poisson --count 500 --steps 1 --rdf-max nan
+expect 2 '^sphkern: error: --noise 0' -- pairing cubic_bspline fcc --k 1.2 --noise 0
+# A study's value out of range stays an input error (exit 3), named by its JSON path.
+relax_study s_reta '{"kernel": "wendland_c2", "eta": 0}'
+expect 3 's_reta.json: /particles/sources/0/relax.*expected' -- run "$work/s_reta.json" -o "$work/out_reta"
+
+# No result is a non-finite number: eps_rho against a reference density 10^300 below the
+# masses' overflows its statistics, and is refused naming the quantity (it printed inf).
+printf 'x,y,z,mass\n' >"$work/massive.csv"
+python3 -c "
+import random
+random.seed(3)
+for i in range(400): print(f'{random.random()},{random.random()},{random.random()},0.0025')
+" >>"$work/massive.csv"
+expect 3 'massive.csv: the statistics of eps_rho overflow a double \(the masses over rho0 = 1e-300\)' -- particles cubic_bspline "$work/massive.csv" --box 1,1,1 --nh 40 --rho0 1e-300
+expect 3 'massive.csv: eps_rho of particle [0-9]+ overflows a double \(its masses over rho0 = 4.94066e-324\)' -- particles cubic_bspline "$work/massive.csv" --box 1,1,1 --nh 40 --rho0 5e-324 --json
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

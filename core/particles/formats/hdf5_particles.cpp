@@ -3,12 +3,17 @@
 // (/particles/<array>/arrays/<property>).
 #include "particles/formats/particle_files.hpp"
 
+#include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <mutex>
 
 namespace sphkern {
@@ -39,17 +44,102 @@ void silence_hdf5()
     std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
 }
 
-bool exists(hid_t location, const std::string& path) { return H5Lexists(location, path.c_str(), H5P_DEFAULT) > 0; }
+// The files an HDF5 file reaches through external links and virtual datasets. Each is followed
+// only to a regular file that exists (an open of a FIFO or a device would block, a missing part
+// would read as fill values), and each is an input that no output may replace.
+struct LinkedFiles {
+    std::filesystem::path folder; // of the file read: relative names start there
+    std::vector<std::string> files;
+    std::string refusal; // why a link was not followed
+
+    // `name` as libhdf5 looks for it: as given, under the prefixes of `prefix_variable`, beside the file.
+    bool admit(const std::string& name, const char* prefix_variable, const std::string& what)
+    {
+        const std::filesystem::path given(name);
+        std::vector<std::filesystem::path> places{given};
+        if (given.is_relative()) {
+            if (const char* prefixes = std::getenv(prefix_variable)) {
+                std::string list = prefixes;
+                for (std::size_t start = 0, end; start <= list.size(); start = end + 1) {
+                    end = std::min(list.find(':', start), list.size());
+                    if (end > start) places.push_back(std::filesystem::path(list.substr(start, end - start)) / given);
+                }
+            }
+            places.push_back(folder / given);
+        }
+        bool found = false;
+        for (const auto& place : places) {
+            struct stat status {};
+            if (::stat(place.c_str(), &status) != 0) continue;
+            if (!S_ISREG(status.st_mode)) {
+                refusal = fmt::format("{} leads to {}, which is not a regular file", what, place.string());
+                return false;
+            }
+            files.push_back(place.lexically_normal().string());
+            found = true;
+        }
+        if (!found) refusal = fmt::format("{} leads to {}, which does not exist", what, name);
+        return found;
+    }
+};
+
+extern "C" herr_t follow_external_link(const char*, const char* group, const char* child_file, const char* child_object,
+                                       unsigned*, hid_t, void* data)
+{
+    auto& linked = *static_cast<LinkedFiles*>(data);
+    return linked.admit(child_file, "HDF5_EXT_PREFIX",
+                        fmt::format("the external link in {} to {}:{}", group, child_file, child_object))
+               ? 0
+               : -1;
+}
 
 struct File {
     std::string name;
     hid_t id;
+    LinkedFiles* linked;
+    // Link, dataset and group access, each following external links through follow_external_link.
+    hid_t links, dataset_access, group_access;
+
+    // Every lookup goes through here: a link that was refused is the error, not its symptom.
+    void check_links() const
+    {
+        if (!linked->refusal.empty()) fail_input(fmt::format("{}: {}", name, linked->refusal));
+    }
+    bool exists(const std::string& path) const
+    {
+        const bool found = H5Lexists(id, path.c_str(), links) > 0;
+        check_links();
+        return found;
+    }
+    // A virtual dataset's source files, followed like external links; values stored outside the file refused.
+    void check_sources(hid_t set, const std::string& path) const
+    {
+        Handle create(H5Dget_create_plist(set), H5Pclose);
+        if (H5Pget_external_count(create.get()) > 0)
+            fail_input(fmt::format("{}: dataset {} keeps its values in external raw files; expected them in the "
+                                   "HDF5 file or a virtual dataset",
+                                   name, path));
+        if (H5Pget_layout(create.get()) != H5D_VIRTUAL) return;
+        std::size_t count = 0;
+        H5Pget_virtual_count(create.get(), &count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const ssize_t length = H5Pget_virtual_filename(create.get(), i, nullptr, 0);
+            std::string source(static_cast<std::size_t>(std::max<ssize_t>(length, 0)) + 1, '\0');
+            H5Pget_virtual_filename(create.get(), i, source.data(), source.size());
+            source.resize(static_cast<std::size_t>(std::max<ssize_t>(length, 0)));
+            if (source == ".") continue; // the file itself
+            linked->admit(source, "HDF5_VDS_PREFIX", fmt::format("the virtual dataset {} maps {}", path, source));
+            check_links();
+        }
+    }
 
     // A dataset of doubles (any stored number type is converted) with its shape.
     std::vector<double> dataset(const std::string& path, std::vector<hsize_t>& shape) const
     {
-        Handle set(H5Dopen2(id, path.c_str(), H5P_DEFAULT), H5Dclose);
+        Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
+        check_links();
         if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
+        check_sources(set.get(), path);
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} has rank {}; expected 1 or 2", name, path, rank));
@@ -59,10 +149,18 @@ struct File {
         const H5T_class_t kind = H5Tget_class(type.get());
         if (kind != H5T_FLOAT && kind != H5T_INTEGER)
             fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
-        hsize_t total = 1;
-        for (auto s : shape) total *= s;
+        // A declared size is checked against the budget before anything is allocated for it.
+        double total = 1;
+        for (auto s : shape) total *= static_cast<double>(s);
+        if (static_cast<double>(shape[0]) > static_cast<double>(max_particles()) ||
+            total * sizeof(double) > static_cast<double>(particle_file_byte_limit()))
+            fail_input(fmt::format("{}: dataset {} declares {} rows ({:.4g} bytes to read, {:.4g} bytes for the "
+                                   "particles); over the memory budget of {:.4g} bytes (--memory-limit)",
+                                   name, path, shape[0], total * sizeof(double),
+                                   static_cast<double>(shape[0]) * bytes_per_particle,
+                                   static_cast<double>(memory_limit_bytes())));
         std::vector<double> values(static_cast<std::size_t>(total));
-        if (total > 0 && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+        if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
             fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
         return values;
     }
@@ -77,8 +175,9 @@ struct File {
     // A numeric attribute of `object` with up to `max` values.
     std::vector<double> attribute(const std::string& object, const std::string& attr) const
     {
-        if (!exists(id, object) || H5Aexists_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT) <= 0) return {};
-        Handle a(H5Aopen_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+        if (!exists(object) || H5Aexists_by_name(id, object.c_str(), attr.c_str(), links) <= 0) return {};
+        Handle a(H5Aopen_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT, links), H5Aclose);
+        check_links();
         Handle space(H5Aget_space(a.get()), H5Sclose);
         const hssize_t n = H5Sget_simple_extent_npoints(space.get());
         Handle type(H5Aget_type(a.get()), H5Tclose);
@@ -103,9 +202,9 @@ ParticleSet read_snapshot(const File& f)
     ParticleSet set;
     set.name = f.name;
     const auto dimension = f.attribute("/Header", "Dimension");
+    if (!dimension.empty() && dimension[0] != 2 && dimension[0] != 3)
+        fail_input(fmt::format("{}: /Header Dimension is {}; expected 2 or 3", f.name, dimension[0]));
     set.dimension = dimension.empty() ? 3 : static_cast<int>(dimension[0]);
-    if (set.dimension != 2 && set.dimension != 3)
-        fail_input(fmt::format("{}: /Header Dimension is {}; expected 2 or 3", f.name, set.dimension));
     std::vector<hsize_t> shape;
     const auto coordinates = f.dataset("/PartType0/Coordinates", shape);
     if (shape.size() != 2 || (shape[1] != 3 && shape[1] != static_cast<hsize_t>(set.dimension)))
@@ -123,7 +222,7 @@ ParticleSet read_snapshot(const File& f)
     if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
     auto optional_column = [&](std::initializer_list<const char*> names) -> std::vector<double> {
         for (const char* dataset : names)
-            if (exists(f.id, "/PartType0") && exists(f.id, std::string("/PartType0/") + dataset))
+            if (f.exists("/PartType0") && f.exists(std::string("/PartType0/") + dataset))
                 return f.column(std::string("/PartType0/") + dataset, n);
         return {};
     };
@@ -147,14 +246,20 @@ ParticleSet read_snapshot(const File& f)
 ParticleSet read_pysph(const File& f, const std::string& requested)
 {
     std::vector<std::string> names;
-    Handle group(H5Gopen2(f.id, "/particles", H5P_DEFAULT), H5Gclose);
+    Handle group(H5Gopen2(f.id, "/particles", f.group_access), H5Gclose);
+    f.check_links();
     H5G_info_t info{};
     H5Gget_info(group.get(), &info);
     for (hsize_t i = 0; i < info.nlinks && i < 1000; ++i) {
-        char buffer[256] = {};
-        H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, buffer, sizeof buffer, H5P_DEFAULT);
-        names.emplace_back(buffer);
+        // A name of any length: its size asked first.
+        const ssize_t length = H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, f.links);
+        if (length <= 0) fail_input(fmt::format("{}: the name of particle array {} cannot be read", f.name, i));
+        std::string name(static_cast<std::size_t>(length) + 1, '\0');
+        H5Lget_name_by_idx(group.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), f.links);
+        name.resize(static_cast<std::size_t>(length));
+        names.push_back(std::move(name));
     }
+    if (names.empty()) fail_input(fmt::format("{}: /particles holds no particle array; expected /particles/<array>/arrays/x, y[, z]", f.name));
     auto listed = [&] {
         std::string text;
         for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
@@ -169,7 +274,7 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     if (std::find(names.begin(), names.end(), array) == names.end())
         fail_input(fmt::format("{}: no particle array \"{}\"; the file has {}", f.name, array, listed()));
     const std::string base = "/particles/" + array + "/arrays/";
-    if (!exists(f.id, base + "x") || !exists(f.id, base + "y"))
+    if (!f.exists(base + "x") || !f.exists(base + "y"))
         fail_input(fmt::format("{}: {}x and {}y are missing; expected PySPH arrays x, y[, z][, h][, m][, rho]", f.name,
                                base, base));
     std::vector<hsize_t> shape;
@@ -178,7 +283,7 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     set.x = f.dataset(base + "x", shape);
     const std::size_t n = set.x.size();
     set.y = f.column(base + "y", n);
-    auto optional_column = [&](const char* p) { return exists(f.id, base + p) ? f.column(base + p, n) : std::vector<double>{}; };
+    auto optional_column = [&](const char* p) { return f.exists(base + p) ? f.column(base + p, n) : std::vector<double>{}; };
     set.z = optional_column("z");
     set.h = optional_column("h");
     set.mass = optional_column("m");
@@ -201,14 +306,26 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     if (H5Fis_hdf5(file.c_str()) <= 0) fail_input(name + ": not an HDF5 file");
     Handle handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     if (!handle.valid()) fail_input(name + ": cannot be opened as HDF5 (a truncated file?)");
-    const File f{name, handle.get()};
-    if (exists(f.id, "/PartType0")) {
-        if (!exists(f.id, "/PartType0/Coordinates"))
+    LinkedFiles linked{std::filesystem::absolute(file).parent_path(), {}, {}};
+    Handle links(H5Pcreate(H5P_LINK_ACCESS), H5Pclose), dataset_access(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose),
+        group_access(H5Pcreate(H5P_GROUP_ACCESS), H5Pclose);
+    for (hid_t list : {links.get(), dataset_access.get(), group_access.get()})
+        H5Pset_elink_cb(list, follow_external_link, &linked);
+    const File f{name, handle.get(), &linked, links.get(), dataset_access.get(), group_access.get()};
+    ParticleSet set;
+    if (f.exists("/PartType0")) {
+        if (!f.exists("/PartType0/Coordinates"))
             fail_input(name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
-        return read_snapshot(f);
+        set = read_snapshot(f);
+    } else if (f.exists("/particles")) {
+        set = read_pysph(f, options.array);
+    } else {
+        fail_input(name + ": neither /PartType0 (SWIFT, GADGET) nor /particles (PySPH); expected a particle snapshot");
     }
-    if (exists(f.id, "/particles")) return read_pysph(f, options.array);
-    fail_input(name + ": neither /PartType0 (SWIFT, GADGET) nor /particles (PySPH); expected a particle snapshot");
+    std::sort(linked.files.begin(), linked.files.end());
+    linked.files.erase(std::unique(linked.files.begin(), linked.files.end()), linked.files.end());
+    set.linked_files = std::move(linked.files);
+    return set;
 }
 
 } // namespace sphkern

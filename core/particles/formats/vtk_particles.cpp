@@ -65,8 +65,9 @@ public:
     // `n` numbers of VTK type `type`, as doubles (or skipped when `out` is null).
     void values(std::string_view type, std::size_t n, std::vector<double>* out, const std::string& what)
     {
-        if (out) out->reserve(n);
         if (!binary) {
+            // A declared count is believed only as far as the file can hold it (a number and a space each).
+            if (out) out->reserve(std::min(n, (data_.size() - pos_ + 1) / 2));
             for (std::size_t i = 0; i < n; ++i) {
                 const auto text = token();
                 double v = 0;
@@ -84,6 +85,7 @@ public:
         }
         const std::size_t size = type_size(type, what);
         if (n > (data_.size() - pos_) / size) fail(fmt::format("{}: the file ends inside its {} values", what, n));
+        if (out) out->reserve(n);
         if (out)
             for (std::size_t i = 0; i < n; ++i) out->push_back(big_endian(type, data_.data() + pos_ + i * size));
         pos_ += n * size;

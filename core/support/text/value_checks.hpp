@@ -33,14 +33,15 @@ struct ValueSource {
     [[noreturn]] void fail(const std::string& problem) const;
 };
 
-// Runs f; an Error it throws is thrown again with the source's name in front.
+// Runs f; an Error it throws is thrown again with the source's name in front, and a value
+// out of range (exit 2) with the source's exit code: a file's value is an input (exit 3).
 template <class F>
 decltype(auto) at_source(const ValueSource& source, F&& f)
 {
     try {
         return f();
     } catch (const Error& e) {
-        throw Error(e.code(), source.name + ": " + e.what());
+        throw Error(e.code() == ExitCode::usage ? source.code : e.code(), source.name + ": " + e.what());
     }
 }
 
