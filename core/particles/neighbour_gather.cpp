@@ -221,13 +221,19 @@ AppendWithin append_within_for(CompressPath path)
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
 {
+    // The pair the search counted: its squared distance is 0, whether or not the positions are equal.
     const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
-    for (std::size_t j = 0; j < grid.points(); ++j)
-        if (j != p && grid.x()[j] == xi && grid.y()[j] == yi && grid.z()[j] == zi) {
-            const auto i = grid.source(p), k = grid.source(j);
+    for (std::size_t j = 0; j < grid.points(); ++j) {
+        const double dx = grid.x()[j] - xi, dy = grid.y()[j] - yi, dz = grid.z()[j] - zi;
+        if (j == p || dx * dx + dy * dy + dz * dz != 0) continue;
+        const auto i = grid.source(p), k = grid.source(j);
+        if (dx == 0 && dy == 0 && dz == 0)
             fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set_name,
                                    std::min(i, k), std::max(i, k), xi, yi, zi));
-        }
+        fail_input(fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance to be a "
+                               "number (it underflows to 0); expected distinct positions",
+                               set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)));
+    }
     throw std::logic_error("a duplicate position that is not there");
 }
 

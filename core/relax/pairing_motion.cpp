@@ -6,6 +6,7 @@
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/mode_kind.hpp"
+#include "stability/stability_budget.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
@@ -147,6 +148,19 @@ bool agrees(const std::string& expected, const std::string& outcome)
     return expected == outcome;
 }
 
+// Pair evaluations of one sample: two force passes a step over the block's particles and
+// their neighbours, and the block's wave vectors in the linear prediction.
+double pairing_pair_terms(const Kernel& kernel, const Lattice& lattice, double k, const PairingRequest& r)
+{
+    const double cells = std::pow(block_cells(lattice, kernel.support() * k), lattice.dimension);
+    const double neighbours = dispersion_neighbours(kernel, lattice, k); // of all the sites of a cell
+    const double steps = std::max(1.0, std::ceil(r.duration / (r.time_step * k)));
+    return (2 * steps + 1) * cells * neighbours;
+}
+
+// Over this, a request is refused before any motion (about a quarter of a minute on two cores).
+constexpr double max_pairing_pair_terms = 1e10;
+
 PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, const PairingRequest& r)
 {
     PairingPoint p;
@@ -199,12 +213,18 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
 std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request)
 {
     check_request(request);
+    auto k_of = [&](int i) {
+        return request.samples == 1 ? request.k_min
+                                    : request.k_min + (request.k_max - request.k_min) * i / (request.samples - 1);
+    };
+    double terms = 0;
+    for (int i = 0; i < request.samples; ++i) terms += pairing_pair_terms(kernel, lattice, k_of(i), request);
+    if (terms > max_pairing_pair_terms)
+        fail_input(fmt::format("pairing: the motion asks for {:.3g} pair evaluations over its {} sample(s) of k, over the "
+                               "limit of {:.3g}; expected a smaller k, a shorter --duration or fewer --samples",
+                               terms, request.samples, max_pairing_pair_terms));
     std::vector<PairingPoint> points;
-    for (int i = 0; i < request.samples; ++i) {
-        const double k = request.samples == 1 ? request.k_min
-                                              : request.k_min + (request.k_max - request.k_min) * i / (request.samples - 1);
-        points.push_back(run_one(kernel, lattice, k, request));
-    }
+    for (int i = 0; i < request.samples; ++i) points.push_back(run_one(kernel, lattice, k_of(i), request));
     return points;
 }
 

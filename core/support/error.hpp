@@ -17,20 +17,6 @@ enum class ExitCode : int {
     interrupted = 130, // SIGINT or SIGTERM arrived; nothing was written
 };
 
-class Error : public std::runtime_error {
-public:
-    Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
-    ExitCode code() const { return code_; }
-
-private:
-    ExitCode code_;
-};
-
-[[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
-// A value outside its range, named as the command line gives it (exit 2). at_source
-// (support/text/value_checks.hpp) makes it an input error (exit 3) when the value came from a file.
-[[noreturn]] inline void fail_usage(const std::string& message) { throw Error(ExitCode::usage, message); }
-
 // An error is one line, whatever a file name or a JSON key holds: control characters escaped.
 inline std::string one_line(const std::string& message)
 {
@@ -45,5 +31,20 @@ inline std::string one_line(const std::string& message)
     }
     return line;
 }
+
+class Error : public std::runtime_error {
+public:
+    // One line from the start: what() is a C string, which a NUL in a file's text would cut.
+    Error(ExitCode code, const std::string& message) : std::runtime_error(one_line(message)), code_(code) {}
+    ExitCode code() const { return code_; }
+
+private:
+    ExitCode code_;
+};
+
+[[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
+// A value outside its range, named as the command line gives it (exit 2). at_source
+// (support/text/value_checks.hpp) makes it an input error (exit 3) when the value came from a file.
+[[noreturn]] inline void fail_usage(const std::string& message) { throw Error(ExitCode::usage, message); }
 
 } // namespace sphkern

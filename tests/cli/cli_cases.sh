@@ -1031,6 +1031,37 @@ expect 3 'to_nowhere.h5: the external link in / to nowhere.h5:/PartType0 leads t
 # set sphkern made is not blamed ("particle 0 at (1.2e+67, ...) lies outside the periodic box").
 expect 3 'poisson: the relaxation diverged at step [0-9]+ \(t = .*\): .*; expected a smaller --dt \(now 0.2\), more --damping \(now 0.5\) or a --gamma nearer 1 \(now 1000\)' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50
 
+# A particle within one box width outside a periodic box is wrapped in (as documented); farther is refused.
+/usr/bin/python3 -c "
+import random, sys
+random.seed(7)
+for name, x in (('near', 1.9), ('far', 2.1)):
+    with open(sys.argv[1] + '/' + name + '.csv', 'w') as f:
+        f.write('x,y,z\\n' + '%g,0.5,0.5\\n' % x)
+        for i in range(400): f.write('%r,%r,%r\\n' % (random.random(), random.random(), random.random()))
+" "$work"
+expect 0 '^$' -- particles cubic_bspline "$work/near.csv" --box 1,1,1 --nh 40
+expect 3 'far.csv: particle 0 at \(2.1, 0.5, 0.5\) lies outside the periodic box' -- particles cubic_bspline "$work/far.csv" --box 1,1,1 --nh 40
+
+# A NUL byte in a field is shown escaped, and the line goes on after it (it cut the error line).
+printf 'x,y,z\n0.1,0.2,0.3\n0.5,0\000abc,0.7\n0.9,0.3,0.2\n' >"$work/nul.csv"
+expect 3 'nul.csv: line 3, column y \(particle 1\): "0\\x00abc" is not a number$' -- particles cubic_bspline "$work/nul.csv" --box 1,1,1 --nh 4
+
+# Two particles 1e-301 apart: their squared distance underflows; named, with the file (it was
+# "a duplicate position that is not there").
+/usr/bin/python3 -c "
+import random, sys
+random.seed(11)
+with open(sys.argv[1], 'w') as f:
+    f.write('x,y,z\\n0,0.5,0.5\\n1e-301,0.5,0.5\\n')
+    for i in range(300): f.write('%r,%r,%r\\n' % (random.random(), random.random(), random.random()))
+" "$work/close.csv"
+expect 3 'close.csv: particles 0 and 1 are 1e-301 apart, too close for their squared distance to be a number' -- particles cubic_bspline "$work/close.csv" --box 1,1,1 --nh 20
+
+# pairing's work is counted before any motion, like stability's (k = 100 ran for minutes).
+expect 3 'pairing: the motion asks for .* pair evaluations over its 1 sample\(s\) of k, over the limit' -- pairing cubic_bspline triangular --k 100 --duration 1
+expect 3 'over the limit' -- pairing cubic_bspline triangular --k 40
+
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1
