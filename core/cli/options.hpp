@@ -44,7 +44,6 @@ public:
     Option add_flag(const std::string& name, bool& value, const std::string& description);
     Option get_option(const std::string& name);
     std::size_t count(const std::string& name) const; // how often the option was given
-    CLI::App& app() const { return *app_; }
 
 private:
     CLI::App* app_;
