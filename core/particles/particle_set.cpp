@@ -45,7 +45,7 @@ double mean_volume(const ParticleSet& set) { return set.box->volume(set.dimensio
 
 double mean_spacing(const ParticleSet& set) { return std::pow(mean_volume(set), 1.0 / set.dimension); }
 
-void wrap_into_box(ParticleSet& set)
+void wrap_into_box(ParticleSet& set, WrapReach reach)
 {
     Eigen::Matrix3d cell = set.box->edges;
     if (set.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
@@ -55,7 +55,7 @@ void wrap_into_box(ParticleSet& set)
         bool moved = false;
         for (int a = 0; a < set.dimension; ++a) {
             // A particle more than one box outside is not a rounding matter: the box is wrong.
-            if (f[a] < -1 || f[a] >= 2)
+            if (reach == WrapReach::one_box && (f[a] < -1 || f[a] >= 2))
                 fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, i,
                                        set.x[i], set.y[i], set.z[i]));
             if (f[a] < 0 || f[a] >= 1) f[a] -= std::floor(f[a]), moved = true;

@@ -50,7 +50,9 @@ double mean_volume(const ParticleSet& set);
 double mean_spacing(const ParticleSet& set);
 
 // Moves every particle of a set with a box into it (by whole edges). Throws Error(input) for
-// a particle more than one box outside: that is a wrong box, not rounding.
-void wrap_into_box(ParticleSet& set);
+// a particle more than one box outside: in a file that is a wrong box, not rounding. A set
+// sphkern displaces itself (a disturbed lattice block) is periodic by construction: `any_distance`.
+enum class WrapReach { one_box, any_distance };
+void wrap_into_box(ParticleSet& set, WrapReach reach = WrapReach::one_box);
 
 } // namespace sphkern

@@ -62,7 +62,7 @@ bool finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
     const std::string move = std::isfinite(step.max_move)
                                  ? fmt::format("a particle moved {:.3g} h in one step", step.max_move)
                                  : std::string("a particle's move in one step overflowed a double");
-    fail_input(fmt::format("{}: the relaxation diverged at step {} (t = {:.4g} d/c): {}; expected a smaller --dt (now "
+    fail_input(fmt::format("{}: the integration diverged at step {} (t = {:.4g} d/c): {}; expected a smaller --dt (now "
                            "{:g}), more --damping (now {:g}) or a --gamma nearer 1 (now {:g})",
                            s.set.name, step.step, step.step * dt, move, settings.time_step, settings.damping,
                            settings.gamma));

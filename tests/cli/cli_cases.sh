@@ -1029,7 +1029,8 @@ expect 3 'to_nowhere.h5: the external link in / to nowhere.h5:/PartType0 leads t
 
 # A relaxation that diverges is said to diverge, with its step and the settings to change; the
 # set sphkern made is not blamed ("particle 0 at (1.2e+67, ...) lies outside the periodic box").
-expect 3 'poisson: the relaxation diverged at step [0-9]+ \(t = .*\): .*; expected a smaller --dt \(now 0.2\), more --damping \(now 0.5\) or a --gamma nearer 1 \(now 1000\)' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50
+expect 3 'poisson: the integration diverged at step [0-9]+ \(t = .*\): .*; expected a smaller --dt \(now 0.2\), more --damping \(now 0.5\) or a --gamma nearer 1 \(now 1000\)' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50
+expect 3 'fcc: the integration diverged at step 1 .*--gamma nearer 1 \(now 1e-06\)' -- pairing cubic_bspline fcc --k 1.2 --gamma 1e-6
 
 # A particle within one box width outside a periodic box is wrapped in (as documented); farther is refused.
 /usr/bin/python3 -c "
@@ -1061,6 +1062,10 @@ expect 3 'close.csv: particles 0 and 1 are 1e-301 apart, too close for their squ
 # pairing's work is counted before any motion, like stability's (k = 100 ran for minutes).
 expect 3 'pairing: the motion asks for .* pair evaluations over its 1 sample\(s\) of k, over the limit' -- pairing cubic_bspline triangular --k 100 --duration 1
 expect 3 'over the limit' -- pairing cubic_bspline triangular --k 40
+
+# A lattice block disturbed by more than its own width is still periodic: wrapped, not blamed
+# on the set sphkern made ("particle 1 ... lies outside the periodic box").
+expect 0 '^$' -- particles cubic_bspline fcc --size 8,8,8 --sigma 10
 
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1

@@ -56,6 +56,7 @@ ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& sp
             set.y[i] += normal(engine);
             if (dim == 3) set.z[i] += normal(engine);
         }
+        wrap_into_box(set, WrapReach::any_distance); // a displacement of several blocks is still periodic
     }
     validate_particle_set(set);
     return set;
