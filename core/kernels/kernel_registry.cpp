@@ -139,6 +139,8 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::load(Candidate& c)
     try {
         c.loaded = load_kernel_file(c.file);
         c.name = c.loaded->name;
+    } catch (const ResourceError&) {
+        throw; // a limit of the machine, not this file's fault
     } catch (const Error& e) {
         if (e.code() == ExitCode::interrupted) throw;
         c.broken = true;

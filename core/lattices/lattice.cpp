@@ -8,6 +8,7 @@
 #include "support/io/file_spec.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/io/json_input.hpp"
+#include "support/process/resource_errors.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <Eigen/LU>
@@ -200,7 +201,10 @@ std::vector<std::string> shipped_lattice_names()
 {
     std::vector<std::string> names;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(data_folder("lattices"), ec)) {
+    const fs::path folder = data_folder("lattices");
+    fs::directory_iterator entries(folder, ec);
+    if (ec && is_resource_error(ec.value())) fail_resource(ec.value(), "listing " + folder.string());
+    for (const auto& entry : entries) {
         auto p = entry.path();
         if (p.extension() == ".json" && p.filename().string().find(".schema.") == std::string::npos)
             names.push_back(p.stem().string());

@@ -1067,6 +1067,18 @@ expect 3 'over the limit' -- pairing cubic_bspline triangular --k 40
 # on the set sphkern made ("particle 1 ... lies outside the periodic box").
 expect 0 '^$' -- particles cubic_bspline fcc --size 8,8,8 --sigma 10
 
+# A limit of the process is named as such: it was "unknown lattice" with an empty list (ulimit -n 4)
+# and "unknown kernel ... (did you mean the same name?)" (ulimit -n 5).
+for files in 4 5; do
+    # Only stdin, stdout and stderr open, whatever the test runner left open.
+    bash -c 'for fd in $(ls /proc/$$/fd); do ((fd > 2)) && eval "exec $fd>&-"; done; ulimit -n "$1"; exec "$2" eps cubic_bspline fcc --k 1.2' \
+        limits "$files" "$sphkern" >/dev/null 2>"$work/stderr"
+    status=$?
+    check "ulimit -n $files: exit $status, $(cat "$work/stderr") (expected 3 and the limit named)" \
+        grep -q "^sphkern: error: .*too many open files (the limit is $files, ulimit -n); raise the limit$" "$work/stderr"
+    check "ulimit -n $files: exit 3" test $status -eq 3
+done
+
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1

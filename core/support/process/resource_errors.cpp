@@ -1,7 +1,5 @@
 #include "support/process/resource_errors.hpp"
 
-#include "support/error.hpp"
-
 #include <cerrno>
 #include <cstring>
 #include <sys/resource.h>
@@ -15,14 +13,14 @@ void fail_resource(int error, const std::string& doing)
     struct rlimit limit {};
     if (error == EMFILE || error == ENFILE) {
         const bool known = error == EMFILE && ::getrlimit(RLIMIT_NOFILE, &limit) == 0;
-        fail_input(doing + ": too many open files" +
+        throw ResourceError(doing + ": too many open files" +
                    (known ? " (the limit is " + std::to_string(limit.rlim_cur) + ", ulimit -n)" : std::string(" in the system")) +
                    "; raise the limit");
     }
     if (error == EAGAIN && ::getrlimit(RLIMIT_NPROC, &limit) == 0)
-        fail_input(doing + ": cannot start another process (the limit is " + std::to_string(limit.rlim_cur) +
+        throw ResourceError(doing + ": cannot start another process (the limit is " + std::to_string(limit.rlim_cur) +
                    ", ulimit -u); raise the limit");
-    fail_input(doing + ": " + std::strerror(error) + " (a limit of the system)");
+    throw ResourceError(doing + ": " + std::strerror(error) + " (a limit of the system)");
 }
 
 } // namespace sphkern
