@@ -27,7 +27,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace sphkern {
 
@@ -46,9 +48,28 @@ bool valid_text(const char* s)
     return true;
 }
 
+// A plugin's constructors run inside the load: whatever folder they move the process to, it
+// is moved back, so that relative output paths keep meaning the folder they were given in.
+class KeepWorkingFolder {
+public:
+    KeepWorkingFolder() : folder_(::open(".", O_PATH | O_DIRECTORY | O_CLOEXEC)) {}
+    ~KeepWorkingFolder()
+    {
+        if (folder_ < 0) return;
+        if (::fchdir(folder_) != 0) spdlog::warn("cannot return to the working folder after loading a plugin");
+        ::close(folder_);
+    }
+    KeepWorkingFolder(const KeepWorkingFolder&) = delete;
+    KeepWorkingFolder& operator=(const KeepWorkingFolder&) = delete;
+
+private:
+    int folder_;
+};
+
 // Loads `path` (a /proc/self/fd name); `name` is the file as the user gave it.
 std::shared_ptr<boost::dll::shared_library> open_library(const std::string& path, const std::string& name)
 {
+    const KeepWorkingFolder keep;
     try {
         return std::make_shared<boost::dll::shared_library>(
             boost::dll::fs::path(path), boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);

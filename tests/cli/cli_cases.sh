@@ -1079,6 +1079,13 @@ for files in 4 5; do
     check "ulimit -n $files: exit 3" test $status -eq 3
 done
 
+# A plugin whose constructor moves the process to / does not move a relative output with it.
+mkdir -p "$work/here"
+(cd "$work/here" && "$sphkern" particles changes_folder fcc --size 6,6,6 --k 1.2 --plugin "$broken/changes_folder.so" \
+    --csv rel.csv >/dev/null 2>&1)
+check "a relative --csv lands in the folder it was given in, whatever a plugin's constructor does" \
+    test -s "$work/here/rel.csv" -a ! -e /rel.csv
+
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1
