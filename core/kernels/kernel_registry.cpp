@@ -221,26 +221,39 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::s
     // A name: the explicit files first, then the folders' files, whose names the cache knows
     // (or probes learn); two files with the name are an error, whichever is asked for.
     learn_names();
+    if (auto found = find_named(spec)) return found;
+    // No file claims the name: a cached name may be stale (the same size and times, another
+    // kernel). Every file is loaded, which puts its descriptor's name in the cache, and asked again.
+    for (auto& c : candidates_) load(c);
+    PluginProbeCache::instance().save();
+    if (auto found = find_named(spec)) return found;
     std::vector<std::string> names;
-    std::shared_ptr<const KernelDefinition> found;
-    std::string found_source;
-    for (const auto& p : explicit_) {
-        names.push_back(p->name);
-        if (p->name == spec) found = p, found_source = p->source;
-    }
-    for (auto& c : candidates_) {
-        if (!c.name) continue;
-        names.push_back(*c.name);
-        if (*c.name != spec) continue;
-        if (found) fail_duplicate(spec, found_source, fs::absolute(c.file).lexically_normal().string());
-        found = load(c);
-        found_source = fs::absolute(c.file).lexically_normal().string();
-    }
-    if (found) return found;
+    for (const auto& p : explicit_) names.push_back(p->name);
+    for (const auto& c : candidates_)
+        if (c.name) names.push_back(*c.name);
     std::string message = "unknown kernel \"" + spec + "\"" + did_you_mean(spec, names);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     fail_input(message + "; known kernels: " + (list.empty() ? "none found (no plugin folder)" : list));
+}
+
+// The kernel named `spec`, or null. A folder file is taken by its descriptor's name: one whose
+// cached name matches is loaded first (the load replaces a stale cached name).
+std::shared_ptr<const KernelDefinition> KernelRegistry::find_named(const std::string& spec)
+{
+    std::shared_ptr<const KernelDefinition> found;
+    std::string found_source;
+    for (const auto& p : explicit_)
+        if (p->name == spec) found = p, found_source = p->source;
+    for (auto& c : candidates_) {
+        if (!c.name || *c.name != spec) continue;
+        auto loaded = load(c);
+        if (!loaded || loaded->name != spec) continue;
+        if (found) fail_duplicate(spec, found_source, fs::absolute(c.file).lexically_normal().string());
+        found = loaded;
+        found_source = fs::absolute(c.file).lexically_normal().string();
+    }
+    return found;
 }
 
 } // namespace sphkern

@@ -48,6 +48,7 @@ private:
     void learn_names();
     std::shared_ptr<const KernelDefinition> load(Candidate& candidate);
     std::shared_ptr<const KernelDefinition> find_single(const std::string& spec);
+    std::shared_ptr<const KernelDefinition> find_named(const std::string& spec);
     void add(std::shared_ptr<const KernelDefinition> plugin);
 
     std::vector<Candidate> candidates_;

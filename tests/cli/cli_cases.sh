@@ -1086,6 +1086,23 @@ mkdir -p "$work/here"
 check "a relative --csv lands in the folder it was given in, whatever a plugin's constructor does" \
     test -s "$work/here/rel.csv" -a ! -e /rel.csv
 
+# A stale probe-cache entry (the file's own size and times, another kernel's name) heals: it
+# made wendland_c4 unknown and wendland_c2 "two plugins", run after run.
+stale="$work/stale-cache"
+XDG_CACHE_HOME="$stale" "$sphkern" kernels >/dev/null 2>&1
+rename_cached() { /usr/bin/python3 -c "
+import json, sys
+path = sys.argv[1] + '/sphkern/plugin-probes.json'
+d = json.load(open(path))
+entry = next(v for k, v in d['plugins'].items() if k.endswith('/wendland_c4.so'))
+if sys.argv[2] == 'set': entry['name'] = 'wendland_c2'; json.dump(d, open(path, 'w'))
+else: assert entry['name'] == 'wendland_c4', entry
+" "$stale" "$1"; }
+rename_cached set
+check "a stale cached name: wendland_c2 still found once" bash -c "XDG_CACHE_HOME='$stale' '$sphkern' eps wendland_c2 fcc --k 1.2 >/dev/null"
+check "a stale cached name: wendland_c4 found" bash -c "XDG_CACHE_HOME='$stale' '$sphkern' eps wendland_c4 fcc --k 1.2 >/dev/null"
+check "a stale cached name: the cache names the file by its descriptor again" rename_cached check
+
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1
