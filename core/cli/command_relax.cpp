@@ -98,9 +98,7 @@ Action add_relax_command(Command app)
         o.settings.method = parse_relax_method(o.method);
         check_relax_settings(o.settings);
         // Before the run: g(r) is drawn after it.
-        check_range(static_cast<double>(o.rdf_bins), 1, 100000, ValueSource::option("--rdf-bins"));
-        if (!(o.rdf_max > 0.5) || !std::isfinite(o.rdf_max))
-            throw Error(ExitCode::usage, fmt::format("--rdf-max {}: expected a finite number above 0.5 (mean spacings)", o.rdf_max));
+        check_rdf_settings(o.rdf_max, o.rdf_bins, ValueSource::option("--rdf-max"), ValueSource::option("--rdf-bins"));
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_particle_output_name(o.output);

@@ -76,12 +76,17 @@ double paired_fraction(const ParticleSet& set, int threads)
     return paired_share(nearest);
 }
 
+void check_rdf_settings(double r_max, std::size_t bins, const ValueSource& r_max_source, const ValueSource& bins_source)
+{
+    check_range(static_cast<double>(bins), 1, 100000, bins_source);
+    if (!(r_max > 0.5) || !std::isfinite(r_max))
+        throw Error(r_max_source.code, r_max_source.about(r_max) + ": expected a finite number above 0.5 (mean spacings)");
+}
+
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads)
 {
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
-    if (bins < 1 || bins > 100000) fail_input(fmt::format("g(r) bins {}: expected 1 to 100000", bins));
-    if (!(r_max > 0.5) || !std::isfinite(r_max))
-        fail_input(fmt::format("g(r) range {}: expected a finite number above 0.5 mean spacings", r_max));
+    check_rdf_settings(r_max, bins, ValueSource::argument("g(r) range"), ValueSource::argument("g(r) bins"));
     const double l = mean_spacing(set), width = set.box->smallest_width(set.dimension);
     r_max = std::min(r_max, width / 2 / l * (1 - 1e-9));
     if (!(r_max > 0.5))
