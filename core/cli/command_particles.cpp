@@ -97,11 +97,17 @@ Action add_particles_command(Command app)
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
+        PhaseTimes phases;
         const ParticleSet set = load_particles(source_of(o));
+        phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        const ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
+        ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
+        phases.merge(answer.phases);
+        phases.restart();
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
+        if (!outputs.empty()) phases.lap("write");
+        answer.phases = phases;
         if (o.json) print_json(particle_answer_json(kernel, set, answer), source_inputs(o, kernel));
         else print_particle_answer(results_file(), kernel, set, answer);
         return 0;

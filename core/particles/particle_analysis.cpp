@@ -33,35 +33,27 @@ void check_request(const ParticleRequest& request)
         fail_usage(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
 }
 
-std::vector<double> magnitudes(const std::vector<std::array<double, 3>>& v)
-{
-    std::vector<double> out(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out[i] = std::hypot(v[i][0], v[i][1], v[i][2]);
-    return out;
-}
-
 ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bins)
 {
     ParticlePoint point;
-    std::vector<double> frobenius(m.size()), neighbours(m.size());
-    for (std::size_t i = 0; i < m.size(); ++i) frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
+    const std::size_t n = m.size();
+    std::vector<double> e1(n), m1(n), frobenius(n), neighbours(n);
+    ParallelFor derive;
+    derive.run_blocks(n, std::size_t{1} << 16, m.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            e1[i] = std::hypot(m.e1[i][0], m.e1[i][1], m.e1[i][2]), m1[i] = std::hypot(m.m1[i][0], m.m1[i][1], m.m1[i][2]);
+            frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
+        }
+    });
     const std::pair<const char*, const std::vector<double>*> fields[] = {
         {"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}};
-    const auto e1 = magnitudes(m.e1), m1 = magnitudes(m.m1);
     const std::pair<const char*, const std::vector<double>*> summarised[] = {
         fields[0], fields[1], fields[2], fields[3], {"|e1|", &e1}, {"|m1|", &m1}, {"||E||_F", &frobenius},
         {"neighbours", &neighbours}};
-    // Each summary on its own (their quantiles are most of the time after the sums): the
-    // threads of the sums share them out, and each is the same whatever thread computes it.
-    constexpr std::size_t count = std::size(summarised);
-    point.statistics.resize(count);
-    ParallelFor pass;
-    pass.run(count, std::min(m.threads, static_cast<int>(count)), [&](int, std::size_t begin, std::size_t end) {
-        for (std::size_t s = begin; s < end && pass.keep_going(); ++s)
-            point.statistics[s] = {summarised[s].first, summarise(*summarised[s].second)};
-    });
+    // Each summary on every thread: the same whatever the thread count.
+    for (const auto& [name, values] : summarised) point.statistics.emplace_back(name, summarise(*values, m.threads));
     if (bins)
-        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins));
+        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins, m.threads));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;
@@ -99,6 +91,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     check_request(request);
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
+    PhaseTimes& phases = answer.phases;
     answer.volume = request.volume.value_or(default_volume_model(set));
     answer.volumes = request.given_volumes.empty() ? particle_volumes(set, answer.volume) : request.given_volumes;
     if (answer.volumes.size() != set.size())
@@ -109,6 +102,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     const double n = static_cast<double>(set.size());
     answer.mean_volume = std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0) / n;
     answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
+    phases.lap("volumes");
     answer.gravity = request.gravity ? request.gravity->normalized() : set.gravity;
     if (set.dimension == 2 && answer.gravity.z() != 0) fail_input("--gravity: a 2D set takes x,y");
     // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
@@ -125,10 +119,14 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     const int dim = set.dimension;
     const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
     for (std::size_t p = 0; p < specs.size(); ++p) {
+        phases.restart();
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume);
+        phases.lap("h");
         MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
                              request.threads};
         auto measures = measure_particles(kernel, set, inputs);
+        phases.merge(measures.phases);
+        phases.restart();
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
         for (std::size_t i = 0; i < measures.size(); ++i)
             if (measures.neighbours[i] == 0)
@@ -143,6 +141,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
         point.h_min = *lo, point.h_max = *hi;
         answer.threads = measures.threads;
+        phases.lap("statistics");
         if (specs.size() > 1) spdlog::debug("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
         answer.points.push_back(std::move(point));
         if (specs.size() == 1) answer.h = std::move(h), answer.measures = std::move(measures);

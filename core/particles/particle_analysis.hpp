@@ -53,6 +53,7 @@ struct ParticleAnswer {
     std::optional<ParticleMeasures> measures;    // of the single h
     std::vector<ParticlePoint> points;           // one, or one per sweep value
     int threads = 1;
+    PhaseTimes phases; // volumes, h, grid, sums, statistics (a front end adds read and write)
 };
 
 // Checks the request against the set (one line per problem), then measures.

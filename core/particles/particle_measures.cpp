@@ -190,6 +190,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     kernel.require_dimension(set.dimension, set.name);
     const double h_max = *std::max_element(inputs.h.begin(), inputs.h.end());
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
+    PhaseTimes phases;
     const NeighbourGrid grid(set, kernel.support() * h_max);
     std::vector<double> reach(inputs.h.size());
     for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = search_reach(kernel.support() * inputs.h[i]);
@@ -204,6 +205,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
                       grid.gather(reach)};
 
     ParticleMeasures out;
+    phases.lap("grid");
     const std::size_t n = set.size();
     // Written in the particles' own order, random in memory on a disordered set.
     resize_on_huge_pages(out.e0, n), resize_on_huge_pages(out.eps_rho, n), resize_on_huge_pages(out.eps_gradp, n);
@@ -232,6 +234,8 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     for (int count : out.neighbours) out.pairs += static_cast<std::size_t>(count);
+    phases.lap("sums");
+    out.phases = phases;
     return out;
 }
 

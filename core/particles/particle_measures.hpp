@@ -6,6 +6,7 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
+#include "support/process/phase_times.hpp"
 
 #include <array>
 #include <optional>
@@ -32,6 +33,7 @@ struct ParticleMeasures {
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid
+    PhaseTimes phases;                    // grid and sums
     double cpu_seconds = 0;               // the same, CPU time of all threads (a loaded machine's measure)
     std::size_t size() const { return e0.size(); }
 };

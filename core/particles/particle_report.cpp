@@ -71,6 +71,9 @@ nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set
                                {"rho0", answer.rho0},
                                {"gravity", vector_json(answer.gravity, set.dimension)},
                                {"threads", answer.threads}};
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, seconds] : answer.phases.phases()) phases[name] = seconds;
+    document["phases"] = phases;
     if (answer.points.size() == 1) document.update(point_json(answer.points[0]));
     else document["sweep"] = points;
     return document;
@@ -103,6 +106,7 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
     }
 }
 
+// The per-particle values in the shortest form that reads back to the same double.
 void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
@@ -110,27 +114,32 @@ void write_particle_csv(std::ostream& stream, const ParticleSet& set, const Part
     ChunkedWriter out(stream);
     out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
               three ? "e1_z," : "", three ? ",m1_z" : "");
-    for (std::size_t i = 0; i < set.size(); ++i) {
-        out.print("{},{:.17g},{:.17g},", i, set.x[i], set.y[i]);
-        if (three) out.print("{:.17g},", set.z[i]);
-        out.print("{:.17g},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},", answer.h[i], answer.volumes[i],
-                  m.neighbours[i], m.e0[i], m.eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
-        if (three) out.print("{:.17g},", m.e1[i][2]);
-        out.print("{:.17g},{:.17g}", m.m1[i][0], m.m1[i][1]);
-        if (three) out.print(",{:.17g}", m.m1[i][2]);
-        out.print("\n");
-    }
+    out.rows(set.size(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
+        auto to = std::back_inserter(row);
+        fmt::format_to(to, "{},{},{},", i, set.x[i], set.y[i]);
+        if (three) fmt::format_to(to, "{},", set.z[i]);
+        fmt::format_to(to, "{},{},{},{},{},{},{},{},", answer.h[i], answer.volumes[i], m.neighbours[i], m.e0[i],
+                       m.eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
+        if (three) fmt::format_to(to, "{},", m.e1[i][2]);
+        fmt::format_to(to, "{},{}", m.m1[i][0], m.m1[i][1]);
+        if (three) fmt::format_to(to, ",{}", m.m1[i][2]);
+        fmt::format_to(to, "\n");
+    });
 }
 
 void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
     const std::size_t n = set.size();
+    const int threads = answer.threads;
     ChunkedWriter out(stream);
-    write_vtk_points(out, "sphkern particles: consistency errors per particle", n, set.x.data(), set.y.data(), set.z.data());
+    write_vtk_points(out, "sphkern particles: consistency errors per particle", n, set.x.data(), set.y.data(),
+                     set.z.data(), threads);
     auto scalars = [&](const char* name, auto value) {
         out.print("SCALARS {} double 1\nLOOKUP_TABLE default\n", name);
-        for (std::size_t i = 0; i < n; ++i) out.print("{:.17g}\n", static_cast<double>(value(i)));
+        out.rows(n, threads, [&](fmt::memory_buffer& row, std::size_t i) {
+            fmt::format_to(std::back_inserter(row), "{}\n", static_cast<double>(value(i)));
+        });
     };
     scalars("id", [](std::size_t i) { return i; });
     scalars("h", [&](std::size_t i) { return answer.h[i]; });
@@ -141,7 +150,10 @@ void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const Part
     scalars("eps_gradp", [&](std::size_t i) { return m.eps_gradp[i]; });
     for (const auto& [name, field] : {std::pair{"e1", &m.e1}, std::pair{"m1", &m.m1}}) {
         out.print("VECTORS {} double\n", name);
-        for (const auto& v : *field) out.print("{:.17g} {:.17g} {:.17g}\n", v[0], v[1], v[2]);
+        out.rows(n, threads, [&](fmt::memory_buffer& row, std::size_t i) {
+            const auto& v = (*field)[i];
+            fmt::format_to(std::back_inserter(row), "{} {} {}\n", v[0], v[1], v[2]);
+        });
     }
 }
 

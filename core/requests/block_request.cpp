@@ -75,26 +75,30 @@ void print_block(const BlockRun& run, const Kernel& kernel, const Lattice& latti
     }
 }
 
+// Per-particle values in the shortest form that reads back to the same double.
 void write_block_vtk(std::ostream& out, const BlockResult& r)
 {
     ChunkedWriter w(out);
     const std::size_t n = r.particles();
-    write_vtk_points(w, "sphkern block: eps_rho and eps_gradp per particle", n, r.x.data(), r.y.data(), r.z.data());
-    w.print("SCALARS eps_rho double 1\nLOOKUP_TABLE default\n");
-    for (double v : r.eps_rho) w.print("{:.17g}\n", v);
-    w.print("SCALARS eps_gradp double 1\nLOOKUP_TABLE default\n");
-    for (double v : r.eps_gradp) w.print("{:.17g}\n", v);
-    w.print("SCALARS layer int 1\nLOOKUP_TABLE default\n");
-    for (int v : r.layer) w.print("{}\n", v);
+    write_vtk_points(w, "sphkern block: eps_rho and eps_gradp per particle", n, r.x.data(), r.y.data(), r.z.data(),
+                     r.threads);
+    auto scalars = [&](const char* header, const auto& values) {
+        w.print("{}", header);
+        w.rows(n, r.threads, [&](fmt::memory_buffer& row, std::size_t i) { fmt::format_to(std::back_inserter(row), "{}\n", values[i]); });
+    };
+    scalars("SCALARS eps_rho double 1\nLOOKUP_TABLE default\n", r.eps_rho);
+    scalars("SCALARS eps_gradp double 1\nLOOKUP_TABLE default\n", r.eps_gradp);
+    scalars("SCALARS layer int 1\nLOOKUP_TABLE default\n", r.layer);
 }
 
 void write_block_csv(std::ostream& out, const BlockResult& r)
 {
     ChunkedWriter w(out);
     w.print("x,y,z,layer,eps_rho,eps_gradp\n");
-    for (std::size_t i = 0; i < r.particles(); ++i)
-        w.print("{:.17g},{:.17g},{:.17g},{},{:.17g},{:.17g}\n", r.x[i], r.y[i], r.z[i], r.layer[i], r.eps_rho[i],
-                r.eps_gradp[i]);
+    w.rows(r.particles(), r.threads, [&](fmt::memory_buffer& row, std::size_t i) {
+        fmt::format_to(std::back_inserter(row), "{},{},{},{},{},{}\n", r.x[i], r.y[i], r.z[i], r.layer[i], r.eps_rho[i],
+                       r.eps_gradp[i]);
+    });
 }
 
 } // namespace sphkern

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <cmath>
 #include <filesystem>
@@ -281,6 +282,44 @@ LatticeBlockSpec perturbed_block(long long cells, std::uint64_t seed)
     spec.sigma = 0.05;
     spec.seed = seed;
     return spec;
+}
+
+TEST_CASE("statistics over several blocks: exact percentiles, and the same bits on 1, 2 and 7 threads")
+{
+    auto reference = [](std::vector<double> v, double p) {
+        std::sort(v.begin(), v.end());
+        const double rank = p * static_cast<double>(v.size() - 1);
+        const auto lo = static_cast<std::size_t>(std::floor(rank));
+        return v[lo] + (rank - static_cast<double>(lo)) * (v[std::min(lo + 1, v.size() - 1)] - v[lo]);
+    };
+    std::mt19937_64 random(11);
+    std::normal_distribution<double> normal(0.0, 1e-3);
+    // Spread values of both signs (zeros of both signs among them), and crowded ones: integers
+    // in one narrow range, most of them in one bucket of the selection's histogram.
+    std::vector<double> spread(300007), crowded(200003);
+    for (std::size_t i = 0; i < spread.size(); ++i) spread[i] = i % 1000 == 0 ? (i % 2000 ? -0.0 : 0.0) : normal(random);
+    for (auto& v : crowded) v = 58.0 + static_cast<double>(random() % 5);
+    for (const auto* values : {&spread, &crowded}) {
+        const auto one = summarise(*values, 1);
+        CHECK(one.p1 == reference(*values, 0.01));
+        CHECK(one.p50 == reference(*values, 0.5));
+        CHECK(one.p99 == reference(*values, 0.99));
+        CHECK(one.min == *std::min_element(values->begin(), values->end()));
+        CHECK(one.max == *std::max_element(values->begin(), values->end()));
+        double sum = 0;
+        for (double v : *values) sum += v;
+        CHECK(one.mean == doctest::Approx(sum / static_cast<double>(values->size())).epsilon(1e-12));
+        const auto bins = histogram(*values, 17, 1);
+        std::size_t total = 0;
+        for (auto c : bins.counts) total += c;
+        CHECK(total == values->size());
+        for (int threads : {2, 7}) {
+            CAPTURE(threads);
+            const auto other = summarise(*values, threads);
+            CHECK(std::memcmp(&one, &other, sizeof one) == 0);
+            CHECK(histogram(*values, 17, threads).counts == bins.counts);
+        }
+    }
 }
 
 TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend on the thread count")

@@ -18,6 +18,12 @@
 
 namespace sphkern {
 
+// The threads a request for `requested` gets: every core for 0 or less.
+inline int worker_threads(int requested)
+{
+    return requested > 0 ? requested : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 // Calls work(thread, begin, end) on each chunk; `work` should call keep_going() between
 // items and return when it is false.
 class ParallelFor {
@@ -57,6 +63,22 @@ public:
                                              "); use fewer threads");
         if (first_error_) std::rethrow_exception(first_error_);
         throw_if_interrupted();
+    }
+
+    // Calls work(block, begin, end) on the blocks [b * block_size, (b + 1) * block_size) of
+    // [0, n), shared out as threads become free. The blocks do not depend on the thread count,
+    // so a result assembled block by block (partial sums added in block order) is the same on
+    // any number of threads.
+    template <class Work>
+    void run_blocks(std::size_t n, std::size_t block_size, int threads, const Work& work)
+    {
+        const std::size_t blocks = (n + block_size - 1) / block_size;
+        std::atomic<std::size_t> next{0};
+        const int workers = static_cast<int>(std::clamp<std::size_t>(blocks, 1, static_cast<std::size_t>(std::max(1, threads))));
+        run(static_cast<std::size_t>(workers), workers, [&](int, std::size_t, std::size_t) {
+                for (std::size_t b; keep_going() && (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;)
+                    work(b, b * block_size, std::min(n, (b + 1) * block_size));
+            });
     }
 
 private:
