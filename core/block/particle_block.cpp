@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <thread>
 
 namespace sphkern {
 
@@ -77,7 +76,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
     result.dimension = dim;
     result.gravity = block_gravity(lattice);
     result.spacing = surface_planes(lattice, result.gravity).period;
-    result.threads = options.threads > 0 ? options.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    result.threads = worker_threads(options.threads);
     result.sites = lattice.sites();
     const double reach = search_reach(kernel.support() * options.k);
     require_periodic_width(lattice, options, reach); // before anything is allocated
@@ -86,7 +85,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
                       static_cast<double>(memory_limit_bytes() / bytes_per_block_particle));
     BlockGeometry geometry = place_particles(lattice, options, result);
     // The block is a particle set: its neighbours are the particle engine's.
-    const NeighbourGrid grid(block_particle_set(lattice, options, result, reach), reach);
+    const NeighbourGrid grid(block_particle_set(lattice, options, result, reach), reach, result.threads);
     result.timings.setup = seconds_since(started);
 
     // Sum and difference forms need no densities: one sweep computes each pair's distance

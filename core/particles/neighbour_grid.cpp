@@ -1,17 +1,21 @@
 #include "particles/neighbour_grid.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace sphkern {
 
-NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach)
+NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
+    // A thread for every 32768 particles at most: on a small set, starting threads costs more than they save.
+    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 32768 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
 {
     if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
     if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
@@ -32,9 +36,21 @@ NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach)
             fail_input(fmt::format("{}: {} particles and their periodic images, more than this engine indexes",
                                    set.name, x_.size()));
     }
-    sort_into_bins(reach);
+    size_bins(reach);
+    sort_into_bins();
 }
 
+namespace {
+
+struct Ghosts {
+    std::vector<double> x, y, z;
+    std::vector<std::uint32_t> source;
+};
+
+} // namespace
+
+// Block by block of particles, each block's images in a list of its own, the lists appended
+// in block order: the same points in the same order on any thread count.
 void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
 {
     const int dim = set.dimension;
@@ -46,36 +62,55 @@ void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
     Eigen::Vector3d margin = Eigen::Vector3d::Zero();
     for (int a = 0; a < dim; ++a) margin[a] = reach * inverse.row(a).norm() * (1 + 1e-9);
     const int nz = dim == 3 ? 1 : 0;
-    for (std::size_t i = 0; i < particles_; ++i) {
-        const Eigen::Vector3d f = inverse * set.position(i);
-        // Most particles lie farther than the margin from every face: no image of theirs is near.
-        bool inner = true;
-        for (int d = 0; d < dim; ++d) inner = inner && f[d] >= margin[d] && f[d] < 1 - margin[d];
-        if (inner) continue;
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b)
-                for (int c = -nz; c <= nz; ++c) {
-                    if (a == 0 && b == 0 && c == 0) continue;
-                    const Eigen::Vector3d image = f + Eigen::Vector3d(a, b, c);
-                    bool near = true;
-                    for (int d = 0; d < dim; ++d) near = near && image[d] >= -margin[d] && image[d] < 1 + margin[d];
-                    if (!near) continue;
-                    const Eigen::Vector3d p = cell * image;
-                    x_.push_back(p.x()), y_.push_back(p.y()), z_.push_back(dim == 3 ? p.z() : 0.0);
-                    source_.push_back(static_cast<std::uint32_t>(i));
-                }
+    std::vector<Ghosts> blocks((particles_ + particle_block_size - 1) / particle_block_size);
+    ParallelFor pass;
+    pass.run_blocks(particles_, particle_block_size, threads_, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        Ghosts& g = blocks[block];
+        for (std::size_t i = begin; i < end; ++i) {
+            const Eigen::Vector3d f = inverse * set.position(i);
+            // Most particles lie farther than the margin from every face: no image of theirs is near.
+            bool inner = true;
+            for (int d = 0; d < dim; ++d) inner = inner && f[d] >= margin[d] && f[d] < 1 - margin[d];
+            if (inner) continue;
+            for (int a = -1; a <= 1; ++a)
+                for (int b = -1; b <= 1; ++b)
+                    for (int c = -nz; c <= nz; ++c) {
+                        if (a == 0 && b == 0 && c == 0) continue;
+                        const Eigen::Vector3d image = f + Eigen::Vector3d(a, b, c);
+                        bool near = true;
+                        for (int d = 0; d < dim; ++d) near = near && image[d] >= -margin[d] && image[d] < 1 + margin[d];
+                        if (!near) continue;
+                        const Eigen::Vector3d p = cell * image;
+                        g.x.push_back(p.x()), g.y.push_back(p.y()), g.z.push_back(dim == 3 ? p.z() : 0.0);
+                        g.source.push_back(static_cast<std::uint32_t>(i));
+                    }
+        }
+    });
+    for (const Ghosts& g : blocks) {
+        x_.insert(x_.end(), g.x.begin(), g.x.end()), y_.insert(y_.end(), g.y.begin(), g.y.end());
+        z_.insert(z_.end(), g.z.begin(), g.z.end()), source_.insert(source_.end(), g.source.begin(), g.source.end());
     }
 }
 
-void NeighbourGrid::sort_into_bins(double reach)
+void NeighbourGrid::size_bins(double reach)
 {
     const std::size_t count = x_.size();
     const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
+    // The extent along each axis: block minima and maxima, exact in any order.
+    std::vector<std::array<double, 6>> ranges((count + particle_block_size - 1) / particle_block_size);
+    ParallelFor pass;
+    pass.run_blocks(count, particle_block_size, threads_, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        for (int a = 0; a < 3; ++a) {
+            const auto [mn, mx] = std::minmax_element(coordinates[a] + begin, coordinates[a] + end);
+            ranges[block][2 * a] = *mn, ranges[block][2 * a + 1] = *mx;
+        }
+    });
     double extent[3];
     for (int a = 0; a < 3; ++a) {
-        const auto [mn, mx] = std::minmax_element(coordinates[a], coordinates[a] + count);
-        extent[a] = *mx - *mn;
-        lo_[a] = *mn;
+        double mn = INFINITY, mx = -INFINITY;
+        for (const auto& r : ranges) mn = std::min(mn, r[2 * a]), mx = std::max(mx, r[2 * a + 1]);
+        extent[a] = mx - mn;
+        lo_[a] = mn;
         // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
         // block of bins around a bin holds every neighbour (wider bins are never wrong).
         const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
@@ -90,48 +125,80 @@ void NeighbourGrid::sort_into_bins(double reach)
         widest = (widest + 1) / 2;
     }
     for (int a = 0; a < 3; ++a) scale_[a] = extent[a] > 0 ? static_cast<double>(n_[a]) / extent[a] : 0.0;
-    // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
-    // along x within each row: every step's counters stay in cache, where one pass over all
-    // the bins' counters (megabytes on a large set) missed it at every point.
-    const std::size_t rows = n_[1] * n_[2];
+}
+
+// A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
+// along x within each row: every step's counters stay in cache, where one pass over all the
+// bins' counters (megabytes on a large set) missed it at every point. A stable sort has one
+// result, so the threads' shares (contiguous runs of points, rows) do not change it.
+void NeighbourGrid::sort_into_bins()
+{
+    const std::size_t count = x_.size(), rows = n_[1] * n_[2];
+    // Each thread counts its run of points per row; fewer threads where the rows outnumber the points.
+    const int counting = static_cast<int>(std::clamp<std::size_t>(count / (rows + 1), 1, static_cast<std::size_t>(threads_)));
     std::vector<std::uint32_t> row(count), along(count);
+    std::vector<std::vector<std::uint64_t>> counts(static_cast<std::size_t>(counting));
+    ParallelFor count_rows;
+    count_rows.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
+        auto& c = counts[static_cast<std::size_t>(t)];
+        c.assign(rows, 0);
+        for (std::size_t p = begin; p < end; ++p) {
+            row[p] = static_cast<std::uint32_t>(bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p]));
+            along[p] = static_cast<std::uint32_t>(bin_along(0, x_[p]));
+            ++c[row[p]];
+        }
+    });
+    // Thread t's first place in row r: the row's start and the earlier threads' points in it.
     std::vector<std::uint64_t> row_start(rows + 1, 0);
-    for (std::size_t p = 0; p < count; ++p) {
-        row[p] = static_cast<std::uint32_t>(bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p]));
-        along[p] = static_cast<std::uint32_t>(bin_along(0, x_[p]));
-        ++row_start[row[p] + 1];
+    for (std::size_t r = 0, at = 0; r < rows; ++r) {
+        row_start[r] = at;
+        for (auto& c : counts) {
+            const std::uint64_t mine = c[r];
+            c[r] = at, at += mine;
+        }
     }
-    for (std::size_t r = 0; r < rows; ++r) row_start[r + 1] += row_start[r];
+    row_start[rows] = count;
     std::vector<std::uint32_t> by_row(count); // the points, row after row, each row in their order
-    {
-        std::vector<std::uint64_t> next(row_start.begin(), row_start.end() - 1);
-        for (std::size_t p = 0; p < count; ++p) by_row[next[row[p]]++] = static_cast<std::uint32_t>(p);
-    }
-    start_.assign(rows * n_[0] + 1, 0);
-    std::vector<std::uint64_t> where(count), fill(n_[0] + 1);
-    for (std::size_t r = 0; r < rows; ++r) {
-        std::fill(fill.begin(), fill.end(), 0);
-        for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[along[by_row[k]] + 1];
-        fill[0] = row_start[r];
-        for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
-        std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
-        for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) where[by_row[k]] = fill[along[by_row[k]]]++;
-    }
+    ParallelFor place;
+    place.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
+        auto& next = counts[static_cast<std::size_t>(t)];
+        for (std::size_t p = begin; p < end; ++p) by_row[next[row[p]]++] = static_cast<std::uint32_t>(p);
+    });
+    start_.resize(rows * n_[0] + 1);
+    std::vector<std::uint64_t> where(count);
+    ParallelFor within_rows;
+    within_rows.run(rows, threads_, [&](int, std::size_t first_row, std::size_t last_row) {
+        std::vector<std::uint64_t> fill(n_[0] + 1);
+        for (std::size_t r = first_row; r < last_row; ++r) {
+            std::fill(fill.begin(), fill.end(), 0);
+            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[along[by_row[k]] + 1];
+            fill[0] = row_start[r];
+            for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
+            std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
+            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) where[by_row[k]] = fill[along[by_row[k]]]++;
+        }
+    });
     start_.back() = count;
-    auto permute = [&](auto& values) {
-        std::remove_reference_t<decltype(values)> sorted(values.size());
-        for (std::size_t p = 0; p < count; ++p) sorted[where[p]] = values[p];
-        values.swap(sorted);
-    };
     ghost_.assign(count, 1);
     std::fill(ghost_.begin(), ghost_.begin() + static_cast<std::ptrdiff_t>(particles_), 0);
+    auto permute = [&](auto& values) {
+        std::remove_reference_t<decltype(values)> sorted(values.size());
+        ParallelFor move;
+        move.run(count, threads_, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t p = begin; p < end; ++p) sorted[where[p]] = values[p];
+        });
+        values.swap(sorted);
+    };
     permute(x_), permute(y_), permute(z_), permute(source_), permute(ghost_);
 }
 
 std::vector<double> NeighbourGrid::gather(const std::vector<double>& per_particle) const
 {
     std::vector<double> values(x_.size());
-    for (std::size_t p = 0; p < x_.size(); ++p) values[p] = per_particle[source_[p]];
+    ParallelFor pass;
+    pass.run(x_.size(), threads_, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) values[p] = per_particle[source_[p]];
+    });
     return values;
 }
 

@@ -31,7 +31,8 @@ public:
 
     // `reach`: the largest support radius of any particle. Throws Error(input) for a periodic
     // box narrower than twice the reach (a particle would see two images of one neighbour).
-    NeighbourGrid(const ParticleSet& set, double reach);
+    // Built on `threads` threads; the grid is the same on any number.
+    NeighbourGrid(const ParticleSet& set, double reach, int threads = 1);
 
     std::size_t points() const { return x_.size(); }  // particles and ghosts
     std::size_t particles() const { return particles_; }
@@ -42,6 +43,7 @@ public:
     const double* z() const { return z_.data(); }
     // A per-particle quantity in point order (ghosts carry their particle's value).
     std::vector<double> gather(const std::vector<double>& per_particle) const;
+    int threads() const { return threads_; }
 
     // Bins in sweep order; the points of bin b are [bin_begin(b), bin_begin(b + 1)).
     std::size_t bins() const { return start_.size() - 1; }
@@ -113,8 +115,10 @@ private:
         return std::max(0.0, std::abs(c - edge) - 1e-9 * reach);
     }
     void add_ghosts(const ParticleSet& set, double reach);
-    void sort_into_bins(double reach);
+    void size_bins(double reach);
+    void sort_into_bins();
 
+    int threads_ = 1;
     std::size_t particles_ = 0;
     std::vector<double> x_, y_, z_;
     std::vector<std::uint32_t> source_;

@@ -37,23 +37,23 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
 {
     ParticlePoint point;
     const std::size_t n = m.size();
-    std::vector<double> e1(n), m1(n), frobenius(n), neighbours(n);
+    FirstTouchVector<double> e1(n), m1(n), frobenius(n), neighbours(n);
     ParallelFor derive;
-    derive.run_blocks(n, std::size_t{1} << 16, m.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    derive.run_blocks(n, particle_block_size, m.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             e1[i] = std::hypot(m.e1[i][0], m.e1[i][1], m.e1[i][2]), m1[i] = std::hypot(m.m1[i][0], m.m1[i][1], m.m1[i][2]);
             frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
         }
     });
-    const std::pair<const char*, const std::vector<double>*> fields[] = {
-        {"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}};
-    const std::pair<const char*, const std::vector<double>*> summarised[] = {
-        fields[0], fields[1], fields[2], fields[3], {"|e1|", &e1}, {"|m1|", &m1}, {"||E||_F", &frobenius},
-        {"neighbours", &neighbours}};
+    const std::pair<const char*, std::span<const double>> fields[] = {
+        {"e0", m.e0}, {"eps_rho", m.eps_rho}, {"eps_gradp", m.eps_gradp}, {"eps_gradp_sum", m.eps_gradp_sum}};
+    const std::pair<const char*, std::span<const double>> summarised[] = {
+        fields[0], fields[1], fields[2], fields[3], {"|e1|", e1}, {"|m1|", m1}, {"||E||_F", frobenius},
+        {"neighbours", neighbours}};
     // Each summary on every thread: the same whatever the thread count.
-    for (const auto& [name, values] : summarised) point.statistics.emplace_back(name, summarise(*values, m.threads));
+    for (const auto& [name, values] : summarised) point.statistics.emplace_back(name, summarise(values, m.threads));
     if (bins)
-        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(*values, bins, m.threads));
+        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(values, bins, m.threads));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;

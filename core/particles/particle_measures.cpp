@@ -191,9 +191,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     const double h_max = *std::max_element(inputs.h.begin(), inputs.h.end());
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
     PhaseTimes phases;
-    const NeighbourGrid grid(set, kernel.support() * h_max);
+    ParticleMeasures out;
+    out.threads = worker_threads(inputs.threads);
+    const NeighbourGrid grid(set, kernel.support() * h_max, out.threads);
     std::vector<double> reach(inputs.h.size());
-    for (std::size_t i = 0; i < reach.size(); ++i) reach[i] = search_reach(kernel.support() * inputs.h[i]);
+    ParallelFor reaches;
+    reaches.run(reach.size(), grid.threads(), [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) reach[i] = search_reach(kernel.support() * inputs.h[i]);
+    });
     const Sweep sweep{kernel,
                       set,
                       inputs,
@@ -204,14 +209,12 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
                       grid.gather(inputs.h),
                       grid.gather(reach)};
 
-    ParticleMeasures out;
     phases.lap("grid");
     const std::size_t n = set.size();
     // Written in the particles' own order, random in memory on a disordered set.
     resize_on_huge_pages(out.e0, n), resize_on_huge_pages(out.eps_rho, n), resize_on_huge_pages(out.eps_gradp, n);
     resize_on_huge_pages(out.eps_gradp_sum, n), resize_on_huge_pages(out.e1, n), resize_on_huge_pages(out.m1, n);
     resize_on_huge_pages(out.E, n), resize_on_huge_pages(out.neighbours, n);
-    out.threads = inputs.threads > 0 ? inputs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread

@@ -6,6 +6,7 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
+#include "support/process/first_touch.hpp"
 #include "support/process/phase_times.hpp"
 
 #include <array>
@@ -25,11 +26,12 @@ struct MeasureInputs {
     int threads = 0;            // 0: every core
 };
 
+// Every array is written by the threads of the sums (first touch), one value per particle.
 struct ParticleMeasures {
-    std::vector<double> e0, eps_rho, eps_gradp, eps_gradp_sum;
-    std::vector<std::array<double, 3>> e1, m1;
-    std::vector<std::array<double, 6>> E; // xx, yy, zz, xy, xz, yz
-    std::vector<int> neighbours;          // j != i inside the support
+    FirstTouchVector<double> e0, eps_rho, eps_gradp, eps_gradp_sum;
+    FirstTouchVector<std::array<double, 3>> e1, m1;
+    FirstTouchVector<std::array<double, 6>> E; // xx, yy, zz, xy, xz, yz
+    FirstTouchVector<int> neighbours;          // j != i inside the support
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid

@@ -13,10 +13,6 @@ namespace sphkern {
 
 namespace {
 
-// Sums are taken over blocks of this size and the blocks' sums added in block order, so that
-// they do not depend on the thread count.
-constexpr std::size_t block_size = std::size_t{1} << 16;
-
 // An unsigned key in the order of the doubles (-0 just below +0): selecting by key is
 // selecting by value, and a key's top bits are a bucket of a histogram in that order.
 std::uint64_t order_key(double v)
@@ -33,12 +29,12 @@ double from_key(std::uint64_t key)
 // The values at the given ranks (0-based, ascending order), exactly: one parallel histogram of
 // the keys' top 16 bits finds each rank's bucket, and a selection among that bucket's values
 // (a small share of them unless the values crowd into one bucket) finds the rank within it.
-std::vector<double> order_statistics(const std::vector<double>& values, const std::vector<std::size_t>& ranks,
+std::vector<double> order_statistics(std::span<const double> values, const std::vector<std::size_t>& ranks,
                                      int threads)
 {
     constexpr int shift = 48;
     constexpr std::size_t buckets = std::size_t{1} << 16;
-    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / block_size + 1));
+    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / particle_block_size + 1));
     std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(threads));
     ParallelFor counting;
     counting.run(values.size(), threads, [&](int t, std::size_t begin, std::size_t end) {
@@ -96,14 +92,16 @@ struct BlockSums {
 
 } // namespace
 
-Summary summarise(const std::vector<double>& values, int threads)
+// Sums are taken over fixed blocks and the blocks' sums added in block order, so that they do
+// not depend on the thread count.
+Summary summarise(std::span<const double> values, int threads)
 {
     Summary s;
     const std::size_t count = values.size();
     const double n = static_cast<double>(count);
-    std::vector<BlockSums> blocks((count + block_size - 1) / block_size);
+    std::vector<BlockSums> blocks((count + particle_block_size - 1) / particle_block_size);
     ParallelFor pass;
-    pass.run_blocks(count, block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
+    pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
         BlockSums& sums = blocks[b];
         for (std::size_t i = begin; i < end; ++i) {
             const double v = values[i];
@@ -118,7 +116,7 @@ Summary summarise(const std::vector<double>& values, int threads)
     s.min = total.min, s.max = total.max;
     std::vector<double> deviations(blocks.size());
     ParallelFor second;
-    second.run_blocks(count, block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
+    second.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
         double d = 0;
         for (std::size_t i = begin; i < end; ++i) d += (values[i] - s.mean) * (values[i] - s.mean);
         deviations[b] = d;
@@ -140,13 +138,13 @@ Summary summarise(const std::vector<double>& values, int threads)
     return s;
 }
 
-Histogram histogram(const std::vector<double>& values, std::size_t bins, int threads)
+Histogram histogram(std::span<const double> values, std::size_t bins, int threads)
 {
     Histogram h;
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
     h.lo = *lo, h.hi = *hi;
     const double width = (h.hi - h.lo) / static_cast<double>(bins);
-    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / block_size + 1));
+    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / particle_block_size + 1));
     std::vector<std::vector<std::size_t>> counts(static_cast<std::size_t>(threads));
     ParallelFor pass;
     pass.run(values.size(), threads, [&](int t, std::size_t begin, std::size_t end) {

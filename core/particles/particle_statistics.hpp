@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace sphkern {
@@ -14,12 +15,12 @@ struct Summary {
 // std is the population standard deviation; percentiles interpolate linearly between
 // order statistics (numpy's default), which are exact. The same on any number of threads.
 // `values` must not be empty.
-Summary summarise(const std::vector<double>& values, int threads = 1);
+Summary summarise(std::span<const double> values, int threads = 1);
 
 struct Histogram {
     double lo = 0, hi = 0;
     std::vector<std::size_t> counts; // equal bins over [lo, hi], the last one closed
 };
-Histogram histogram(const std::vector<double>& values, std::size_t bins, int threads = 1);
+Histogram histogram(std::span<const double> values, std::size_t bins, int threads = 1);
 
 } // namespace sphkern

@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <span>
 
 namespace py = pybind11;
 
@@ -82,10 +83,10 @@ ParticleRequest request_of(ParticleSet& set, const Kernel& kernel, const py::obj
     return request;
 }
 
-py::array_t<double> column(const std::vector<double>& values) { return py::array_t<double>(values.size(), values.data()); }
+py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
 
 template <std::size_t N>
-py::array_t<double> rows(const std::vector<std::array<double, N>>& values, std::size_t width)
+py::array_t<double> rows(std::span<const std::array<double, N>> values, std::size_t width)
 {
     py::array_t<double> out({values.size(), width});
     auto view = out.mutable_unchecked<2>();
@@ -94,7 +95,7 @@ py::array_t<double> rows(const std::vector<std::array<double, N>>& values, std::
     return out;
 }
 
-py::array_t<double> tensors(const std::vector<std::array<double, 6>>& E, int dim)
+py::array_t<double> tensors(std::span<const std::array<double, 6>> E, int dim)
 {
     const std::size_t d = static_cast<std::size_t>(dim);
     py::array_t<double> out({E.size(), d, d});
@@ -139,8 +140,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             for (const auto& [name, values] :
                  {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
                 out[name] = column(*values);
-            out["e1"] = rows(m.e1, d);
-            out["m1"] = rows(m.m1, d);
+            out["e1"] = rows<3>(m.e1, d);
+            out["m1"] = rows<3>(m.m1, d);
             out["E"] = tensors(m.E, set.dimension);
             out["neighbours"] = py::array_t<int>(m.neighbours.size(), m.neighbours.data());
             return out;

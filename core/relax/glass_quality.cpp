@@ -19,7 +19,7 @@ template <class Visit>
 void visit_neighbours(const ParticleSet& set, double reach, int threads, int thread_slots, const Visit& visit)
 {
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
-    const NeighbourGrid grid(set, reach);
+    const NeighbourGrid grid(set, reach, threads);
     const std::vector<double> zeros(grid.points(), 0.0);
     const std::vector<double> reaches(grid.points(), reach);
     ParallelFor pass;

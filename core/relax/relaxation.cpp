@@ -1,5 +1,6 @@
 #include "relax/relaxation.hpp"
 
+#include "support/process/parallel_for.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 #include "support/process/progress.hpp"
@@ -10,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <thread>
 
 namespace sphkern {
 
@@ -128,7 +128,7 @@ RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const Re
     s.model.gamma = settings.gamma;
     s.model.k = h / d;
     s.model.pressure = settings.method == RelaxMethod::pressure;
-    s.model.threads = settings.threads > 0 ? settings.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    s.model.threads = worker_threads(settings.threads);
     s.set = std::move(set);
     // rho0: the mean SPH density of the start, where P / rho = c^2 / gamma (on a lattice, every particle's).
     ForceModel density_only = s.model;

@@ -80,7 +80,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const int dim = set.dimension;
     const std::size_t n = set.size();
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
-    const NeighbourGrid grid(set, reach);
+    const NeighbourGrid grid(set, reach, model.threads);
     const std::vector<double> none(grid.points(), 0.0);
     out.density.assign(n, 0.0);
     const double w0 = kernel.w(0, dim, model.k);

@@ -2,13 +2,13 @@
 
 #include "stability/dispersion.hpp"
 #include "stability/stability_json.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <thread>
 
 namespace sphkern {
 
@@ -64,7 +64,7 @@ void check_stability_request(const StabilityRequest& r, const StabilitySources& 
 nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& sources, const Kernel& kernel,
                              const Lattice& lattice)
 {
-    const int threads = r.threads > 0 ? r.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = worker_threads(r.threads);
     const int grid = r.grid.value_or(0);
     switch (stability_mode(r)) {
     case StabilityMode::path:

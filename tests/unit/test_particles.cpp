@@ -475,7 +475,7 @@ TEST_CASE("two particles at one position, and a box smaller than the support, ar
 TEST_CASE("statistics: percentiles interpolate between order statistics as numpy does")
 {
     // numpy.percentile([3, 1, 4, 1, 5, 9, 2, 6], [1, 50, 99]) = [1.0, 3.5, 8.79].
-    const auto s = summarise({3, 1, 4, 1, 5, 9, 2, 6});
+    const auto s = summarise(std::vector<double>{3, 1, 4, 1, 5, 9, 2, 6});
     CHECK(s.p1 == doctest::Approx(1.0).epsilon(1e-15));
     CHECK(s.p50 == doctest::Approx(3.5).epsilon(1e-15));
     CHECK(s.p99 == doctest::Approx(8.79).epsilon(1e-14));

@@ -13,7 +13,6 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
-#include <thread>
 
 namespace sphkern {
 
@@ -102,7 +101,7 @@ void run_stability_section(const Study& study, const StudyInputs& inputs, StudyR
     // One case per thread at a time, taken in turn: their costs differ by orders of magnitude.
     std::atomic<std::size_t> next{0};
     ParallelFor pool;
-    pool.run(cases.size(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+    pool.run(cases.size(), worker_threads(0),
              [&](int, std::size_t, std::size_t) {
                  for (std::size_t i; pool.keep_going() && (i = next++) < cases.size();) run_case(i);
              });

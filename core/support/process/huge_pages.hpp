@@ -26,9 +26,10 @@ inline void advise_huge_pages(const void* data, std::size_t bytes)
 }
 
 // v.resize(n), its storage first advised to use huge pages when it spans one at least.
-template <class T>
-void resize_on_huge_pages(std::vector<T>& v, std::size_t n)
+template <class Vector>
+void resize_on_huge_pages(Vector& v, std::size_t n)
 {
+    using T = typename Vector::value_type;
     v.reserve(n);
     if (n * sizeof(T) >= huge_page_bytes) advise_huge_pages(v.data(), n * sizeof(T));
     v.resize(n);
