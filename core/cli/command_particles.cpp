@@ -98,7 +98,7 @@ Action add_particles_command(Command app)
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         PhaseTimes phases;
-        const ParticleSet set = load_particles(source_of(o));
+        const ParticleSet set = load_particles(source_of(o), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));

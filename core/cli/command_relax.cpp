@@ -104,7 +104,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) check_particle_output_name(o.output);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
-        ParticleSet set = load_particles(source_of(o));
+        ParticleSet set = load_particles(source_of(o), o.settings.threads);
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(o, set, kernel);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);

@@ -1,11 +1,13 @@
 #include "particles/particle_set.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 namespace sphkern {
 
@@ -28,15 +30,34 @@ double PeriodicBox::smallest_width(int dimension) const
 
 namespace {
 
-void check_positive(const std::vector<double>& values, const ParticleSet& set, const char* field)
+// The first particle (lowest id) for which bad(i) holds, none if none: blocks are checked in
+// parallel, each up to its first bad particle, and the lowest block's is the answer, the same
+// on any thread count.
+template <class Bad>
+std::optional<std::size_t> first_where(std::size_t n, int threads, const Bad& bad)
+{
+    std::vector<std::size_t> first((n + particle_block_size - 1) / particle_block_size, n);
+    ParallelFor pass;
+    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (bad(i)) {
+                first[block] = i;
+                return;
+            }
+    });
+    for (std::size_t i : first)
+        if (i < n) return i;
+    return std::nullopt;
+}
+
+void check_positive(const std::vector<double>& values, const ParticleSet& set, const char* field, int threads)
 {
     if (values.empty()) return;
     if (values.size() != set.size())
         fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
-    for (std::size_t i = 0; i < values.size(); ++i)
-        if (!std::isfinite(values[i]) || values[i] <= 0)
-            fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, i,
-                                   values[i]));
+    if (const auto i = first_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
+        fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, *i,
+                               values[*i]));
 }
 
 } // namespace
@@ -45,47 +66,51 @@ double mean_volume(const ParticleSet& set) { return set.box->volume(set.dimensio
 
 double mean_spacing(const ParticleSet& set) { return std::pow(mean_volume(set), 1.0 / set.dimension); }
 
-void wrap_into_box(ParticleSet& set, WrapReach reach)
+void wrap_into_box(ParticleSet& set, WrapReach reach, int threads)
 {
     Eigen::Matrix3d cell = set.box->edges;
     if (set.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
     const Eigen::Matrix3d inverse = cell.inverse();
-    for (std::size_t i = 0; i < set.size(); ++i) {
+    // Wraps particle i; false for one more than one box outside (not a rounding matter: the box is wrong).
+    auto wrap = [&](std::size_t i) {
         Eigen::Vector3d f = inverse * set.position(i);
         bool moved = false;
         for (int a = 0; a < set.dimension; ++a) {
-            // A particle more than one box outside is not a rounding matter: the box is wrong.
-            if (reach == WrapReach::one_box && (f[a] < -1 || f[a] >= 2))
-                fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, i,
-                                       set.x[i], set.y[i], set.z[i]));
+            if (reach == WrapReach::one_box && (f[a] < -1 || f[a] >= 2)) return false;
             if (f[a] < 0 || f[a] >= 1) f[a] -= std::floor(f[a]), moved = true;
         }
-        if (!moved) continue;
+        if (!moved) return true;
         const Eigen::Vector3d p = cell * f;
         set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = set.dimension == 2 ? 0.0 : p.z();
-    }
+        return true;
+    };
+    if (const auto i = first_where(set.size(), threads, [&](std::size_t i) { return !wrap(i); }))
+        fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, *i,
+                               set.x[*i], set.y[*i], set.z[*i]));
 }
 
-void validate_particle_set(ParticleSet& set)
+void validate_particle_set(ParticleSet& set, int threads)
 {
     if (set.dimension != 2 && set.dimension != 3)
         fail_input(fmt::format("{}: particles in {} dimensions; expected 2 or 3", set.name, set.dimension));
     if (set.size() < 2) fail_input(fmt::format("{}: {} particles; expected at least 2", set.name, set.size()));
     if (set.y.size() != set.size() || set.z.size() != set.size())
         fail_input(fmt::format("{}: the coordinate arrays differ in length", set.name));
-    for (std::size_t i = 0; i < set.size(); ++i)
-        if (!std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]))
-            fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, i, set.x[i],
-                                   set.y[i], set.z[i]));
-    check_positive(set.h, set, "the smoothing length");
-    check_positive(set.mass, set, "the mass");
-    check_positive(set.density, set, "the density");
+    const auto not_finite = [&](std::size_t i) {
+        return !std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]);
+    };
+    if (const auto i = first_where(set.size(), threads, not_finite))
+        fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, *i, set.x[*i],
+                               set.y[*i], set.z[*i]));
+    check_positive(set.h, set, "the smoothing length", threads);
+    check_positive(set.mass, set, "the mass", threads);
+    check_positive(set.density, set, "the density", threads);
     if (set.box) {
         const double volume = set.box->volume(set.dimension);
         if (!std::isfinite(volume) || volume <= 0)
             fail_input(fmt::format("{}: the periodic box has no volume; expected {} independent edges", set.name,
                                    set.dimension));
-        wrap_into_box(set);
+        wrap_into_box(set, WrapReach::one_box, threads);
     }
 }
 

@@ -41,8 +41,8 @@ struct ParticleSet {
 
 // Checks what every source must give: D, at least two particles, finite coordinates inside
 // the box (wrapped into it), positive finite h, masses and densities. Throws Error(input)
-// naming the set, the field and the particle id.
-void validate_particle_set(ParticleSet& set);
+// naming the set, the field and the particle id (the lowest one, on any number of threads).
+void validate_particle_set(ParticleSet& set, int threads = 1);
 
 // The box shared out equally, V = box / N, and its D-th root l = V^(1/D), the mean spacing
 // (a set with a box).
@@ -53,6 +53,6 @@ double mean_spacing(const ParticleSet& set);
 // a particle more than one box outside: in a file that is a wrong box, not rounding. A set
 // sphkern displaces itself (a disturbed lattice block) is periodic by construction: `any_distance`.
 enum class WrapReach { one_box, any_distance };
-void wrap_into_box(ParticleSet& set, WrapReach reach = WrapReach::one_box);
+void wrap_into_box(ParticleSet& set, WrapReach reach = WrapReach::one_box, int threads = 1);
 
 } // namespace sphkern

@@ -12,10 +12,12 @@
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_real_distribution.hpp>
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -320,6 +322,49 @@ TEST_CASE("statistics over several blocks: exact percentiles, and the same bits 
             CHECK(histogram(*values, 17, threads).counts == bins.counts);
         }
     }
+}
+
+TEST_CASE("sources, validation and the neighbour grid are the same on 1, 2 and 7 threads")
+{
+    // Over seven blocks of particles, so that seven threads each have one at least.
+    PoissonSpec poisson;
+    poisson.dimension = 3, poisson.count = 7 * particle_block_size + 123, poisson.seed = 4;
+    const auto one = poisson_particles(poisson, plenty, 1);
+    LatticeBlockSpec block;
+    block.cells = {80, 80, 80}, block.sigma = 0.4, block.seed = 3;
+    const auto lattice = load_lattice("fcc");
+    const auto disturbed = lattice_particles(lattice, block, plenty, 1);
+    REQUIRE(disturbed.size() > 7 * particle_block_size);
+    const NeighbourGrid grid(one, 0.03, 1);
+    for (int threads : {2, 7}) {
+        CAPTURE(threads);
+        const auto other = poisson_particles(poisson, plenty, threads);
+        CHECK(other.x == one.x);
+        CHECK(other.y == one.y);
+        CHECK(other.z == one.z);
+        const auto moved = lattice_particles(lattice, block, plenty, threads);
+        CHECK(moved.x == disturbed.x);
+        CHECK(moved.z == disturbed.z);
+        const NeighbourGrid built(one, 0.03, threads);
+        REQUIRE(built.points() == grid.points());
+        REQUIRE(built.bins() == grid.bins());
+        bool same = true;
+        for (std::size_t p = 0; p < grid.points(); ++p)
+            same = same && built.source(p) == grid.source(p) && built.x()[p] == grid.x()[p] && built.z()[p] == grid.z()[p];
+        for (std::size_t b = 0; b <= grid.bins(); ++b) same = same && built.bin_begin(b) == grid.bin_begin(b);
+        CHECK(same);
+    }
+    // The grid holds each particle once and each bin's points inside it, sorted by bin.
+    std::vector<int> seen(one.size(), 0);
+    for (std::size_t p = 0; p < grid.points(); ++p)
+        if (!grid.is_ghost(p)) ++seen[grid.source(p)];
+    CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+    // Two bad particles in different blocks: the lowest id is named on any thread count.
+    auto bad = one;
+    bad.y[6 * particle_block_size + 5] = NAN, bad.y[2 * particle_block_size + 9] = INFINITY;
+    const std::string named = fmt::format("particle {} has a non-finite", 2 * particle_block_size + 9);
+    for (int threads : {1, 7})
+        CHECK_THROWS_WITH_AS(validate_particle_set(bad, threads), doctest::Contains(named.c_str()), Error);
 }
 
 TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend on the thread count")

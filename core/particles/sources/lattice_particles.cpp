@@ -1,8 +1,9 @@
 #include "particles/sources/lattice_particles.hpp"
 
 #include "support/error.hpp"
+#include "support/process/block_random.hpp"
+#include "support/process/parallel_for.hpp"
 
-#include <boost/random/mersenne_twister.hpp>
 #include <boost/random/normal_distribution.hpp>
 #include <fmt/format.h>
 
@@ -10,7 +11,7 @@
 
 namespace sphkern {
 
-ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles)
+ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles, int threads)
 {
     const int dim = lattice.dimension;
     double count = lattice.sites();
@@ -35,30 +36,32 @@ ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& sp
     for (int a = 0; a < 3; ++a)
         box.edges.col(a) = lattice.basis.col(a) * static_cast<double>(a < dim ? spec.cells[static_cast<std::size_t>(a)] : 1);
     set.box = box;
-    const std::size_t n = static_cast<std::size_t>(count);
-    set.x.reserve(n), set.y.reserve(n), set.z.reserve(n);
-    const long long n3 = dim == 3 ? spec.cells[2] : 1;
-    for (long long c3 = 0; c3 < n3; ++c3)
-        for (long long c2 = 0; c2 < spec.cells[1]; ++c2)
-            for (long long c1 = 0; c1 < spec.cells[0]; ++c1)
-                for (const auto& site : lattice.motif) {
-                    const Eigen::Vector3d f(static_cast<double>(c1) + site.x(), static_cast<double>(c2) + site.y(),
-                                            dim == 3 ? static_cast<double>(c3) + site.z() : 0.0);
-                    const Eigen::Vector3d p = lattice.basis * f;
-                    set.x.push_back(p.x()), set.y.push_back(p.y()), set.z.push_back(dim == 3 ? p.z() : 0.0);
-                }
-    if (spec.sigma > 0) {
-        // Boost's generator and distribution: the same numbers on every platform, drawn in id order.
-        boost::random::mt19937_64 engine(spec.seed);
-        boost::random::normal_distribution<double> normal(0.0, spec.sigma);
-        for (std::size_t i = 0; i < n; ++i) {
-            set.x[i] += normal(engine);
-            set.y[i] += normal(engine);
-            if (dim == 3) set.z[i] += normal(engine);
+    const std::size_t n = static_cast<std::size_t>(count), sites = lattice.motif.size();
+    const auto n1 = static_cast<std::size_t>(spec.cells[0]), n2 = static_cast<std::size_t>(spec.cells[1]);
+    set.x.resize(n), set.y.resize(n), set.z.resize(n);
+    // Particle i is site i % sites of cell i / sites, cells numbered along the first axis first.
+    // A disturbance is drawn block by block, one stream per block (Boost's generator and
+    // distribution: the same numbers on every platform and thread count).
+    ParallelFor place;
+    place.run_blocks(n, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        auto engine = block_stream(spec.seed, block);
+        boost::random::normal_distribution<double> normal(0.0, spec.sigma > 0 ? spec.sigma : 1.0);
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::size_t cell = i / sites;
+            const Eigen::Vector3d& site = lattice.motif[i % sites];
+            const Eigen::Vector3d f(static_cast<double>(cell % n1) + site.x(), static_cast<double>(cell / n1 % n2) + site.y(),
+                                    dim == 3 ? static_cast<double>(cell / (n1 * n2)) + site.z() : 0.0);
+            Eigen::Vector3d p = lattice.basis * f;
+            if (spec.sigma > 0) {
+                p.x() += normal(engine), p.y() += normal(engine);
+                if (dim == 3) p.z() += normal(engine);
+            }
+            set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = dim == 3 ? p.z() : 0.0;
         }
-        wrap_into_box(set, WrapReach::any_distance); // a displacement of several blocks is still periodic
-    }
-    validate_particle_set(set);
+    });
+    // A displacement of several blocks is still periodic.
+    if (spec.sigma > 0) wrap_into_box(set, WrapReach::any_distance, threads);
+    validate_particle_set(set, threads);
     return set;
 }
 

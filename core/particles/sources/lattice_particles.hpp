@@ -16,8 +16,10 @@ struct LatticeBlockSpec {
     std::uint64_t seed = 1;
 };
 
-// Particles in cell-major order: id = ((c3 * N2 + c2) * N1 + c1) * sites + s.
-// Throws Error(input) for a size that is not positive or over `max_particles`.
-ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles);
+// Particles in cell-major order: id = ((c3 * N2 + c2) * N1 + c1) * sites + s, placed (and
+// disturbed) on `threads` threads; the set does not depend on the number. Throws Error(input)
+// for a size that is not positive or over `max_particles`.
+ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles,
+                              int threads = 1);
 
 } // namespace sphkern

@@ -3,6 +3,7 @@
 #include "lattices/lattice.hpp"
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 
@@ -17,11 +18,12 @@ SourceKind source_kind(const std::string& spec)
     return path && !spec.ends_with(".json") ? SourceKind::file : SourceKind::lattice;
 }
 
-ParticleSet load_particles(const ParticleSource& source)
+ParticleSet load_particles(const ParticleSource& source, int threads)
 {
+    threads = worker_threads(threads);
     switch (source.kind) {
-    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, max_particles());
-    case SourceKind::poisson: return poisson_particles(source.poisson, max_particles());
+    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, max_particles(), threads);
+    case SourceKind::poisson: return poisson_particles(source.poisson, max_particles(), threads);
     case SourceKind::file: break;
     }
     ParticleFileOptions options = source.file;
@@ -36,7 +38,7 @@ ParticleSet load_particles(const ParticleSource& source)
         }
         set.box = box;
     }
-    validate_particle_set(set);
+    validate_particle_set(set, threads);
     return set;
 }
 

@@ -26,7 +26,8 @@ struct ParticleSource {
 // "poisson", a particle file (by extension or content), else a lattice name or file.
 SourceKind source_kind(const std::string& spec);
 
-// Loads and validates the set; every limit comes from the memory budget.
-ParticleSet load_particles(const ParticleSource& source);
+// Loads (generates) and validates the set on `threads` threads (0: every core); the set does
+// not depend on the number. Every limit comes from the memory budget.
+ParticleSet load_particles(const ParticleSource& source, int threads = 0);
 
 } // namespace sphkern

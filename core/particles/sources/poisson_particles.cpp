@@ -1,8 +1,9 @@
 #include "particles/sources/poisson_particles.hpp"
 
 #include "support/error.hpp"
+#include "support/process/block_random.hpp"
+#include "support/process/parallel_for.hpp"
 
-#include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_real_distribution.hpp>
 #include <fmt/format.h>
 
@@ -10,7 +11,7 @@
 
 namespace sphkern {
 
-ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles)
+ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles, int threads)
 {
     if (spec.dimension != 2 && spec.dimension != 3) fail_input(fmt::format("--dim {}: expected 2 or 3", spec.dimension));
     if (spec.count < 2 || spec.count > max_particles)
@@ -26,15 +27,18 @@ ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles
     PeriodicBox box;
     box.edges = Eigen::Vector3d(spec.box.x(), spec.box.y(), spec.dimension == 3 ? spec.box.z() : 1.0).asDiagonal();
     set.box = box;
-    boost::random::mt19937_64 engine(spec.seed);
-    boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
-    set.x.resize(spec.count), set.y.resize(spec.count), set.z.assign(spec.count, 0.0);
-    for (std::size_t i = 0; i < spec.count; ++i) {
-        set.x[i] = unit(engine) * spec.box.x();
-        set.y[i] = unit(engine) * spec.box.y();
-        if (spec.dimension == 3) set.z[i] = unit(engine) * spec.box.z();
-    }
-    validate_particle_set(set);
+    set.x.resize(spec.count), set.y.resize(spec.count), set.z.resize(spec.count);
+    ParallelFor draw;
+    draw.run_blocks(spec.count, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        auto engine = block_stream(spec.seed, block);
+        boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (std::size_t i = begin; i < end; ++i) {
+            set.x[i] = unit(engine) * spec.box.x();
+            set.y[i] = unit(engine) * spec.box.y();
+            set.z[i] = spec.dimension == 3 ? unit(engine) * spec.box.z() : 0.0;
+        }
+    });
+    validate_particle_set(set, threads);
     return set;
 }
 

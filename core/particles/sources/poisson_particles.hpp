@@ -14,7 +14,9 @@ struct PoissonSpec {
     std::uint64_t seed = 1;
 };
 
-// Throws Error(input) for a count below 2 or over `max_particles`, or a box side that is not positive.
-ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles);
+// Drawn block by block of particles, one random stream per block: the same set on any number
+// of threads. Throws Error(input) for a count below 2 or over `max_particles`, or a box side
+// that is not positive.
+ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles, int threads = 1);
 
 } // namespace sphkern
