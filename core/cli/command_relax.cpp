@@ -8,6 +8,7 @@
 #include "particles/poisson_reference.hpp"
 #include "relax/relax_report.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/results_output.hpp"
 
@@ -80,7 +81,7 @@ RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOption
     request.volume = VolumeModel::uniform;
     request.threads = o.settings.threads;
     judged.measures = analyse_particles(kernel, set, request);
-    judged.quality = glass_quality(set, o.rdf_max, o.rdf_bins, o.settings.threads > 0 ? o.settings.threads : 2);
+    judged.quality = glass_quality(set, o.rdf_max, o.rdf_bins, worker_threads(o.settings.threads));
     judged.poisson_rms_e0 = poisson_rms_e0(kernel, set.dimension, run.h / run.spacing, judged.eta, set.size());
     return judged;
 }

@@ -30,32 +30,12 @@ double PeriodicBox::smallest_width(int dimension) const
 
 namespace {
 
-// The first particle (lowest id) for which bad(i) holds, none if none: blocks are checked in
-// parallel, each up to its first bad particle, and the lowest block's is the answer, the same
-// on any thread count.
-template <class Bad>
-std::optional<std::size_t> first_where(std::size_t n, int threads, const Bad& bad)
-{
-    std::vector<std::size_t> first((n + particle_block_size - 1) / particle_block_size, n);
-    ParallelFor pass;
-    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-            if (bad(i)) {
-                first[block] = i;
-                return;
-            }
-    });
-    for (std::size_t i : first)
-        if (i < n) return i;
-    return std::nullopt;
-}
-
 void check_positive(const std::vector<double>& values, const ParticleSet& set, const char* field, int threads)
 {
     if (values.empty()) return;
     if (values.size() != set.size())
         fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
-    if (const auto i = first_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
+    if (const auto i = first_index_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
         fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, *i,
                                values[*i]));
 }
@@ -84,7 +64,7 @@ void wrap_into_box(ParticleSet& set, WrapReach reach, int threads)
         set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = set.dimension == 2 ? 0.0 : p.z();
         return true;
     };
-    if (const auto i = first_where(set.size(), threads, [&](std::size_t i) { return !wrap(i); }))
+    if (const auto i = first_index_where(set.size(), threads, [&](std::size_t i) { return !wrap(i); }))
         fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, *i,
                                set.x[*i], set.y[*i], set.z[*i]));
 }
@@ -99,7 +79,7 @@ void validate_particle_set(ParticleSet& set, int threads)
     const auto not_finite = [&](std::size_t i) {
         return !std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]);
     };
-    if (const auto i = first_where(set.size(), threads, not_finite))
+    if (const auto i = first_index_where(set.size(), threads, not_finite))
         fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, *i, set.x[*i],
                                set.y[*i], set.z[*i]));
     check_positive(set.h, set, "the smoothing length", threads);

@@ -22,17 +22,18 @@ double length_unit(const ParticleSet& set)
 
 namespace {
 
-// RMS e0 and |e1| of the sums just computed.
+// RMS e0 and |e1| of the sums just computed (block sums: the same on any thread count).
 void record_errors(const RelaxState& s, RelaxStep& step)
 {
     const std::size_t n = s.set.size();
-    double e0 = 0, e1 = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double d = s.forces.density[i] / s.model.mass * s.model.volume - 1;
-        e0 += d * d;
-        e1 += (s.forces.gx[i] * s.forces.gx[i] + s.forces.gy[i] * s.forces.gy[i] + s.forces.gz[i] * s.forces.gz[i]) *
-              s.model.h * s.model.h;
-    }
+    const auto& f = s.forces;
+    const double e0 = parallel_sum(n, s.model.threads, [&](std::size_t i) {
+        const double d = f.density[i] / s.model.mass * s.model.volume - 1;
+        return d * d;
+    });
+    const double e1 = parallel_sum(n, s.model.threads, [&](std::size_t i) {
+        return (f.gx[i] * f.gx[i] + f.gy[i] * f.gy[i] + f.gz[i] * f.gz[i]) * s.model.h * s.model.h;
+    });
     step.rms_e0 = std::sqrt(e0 / static_cast<double>(n));
     step.rms_e1 = std::sqrt(e1 / static_cast<double>(n));
 }
@@ -46,14 +47,34 @@ double move(RelaxState& s, std::size_t i, double dx, double dy, double dz)
     return dx * dx + dy * dy + (s.set.dimension == 3 ? dz * dz : 0.0);
 }
 
+// The sum and the largest of the squared moves of a step.
+struct Moves {
+    double sum2 = 0, max2 = 0;
+};
+
+// Moves every particle by move_of(i) (an Eigen::Vector3d), in parallel.
+template <class MoveOf>
+Moves move_all(RelaxState& s, const MoveOf& move_of)
+{
+    return parallel_reduce(
+        s.set.size(), s.model.threads, Moves{},
+        [&](std::size_t i, Moves& m) {
+            const Eigen::Vector3d d = move_of(i);
+            const double m2 = move(s, i, d.x(), d.y(), d.z());
+            m.sum2 += m2, m.max2 = std::max(m.max2, m2);
+        },
+        [](Moves& total, const Moves& block) { total.sum2 += block.sum2, total.max2 = std::max(total.max2, block.max2); });
+}
+
 // False when the integration diverges: a move that is not finite, or longer than a quarter of
 // the box in one step, is no relaxation (and would be taken for a particle outside the box).
-bool finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
+bool finish_moves(RelaxState& s, RelaxStep& step, const Moves& moves)
 {
-    step.rms_move = std::sqrt(sum2 / static_cast<double>(s.set.size())) / s.model.h;
-    step.max_move = std::sqrt(max2) / s.model.h;
-    if (!std::isfinite(sum2) || !(std::sqrt(max2) <= s.set.box->smallest_width(s.set.dimension) / 4)) return false;
-    wrap_into_box(s.set);
+    step.rms_move = std::sqrt(moves.sum2 / static_cast<double>(s.set.size())) / s.model.h;
+    step.max_move = std::sqrt(moves.max2) / s.model.h;
+    if (!std::isfinite(moves.sum2) || !(std::sqrt(moves.max2) <= s.set.box->smallest_width(s.set.dimension) / 4))
+        return false;
+    wrap_into_box(s.set, WrapReach::one_box, s.model.threads);
     return true;
 }
 
@@ -72,11 +93,14 @@ bool finish_moves(RelaxState& s, RelaxStep& step, double sum2, double max2)
 void kick(RelaxState& s, double half_dt, double damping_factor)
 {
     const bool three = s.set.dimension == 3;
-    for (std::size_t i = 0; i < s.set.size(); ++i) {
-        s.vx[i] = s.vx[i] * damping_factor + s.forces.ax[i] * half_dt;
-        s.vy[i] = s.vy[i] * damping_factor + s.forces.ay[i] * half_dt;
-        s.vz[i] = three ? s.vz[i] * damping_factor + s.forces.az[i] * half_dt : 0.0;
-    }
+    ParallelFor pass;
+    pass.run_blocks(s.set.size(), particle_block_size, s.model.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            s.vx[i] = s.vx[i] * damping_factor + s.forces.ax[i] * half_dt;
+            s.vy[i] = s.vy[i] * damping_factor + s.forces.ay[i] * half_dt;
+            s.vz[i] = three ? s.vz[i] * damping_factor + s.forces.az[i] * half_dt : 0.0;
+        }
+    });
 }
 
 // False when the integration diverges (finish_moves).
@@ -84,16 +108,13 @@ bool pressure_step(const Kernel& kernel, RelaxState& s, double dt, double dampin
 {
     const double factor = std::exp(-damping * dt / 2);
     kick(s, dt / 2, factor);
-    double sum2 = 0, max2 = 0;
-    for (std::size_t i = 0; i < s.set.size(); ++i) {
-        const double m2 = move(s, i, s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt);
-        sum2 += m2, max2 = std::max(max2, m2);
-    }
-    if (!finish_moves(s, step, sum2, max2)) return false;
+    const Moves moves = move_all(s, [&](std::size_t i) { return Eigen::Vector3d(s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt); });
+    if (!finish_moves(s, step, moves)) return false;
     compute_forces(kernel, s.set, s.model, s.forces);
     kick(s, dt / 2, factor);
-    double kinetic = 0;
-    for (std::size_t i = 0; i < s.set.size(); ++i) kinetic += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+    const double kinetic = parallel_sum(s.set.size(), s.model.threads, [&](std::size_t i) {
+        return s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+    });
     step.kinetic = kinetic / 2 / static_cast<double>(s.set.size()) / (s.model.c * s.model.c);
     return true;
 }
@@ -102,16 +123,13 @@ bool pressure_step(const Kernel& kernel, RelaxState& s, double dt, double dampin
 bool shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settings, RelaxStep& step)
 {
     const double h = s.model.h, limit = settings.max_move * h;
-    double sum2 = 0, max2 = 0;
-    for (std::size_t i = 0; i < s.set.size(); ++i) {
-        double dx = -settings.alpha * h * h * s.forces.gx[i], dy = -settings.alpha * h * h * s.forces.gy[i],
-               dz = -settings.alpha * h * h * s.forces.gz[i];
-        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-        if (length > limit) dx *= limit / length, dy *= limit / length, dz *= limit / length;
-        const double m2 = move(s, i, dx, dy, dz);
-        sum2 += m2, max2 = std::max(max2, m2);
-    }
-    if (!finish_moves(s, step, sum2, max2)) return false;
+    const Moves moves = move_all(s, [&](std::size_t i) {
+        Eigen::Vector3d d = -settings.alpha * h * h * Eigen::Vector3d(s.forces.gx[i], s.forces.gy[i], s.forces.gz[i]);
+        const double length = d.norm();
+        if (length > limit) d *= limit / length;
+        return d;
+    });
+    if (!finish_moves(s, step, moves)) return false;
     compute_forces(kernel, s.set, s.model, s.forces);
     return true;
 }
@@ -134,8 +152,7 @@ RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const Re
     ForceModel density_only = s.model;
     density_only.pressure = false;
     compute_forces(kernel, s.set, density_only, s.forces);
-    double total = 0;
-    for (double rho : s.forces.density) total += rho;
+    const double total = parallel_sum(n, s.model.threads, [&](std::size_t i) { return s.forces.density[i]; });
     s.model.rho0 = total / static_cast<double>(n);
     if (s.model.pressure) compute_forces(kernel, s.set, s.model, s.forces);
     for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ux, &s.uy, &s.uz}) v->assign(n, 0.0);

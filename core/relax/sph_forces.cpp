@@ -95,15 +95,15 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     });
     // pi_j = P_j / rho_j^2 in point order, for the force.
     std::vector<double> pi(n, 0.0);
+    // The equation of state, not the kernel: (rho / rho0)^gamma past a double.
     if (model.pressure)
-        for (std::size_t i = 0; i < n; ++i) {
-            pi[i] = out.pressure(out.density[i], model) / (out.density[i] * out.density[i]);
-            // The equation of state, not the kernel: (rho / rho0)^gamma past a double.
-            if (!std::isfinite(pi[i]))
-                fail_input(fmt::format("{}: the pressure of particle {} overflows a double (rho / rho0 = {:.4g}, gamma = "
-                                       "{:g}); expected a gamma nearer 1 or a smaller time step",
-                                       set.name, i, out.density[i] / model.rho0, model.gamma));
-        }
+        if (const auto i = first_index_where(n, model.threads, [&](std::size_t i) {
+                pi[i] = out.pressure(out.density[i], model) / (out.density[i] * out.density[i]);
+                return !std::isfinite(pi[i]);
+            }))
+            fail_input(fmt::format("{}: the pressure of particle {} overflows a double (rho / rho0 = {:.4g}, gamma = "
+                                   "{:g}); expected a gamma nearer 1 or a smaller time step",
+                                   set.name, *i, out.density[*i] / model.rho0, model.gamma));
     const std::vector<double> pi_points = grid.gather(pi);
     for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);

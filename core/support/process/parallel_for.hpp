@@ -11,6 +11,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -90,5 +91,48 @@ private:
     std::mutex mutex_;
     std::exception_ptr first_error_;
 };
+
+// A reduction over [0, n) on `threads` threads with the same bits on any number: add(i, acc)
+// adds item i to a block's accumulator (blocks of particle_block_size, each starting from
+// `zero`), and merge(total, block) folds the blocks in block order.
+template <class Accumulator, class Add, class Merge>
+Accumulator parallel_reduce(std::size_t n, int threads, const Accumulator& zero, const Add& add, const Merge& merge)
+{
+    std::vector<Accumulator> blocks((n + particle_block_size - 1) / particle_block_size, zero);
+    ParallelFor pass;
+    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) add(i, blocks[b]);
+    });
+    Accumulator total = zero;
+    for (const auto& b : blocks) merge(total, b);
+    return total;
+}
+
+// The sum of term(i) over [0, n), in blocks: the same bits on any thread count.
+template <class Term>
+double parallel_sum(std::size_t n, int threads, const Term& term)
+{
+    return parallel_reduce(n, threads, 0.0, [&](std::size_t i, double& sum) { sum += term(i); },
+                           [](double& total, double block) { total += block; });
+}
+
+// The first i in [0, n) (the lowest) for which bad(i) holds, none if none: blocks are checked
+// in parallel, each up to its first bad item, so the answer is the same on any thread count.
+template <class Bad>
+std::optional<std::size_t> first_index_where(std::size_t n, int threads, const Bad& bad)
+{
+    std::vector<std::size_t> first((n + particle_block_size - 1) / particle_block_size, n);
+    ParallelFor pass;
+    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (bad(i)) {
+                first[block] = i;
+                return;
+            }
+    });
+    for (std::size_t i : first)
+        if (i < n) return i;
+    return std::nullopt;
+}
 
 } // namespace sphkern
