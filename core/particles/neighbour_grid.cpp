@@ -96,19 +96,21 @@ void NeighbourGrid::size_bins(double reach)
 {
     const std::size_t count = x_.size();
     const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
-    // The extent along each axis: block minima and maxima, exact in any order.
-    std::vector<std::array<double, 6>> ranges((count + particle_block_size - 1) / particle_block_size);
-    ParallelFor pass;
-    pass.run_blocks(count, particle_block_size, threads_, [&](std::size_t block, std::size_t begin, std::size_t end) {
-        for (int a = 0; a < 3; ++a) {
-            const auto [mn, mx] = std::minmax_element(coordinates[a] + begin, coordinates[a] + end);
-            ranges[block][2 * a] = *mn, ranges[block][2 * a + 1] = *mx;
-        }
-    });
+    // The extent along each axis: minima and maxima, exact in any order.
+    using Range = std::array<double, 6>; // min and max along x, y, z
+    const Range none = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
+    const Range range = parallel_reduce(
+        count, threads_, none,
+        [&](std::size_t p, Range& r) {
+            for (int a = 0; a < 3; ++a)
+                r[2 * a] = std::min(r[2 * a], coordinates[a][p]), r[2 * a + 1] = std::max(r[2 * a + 1], coordinates[a][p]);
+        },
+        [](Range& r, const Range& block) {
+            for (int a = 0; a < 3; ++a) r[2 * a] = std::min(r[2 * a], block[2 * a]), r[2 * a + 1] = std::max(r[2 * a + 1], block[2 * a + 1]);
+        });
     double extent[3];
     for (int a = 0; a < 3; ++a) {
-        double mn = INFINITY, mx = -INFINITY;
-        for (const auto& r : ranges) mn = std::min(mn, r[2 * a]), mx = std::max(mx, r[2 * a + 1]);
+        const double mn = range[2 * a], mx = range[2 * a + 1];
         extent[a] = mx - mn;
         lo_[a] = mn;
         // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the

@@ -86,43 +86,30 @@ double interpolate(double p, std::size_t n, double below, double above)
     return below + (rank - std::floor(rank)) * (above - below);
 }
 
-struct BlockSums {
+struct Sums {
     double sum = 0, squares = 0, min = std::numeric_limits<double>::infinity(), max = -min;
 };
 
 } // namespace
 
-// Sums are taken over fixed blocks and the blocks' sums added in block order, so that they do
-// not depend on the thread count.
+// Sums are taken over fixed blocks and the blocks' sums added in block order (parallel_reduce),
+// so that they do not depend on the thread count.
 Summary summarise(std::span<const double> values, int threads)
 {
     Summary s;
     const std::size_t count = values.size();
     const double n = static_cast<double>(count);
-    std::vector<BlockSums> blocks((count + particle_block_size - 1) / particle_block_size);
-    ParallelFor pass;
-    pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        BlockSums& sums = blocks[b];
-        for (std::size_t i = begin; i < end; ++i) {
+    const Sums total = parallel_reduce(
+        count, threads, Sums{},
+        [&](std::size_t i, Sums& a) {
             const double v = values[i];
-            sums.sum += v, sums.squares += v * v, sums.min = std::min(sums.min, v), sums.max = std::max(sums.max, v);
-        }
-    });
-    BlockSums total;
-    for (const auto& b : blocks)
-        total.sum += b.sum, total.squares += b.squares, total.min = std::min(total.min, b.min), total.max = std::max(total.max, b.max);
+            a.sum += v, a.squares += v * v, a.min = std::min(a.min, v), a.max = std::max(a.max, v);
+        },
+        [](Sums& a, const Sums& b) { a.sum += b.sum, a.squares += b.squares, a.min = std::min(a.min, b.min), a.max = std::max(a.max, b.max); });
     s.mean = total.sum / n;
     s.rms = std::sqrt(total.squares / n);
     s.min = total.min, s.max = total.max;
-    std::vector<double> deviations(blocks.size());
-    ParallelFor second;
-    second.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        double d = 0;
-        for (std::size_t i = begin; i < end; ++i) d += (values[i] - s.mean) * (values[i] - s.mean);
-        deviations[b] = d;
-    });
-    double deviation = 0;
-    for (double d : deviations) deviation += d;
+    const double deviation = parallel_sum(count, threads, [&](std::size_t i) { return (values[i] - s.mean) * (values[i] - s.mean); });
     s.std = std::sqrt(deviation / n);
     // Ranks floor(p (n - 1)) and the one above, for p = 0.01, 0.5 and 0.99.
     const double ps[] = {0.01, 0.5, 0.99};

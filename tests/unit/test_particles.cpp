@@ -324,6 +324,28 @@ TEST_CASE("statistics over several blocks: exact percentiles, and the same bits 
     }
 }
 
+TEST_CASE("parallel sums add fixed blocks in block order: the same bits on 1, 2 and 7 threads")
+{
+    const std::size_t n = 7 * particle_block_size + 321;
+    std::vector<double> terms(n);
+    std::mt19937_64 random(2);
+    for (auto& t : terms) t = std::ldexp(static_cast<double>(random() % 1000000), -static_cast<int>(random() % 60));
+    // The reference: each block summed in order, then the blocks in order.
+    double expected = 0;
+    for (std::size_t b = 0; b * particle_block_size < n; ++b) {
+        double block = 0;
+        for (std::size_t i = b * particle_block_size; i < std::min(n, (b + 1) * particle_block_size); ++i) block += terms[i];
+        expected += block;
+    }
+    for (int threads : {1, 2, 7}) {
+        CAPTURE(threads);
+        CHECK(parallel_sum(n, threads, [&](std::size_t i) { return terms[i]; }) == expected);
+        const auto first = first_index_where(n, threads, [&](std::size_t i) { return i % 100003 == 100002; });
+        REQUIRE(first.has_value());
+        CHECK(*first == 100002);
+    }
+}
+
 TEST_CASE("sources, validation and the neighbour grid are the same on 1, 2 and 7 threads")
 {
     // Over seven blocks of particles, so that seven threads each have one at least.
