@@ -59,13 +59,14 @@ struct BlockSweep {
     bool with_density, with_gradient;
     const double* depth;                  // in the block's order
     const double* rho;                    // in the block's order (Monaghan's form only)
-    std::vector<double> point_rho, reach; // in the grid's point order (point_rho empty but for Monaghan's form)
+    std::vector<double> point_rho; // in the grid's point order (empty but for Monaghan's form)
+    double reach;
     double self, kd, kd1;
 
     // The candidates of cluster c gathered once, then each particle's neighbours kept from them.
     std::size_t sum_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
     {
-        gather_cluster(grid, c, reach.data(), nullptr, point_rho.empty() ? nullptr : point_rho.data(), cluster);
+        gather_cluster(grid, c, {nullptr, reach}, nullptr, point_rho.empty() ? nullptr : point_rho.data(), cluster);
         std::size_t pairs = 0;
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) pairs += sum_particle(p, cluster, nb, result);
@@ -76,7 +77,7 @@ struct BlockSweep {
     {
         const int dim = parameters.dimension;
         const double k = parameters.k;
-        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], "the block", nb, false);
+        gather_from_cluster(grid, cluster, p, reach * reach, "the block", nb, false);
         const std::size_t n = nb.count, padded = padded_count(n);
         for (std::size_t j = n; j < padded; ++j) nb.b[j] = 1; // Monaghan's weight divides by rho_j
         distances(nb, padded, 1 / k);
@@ -119,7 +120,7 @@ std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const Blo
                      geometry.depth.data(),
                      monaghan ? rho : nullptr,
                      monaghan ? grid.gather(std::vector<double>(rho, rho + grid.particles())) : std::vector<double>(),
-                     std::vector<double>(grid.points(), parameters.reach),
+                     parameters.reach,
                      kernel.w(0, dim, k),
                      kd,
                      kd * k};

@@ -375,7 +375,7 @@ AppendNearBox append_near_box_for(CompressPath path)
 
 } // namespace
 
-void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
+void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach, const double* a, const double* b,
                     ClusterCandidates& out)
 {
     const AppendNearBox append_near_box = append_near_box_for(chosen_path());

@@ -48,10 +48,18 @@ struct ClusterCandidates {
     void reserve(std::size_t n);
 };
 
-// The candidates of cluster c for particles whose support radius is reach[point] (in the
-// grid's point order), with a[j] unless a is null and b[j] unless b is null per point. count = 0
-// for a cluster of ghosts.
-void gather_cluster(const NeighbourGrid& grid, std::size_t c, const double* reach, const double* a, const double* b,
+// A value per point of the grid (in its point order), or one for every point (per_point null:
+// nothing to gather or read when every particle has the same).
+struct PointValues {
+    const double* per_point = nullptr;
+    double all = 0;
+    double operator[](std::size_t p) const { return per_point ? per_point[p] : all; }
+};
+
+// The candidates of cluster c for particles whose support radius is reach[point], with a[j]
+// unless a is null and b[j] unless b is null per point (grid's point order). count = 0 for a
+// cluster of ghosts.
+void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach, const double* a, const double* b,
                     ClusterCandidates& out);
 
 // The neighbours of point p of the cluster within sqrt(reach2), p itself left out, from

@@ -32,6 +32,19 @@ double frobenius_norm(const std::array<double, 6>& E, int dimension)
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A per-particle input in the grid's point order, or its one value when every particle has it.
+struct PointInputs {
+    std::vector<double> per_point; // empty when uniform
+    double all = 0;
+    static PointInputs of(const NeighbourGrid& grid, const std::vector<double>& per_particle)
+    {
+        const double v = per_particle.front();
+        const bool uniform = !first_index_where(per_particle.size(), grid.threads(), [&](std::size_t i) { return per_particle[i] != v; });
+        return uniform ? PointInputs{{}, v} : PointInputs{grid.gather(per_particle), 0.0};
+    }
+    PointValues view() const { return {per_point.empty() ? nullptr : per_point.data(), all}; }
+};
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // One particle's results in sweep order, before they go to the particle's own (file) place.
@@ -86,21 +99,19 @@ struct Sweep {
     const ParticleSet& set;
     const MeasureInputs& in;
     const NeighbourGrid& grid;
-    std::vector<double> volume, mass; // in point order; mass empty: m_j = rho0 V_j
-    // The one volume of every particle, or 0 when they differ: then V_j is not gathered per
-    // neighbour (one compress fewer per eight candidates, on every lattice and Poisson set).
-    double uniform_volume;
-    // h and the support radius (with its edge) in point order: read in sweep order, not by
-    // the particles' own (file) order, which on a disordered set is random in memory.
-    std::vector<double> h, reach;
-
+    // V, h and the support radius (with its edge) in point order: read in sweep order, not by
+    // the particles' own (file) order, which on a disordered set is random in memory. Where
+    // every particle has the same, nothing is gathered (8 bytes a point fewer for each), and a
+    // uniform V is not gathered per neighbour either (one compress fewer per eight candidates,
+    // on every lattice and Poisson set).
+    PointInputs volume, h, reach;
+    std::vector<double> mass; // in point order; empty: m_j = rho0 V_j
     // The candidates of a cluster gathered once, then one fused pass per particle of it:
     // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
     // call, and every sum, over arrays that stay in L1.
     void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
     {
-        gather_cluster(grid, c, reach.data(), uniform_volume > 0 ? nullptr : volume.data(),
-                       mass.empty() ? nullptr : mass.data(), cluster);
+        gather_cluster(grid, c, reach.view(), volume.view().per_point, mass.empty() ? nullptr : mass.data(), cluster);
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
             if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
     }
@@ -109,14 +120,14 @@ struct Sweep {
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = this->h[p], k = h / in.spacing;
-        gather_from_cluster(grid, cluster, p, reach[p] * reach[p], set.name, nb, false);
+        const double h = this->h.view()[p], k = h / in.spacing, reach = this->reach.view()[p];
+        gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb, false);
         const std::size_t n = nb.count, padded = padded_count(n);
         distances(nb, padded, 1 / h);
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
         double t[neighbour_sum_count];
-        neighbour_sums(nb, padded, uniform_volume, !mass.empty(), set.dimension == 3, t);
-        const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume[p] * w0;
+        neighbour_sums(nb, padded, volume.view().per_point ? 0.0 : volume.all, !mass.empty(), set.dimension == 3, t);
+        const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume.view()[p] * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
         const std::optional<double> sm_total =
@@ -163,13 +174,17 @@ struct Sweep {
     }
 };
 
-// The volume every particle has, or 0 if they differ (or are not positive).
-double one_volume(const std::vector<double>& volume)
+
+// The search reach of every particle's support radius R h, in point order (one for all for one h).
+PointInputs reaches(const NeighbourGrid& grid, const std::vector<double>& h, double support)
 {
-    if (volume.empty()) return 0.0;
-    const double v = volume.front();
-    const bool all = v > 0 && std::all_of(volume.begin(), volume.end(), [v](double u) { return u == v; });
-    return all ? v : 0.0;
+    PointInputs r = PointInputs::of(grid, h);
+    r.all = search_reach(support * r.all);
+    ParallelFor pass;
+    pass.run(r.per_point.size(), grid.threads(), [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) r.per_point[p] = search_reach(support * r.per_point[p]);
+    });
+    return r;
 }
 
 void check_inputs(const ParticleSet& set, const MeasureInputs& in)
@@ -194,20 +209,14 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     ParticleMeasures out;
     out.threads = worker_threads(inputs.threads);
     const NeighbourGrid grid(set, kernel.support() * h_max, out.threads);
-    std::vector<double> reach(inputs.h.size());
-    ParallelFor reaches;
-    reaches.run(reach.size(), grid.threads(), [&](int, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) reach[i] = search_reach(kernel.support() * inputs.h[i]);
-    });
     const Sweep sweep{kernel,
                       set,
                       inputs,
                       grid,
-                      grid.gather(inputs.volume),
-                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
-                      one_volume(inputs.volume),
-                      grid.gather(inputs.h),
-                      grid.gather(reach)};
+                      PointInputs::of(grid, inputs.volume),
+                      PointInputs::of(grid, inputs.h),
+                      reaches(grid, inputs.h, kernel.support()),
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass)};
 
     phases.lap("grid");
     const std::size_t n = set.size();

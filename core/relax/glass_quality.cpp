@@ -20,14 +20,12 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
 {
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
     const NeighbourGrid grid(set, reach, threads);
-    const std::vector<double> zeros(grid.points(), 0.0);
-    const std::vector<double> reaches(grid.points(), reach);
     ParallelFor pass;
     pass.run(grid.clusters(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            gather_cluster(grid, b, reaches.data(), zeros.data(), nullptr, cluster);
+            gather_cluster(grid, b, {nullptr, reach}, nullptr, nullptr, cluster);
             for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p)
                 if (!grid.is_ghost(p)) {
                     gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);

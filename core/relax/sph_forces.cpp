@@ -50,19 +50,18 @@ SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const doub
 
 // Calls visit(p, neighbours) for every particle of the set, cluster by cluster on `threads` threads,
 // with the particle engine's pass: a cluster's candidates gathered once, each particle's
-// neighbours kept from them (dx, dy, dz, r and a; b unless null).
+// neighbours kept from them (dx, dy, dz and r; a and b unless null).
 template <class Visit>
-void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const std::vector<double>& a,
-                       const std::vector<double>* b, int threads, const Visit& visit)
+void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const double* a, const double* b,
+                       int threads, const Visit& visit)
 {
     const double reach2 = reach * reach * (1 + 2 * support_edge);
-    const std::vector<double> reaches(grid.points(), std::sqrt(reach2));
     ParallelFor pass;
     pass.run(grid.clusters(), threads, [&](int, std::size_t begin, std::size_t end) {
         ClusterCandidates cluster;
         Neighbours nb;
         for (std::size_t bin = begin; bin < end && pass.keep_going(); ++bin) {
-            gather_cluster(grid, bin, reaches.data(), a.data(), b ? b->data() : nullptr, cluster);
+            gather_cluster(grid, bin, {nullptr, std::sqrt(reach2)}, a, b, cluster);
             for (std::size_t p = grid.cluster_begin(bin); p < grid.cluster_end(bin); ++p) {
                 if (grid.is_ghost(p)) continue;
                 gather_from_cluster(grid, cluster, p, reach2, set.name, nb);
@@ -81,10 +80,9 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const std::size_t n = set.size();
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
     const NeighbourGrid grid(set, reach, model.threads);
-    const std::vector<double> none(grid.points(), 0.0);
     out.density.assign(n, 0.0);
     const double w0 = kernel.w(0, dim, model.k);
-    for_each_particle(grid, set, reach, none, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, nullptr, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
@@ -108,7 +106,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
     const double scale = 1 / (hd * model.h); // W' = dW/dq: dW/dr = W' / h^(D+1)
-    for_each_particle(grid, set, reach, pi_points, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, pi_points.data(), nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);

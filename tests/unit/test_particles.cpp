@@ -634,7 +634,7 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
                 Neighbours nb;
                 std::size_t checked = 0, wrong = 0, neighbours = 0;
                 for (std::size_t b = 0; b < grid.clusters(); ++b) {
-                    gather_cluster(grid, b, point_reaches.data(), ids.data(), nullptr, cluster);
+                    gather_cluster(grid, b, {point_reaches.data(), 0}, ids.data(), nullptr, cluster);
                     std::vector<int> seen(grid.points(), 0);
                     for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
                     for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
@@ -679,7 +679,7 @@ TEST_CASE("a long thin set gets no more bins than four per point, and every neig
     Neighbours nb;
     std::size_t found = 0, expected = 0;
     for (std::size_t c = 0; c < grid.clusters(); ++c) {
-        gather_cluster(grid, c, reaches.data(), nullptr, nullptr, cluster);
+        gather_cluster(grid, c, {reaches.data(), 0}, nullptr, nullptr, cluster);
         for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
             gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
             found += nb.count;
