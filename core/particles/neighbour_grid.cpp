@@ -1,6 +1,7 @@
 #include "particles/neighbour_grid.hpp"
 
 #include "support/error.hpp"
+#include "support/process/first_touch.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <Eigen/LU>
@@ -13,45 +14,23 @@
 
 namespace sphkern {
 
-NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
-    // A thread for every 32768 particles at most: on a small set, starting threads costs more than they save.
-    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 32768 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
-{
-    if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
-    if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
-        fail_input(fmt::format("{}: {} particles, more than this engine indexes", set.name, set.size()));
-    particles_ = set.size();
-    x_ = set.x, y_ = set.y, z_ = set.z;
-    source_.resize(particles_);
-    for (std::size_t i = 0; i < particles_; ++i) source_[i] = static_cast<std::uint32_t>(i);
-    if (set.box) {
-        const double width = set.box->smallest_width(set.dimension);
-        if (width < 2 * reach)
-            fail_input(fmt::format("{}: the periodic box is {:.6g} wide, less than twice the support radius {:.6g}; "
-                                   "expected a larger box or a smaller h",
-                                   set.name, width, reach));
-        add_ghosts(set, reach);
-        // The sort numbers points (particles and ghosts) in 32 bits.
-        if (x_.size() >= std::numeric_limits<std::uint32_t>::max())
-            fail_input(fmt::format("{}: {} particles and their periodic images, more than this engine indexes",
-                                   set.name, x_.size()));
-    }
-    size_bins(reach);
-    sort_into_bins();
-}
-
 namespace {
 
+// The periodic images near the box's faces, in particle order.
 struct Ghosts {
     std::vector<double> x, y, z;
     std::vector<std::uint32_t> source;
+    std::size_t size() const { return x.size(); }
+    void append(const Ghosts& more)
+    {
+        x.insert(x.end(), more.x.begin(), more.x.end()), y.insert(y.end(), more.y.begin(), more.y.end());
+        z.insert(z.end(), more.z.begin(), more.z.end()), source.insert(source.end(), more.source.begin(), more.source.end());
+    }
 };
-
-} // namespace
 
 // Block by block of particles, each block's images in a list of its own, the lists appended
 // in block order: the same points in the same order on any thread count.
-void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
+Ghosts find_ghosts(const ParticleSet& set, double reach, int threads)
 {
     const int dim = set.dimension;
     Eigen::Matrix3d cell = set.box->edges;
@@ -62,9 +41,9 @@ void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
     Eigen::Vector3d margin = Eigen::Vector3d::Zero();
     for (int a = 0; a < dim; ++a) margin[a] = reach * inverse.row(a).norm() * (1 + 1e-9);
     const int nz = dim == 3 ? 1 : 0;
-    std::vector<Ghosts> blocks((particles_ + particle_block_size - 1) / particle_block_size);
+    std::vector<Ghosts> blocks((set.size() + particle_block_size - 1) / particle_block_size);
     ParallelFor pass;
-    pass.run_blocks(particles_, particle_block_size, threads_, [&](std::size_t block, std::size_t begin, std::size_t end) {
+    pass.run_blocks(set.size(), particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
         Ghosts& g = blocks[block];
         for (std::size_t i = begin; i < end; ++i) {
             const Eigen::Vector3d f = inverse * set.position(i);
@@ -86,33 +65,75 @@ void NeighbourGrid::add_ghosts(const ParticleSet& set, double reach)
                     }
         }
     });
-    for (const Ghosts& g : blocks) {
-        x_.insert(x_.end(), g.x.begin(), g.x.end()), y_.insert(y_.end(), g.y.begin(), g.y.end());
-        z_.insert(z_.end(), g.z.begin(), g.z.end()), source_.insert(source_.end(), g.source.begin(), g.source.end());
-    }
+    Ghosts all;
+    for (const Ghosts& g : blocks) all.append(g);
+    return all;
 }
 
-void NeighbourGrid::size_bins(double reach)
+} // namespace
+
+// The points before sorting: the particles, then their ghosts.
+struct NeighbourGrid::Unsorted {
+    const double* own[3];
+    const double* image[3];
+    const std::uint32_t* image_source;
+    std::size_t particles;
+    double at(int axis, std::size_t p) const { return p < particles ? own[axis][p] : image[axis][p - particles]; }
+    std::uint32_t source(std::size_t p) const
+    {
+        return p < particles ? static_cast<std::uint32_t>(p) : image_source[p - particles];
+    }
+};
+
+NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
+    // A thread for every 32768 particles at most: on a small set, starting threads costs more than they save.
+    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 32768 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
 {
-    const std::size_t count = x_.size();
-    const double* coordinates[3] = {x_.data(), y_.data(), z_.data()};
+    if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
+    if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
+        fail_input(fmt::format("{}: {} particles, more than this engine indexes", set.name, set.size()));
+    particles_ = set.size();
+    Ghosts ghosts;
+    if (set.box) {
+        const double width = set.box->smallest_width(set.dimension);
+        if (width < 2 * reach)
+            fail_input(fmt::format("{}: the periodic box is {:.6g} wide, less than twice the support radius {:.6g}; "
+                                   "expected a larger box or a smaller h",
+                                   set.name, width, reach));
+        ghosts = find_ghosts(set, reach, threads_);
+        // The sort numbers points (particles and ghosts) in 32 bits.
+        if (particles_ + ghosts.size() >= std::numeric_limits<std::uint32_t>::max())
+            fail_input(fmt::format("{}: {} particles and their periodic images, more than this engine indexes",
+                                   set.name, particles_ + ghosts.size()));
+    }
+    const Unsorted points{{set.x.data(), set.y.data(), set.z.data()},
+                          {ghosts.x.data(), ghosts.y.data(), ghosts.z.data()},
+                          ghosts.source.data(),
+                          particles_};
+    size_bins(points, particles_ + ghosts.size(), reach);
+    sort_into_bins(points, particles_ + ghosts.size());
+}
+
+void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double reach)
+{
     // The extent along each axis: minima and maxima, exact in any order.
     using Range = std::array<double, 6>; // min and max along x, y, z
     const Range none = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
     const Range range = parallel_reduce(
         count, threads_, none,
         [&](std::size_t p, Range& r) {
-            for (int a = 0; a < 3; ++a)
-                r[2 * a] = std::min(r[2 * a], coordinates[a][p]), r[2 * a + 1] = std::max(r[2 * a + 1], coordinates[a][p]);
+            for (int a = 0; a < 3; ++a) {
+                const double c = points.at(a, p);
+                r[2 * a] = std::min(r[2 * a], c), r[2 * a + 1] = std::max(r[2 * a + 1], c);
+            }
         },
         [](Range& r, const Range& block) {
             for (int a = 0; a < 3; ++a) r[2 * a] = std::min(r[2 * a], block[2 * a]), r[2 * a + 1] = std::max(r[2 * a + 1], block[2 * a + 1]);
         });
     double extent[3];
     for (int a = 0; a < 3; ++a) {
-        const double mn = range[2 * a], mx = range[2 * a + 1];
-        extent[a] = mx - mn;
-        lo_[a] = mn;
+        extent[a] = range[2 * a + 1] - range[2 * a];
+        lo_[a] = range[2 * a];
         // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
         // block of bins around a bin holds every neighbour (wider bins are never wrong).
         const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
@@ -132,21 +153,22 @@ void NeighbourGrid::size_bins(double reach)
 // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
 // along x within each row: every step's counters stay in cache, where one pass over all the
 // bins' counters (megabytes on a large set) missed it at every point. A stable sort has one
-// result, so the threads' shares (contiguous runs of points, rows) do not change it.
-void NeighbourGrid::sort_into_bins()
+// result, so the threads' shares (contiguous runs of points, rows) do not change it. Each
+// array is allocated once and first touched by the threads that fill it.
+void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
 {
-    const std::size_t count = x_.size(), rows = n_[1] * n_[2];
+    const std::size_t rows = n_[1] * n_[2];
     // Each thread counts its run of points per row; fewer threads where the rows outnumber the points.
     const int counting = static_cast<int>(std::clamp<std::size_t>(count / (rows + 1), 1, static_cast<std::size_t>(threads_)));
-    std::vector<std::uint32_t> row(count), along(count);
+    FirstTouchVector<std::uint32_t> row(count), along(count);
     std::vector<std::vector<std::uint64_t>> counts(static_cast<std::size_t>(counting));
     ParallelFor count_rows;
     count_rows.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
         auto& c = counts[static_cast<std::size_t>(t)];
         c.assign(rows, 0);
         for (std::size_t p = begin; p < end; ++p) {
-            row[p] = static_cast<std::uint32_t>(bin_along(2, z_[p]) * n_[1] + bin_along(1, y_[p]));
-            along[p] = static_cast<std::uint32_t>(bin_along(0, x_[p]));
+            row[p] = static_cast<std::uint32_t>(bin_along(2, points.at(2, p)) * n_[1] + bin_along(1, points.at(1, p)));
+            along[p] = static_cast<std::uint32_t>(bin_along(0, points.at(0, p)));
             ++c[row[p]];
         }
     });
@@ -160,14 +182,15 @@ void NeighbourGrid::sort_into_bins()
         }
     }
     row_start[rows] = count;
-    std::vector<std::uint32_t> by_row(count); // the points, row after row, each row in their order
+    FirstTouchVector<std::uint32_t> by_row(count); // the points, row after row, each row in their order
     ParallelFor place;
     place.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
         auto& next = counts[static_cast<std::size_t>(t)];
         for (std::size_t p = begin; p < end; ++p) by_row[next[row[p]]++] = static_cast<std::uint32_t>(p);
     });
     start_.resize(rows * n_[0] + 1);
-    std::vector<std::uint64_t> where(count);
+    x_.resize(count), y_.resize(count), z_.resize(count), source_.resize(count), ghost_.resize(count);
+    // Row by row: the bins along x counted, then each point written to its place.
     ParallelFor within_rows;
     within_rows.run(rows, threads_, [&](int, std::size_t first_row, std::size_t last_row) {
         std::vector<std::uint64_t> fill(n_[0] + 1);
@@ -177,21 +200,14 @@ void NeighbourGrid::sort_into_bins()
             fill[0] = row_start[r];
             for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
             std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
-            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) where[by_row[k]] = fill[along[by_row[k]]]++;
+            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) {
+                const std::size_t p = by_row[k], q = fill[along[p]]++;
+                x_[q] = points.at(0, p), y_[q] = points.at(1, p), z_[q] = points.at(2, p);
+                source_[q] = points.source(p), ghost_[q] = p >= particles_;
+            }
         }
     });
     start_.back() = count;
-    ghost_.assign(count, 1);
-    std::fill(ghost_.begin(), ghost_.begin() + static_cast<std::ptrdiff_t>(particles_), 0);
-    auto permute = [&](auto& values) {
-        std::remove_reference_t<decltype(values)> sorted(values.size());
-        ParallelFor move;
-        move.run(count, threads_, [&](int, std::size_t begin, std::size_t end) {
-            for (std::size_t p = begin; p < end; ++p) sorted[where[p]] = values[p];
-        });
-        values.swap(sorted);
-    };
-    permute(x_), permute(y_), permute(z_), permute(source_), permute(ghost_);
 }
 
 std::vector<double> NeighbourGrid::gather(const std::vector<double>& per_particle) const

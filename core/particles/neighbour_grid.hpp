@@ -5,6 +5,7 @@
 #pragma once
 
 #include "particles/particle_set.hpp"
+#include "support/process/first_touch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -114,15 +115,16 @@ private:
         const double edge = lo_[a] + static_cast<double>(cell < own ? cell + 1 : cell) / scale_[a];
         return std::max(0.0, std::abs(c - edge) - 1e-9 * reach);
     }
-    void add_ghosts(const ParticleSet& set, double reach);
-    void size_bins(double reach);
-    void sort_into_bins();
+    struct Unsorted;
+    void size_bins(const Unsorted& points, std::size_t count, double reach);
+    void sort_into_bins(const Unsorted& points, std::size_t count);
 
     int threads_ = 1;
     std::size_t particles_ = 0;
-    std::vector<double> x_, y_, z_;
-    std::vector<std::uint32_t> source_;
-    std::vector<std::uint8_t> ghost_;
+    // Allocated once and first touched by the threads that sort into them.
+    FirstTouchVector<double> x_, y_, z_;
+    FirstTouchVector<std::uint32_t> source_;
+    FirstTouchVector<std::uint8_t> ghost_;
     std::vector<std::uint64_t> start_; // first point of each bin, and one past the last
     std::size_t n_[3] = {1, 1, 1};
     double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0}; // bin of c along a: floor((c - lo) scale)
