@@ -37,23 +37,25 @@ ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bi
 {
     ParticlePoint point;
     const std::size_t n = m.size();
-    FirstTouchVector<double> e1(n), m1(n), frobenius(n), neighbours(n);
-    ParallelFor derive;
-    derive.run_blocks(n, particle_block_size, m.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            e1[i] = std::hypot(m.e1[i][0], m.e1[i][1], m.e1[i][2]), m1[i] = std::hypot(m.m1[i][0], m.m1[i][1], m.m1[i][2]);
-            frobenius[i] = frobenius_norm(m.E[i], dim), neighbours[i] = m.neighbours[i];
-        }
-    });
-    const std::pair<const char*, std::span<const double>> fields[] = {
-        {"e0", m.e0}, {"eps_rho", m.eps_rho}, {"eps_gradp", m.eps_gradp}, {"eps_gradp_sum", m.eps_gradp_sum}};
-    const std::pair<const char*, std::span<const double>> summarised[] = {
-        fields[0], fields[1], fields[2], fields[3], {"|e1|", e1}, {"|m1|", m1}, {"||E||_F", frobenius},
-        {"neighbours", neighbours}};
-    // Each summary on every thread: the same whatever the thread count.
-    for (const auto& [name, values] : summarised) point.statistics.emplace_back(name, summarise(values, m.threads));
+    const int threads = m.threads;
+    auto add = [&](const char* name, std::span<const double> values) { point.statistics.emplace_back(name, summarise(values, threads)); };
+    add("e0", m.e0), add("eps_rho", m.eps_rho), add("eps_gradp", m.eps_gradp), add("eps_gradp_sum", m.eps_gradp_sum);
+    // A derived quantity is computed once into one buffer, which serves each in turn.
+    FirstTouchVector<double> derived(n);
+    auto add_derived = [&](const char* name, const auto& value) {
+        ParallelFor pass;
+        pass.run_blocks(n, particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) derived[i] = value(i);
+        });
+        add(name, derived);
+    };
+    add_derived("|e1|", [&](std::size_t i) { return std::hypot(m.e1[i][0], m.e1[i][1], m.e1[i][2]); });
+    add_derived("|m1|", [&](std::size_t i) { return std::hypot(m.m1[i][0], m.m1[i][1], m.m1[i][2]); });
+    add_derived("||E||_F", [&](std::size_t i) { return frobenius_norm(m.E[i], dim); });
+    add("neighbours", std::vector<double>(m.neighbours.begin(), m.neighbours.end()));
     if (bins)
-        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(values, bins, m.threads));
+        for (const auto& [name, values] : {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
+            point.histograms.emplace_back(name, histogram(*values, bins, threads));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;

@@ -1,8 +1,14 @@
 // Statistics of a per-particle quantity over a set: mean, standard deviation, RMS, range and
-// percentiles, and a histogram.
+// percentiles, and a histogram. Computed on several threads with the same bits on any number:
+// moments per fixed block of particles, merged in block order; exact percentiles from integer
+// counts and a selection.
 #pragma once
 
+#include "support/process/parallel_for.hpp"
+
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -12,10 +18,90 @@ struct Summary {
     double mean = 0, std = 0, rms = 0, min = 0, max = 0, p1 = 0, p50 = 0, p99 = 0;
 };
 
-// std is the population standard deviation; percentiles interpolate linearly between
-// order statistics (numpy's default), which are exact. The same on any number of threads.
-// `values` must not be empty.
-Summary summarise(std::span<const double> values, int threads = 1);
+namespace statistics_detail {
+
+// The moments of one block: its mean and sum of squared deviations (two passes over a block
+// that stays in cache), merged across blocks by Chan's formula.
+struct Moments {
+    double count = 0, mean = 0, m2 = 0, min = std::numeric_limits<double>::infinity(), max = -min;
+};
+
+// An unsigned key in the order of the doubles (-0 just below +0); its top 16 bits are a bucket
+// of a histogram in value order.
+std::uint64_t order_key(double v);
+inline constexpr int bucket_shift = 48;
+inline constexpr std::size_t buckets = std::size_t{1} << 16;
+
+// The summary from the blocks' moments (in block order), the threads' bucket counts and a
+// gather of the keys in the buckets of the ranks the percentiles need.
+class Percentiles {
+public:
+    Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, std::size_t n);
+    // The slot of a key's bucket among those to gather, -1 for none.
+    int slot(std::uint64_t key) const { return slot_[key >> bucket_shift]; }
+    std::size_t slots() const { return bucket_of_.size(); }
+    // p1, p50, p99 from the gathered keys of each slot (any order within a slot).
+    void finish(std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const;
+
+private:
+    std::size_t n_;
+    std::vector<std::uint64_t> first_; // first rank of each bucket
+    std::vector<std::int8_t> slot_;
+    std::vector<std::size_t> bucket_of_, ranks_;
+};
+
+Summary merge_moments(const std::vector<Moments>& blocks);
+
+} // namespace statistics_detail
+
+// The summary of value(i) over i in [0, n) (n > 0) on `threads` threads: std is the population
+// standard deviation; percentiles interpolate linearly between order statistics (numpy's
+// default), which are exact. The same bits on any number of threads. value(i) is called three
+// times per item (two passes over each block, one gather), so it may compute the value.
+template <class Value>
+Summary summarise_values(std::size_t n, int threads, const Value& value)
+{
+    using namespace statistics_detail;
+    const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / particle_block_size + 1));
+    std::vector<Moments> blocks((n + particle_block_size - 1) / particle_block_size);
+    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers));
+    ParallelFor moments;
+    moments.run_blocks(n, particle_block_size, workers, [&](int thread, std::size_t b, std::size_t begin, std::size_t end) {
+        auto& c = counts[static_cast<std::size_t>(thread)];
+        if (c.empty()) c.assign(buckets, 0);
+        Moments& m = blocks[b];
+        double sum = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const double v = value(i);
+            sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
+            ++c[order_key(v) >> bucket_shift];
+        }
+        m.count = static_cast<double>(end - begin), m.mean = sum / m.count;
+        for (std::size_t i = begin; i < end; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
+    });
+    Summary s = merge_moments(blocks);
+    const Percentiles percentiles(counts, n);
+    std::vector<std::vector<std::vector<std::uint64_t>>> parts(
+        static_cast<std::size_t>(workers), std::vector<std::vector<std::uint64_t>>(percentiles.slots()));
+    ParallelFor gathering;
+    gathering.run(n, workers, [&](int t, std::size_t begin, std::size_t end) {
+        auto& part = parts[static_cast<std::size_t>(t)];
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint64_t key = order_key(value(i));
+            if (const int k = percentiles.slot(key); k >= 0) part[static_cast<std::size_t>(k)].push_back(key);
+        }
+    });
+    std::vector<std::vector<std::uint64_t>> keys(percentiles.slots());
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        for (const auto& part : parts) keys[k].insert(keys[k].end(), part[k].begin(), part[k].end());
+    percentiles.finish(keys, s);
+    return s;
+}
+
+inline Summary summarise(std::span<const double> values, int threads = 1)
+{
+    return summarise_values(values.size(), threads, [&](std::size_t i) { return values[i]; });
+}
 
 struct Histogram {
     double lo = 0, hi = 0;

@@ -15,6 +15,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace sphkern {
@@ -73,17 +74,22 @@ public:
     // Calls work(block, begin, end) on the blocks [b * block_size, (b + 1) * block_size) of
     // [0, n), shared out as threads become free. The blocks do not depend on the thread count,
     // so a result assembled block by block (partial sums added in block order) is the same on
-    // any number of threads.
+    // any number of threads. work(thread, block, begin, end) is told its thread too, for
+    // what each thread may keep of its own (integer counts, whose total is the same).
     template <class Work>
     void run_blocks(std::size_t n, std::size_t block_size, int threads, const Work& work)
     {
         const std::size_t blocks = (n + block_size - 1) / block_size;
         std::atomic<std::size_t> next{0};
         const int workers = static_cast<int>(std::clamp<std::size_t>(blocks, 1, static_cast<std::size_t>(std::max(1, threads))));
-        run(static_cast<std::size_t>(workers), workers, [&](int, std::size_t, std::size_t) {
-                for (std::size_t b; keep_going() && (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;)
-                    work(b, b * block_size, std::min(n, (b + 1) * block_size));
-            });
+        run(static_cast<std::size_t>(workers), workers, [&](int thread, std::size_t, std::size_t) {
+            for (std::size_t b; keep_going() && (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
+                const std::size_t begin = b * block_size, end = std::min(n, (b + 1) * block_size);
+                if constexpr (std::is_invocable_v<const Work&, int, std::size_t, std::size_t, std::size_t>)
+                    work(thread, b, begin, end);
+                else work(b, begin, end);
+            }
+        });
     }
 
 private:
