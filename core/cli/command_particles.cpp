@@ -55,6 +55,7 @@ ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
     request.rho0 = o.rho0;
     request.threads = o.threads;
     request.histogram_bins = o.histogram;
+    request.vectors = !o.csv.empty() || !o.vtk.empty(); // the per-particle files write e1 and m1
     return request;
 }
 

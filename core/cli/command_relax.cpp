@@ -80,6 +80,7 @@ RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOption
     request.smoothing = {SmoothingRule::eta, judged.eta, 0};
     request.volume = VolumeModel::uniform;
     request.threads = o.settings.threads;
+    request.vectors = false; // statistics only
     judged.measures = analyse_particles(kernel, set, request);
     judged.quality = glass_quality(set, o.rdf_max, o.rdf_bins, worker_threads(o.settings.threads));
     judged.poisson_rms_e0 = poisson_rms_e0(kernel, set.dimension, run.h / run.spacing, judged.eta, set.size());

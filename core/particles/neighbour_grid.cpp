@@ -210,7 +210,7 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
     start_.back() = count;
 }
 
-std::vector<double> NeighbourGrid::gather(const std::vector<double>& per_particle) const
+std::vector<double> NeighbourGrid::gather(std::span<const double> per_particle) const
 {
     std::vector<double> values(x_.size());
     ParallelFor pass;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace sphkern {
@@ -43,7 +44,7 @@ public:
     const double* y() const { return y_.data(); }
     const double* z() const { return z_.data(); }
     // A per-particle quantity in point order (ghosts carry their particle's value).
-    std::vector<double> gather(const std::vector<double>& per_particle) const;
+    std::vector<double> gather(std::span<const double> per_particle) const;
     int threads() const { return threads_; }
 
     // Bins in sweep order; the points of bin b are [bin_begin(b), bin_begin(b + 1)).

@@ -33,29 +33,20 @@ void check_request(const ParticleRequest& request)
         fail_usage(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
 }
 
-ParticlePoint summarise_point(const ParticleMeasures& m, int dim, std::size_t bins)
+ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
 {
     ParticlePoint point;
-    const std::size_t n = m.size();
     const int threads = m.threads;
-    auto add = [&](const char* name, std::span<const double> values) { point.statistics.emplace_back(name, summarise(values, threads)); };
-    add("e0", m.e0), add("eps_rho", m.eps_rho), add("eps_gradp", m.eps_gradp), add("eps_gradp_sum", m.eps_gradp_sum);
-    // A derived quantity is computed once into one buffer, which serves each in turn.
-    FirstTouchVector<double> derived(n);
-    auto add_derived = [&](const char* name, const auto& value) {
-        ParallelFor pass;
-        pass.run_blocks(n, particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) derived[i] = value(i);
-        });
-        add(name, derived);
-    };
-    add_derived("|e1|", [&](std::size_t i) { return std::hypot(m.e1[i][0], m.e1[i][1], m.e1[i][2]); });
-    add_derived("|m1|", [&](std::size_t i) { return std::hypot(m.m1[i][0], m.m1[i][1], m.m1[i][2]); });
-    add_derived("||E||_F", [&](std::size_t i) { return frobenius_norm(m.E[i], dim); });
-    add("neighbours", std::vector<double>(m.neighbours.begin(), m.neighbours.end()));
+    const std::pair<const char*, std::span<const double>> fields[] = {
+        {"e0", m.e0}, {"eps_rho", m.eps_rho_values()}, {"eps_gradp", m.eps_gradp}, {"eps_gradp_sum", m.eps_gradp_sum}};
+    for (const auto& [name, values] : fields) point.statistics.emplace_back(name, summarise(values, threads));
+    point.statistics.emplace_back("|e1|", summarise(m.e1_norm, threads));
+    point.statistics.emplace_back("|m1|", summarise(m.m1_norm, threads));
+    point.statistics.emplace_back("||E||_F", summarise(m.E_norm, threads));
+    point.statistics.emplace_back(
+        "neighbours", summarise_values(m.size(), threads, [&](std::size_t i) { return static_cast<double>(m.neighbours[i]); }));
     if (bins)
-        for (const auto& [name, values] : {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
-            point.histograms.emplace_back(name, histogram(*values, bins, threads));
+        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(values, bins, threads));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;
@@ -95,14 +86,18 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     ParticleAnswer answer;
     PhaseTimes& phases = answer.phases;
     answer.volume = request.volume.value_or(default_volume_model(set));
-    answer.volumes = request.given_volumes.empty() ? particle_volumes(set, answer.volume) : request.given_volumes;
+    const int threads = worker_threads(request.threads);
+    answer.volumes = request.given_volumes.empty() ? particle_volumes(set, answer.volume, threads)
+                                                   : ParticleValues(request.given_volumes.begin(), request.given_volumes.end());
     if (answer.volumes.size() != set.size())
         fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
-    for (std::size_t i = 0; i < answer.volumes.size(); ++i)
-        if (!std::isfinite(answer.volumes[i]) || answer.volumes[i] <= 0)
-            fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", i, answer.volumes[i]));
+    // Every pass over the particles on the request's threads, sums in fixed blocks (the same on any number).
+    const auto& volumes = answer.volumes;
+    if (const auto i = first_index_where(volumes.size(), threads, [&](std::size_t i) { return !std::isfinite(volumes[i]) || volumes[i] <= 0; }))
+        fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", *i, volumes[*i]));
     const double n = static_cast<double>(set.size());
-    answer.mean_volume = std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0) / n;
+    const double total_volume = parallel_sum(volumes.size(), threads, [&](std::size_t i) { return volumes[i]; });
+    answer.mean_volume = total_volume / n;
     answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
     phases.lap("volumes");
     answer.gravity = request.gravity ? request.gravity->normalized() : set.gravity;
@@ -110,8 +105,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
     answer.rho0 = request.rho0.value_or(1.0);
     if (!request.rho0 && !set.mass.empty())
-        answer.rho0 = std::accumulate(set.mass.begin(), set.mass.end(), 0.0) /
-                      std::accumulate(answer.volumes.begin(), answer.volumes.end(), 0.0);
+        answer.rho0 = parallel_sum(set.size(), threads, [&](std::size_t i) { return set.mass[i]; }) / total_volume;
 
     std::vector<SmoothingSpec> specs;
     if (const auto& s = request.sweep)
@@ -122,26 +116,24 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
     for (std::size_t p = 0; p < specs.size(); ++p) {
         phases.restart();
-        auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume);
+        auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume, threads);
         phases.lap("h");
         MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
-                             request.threads};
+                             request.threads, request.vectors};
         auto measures = measure_particles(kernel, set, inputs);
         phases.merge(measures.phases);
         phases.restart();
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
-        for (std::size_t i = 0; i < measures.size(); ++i)
-            if (measures.neighbours[i] == 0)
-                fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
-                                       "larger h (--eta, --nh) or a denser set",
-                                       set.name, i, h[i]));
-        ParticlePoint point = summarise_point(measures, dim, request.histogram_bins);
+        if (const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.neighbours[i] == 0; }))
+            fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
+                                   "larger h (--eta, --nh) or a denser set",
+                                   set.name, *i, h[*i]));
+        ParticlePoint point = summarise_point(measures, request.histogram_bins);
         require_finite(point, set, answer);
-        const double h_mean = std::accumulate(h.begin(), h.end(), 0.0) / n;
-        point.eta = h_mean / unit;
+        const Summary h_range = summarise_moments(h, threads);
+        point.eta = h_range.mean / unit;
         point.nh = neighbour_number(point.eta, R, dim);
-        const auto [lo, hi] = std::minmax_element(h.begin(), h.end());
-        point.h_min = *lo, point.h_max = *hi;
+        point.h_min = h_range.min, point.h_max = h_range.max;
         answer.threads = measures.threads;
         phases.lap("statistics");
         if (specs.size() > 1) spdlog::debug("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);

@@ -31,6 +31,7 @@ struct ParticleRequest {
     std::optional<double> rho0;              // of eps_rho where the set has masses
     int threads = 0;
     std::size_t histogram_bins = 0;
+    bool vectors = true; // keep e1, m1 and E per particle (per-particle outputs); else their magnitudes only
 };
 
 // The statistics of one h (one value of a sweep).
@@ -49,7 +50,7 @@ struct ParticleAnswer {
     VolumeModel volume = VolumeModel::uniform;
     double mean_volume = 0, rho0 = 1, spacing = 1;
     Eigen::Vector3d gravity;
-    std::vector<double> h, volumes;              // of the single h (not kept for sweeps)
+    ParticleValues h, volumes;                   // of the single h (h not kept for sweeps)
     std::optional<ParticleMeasures> measures;    // of the single h
     std::vector<ParticlePoint> points;           // one, or one per sweep value
     int threads = 1;

@@ -37,7 +37,7 @@ using Clock = std::chrono::steady_clock;
 struct PointInputs {
     std::vector<double> per_point; // empty when uniform
     double all = 0;
-    static PointInputs of(const NeighbourGrid& grid, const std::vector<double>& per_particle)
+    static PointInputs of(const NeighbourGrid& grid, std::span<const double> per_particle)
     {
         const double v = per_particle.front();
         const bool uniform = !first_index_where(per_particle.size(), grid.threads(), [&](std::size_t i) { return per_particle[i] != v; });
@@ -49,7 +49,7 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // One particle's results in sweep order, before they go to the particle's own (file) place.
 struct PointResult {
-    double e0, eps_rho, eps_gradp, eps_gradp_sum;
+    double e0, eps_rho, eps_gradp, eps_gradp_sum, e1_norm, m1_norm, E_norm;
     std::array<double, 3> e1, m1;
     std::array<double, 6> E;
     int neighbours;
@@ -72,12 +72,15 @@ public:
     void flush(ParticleMeasures& out)
     {
         constexpr std::size_t ahead = 8;
+        const bool vectors = !out.e1.empty(), masses = !out.eps_rho.empty();
         for (std::size_t k = 0; k < results_.size(); ++k) {
             if (k + ahead < results_.size()) prefetch(out, results_[k + ahead].i);
             const PointResult& r = results_[k];
-            out.e0[r.i] = r.e0, out.eps_rho[r.i] = r.eps_rho, out.eps_gradp[r.i] = r.eps_gradp;
-            out.eps_gradp_sum[r.i] = r.eps_gradp_sum, out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
+            out.e0[r.i] = r.e0, out.eps_gradp[r.i] = r.eps_gradp, out.eps_gradp_sum[r.i] = r.eps_gradp_sum;
+            out.e1_norm[r.i] = r.e1_norm, out.m1_norm[r.i] = r.m1_norm, out.E_norm[r.i] = r.E_norm;
             out.neighbours[r.i] = r.neighbours;
+            if (masses) out.eps_rho[r.i] = r.eps_rho;
+            if (vectors) out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
         }
         results_.clear();
     }
@@ -86,10 +89,12 @@ private:
     // The destinations of a result a few ahead: the stores then find their lines in cache.
     static void prefetch(ParticleMeasures& out, std::size_t i)
     {
-        __builtin_prefetch(&out.e0[i], 1), __builtin_prefetch(&out.eps_rho[i], 1);
-        __builtin_prefetch(&out.eps_gradp[i], 1), __builtin_prefetch(&out.eps_gradp_sum[i], 1);
-        __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
+        __builtin_prefetch(&out.e0[i], 1), __builtin_prefetch(&out.eps_gradp[i], 1);
+        __builtin_prefetch(&out.eps_gradp_sum[i], 1), __builtin_prefetch(&out.e1_norm[i], 1);
+        __builtin_prefetch(&out.m1_norm[i], 1), __builtin_prefetch(&out.E_norm[i], 1);
         __builtin_prefetch(&out.neighbours[i], 1);
+        if (!out.eps_rho.empty()) __builtin_prefetch(&out.eps_rho[i], 1);
+        if (!out.e1.empty()) __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
     }
     std::vector<PointResult> results_;
 };
@@ -164,6 +169,8 @@ struct Sweep {
         for (int a = 0; a < 6; ++a) tensor[static_cast<std::size_t>(a)] = E[a] / hd1 - (a < dim ? 1.0 : 0.0);
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
         out.E = tensor;
+        out.E_norm = frobenius_norm(tensor, dim);
+        out.e1_norm = std::hypot(out.e1[0], out.e1[1], out.e1[2]), out.m1_norm = std::hypot(out.m1[0], out.m1[1], out.m1[2]);
         const Eigen::Vector3d g = in.gravity.value_or(set.gravity);
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
@@ -176,7 +183,7 @@ struct Sweep {
 
 
 // The search reach of every particle's support radius R h, in point order (one for all for one h).
-PointInputs reaches(const NeighbourGrid& grid, const std::vector<double>& h, double support)
+PointInputs reaches(const NeighbourGrid& grid, std::span<const double> h, double support)
 {
     PointInputs r = PointInputs::of(grid, h);
     r.all = search_reach(support * r.all);
@@ -221,9 +228,11 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     phases.lap("grid");
     const std::size_t n = set.size();
     // Written in the particles' own order, random in memory on a disordered set.
-    resize_on_huge_pages(out.e0, n), resize_on_huge_pages(out.eps_rho, n), resize_on_huge_pages(out.eps_gradp, n);
-    resize_on_huge_pages(out.eps_gradp_sum, n), resize_on_huge_pages(out.e1, n), resize_on_huge_pages(out.m1, n);
-    resize_on_huge_pages(out.E, n), resize_on_huge_pages(out.neighbours, n);
+    for (auto* v : {&out.e0, &out.eps_gradp, &out.eps_gradp_sum, &out.e1_norm, &out.m1_norm, &out.E_norm})
+        resize_on_huge_pages(*v, n);
+    resize_on_huge_pages(out.neighbours, n);
+    if (!inputs.mass.empty()) resize_on_huge_pages(out.eps_rho, n);
+    if (inputs.vectors) resize_on_huge_pages(out.e1, n), resize_on_huge_pages(out.m1, n), resize_on_huge_pages(out.E, n);
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread

@@ -11,33 +11,41 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace sphkern {
 
+// Views of the caller's arrays (nothing per particle is copied).
 struct MeasureInputs {
-    std::vector<double> h;      // sphkern's h of every particle (support R h)
-    std::vector<double> volume; // V_j
-    std::vector<double> mass;   // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
+    std::span<const double> h;      // sphkern's h of every particle (support R h)
+    std::span<const double> volume; // V_j
+    std::span<const double> mass;   // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
     double rho0 = 1;            // the reference density of eps_rho
     double spacing = 1;         // d of k = h / d, the argument of kernels that depend on k
     double depth = 1;           // of the sum form, in units of h
     std::optional<Eigen::Vector3d> gravity; // the unit g of eps_gradp; none: the set's
     int threads = 0;            // 0: every core
+    bool vectors = true;        // keep e1, m1 and E per particle (else only their magnitudes)
 };
 
 // Every array is written by the threads of the sums (first touch), one value per particle.
+// The statistics need only the scalars (52 bytes a particle without masses); the vectors and
+// the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {
-    FirstTouchVector<double> e0, eps_rho, eps_gradp, eps_gradp_sum;
-    FirstTouchVector<std::array<double, 3>> e1, m1;
-    FirstTouchVector<std::array<double, 6>> E; // xx, yy, zz, xy, xz, yz
-    FirstTouchVector<int> neighbours;          // j != i inside the support
+    FirstTouchVector<double> e0, eps_gradp, eps_gradp_sum;
+    FirstTouchVector<double> eps_rho;                  // empty without masses: then eps_rho = e0
+    FirstTouchVector<double> e1_norm, m1_norm, E_norm; // |e1|, |m1| and ||E||_F
+    FirstTouchVector<std::array<double, 3>> e1, m1;    // empty unless asked for
+    FirstTouchVector<std::array<double, 6>> E;         // xx, yy, zz, xy, xz, yz; empty unless asked for
+    FirstTouchVector<int> neighbours;                  // j != i inside the support
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid
     PhaseTimes phases;                    // grid and sums
     double cpu_seconds = 0;               // the same, CPU time of all threads (a loaded machine's measure)
     std::size_t size() const { return e0.size(); }
+    const FirstTouchVector<double>& eps_rho_values() const { return eps_rho.empty() ? e0 : eps_rho; }
 };
 
 // Every particle's measures by direct sums over its neighbours (periodic images by the

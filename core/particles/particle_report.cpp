@@ -110,6 +110,7 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
 void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
+    const auto& eps_rho = m.eps_rho_values();
     const bool three = set.dimension == 3;
     ChunkedWriter out(stream);
     out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
@@ -119,7 +120,7 @@ void write_particle_csv(std::ostream& stream, const ParticleSet& set, const Part
         fmt::format_to(to, "{},{},{},", i, set.x[i], set.y[i]);
         if (three) fmt::format_to(to, "{},", set.z[i]);
         fmt::format_to(to, "{},{},{},{},{},{},{},{},", answer.h[i], answer.volumes[i], m.neighbours[i], m.e0[i],
-                       m.eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
+                       eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
         if (three) fmt::format_to(to, "{},", m.e1[i][2]);
         fmt::format_to(to, "{},{}", m.m1[i][0], m.m1[i][1]);
         if (three) fmt::format_to(to, ",{}", m.m1[i][2]);
@@ -146,7 +147,7 @@ void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const Part
     scalars("volume", [&](std::size_t i) { return answer.volumes[i]; });
     scalars("neighbours", [&](std::size_t i) { return m.neighbours[i]; });
     scalars("e0", [&](std::size_t i) { return m.e0[i]; });
-    scalars("eps_rho", [&](std::size_t i) { return m.eps_rho[i]; });
+    scalars("eps_rho", [&](std::size_t i) { return m.eps_rho_values()[i]; });
     scalars("eps_gradp", [&](std::size_t i) { return m.eps_gradp[i]; });
     for (const auto& [name, field] : {std::pair{"e1", &m.e1}, std::pair{"m1", &m.m1}}) {
         out.print("VECTORS {} double\n", name);

@@ -20,6 +20,27 @@ double from_key(std::uint64_t key) { return std::bit_cast<double>(key >> 63 ? ke
 
 constexpr double percentile_p[] = {0.01, 0.5, 0.99};
 
+// The key of rank `rank` among `keys` (in any order), whose bits above `shift` are all alike:
+// radix steps of 16 bits narrow them to one value or a few thousand keys, then a selection.
+// Linear in the keys, however they crowd (a bucket of a histogram of integers holds a
+// quarter of a set).
+std::uint64_t select_key(std::vector<std::uint64_t> keys, std::size_t rank, int shift)
+{
+    constexpr std::size_t few = 4096;
+    while (keys.size() > few && shift > 0) {
+        shift = std::max(0, shift - 16);
+        std::vector<std::uint32_t> count(std::size_t{1} << 16, 0);
+        std::uint64_t lo = keys.front(), hi = lo;
+        for (std::uint64_t k : keys) ++count[(k >> shift) & 0xFFFF], lo = std::min(lo, k), hi = std::max(hi, k);
+        if (lo == hi) return lo; // one value
+        std::uint64_t digit = 0;
+        while (rank >= count[digit]) rank -= count[digit++];
+        std::erase_if(keys, [&](std::uint64_t k) { return ((k >> shift) & 0xFFFF) != digit; });
+    }
+    std::nth_element(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(rank), keys.end());
+    return keys[rank];
+}
+
 } // namespace
 
 Summary merge_moments(const std::vector<Moments>& blocks)
@@ -45,8 +66,7 @@ Percentiles::Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, 
 {
     for (std::size_t b = 0; b < buckets; ++b) {
         first_[b + 1] = first_[b];
-        for (const auto& c : counts)
-            if (!c.empty()) first_[b + 1] += c[b];
+        for (const auto& c : counts) first_[b + 1] += c[b];
     }
     for (double p : percentile_p) {
         const auto lo = static_cast<std::size_t>(std::floor(p * static_cast<double>(n - 1)));
@@ -58,16 +78,17 @@ Percentiles::Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, 
     }
 }
 
-void Percentiles::finish(std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const
+void Percentiles::finish(const std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const
 {
-    std::vector<double> at;
-    for (std::size_t rank : ranks_) {
-        const auto b = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), rank) - first_.begin() - 1);
-        auto& bucket = keys[static_cast<std::size_t>(slot_[b])];
-        const auto it = bucket.begin() + static_cast<std::ptrdiff_t>(rank - first_[b]);
-        std::nth_element(bucket.begin(), it, bucket.end()); // the k-th key is one value, in any order of gathering
-        at.push_back(from_key(*it));
-    }
+    // Each rank on a thread of its own: the k-th key is one value, in any order of gathering.
+    std::vector<double> at(ranks_.size());
+    ParallelFor select;
+    select.run(ranks_.size(), static_cast<int>(ranks_.size()), [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t r = begin; r < end; ++r) {
+            const auto b = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), ranks_[r]) - first_.begin() - 1);
+            at[r] = from_key(select_key(keys[static_cast<std::size_t>(slot_[b])], ranks_[r] - first_[b], bucket_shift));
+        }
+    });
     // numpy's linear interpolation between the order statistics at floor(rank) and the one above.
     double* out[] = {&s.p1, &s.p50, &s.p99};
     for (std::size_t k = 0; k < 3; ++k) {

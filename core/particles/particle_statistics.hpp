@@ -41,7 +41,7 @@ public:
     int slot(std::uint64_t key) const { return slot_[key >> bucket_shift]; }
     std::size_t slots() const { return bucket_of_.size(); }
     // p1, p50, p99 from the gathered keys of each slot (any order within a slot).
-    void finish(std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const;
+    void finish(const std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const;
 
 private:
     std::size_t n_;
@@ -52,7 +52,33 @@ private:
 
 Summary merge_moments(const std::vector<Moments>& blocks);
 
+// The moments of value(i) over [0, n), block by block; also calls each(thread, v) on every value.
+template <class Value, class Each>
+Summary moments(std::size_t n, int threads, const Value& value, const Each& each)
+{
+    std::vector<Moments> blocks((n + particle_block_size - 1) / particle_block_size);
+    ParallelFor pass;
+    pass.run_blocks(n, particle_block_size, threads, [&](int thread, std::size_t b, std::size_t begin, std::size_t end) {
+        Moments& m = blocks[b];
+        double sum = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const double v = value(i);
+            sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
+            each(thread, v);
+        }
+        m.count = static_cast<double>(end - begin), m.mean = sum / m.count;
+        for (std::size_t i = begin; i < end; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
+    });
+    return merge_moments(blocks);
+}
+
 } // namespace statistics_detail
+
+// Mean, std, RMS and range only (no percentiles) of `values`, the same on any thread count.
+inline Summary summarise_moments(std::span<const double> values, int threads = 1)
+{
+    return statistics_detail::moments(values.size(), threads, [&](std::size_t i) { return values[i]; }, [](int, double) {});
+}
 
 // The summary of value(i) over i in [0, n) (n > 0) on `threads` threads: std is the population
 // standard deviation; percentiles interpolate linearly between order statistics (numpy's
@@ -63,23 +89,8 @@ Summary summarise_values(std::size_t n, int threads, const Value& value)
 {
     using namespace statistics_detail;
     const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / particle_block_size + 1));
-    std::vector<Moments> blocks((n + particle_block_size - 1) / particle_block_size);
-    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers));
-    ParallelFor moments;
-    moments.run_blocks(n, particle_block_size, workers, [&](int thread, std::size_t b, std::size_t begin, std::size_t end) {
-        auto& c = counts[static_cast<std::size_t>(thread)];
-        if (c.empty()) c.assign(buckets, 0);
-        Moments& m = blocks[b];
-        double sum = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-            const double v = value(i);
-            sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
-            ++c[order_key(v) >> bucket_shift];
-        }
-        m.count = static_cast<double>(end - begin), m.mean = sum / m.count;
-        for (std::size_t i = begin; i < end; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
-    });
-    Summary s = merge_moments(blocks);
+    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers), std::vector<std::uint32_t>(buckets, 0));
+    Summary s = moments(n, workers, value, [&](int thread, double v) { ++counts[static_cast<std::size_t>(thread)][order_key(v) >> bucket_shift]; });
     const Percentiles percentiles(counts, n);
     std::vector<std::vector<std::vector<std::uint64_t>>> parts(
         static_cast<std::size_t>(workers), std::vector<std::vector<std::uint64_t>>(percentiles.slots()));

@@ -1,6 +1,7 @@
 #include "particles/particle_volumes.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 
@@ -29,27 +30,34 @@ VolumeModel default_volume_model(const ParticleSet& set)
     return !set.mass.empty() && !set.density.empty() ? VolumeModel::file : VolumeModel::uniform;
 }
 
-std::vector<double> particle_volumes(const ParticleSet& set, VolumeModel model)
+ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int threads)
 {
+    ParticleValues volume(set.size());
+    auto fill = [&](const auto& value) {
+        ParallelFor pass;
+        pass.run_blocks(volume.size(), particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) volume[i] = value(i);
+        });
+        return std::move(volume);
+    };
     switch (model) {
     case VolumeModel::uniform:
         if (!set.box)
             fail_input(fmt::format("{}: uniform volumes need a box (--box); a free set can use --volume file (m / rho)",
                                    set.name));
-        return std::vector<double>(set.size(), mean_volume(set));
-    case VolumeModel::file: {
+        return fill([v = mean_volume(set)](std::size_t) { return v; });
+    case VolumeModel::file:
         if (set.mass.empty() || set.density.empty())
             fail_input(fmt::format("{}: --volume file needs masses and densities in the file; expected {}", set.name,
                                    set.mass.empty() ? "masses" : "densities"));
-        std::vector<double> volume(set.size());
-        for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = set.mass[i] / set.density[i];
-        return volume;
-    }
-    case VolumeModel::voronoi:
+        return fill([&](std::size_t i) { return set.mass[i] / set.density[i]; });
+    case VolumeModel::voronoi: {
         if (!set.box) fail_input(fmt::format("{}: Voronoi volumes need a periodic box (--box)", set.name));
-        return voronoi_volumes(set);
+        const auto cells = voronoi_volumes(set);
+        return fill([&](std::size_t i) { return cells[i]; });
     }
-    return {};
+    }
+    return volume;
 }
 
 } // namespace sphkern

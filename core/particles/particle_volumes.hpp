@@ -3,6 +3,7 @@
 #pragma once
 
 #include "particles/particle_set.hpp"
+#include "support/process/first_touch.hpp"
 
 #include <string>
 #include <vector>
@@ -17,8 +18,9 @@ const char* volume_model_name(VolumeModel model);
 // The model a set gets when none is asked for: m / rho where the file has both, else uniform.
 VolumeModel default_volume_model(const ParticleSet& set);
 
-// Throws Error(input) where the set lacks what the model needs (a box, masses and densities).
-std::vector<double> particle_volumes(const ParticleSet& set, VolumeModel model);
+// Filled on `threads` threads. Throws Error(input) where the set lacks what the model needs (a
+// box, masses and densities).
+ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int threads = 1);
 
 // The Voronoi cell of every particle in the periodic box (voro++; a 2D set as a slab one
 // spacing thick, whose cells are prisms of the 2D cells).

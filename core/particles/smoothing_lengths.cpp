@@ -1,6 +1,7 @@
 #include "particles/smoothing_lengths.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
@@ -26,12 +27,20 @@ double eta_for_neighbour_number(double nh, double support, int dimension)
     return std::pow(nh / unit_ball(dimension), 1.0 / dimension) / support;
 }
 
-std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
-                                      double mean_volume)
+ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
+                                 double mean_volume, int threads)
 {
     const int dim = set.dimension;
     const double R = kernel.support();
-    auto uniform = [&](double h) { return std::vector<double>(set.size(), h); };
+    ParticleValues h(set.size());
+    auto fill = [&](const auto& value) {
+        ParallelFor pass;
+        pass.run_blocks(h.size(), particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) h[i] = value(i);
+        });
+        return std::move(h);
+    };
+    auto uniform = [&](double value) { return fill([value](std::size_t) { return value; }); };
     switch (spec.rule) {
     case SmoothingRule::eta:
         if (!std::isfinite(spec.value) || spec.value <= 0 || spec.value > 100)
@@ -56,9 +65,7 @@ std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kern
                                "over the stored h (GADGET and SPlisHSPlasH 1, SWIFT its kernel gamma, PySPH the kernel's R, "
                                "DualSPHysics 2), or give --eta E or --nh N",
                                set.name));
-    std::vector<double> h(set.size());
-    for (std::size_t i = 0; i < h.size(); ++i) h[i] = x * set.h[i] / R;
-    return h;
+    return fill([&](std::size_t i) { return x * set.h[i] / R; });
 }
 
 } // namespace sphkern

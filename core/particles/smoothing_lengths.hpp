@@ -4,6 +4,7 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
+#include "support/process/first_touch.hpp"
 
 #include <vector>
 
@@ -22,9 +23,10 @@ struct SmoothingSpec {
 double neighbour_number(double eta, double support, int dimension);
 double eta_for_neighbour_number(double nh, double support, int dimension);
 
-// h of every particle; `mean_volume` is V̄ of h = eta V̄^(1/D). Throws Error(input) naming the
-// choices when the rule does not fit the set (k without a lattice, a file h without a convention).
-std::vector<double> smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
-                                      double mean_volume);
+// h of every particle, filled on `threads` threads; `mean_volume` is V̄ of h = eta V̄^(1/D).
+// Throws Error(input) naming the choices when the rule does not fit the set (k without a
+// lattice, a file h without a convention).
+ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
+                                 double mean_volume, int threads = 1);
 
 } // namespace sphkern

@@ -138,7 +138,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             out["h"] = column(answer.h);
             out["volume"] = column(answer.volumes);
             for (const auto& [name, values] :
-                 {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
+                 {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho_values()}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
                 out[name] = column(*values);
             out["e1"] = rows<3>(m.e1, d);
             out["m1"] = rows<3>(m.m1, d);

@@ -32,6 +32,7 @@ void analyse_source(const Study& study, const StudyInputs& inputs, const StudyPa
     ParticleRequest request;
     request.sweep = study.particles->sweep;
     request.volume = study.particles->volume;
+    request.vectors = false; // the study keeps statistics only
     for (const auto& kernel : inputs.kernels) {
         if (!kernel.supports(set.dimension)) continue;
         throw_if_interrupted();

@@ -34,4 +34,7 @@ struct FirstTouchAllocator : std::allocator<T> {
 template <class T>
 using FirstTouchVector = std::vector<T, FirstTouchAllocator<T>>;
 
+// One double per particle (h, V), filled by the threads of a parallel pass.
+using ParticleValues = FirstTouchVector<double>;
+
 } // namespace sphkern
