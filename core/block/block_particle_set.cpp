@@ -1,6 +1,7 @@
 #include "block/block_particle_set.hpp"
 
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
@@ -77,20 +78,33 @@ ParticleSet block_particle_set(const Lattice& lattice, const BlockOptions& optio
     set.spacing = 1;
     set.gravity = result.gravity;
     const std::size_t n = result.particles();
-    set.x.assign(result.x.begin(), result.x.end());
-    set.y.assign(result.y.begin(), result.y.end());
-    set.z.assign(result.z.begin(), result.z.end());
-    if (!options.periodic) return set;
+    set.x.resize(n), set.y.resize(n), set.z.resize(n);
+    const auto place = [&](const auto& position) {
+        ParallelFor pass;
+        pass.run_blocks(n, particle_block_size, result.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Eigen::Vector3d p = position(Eigen::Vector3d(result.x[i], result.y[i], result.z[i]));
+                set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = dim == 3 ? p.z() : 0.0;
+            }
+        });
+    };
+    if (!options.periodic) {
+        place([](const Eigen::Vector3d& p) { return p; });
+        return set;
+    }
 
     const Eigen::Matrix3d unit = unit_edges(lattice, result.gravity);
     // Heights above the lowest particle, and the box's height: the block's and twice a
     // reach of empty space (more than the engine's margin for images, a reach).
     const Eigen::Vector3d up = -result.gravity;
-    double low = INFINITY, high = -INFINITY;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double height = up.dot(set.position(i));
-        low = std::min(low, height), high = std::max(high, height);
-    }
+    using Range = std::pair<double, double>;
+    const auto [low, high] = parallel_reduce(
+        n, result.threads, Range{INFINITY, -INFINITY},
+        [&](std::size_t i, Range& r) {
+            const double height = up.dot(Eigen::Vector3d(result.x[i], result.y[i], result.z[i]));
+            r.first = std::min(r.first, height), r.second = std::max(r.second, height);
+        },
+        [](Range& r, const Range& block) { r.first = std::min(r.first, block.first), r.second = std::max(r.second, block.second); });
     PeriodicBox box;
     box.edges = unit;
     for (int a = 0; a < dim - 1; ++a) box.edges.col(a) *= static_cast<double>(options.cells[static_cast<std::size_t>(a)]);
@@ -99,12 +113,11 @@ ParticleSet block_particle_set(const Lattice& lattice, const BlockOptions& optio
     if (dim == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
     const Eigen::Matrix3d inverse = cell.inverse();
     const Eigen::Vector3d lift = up * (2 * reach - low);
-    for (std::size_t i = 0; i < n; ++i) {
-        Eigen::Vector3d f = inverse * (set.position(i) + lift);
+    place([&](const Eigen::Vector3d& p) {
+        Eigen::Vector3d f = inverse * (p + lift);
         for (int a = 0; a < dim - 1; ++a) f[a] -= std::floor(f[a]);
-        const Eigen::Vector3d p = cell * f;
-        set.x[i] = p.x(), set.y[i] = p.y(), set.z[i] = dim == 3 ? p.z() : 0.0;
-    }
+        return Eigen::Vector3d(cell * f);
+    });
     set.box = box;
     return set;
 }

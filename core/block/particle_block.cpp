@@ -107,10 +107,11 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
         sum_block(kernel, grid, geometry, parameters, false, true, density.data(), result);
     }
     result.timings.evaluation = seconds_since(t0);
-    for (std::size_t i = 0; i < count; ++i)
-        if (!std::isfinite(result.eps_rho[i]) || !std::isfinite(result.eps_gradp[i]))
-            fail_non_finite_sum(kernel, dim, options.k, "particle " + std::to_string(i) + " of the block",
-                                fmt::format("k = {:.6g}", options.k));
+    if (const auto i = first_index_where(count, result.threads, [&](std::size_t i) {
+            return !std::isfinite(result.eps_rho[i]) || !std::isfinite(result.eps_gradp[i]);
+        }))
+        fail_non_finite_sum(kernel, dim, options.k, "particle " + std::to_string(*i) + " of the block",
+                            fmt::format("k = {:.6g}", options.k));
     return result;
 }
 

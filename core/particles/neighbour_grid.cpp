@@ -86,8 +86,8 @@ struct NeighbourGrid::Unsorted {
 };
 
 NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
-    // A thread for every 32768 particles at most: on a small set, starting threads costs more than they save.
-    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 32768 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
+    // A thread for every 8192 particles at most: on a small set, starting threads costs more than they save.
+    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 8192 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
 {
     if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
     if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
