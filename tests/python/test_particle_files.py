@@ -183,3 +183,86 @@ def test_broken_hdf5_files_give_one_line(tmp_path):
     outside[3, 0] = 5.0
     write_swift(tmp_path / "outside.hdf5", outside, h, m, rho)
     assert "particle 3 at (5, " in refused(str(tmp_path / "outside.hdf5"))
+
+
+def write_parts(base, x, h, m, rho, parts, swift=True, tamper=None):
+    """One snapshot in `parts` files BASE.0.hdf5 ...: SWIFT's distributed layout (or GADGET's,
+    float32 and masses from the MassTable); each part holds a contiguous run of the particles."""
+    bounds = np.linspace(0, N, parts + 1).astype(int)
+    for k in range(parts):
+        lo, hi = bounds[k], bounds[k + 1]
+        with h5py.File(f"{base}.{k}.hdf5", "w") as f:
+            header = f.create_group("Header")
+            header.attrs["BoxSize"] = [L, L, L] if swift else L
+            header.attrs["NumFilesPerSnapshot"] = parts
+            header.attrs["NumPart_Total"] = np.array([N, 0, 0, 0, 0, 0], dtype=np.uint32)
+            header.attrs["NumPart_Total_HighWord"] = np.zeros(6, dtype=np.uint32)
+            header.attrs["NumPart_ThisFile"] = np.array([hi - lo, 0, 0, 0, 0, 0], dtype=np.uint32)
+            header.attrs["MassTable"] = [0.0] * 6 if swift else [m[0], 0, 0, 0, 0, 0]
+            if swift:
+                f.create_group("HydroScheme").attrs["Kernel gamma"] = GAMMA
+            part = f.create_group("PartType0")
+            cast = (lambda a: a) if swift else (lambda a: a.astype(np.float32))
+            part["Coordinates"] = cast(x[lo:hi])
+            part["SmoothingLengths" if swift else "SmoothingLength"] = cast(h[lo:hi])
+            if swift:
+                part["Masses"] = m[lo:hi]
+            part["Densities" if swift else "Density"] = cast(rho[lo:hi])
+            if tamper:
+                tamper(k, f)
+
+
+def test_snapshots_in_several_files_give_the_one_file_result(tmp_path):
+    x, h, m, rho = particles()
+    write_swift(tmp_path / "whole.hdf5", x, h, m, rho)
+    whole = run(str(tmp_path / "whole.hdf5"))
+    write_parts(tmp_path / "snap", x, h, m, rho, 4)
+    for k in (0, 3):  # any part names the snapshot
+        doc = run(str(tmp_path / f"snap.{k}.hdf5"))
+        assert doc["source"]["particles"] == N
+        assert doc["statistics"] == whole["statistics"]
+    # GADGET's multi-part files against its one-file form.
+    support = GAMMA * h
+    write_gadget(tmp_path / "gadget.hdf5", x, support, m, rho)
+    write_parts(tmp_path / "gadget", x, support, m, rho, 3, swift=False)
+    assert run(str(tmp_path / "gadget.1.hdf5"), "--support-per-h", "1")["statistics"] == \
+        run(str(tmp_path / "gadget.hdf5"), "--support-per-h", "1")["statistics"]
+    # An output may not replace a part.
+    done = subprocess.run([CLI, "particles", "wendland_c2", str(tmp_path / "snap.0.hdf5"), "--csv",
+                           str(tmp_path / "snap.2.hdf5")], capture_output=True, text=True)
+    assert done.returncode == 5 and "snap.2.hdf5" in done.stderr
+
+
+def test_a_broken_snapshot_in_parts_names_the_part(tmp_path):
+    x, h, m, rho = particles()
+    write_parts(tmp_path / "missing", x, h, m, rho, 3)
+    (tmp_path / "missing.1.hdf5").unlink()
+    assert "part 1 of the snapshot's 3 files" in refused(str(tmp_path / "missing.0.hdf5"))
+
+    def other_box(k, f):
+        if k == 2:
+            f["Header"].attrs["BoxSize"] = [2 * L, L, L]
+    write_parts(tmp_path / "box", x, h, m, rho, 3, tamper=other_box)
+    assert "box.2.hdf5: /Header BoxSize differs" in refused(str(tmp_path / "box.0.hdf5"))
+
+    def short(k, f):
+        if k == 1:
+            del f["PartType0/Coordinates"], f["PartType0/SmoothingLengths"], f["PartType0/Masses"], f["PartType0/Densities"]
+            f["PartType0/Coordinates"] = x[:10]
+            f["PartType0/SmoothingLengths"] = h[:10]
+            f["PartType0/Masses"] = m[:10]
+            f["PartType0/Densities"] = rho[:10]
+            f["Header"].attrs["NumPart_ThisFile"] = np.array([10, 0, 0, 0, 0, 0], dtype=np.uint32)
+    write_parts(tmp_path / "short", x, h, m, rho, 3, tamper=short)
+    assert "hold 1010 particles but /Header NumPart_Total declares 1500" in refused(str(tmp_path / "short.0.hdf5"))
+
+    def this_file(k, f):
+        if k == 0:
+            f["Header"].attrs["NumPart_ThisFile"] = np.array([7, 0, 0, 0, 0, 0], dtype=np.uint32)
+    write_parts(tmp_path / "count", x, h, m, rho, 2, tamper=this_file)
+    assert "NumPart_ThisFile[0] is 7 but /PartType0/Coordinates has 750 rows" in refused(str(tmp_path / "count.1.hdf5"))
+    # The base names no file: the parts are named instead.
+    assert "name one of them, such as" in refused(str(tmp_path / "count.hdf5"))
+    # The declared total is checked against the budget before any part is read.
+    line = refused(str(tmp_path / "box.1.hdf5"), "--memory-limit", "0.0000001")
+    assert "declares 1500 particles in 3 files" in line

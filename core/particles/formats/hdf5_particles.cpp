@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
+#include <regex>
 
 namespace sphkern {
 
@@ -133,6 +135,19 @@ struct File {
         }
     }
 
+    // The rows a dataset declares, none read.
+    std::size_t rows(const std::string& path) const
+    {
+        Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
+        check_links();
+        if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
+        Handle space(H5Dget_space(set.get()), H5Sclose);
+        hsize_t dims[2] = {0, 0};
+        if (H5Sget_simple_extent_ndims(space.get()) < 1 || H5Sget_simple_extent_ndims(space.get()) > 2)
+            fail_input(fmt::format("{}: dataset {} is not a table of rows", name, path));
+        H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+        return static_cast<std::size_t>(dims[0]);
+    }
     // A dataset of doubles (any stored number type is converted) with its shape.
     std::vector<double> dataset(const std::string& path, std::vector<hsize_t>& shape) const
     {
@@ -210,8 +225,11 @@ ParticleSet read_snapshot(const File& f)
     if (shape.size() != 2 || (shape[1] != 3 && shape[1] != static_cast<hsize_t>(set.dimension)))
         fail_input(fmt::format("{}: /PartType0/Coordinates has shape {}; expected (N, 3)", f.name, File::shape_text(shape)));
     const std::size_t n = static_cast<std::size_t>(shape[0]), columns = static_cast<std::size_t>(shape[1]);
-    const auto counts = f.attribute("/Header", "NumPart_Total");
-    if (!counts.empty() && static_cast<std::size_t>(counts[0]) != n &&
+    const auto counts = f.attribute("/Header", "NumPart_Total"), this_file = f.attribute("/Header", "NumPart_ThisFile");
+    const auto files = f.attribute("/Header", "NumFilesPerSnapshot");
+    if (!this_file.empty() && static_cast<std::size_t>(this_file[0]) != n)
+        fail_input(fmt::format("{}: /Header NumPart_ThisFile[0] is {} but /PartType0/Coordinates has {} rows", f.name, this_file[0], n));
+    if (!counts.empty() && static_cast<std::size_t>(counts[0]) != n && (files.empty() || files[0] <= 1) &&
         f.attribute("/Header", "NumPart_Total_HighWord").empty())
         fail_input(fmt::format("{}: /Header NumPart_Total[0] is {} but /PartType0/Coordinates has {} rows", f.name, counts[0], n));
     for (std::size_t i = 0; i < n; ++i) {
@@ -295,6 +313,119 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     return set;
 }
 
+// An HDF5 file opened for reading, every link followed through follow_external_link.
+class OpenFile {
+public:
+    explicit OpenFile(const std::filesystem::path& file)
+        : linked_{std::filesystem::absolute(file).parent_path(), {}, {}}, handle_(open(file), H5Fclose),
+          links_(H5Pcreate(H5P_LINK_ACCESS), H5Pclose), dataset_access_(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose),
+          group_access_(H5Pcreate(H5P_GROUP_ACCESS), H5Pclose),
+          file_{file.string(), handle_.get(), &linked_, links_.get(), dataset_access_.get(), group_access_.get()}
+    {
+        for (hid_t list : {links_.get(), dataset_access_.get(), group_access_.get()})
+            H5Pset_elink_cb(list, follow_external_link, &linked_);
+    }
+    const File& file() const { return file_; }
+    const std::vector<std::string>& linked_files() const { return linked_.files; }
+
+private:
+    static hid_t open(const std::filesystem::path& file)
+    {
+        const std::string name = file.string();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec)) fail_input(name + ": no such file");
+        if (H5Fis_hdf5(file.c_str()) <= 0) fail_input(name + ": not an HDF5 file");
+        const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        if (id < 0) fail_input(name + ": cannot be opened as HDF5 (a truncated file?)");
+        return id;
+    }
+    LinkedFiles linked_;
+    Handle handle_, links_, dataset_access_, group_access_;
+    File file_;
+};
+
+// The gas particles a snapshot's header declares in all its files (NumPart_Total and its high word).
+double declared_total(const File& f)
+{
+    const auto low = f.attribute("/Header", "NumPart_Total"), high = f.attribute("/Header", "NumPart_Total_HighWord");
+    return (low.empty() ? 0.0 : low[0]) + (high.empty() ? 0.0 : high[0] * 4294967296.0);
+}
+
+// The name of part k of the snapshot whose part is `file` (BASE.K.hdf5), none if it has no such name.
+std::optional<std::filesystem::path> part_name(const std::filesystem::path& file, std::size_t k)
+{
+    static const std::regex part(R"((.*)\.(\d+)\.(hdf5|h5))");
+    std::smatch m;
+    const std::string name = file.string();
+    if (!std::regex_match(name, m, part)) return std::nullopt;
+    return std::filesystem::path(fmt::format("{}.{}.{}", m[1].str(), k, m[3].str()));
+}
+
+// Every part's header must be the first's: the parts of one snapshot.
+void check_same_header(const File& first, const File& part)
+{
+    for (const char* attr : {"NumFilesPerSnapshot", "NumPart_Total", "NumPart_Total_HighWord", "BoxSize", "MassTable", "Dimension"})
+        if (part.attribute("/Header", attr) != first.attribute("/Header", attr))
+            fail_input(fmt::format("{}: /Header {} differs from {}'s; expected the parts of one snapshot", part.name, attr,
+                                   first.name));
+}
+
+void append_part(ParticleSet& set, ParticleSet&& part, const std::string& part_name)
+{
+    const std::pair<std::vector<double>*, std::vector<double>*> columns[] = {
+        {&set.x, &part.x}, {&set.y, &part.y}, {&set.z, &part.z}, {&set.h, &part.h}, {&set.mass, &part.mass}, {&set.density, &part.density}};
+    const bool first = set.x.empty();
+    for (const auto& [whole, piece] : columns) {
+        if (!first && whole->empty() != piece->empty())
+            fail_input(fmt::format("{}: its smoothing lengths, masses or densities are {} where the first part's are {}; "
+                                   "expected the parts of one snapshot",
+                                   part_name, piece->empty() ? "missing" : "present", whole->empty() ? "missing" : "present"));
+        whole->insert(whole->end(), piece->begin(), piece->end());
+    }
+    if (first) set.dimension = part.dimension, set.gravity = part.gravity, set.box = part.box, set.support_per_h = part.support_per_h;
+}
+
+// A snapshot in one file, or in NumFilesPerSnapshot files BASE.0.hdf5 ... (SWIFT's distributed
+// snapshots, GADGET's multi-part files) read in part order from any one of them. The budget
+// is checked against the declared total before anything is read, and every part is an input.
+ParticleSet read_snapshot_parts(const OpenFile& named, std::vector<std::string>& inputs)
+{
+    const File& f = named.file();
+    const auto files = f.attribute("/Header", "NumFilesPerSnapshot");
+    const double total = declared_total(f);
+    if (files.empty() || files[0] <= 1 || static_cast<double>(f.rows("/PartType0/Coordinates")) >= total)
+        return read_snapshot(f);
+    const auto parts = static_cast<std::size_t>(files[0]);
+    if (files[0] != std::floor(files[0]) || files[0] > 1e5)
+        fail_input(fmt::format("{}: /Header NumFilesPerSnapshot is {}; expected a whole number of files", f.name, files[0]));
+    if (!part_name(f.name, 0))
+        fail_input(fmt::format("{}: one of {} files of a snapshot (/Header NumFilesPerSnapshot), but not named BASE.K.hdf5; "
+                               "expected the parts' own names",
+                               f.name, parts));
+    if (total > static_cast<double>(max_particles()))
+        fail_input(fmt::format("{}: the snapshot declares {:.0f} particles in {} files (/Header NumPart_Total; {:.4g} bytes "
+                               "for the particles); over the memory budget of {:.4g} bytes (--memory-limit)",
+                               f.name, total, parts, total * bytes_per_particle, static_cast<double>(memory_limit_bytes())));
+    ParticleSet set;
+    for (std::size_t k = 0; k < parts; ++k) {
+        const std::filesystem::path path = *part_name(f.name, k);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec))
+            fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, does not exist; expected every part", f.name,
+                                   k, parts, path.string()));
+        const OpenFile part(path);
+        check_same_header(f, part.file());
+        append_part(set, read_snapshot(part.file()), path.string());
+        inputs.push_back(path.lexically_normal().string());
+        inputs.insert(inputs.end(), part.linked_files().begin(), part.linked_files().end());
+    }
+    if (static_cast<double>(set.x.size()) != total)
+        fail_input(fmt::format("{}: the snapshot's {} files hold {} particles but /Header NumPart_Total declares {:.0f}; "
+                               "expected the parts of one snapshot",
+                               f.name, parts, set.x.size(), total));
+    return set;
+}
+
 } // namespace
 
 ParticleSet read_hdf5_particles(const std::filesystem::path& file, const ParticleFileOptions& options)
@@ -302,29 +433,28 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     silence_hdf5();
     const std::string name = file.string();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) fail_input(name + ": no such file");
-    if (H5Fis_hdf5(file.c_str()) <= 0) fail_input(name + ": not an HDF5 file");
-    Handle handle(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    if (!handle.valid()) fail_input(name + ": cannot be opened as HDF5 (a truncated file?)");
-    LinkedFiles linked{std::filesystem::absolute(file).parent_path(), {}, {}};
-    Handle links(H5Pcreate(H5P_LINK_ACCESS), H5Pclose), dataset_access(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose),
-        group_access(H5Pcreate(H5P_GROUP_ACCESS), H5Pclose);
-    for (hid_t list : {links.get(), dataset_access.get(), group_access.get()})
-        H5Pset_elink_cb(list, follow_external_link, &linked);
-    const File f{name, handle.get(), &linked, links.get(), dataset_access.get(), group_access.get()};
+    // A snapshot named by its base (snap.hdf5 for snap.0.hdf5 ...): its parts are named instead.
+    const std::filesystem::path first = file.parent_path() / (file.stem().string() + ".0" + file.extension().string());
+    if (!std::filesystem::exists(file, ec) && std::filesystem::is_regular_file(first, ec))
+        fail_input(fmt::format("{}: no such file; the snapshot is in parts: name one of them, such as {}", name, first.string()));
+    const OpenFile named(file);
+    const File& f = named.file();
+    std::vector<std::string> inputs;
     ParticleSet set;
     if (f.exists("/PartType0")) {
         if (!f.exists("/PartType0/Coordinates"))
             fail_input(name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
-        set = read_snapshot(f);
+        set = read_snapshot_parts(named, inputs);
+        set.name = name;
     } else if (f.exists("/particles")) {
         set = read_pysph(f, options.array);
     } else {
         fail_input(name + ": neither /PartType0 (SWIFT, GADGET) nor /particles (PySPH); expected a particle snapshot");
     }
-    std::sort(linked.files.begin(), linked.files.end());
-    linked.files.erase(std::unique(linked.files.begin(), linked.files.end()), linked.files.end());
-    set.linked_files = std::move(linked.files);
+    inputs.insert(inputs.end(), named.linked_files().begin(), named.linked_files().end());
+    std::sort(inputs.begin(), inputs.end());
+    inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());
+    set.linked_files = std::move(inputs);
     return set;
 }
 
