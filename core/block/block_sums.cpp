@@ -2,6 +2,7 @@
 
 #include "analysis/gradient_form.hpp"
 #include "particles/neighbour_gather.hpp"
+#include "particles/pair_pass.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
@@ -63,21 +64,11 @@ struct BlockSweep {
     double reach;
     double self, kd, kd1;
 
-    // The candidates of cluster c gathered once, then each particle's neighbours kept from them.
-    std::size_t sum_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
-    {
-        gather_cluster(grid, c, {nullptr, reach}, nullptr, point_rho.empty() ? nullptr : point_rho.data(), cluster);
-        std::size_t pairs = 0;
-        for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
-            if (!grid.is_ghost(p)) pairs += sum_particle(p, cluster, nb, result);
-        return pairs;
-    }
-
-    std::size_t sum_particle(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, BlockResult& result) const
+    // Particle p's sums over its neighbours (kept by the pair pass); returns their count.
+    std::size_t sum_particle(std::size_t p, Neighbours& nb, BlockResult& result) const
     {
         const int dim = parameters.dimension;
         const double k = parameters.k;
-        gather_from_cluster(grid, cluster, p, reach * reach, "the block", nb, false);
         const std::size_t n = nb.count, padded = padded_count(n);
         for (std::size_t j = n; j < padded; ++j) nb.b[j] = 1; // Monaghan's weight divides by rho_j
         distances(nb, padded, 1 / k);
@@ -125,14 +116,11 @@ std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const Blo
                      kd,
                      kd * k};
     std::vector<std::size_t> pairs(static_cast<std::size_t>(result.threads));
-    ParallelFor pass;
-    pass.run(grid.clusters(), result.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        Neighbours nb;
-        ClusterCandidates cluster;
-        std::size_t found = 0;
-        for (std::size_t c = begin; c < end && pass.keep_going(); ++c) found += sweep.sum_cluster(c, cluster, nb, result);
-        pairs[static_cast<std::size_t>(thread)] = found;
-    });
+    const PairPassInputs pass{{nullptr, sweep.reach}, nullptr, monaghan ? sweep.point_rho.data() : nullptr, false, ""};
+    pair_pass(
+        grid, "the block", pass, result.threads,
+        [&](int thread, std::size_t p, Neighbours& nb) { pairs[static_cast<std::size_t>(thread)] += sweep.sum_particle(p, nb, result); },
+        [](int) {});
     std::size_t total = 0;
     for (auto p : pairs) total += p;
     return total;

@@ -3,10 +3,10 @@
 #include "kernels/kernel_validity.hpp"
 #include "particles/neighbour_gather.hpp"
 #include "particles/neighbour_sums.hpp"
+#include "particles/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/huge_pages.hpp"
 #include "support/process/parallel_for.hpp"
-#include "support/process/progress.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -111,22 +111,14 @@ struct Sweep {
     // on every lattice and Poisson set).
     PointInputs volume, h, reach;
     std::vector<double> mass; // in point order; empty: m_j = rho0 V_j
-    // The candidates of a cluster gathered once, then one fused pass per particle of it:
-    // its neighbours kept from the shared candidates, r, q and 1 / r, W and W' in one kernel
-    // call, and every sum, over arrays that stay in L1.
-    void measure_cluster(std::size_t c, ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
-    {
-        gather_cluster(grid, c, reach.view(), volume.view().per_point, mass.empty() ? nullptr : mass.data(), cluster);
-        for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p)
-            if (!grid.is_ghost(p)) measure(p, cluster, nb, out);
-    }
-
-    void measure(std::size_t p, const ClusterCandidates& cluster, Neighbours& nb, ResultBlock& out) const
+    // One fused pass per particle over its neighbours (kept by the pair pass from its
+    // cluster's shared candidates): r, q and 1 / r, W and W' in one kernel call, and every
+    // sum, over arrays that stay in L1.
+    void measure(std::size_t p, Neighbours& nb, ResultBlock& out) const
     {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = this->h.view()[p], k = h / in.spacing, reach = this->reach.view()[p];
-        gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb, false);
+        const double h = this->h.view()[p], k = h / in.spacing;
         const std::size_t n = nb.count, padded = padded_count(n);
         distances(nb, padded, 1 / h);
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
@@ -236,22 +228,17 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
-    // Cluster by cluster (in cell order, so that neighbouring clusters share their candidates in cache).
-    ParallelFor pass;
-    pass.run(grid.clusters(), out.threads, [&](int thread, std::size_t begin, std::size_t end) {
-        Neighbours nb;
-        ClusterCandidates cluster;
-        ResultBlock results;
-        // The first thread's share stands for the whole: every thread has as many clusters.
-        std::optional<Progress> progress;
-        if (thread == 0) progress.emplace(set.name + ": the sums", (end - begin + 255) / 256);
-        for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            if (progress && ((b - begin) & 255) == 255) progress->step(fmt::format("{} clusters", b - begin + 1));
-            sweep.measure_cluster(b, cluster, nb, results);
-            if (results.full()) results.flush(out);
-        }
-        results.flush(out);
-    });
+    std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread
+    const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point,
+                              sweep.mass.empty() ? nullptr : sweep.mass.data(), false, set.name + ": the sums"};
+    pair_pass(
+        grid, set.name, pass, out.threads,
+        [&](int thread, std::size_t p, Neighbours& nb) {
+            ResultBlock& block = results[static_cast<std::size_t>(thread)];
+            sweep.measure(p, nb, block);
+            if (block.full()) block.flush(out);
+        },
+        [&](int thread) { results[static_cast<std::size_t>(thread)].flush(out); });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     for (int count : out.neighbours) out.pairs += static_cast<std::size_t>(count);

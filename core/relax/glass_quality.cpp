@@ -1,6 +1,7 @@
 #include "relax/glass_quality.hpp"
 
 #include "particles/neighbour_gather.hpp"
+#include "particles/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 
@@ -20,20 +21,13 @@ void visit_neighbours(const ParticleSet& set, double reach, int threads, int thr
 {
     if (!set.box) fail_input(fmt::format("{}: g(r) and nearest neighbours need a periodic box", set.name));
     const NeighbourGrid grid(set, reach, threads);
-    ParallelFor pass;
-    pass.run(grid.clusters(), std::min(threads, thread_slots), [&](int thread, std::size_t begin, std::size_t end) {
-        ClusterCandidates cluster;
-        Neighbours nb;
-        for (std::size_t b = begin; b < end && pass.keep_going(); ++b) {
-            gather_cluster(grid, b, {nullptr, reach}, nullptr, nullptr, cluster);
-            for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p)
-                if (!grid.is_ghost(p)) {
-                    gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
-                    fill_distances(nb);
-                    visit(thread, grid.source(p), nb);
-                }
-        }
-    });
+    pair_pass(
+        grid, set.name, {{nullptr, reach}, nullptr, nullptr, true, ""}, std::min(threads, thread_slots),
+        [&](int thread, std::size_t p, Neighbours& nb) {
+            fill_distances(nb);
+            visit(thread, grid.source(p), nb);
+        },
+        [](int) {});
 }
 
 int thread_count(int threads) { return std::clamp(threads, 1, 64); }

@@ -2,6 +2,7 @@
 
 #include "kernels/kernel_validity.hpp"
 #include "particles/neighbour_gather.hpp"
+#include "particles/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 
@@ -48,28 +49,19 @@ SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const doub
     return s;
 }
 
-// Calls visit(p, neighbours) for every particle of the set, cluster by cluster on `threads` threads,
-// with the particle engine's pass: a cluster's candidates gathered once, each particle's
-// neighbours kept from them (dx, dy, dz and r; a and b unless null).
+// Calls visit(p, neighbours) for every particle of the set on the engine's pair pass, with dx,
+// dy, dz, r and a (unless null) of each neighbour within the support radius `reach` (and its edge).
 template <class Visit>
-void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const double* a, const double* b,
-                       int threads, const Visit& visit)
+void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const double* a, int threads,
+                       const Visit& visit)
 {
-    const double reach2 = reach * reach * (1 + 2 * support_edge);
-    ParallelFor pass;
-    pass.run(grid.clusters(), threads, [&](int, std::size_t begin, std::size_t end) {
-        ClusterCandidates cluster;
-        Neighbours nb;
-        for (std::size_t bin = begin; bin < end && pass.keep_going(); ++bin) {
-            gather_cluster(grid, bin, {nullptr, std::sqrt(reach2)}, a, b, cluster);
-            for (std::size_t p = grid.cluster_begin(bin); p < grid.cluster_end(bin); ++p) {
-                if (grid.is_ghost(p)) continue;
-                gather_from_cluster(grid, cluster, p, reach2, set.name, nb);
-                fill_distances(nb);
-                visit(p, nb);
-            }
-        }
-    });
+    pair_pass(
+        grid, set.name, {{nullptr, search_reach(reach)}, a, nullptr, true, ""}, threads,
+        [&](int, std::size_t p, Neighbours& nb) {
+            fill_distances(nb);
+            visit(p, nb);
+        },
+        [](int) {});
 }
 
 } // namespace
@@ -82,7 +74,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const NeighbourGrid grid(set, reach, model.threads);
     out.density.assign(n, 0.0);
     const double w0 = kernel.w(0, dim, model.k);
-    for_each_particle(grid, set, reach, nullptr, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
@@ -106,7 +98,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
     const double scale = 1 / (hd * model.h); // W' = dW/dq: dW/dr = W' / h^(D+1)
-    for_each_particle(grid, set, reach, pi_points.data(), nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
+    for_each_particle(grid, set, reach, pi_points.data(), model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
