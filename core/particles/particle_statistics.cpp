@@ -105,7 +105,7 @@ Histogram histogram(std::span<const double> values, std::size_t bins, int thread
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
     h.lo = *lo, h.hi = *hi;
     const double width = (h.hi - h.lo) / static_cast<double>(bins);
-    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / particle_block_size + 1));
+    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / statistics_detail::buckets + 1));
     std::vector<std::vector<std::size_t>> counts(static_cast<std::size_t>(threads));
     ParallelFor pass;
     pass.run(values.size(), threads, [&](int t, std::size_t begin, std::size_t end) {

@@ -88,7 +88,8 @@ template <class Value>
 Summary summarise_values(std::size_t n, int threads, const Value& value)
 {
     using namespace statistics_detail;
-    const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / particle_block_size + 1));
+    // A thread counts into its own 65536 buckets: one per 65536 values at most.
+    const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / buckets + 1));
     std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers), std::vector<std::uint32_t>(buckets, 0));
     Summary s = moments(n, workers, value, [&](int thread, double v) { ++counts[static_cast<std::size_t>(thread)][order_key(v) >> bucket_shift]; });
     const Percentiles percentiles(counts, n);

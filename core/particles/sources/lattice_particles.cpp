@@ -43,7 +43,7 @@ ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& sp
     // A disturbance is drawn block by block, one stream per block (Boost's generator and
     // distribution: the same numbers on every platform and thread count).
     ParallelFor place;
-    place.run_blocks(n, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+    place.run_blocks(n, random_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
         auto engine = block_stream(spec.seed, block);
         boost::random::normal_distribution<double> normal(0.0, spec.sigma > 0 ? spec.sigma : 1.0);
         for (std::size_t i = begin; i < end; ++i) {

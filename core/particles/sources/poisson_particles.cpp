@@ -29,7 +29,7 @@ ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles
     set.box = box;
     set.x.resize(spec.count), set.y.resize(spec.count), set.z.resize(spec.count);
     ParallelFor draw;
-    draw.run_blocks(spec.count, particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
+    draw.run_blocks(spec.count, random_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
         auto engine = block_stream(spec.seed, block);
         boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
         for (std::size_t i = begin; i < end; ++i) {

@@ -5,10 +5,15 @@
 
 #include <boost/random/mersenne_twister.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <random>
 
 namespace sphkern {
+
+// The particles drawn from one stream: the sets a seed gives depend on it, so it is fixed
+// apart from the blocks of the parallel passes.
+inline constexpr std::size_t random_block_size = std::size_t{1} << 16;
 
 // The stream of block `block` of a set drawn with `seed` (std::seed_seq's mixing is fixed by
 // the standard, Boost's generator by its own: the same numbers on every platform).

@@ -21,8 +21,9 @@
 namespace sphkern {
 
 // The block of ParallelFor::run_blocks that the parallel passes over particles use: small
-// enough to share out among many threads, large enough that a block's bookkeeping is nothing.
-inline constexpr std::size_t particle_block_size = std::size_t{1} << 16;
+// enough to share a set of 10^5 particles out among 16 threads, large enough that a block's
+// bookkeeping is nothing. Sums are added block by block, so their bits depend on it.
+inline constexpr std::size_t particle_block_size = std::size_t{1} << 13;
 
 // The threads a request for `requested` gets: every core for 0 or less.
 inline int worker_threads(int requested)
