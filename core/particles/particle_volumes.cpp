@@ -1,7 +1,6 @@
 #include "particles/particle_volumes.hpp"
 
 #include "support/error.hpp"
-#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 
@@ -32,14 +31,7 @@ VolumeModel default_volume_model(const ParticleSet& set)
 
 ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int threads)
 {
-    ParticleValues volume(set.size());
-    auto fill = [&](const auto& value) {
-        ParallelFor pass;
-        pass.run_blocks(volume.size(), particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) volume[i] = value(i);
-        });
-        return std::move(volume);
-    };
+    auto fill = [&](const auto& value) { return fill_particle_values(set.size(), threads, value); };
     switch (model) {
     case VolumeModel::uniform:
         if (!set.box)
@@ -57,7 +49,7 @@ ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int t
         return fill([&](std::size_t i) { return cells[i]; });
     }
     }
-    return volume;
+    return {};
 }
 
 } // namespace sphkern

@@ -1,7 +1,6 @@
 #include "particles/smoothing_lengths.hpp"
 
 #include "support/error.hpp"
-#include "support/process/parallel_for.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
@@ -32,14 +31,7 @@ ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, c
 {
     const int dim = set.dimension;
     const double R = kernel.support();
-    ParticleValues h(set.size());
-    auto fill = [&](const auto& value) {
-        ParallelFor pass;
-        pass.run_blocks(h.size(), particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) h[i] = value(i);
-        });
-        return std::move(h);
-    };
+    auto fill = [&](const auto& value) { return fill_particle_values(set.size(), threads, value); };
     auto uniform = [&](double value) { return fill([value](std::size_t) { return value; }); };
     switch (spec.rule) {
     case SmoothingRule::eta:

@@ -4,6 +4,8 @@
 // of falling on the one that allocates.
 #pragma once
 
+#include "support/process/parallel_for.hpp"
+
 #include <memory>
 #include <new>
 #include <utility>
@@ -36,5 +38,17 @@ using FirstTouchVector = std::vector<T, FirstTouchAllocator<T>>;
 
 // One double per particle (h, V), filled by the threads of a parallel pass.
 using ParticleValues = FirstTouchVector<double>;
+
+// value(i) for i in [0, n), written (and so first touched) by `threads` threads.
+template <class Value>
+ParticleValues fill_particle_values(std::size_t n, int threads, const Value& value)
+{
+    ParticleValues values(n);
+    ParallelFor pass;
+    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) values[i] = value(i);
+    });
+    return values;
+}
 
 } // namespace sphkern
