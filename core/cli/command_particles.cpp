@@ -74,7 +74,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();
     c.add_option("--rho0", o.rho0, "Reference density of eps_rho (default: the set's total mass over its volume)");
-    c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho and eps_gradp");
+    c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum");
     c.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
