@@ -87,6 +87,19 @@ RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOption
     return judged;
 }
 
+// The run; where it diverges, the steps before it (all finite) still go to --history, and the
+// error says so. The set itself is not written: its positions are what diverged.
+RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o)
+{
+    try {
+        return relax_particles(kernel, std::move(set), h, o.settings);
+    } catch (const RelaxDiverged& e) {
+        if (o.history.empty()) throw;
+        write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, e.history); });
+        throw Error(e.code(), fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, o.history));
+    }
+}
+
 } // namespace
 
 Action add_relax_command(Command app)
@@ -110,12 +123,13 @@ Action add_relax_command(Command app)
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(o, set, kernel);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
-        const RelaxResult run = relax_particles(kernel, std::move(set), h, o.settings);
+        const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge(kernel, run, o);
         if (!o.output.empty())
             write_particle_file(o.output, run.state.set,
                                 {std::vector<double>(run.state.set.size(), h), kernel.support(), run.state.model.mass});
-        if (!o.history.empty()) write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run); });
+        if (!o.history.empty())
+            write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));
         else print_relax(results_file(), kernel, o.settings, run, judged);
         return 0;

@@ -89,10 +89,10 @@ void print_relax(std::FILE* out, const Kernel& kernel, const RelaxSettings& sett
                q.rdf.peak, q.rdf.peak_r, q.nearest.mean, q.nearest.min, q.nearest.p1, q.paired);
 }
 
-void write_relax_history_csv(std::ostream& out, const RelaxResult& run)
+void write_relax_history_csv(std::ostream& out, const std::vector<RelaxStep>& history)
 {
     out << "step,time,rms_move,max_move,rms_e0,rms_e1,kinetic\n";
-    for (const auto& s : run.history)
+    for (const auto& s : history)
         out << fmt::format("{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", s.step, s.time, s.rms_move, s.max_move,
                            s.rms_e0, s.rms_e1, s.kinetic);
 }

@@ -29,7 +29,7 @@ nlohmann::json relax_json(const Kernel& kernel, const RelaxSettings& settings, c
 void print_relax(std::FILE* out, const Kernel& kernel, const RelaxSettings& settings, const RelaxResult& run,
                  const RelaxedSet& judged);
 // step,time,rms_move,max_move,rms_e0,rms_e1,kinetic
-void write_relax_history_csv(std::ostream& out, const RelaxResult& run);
+void write_relax_history_csv(std::ostream& out, const std::vector<RelaxStep>& history);
 
 nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request,
                             const std::vector<PairingPoint>& points);

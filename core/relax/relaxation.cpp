@@ -78,15 +78,17 @@ bool finish_moves(RelaxState& s, RelaxStep& step, const Moves& moves)
     return true;
 }
 
-[[noreturn]] void fail_diverged(const RelaxState& s, const RelaxSettings& settings, const RelaxStep& step, double dt)
+[[noreturn]] void fail_diverged(const RelaxState& s, const RelaxSettings& settings, const RelaxStep& step, double dt,
+                                std::vector<RelaxStep> history)
 {
     const std::string move = std::isfinite(step.max_move)
                                  ? fmt::format("a particle moved {:.3g} h in one step", step.max_move)
                                  : std::string("a particle's move in one step overflowed a double");
-    fail_input(fmt::format("{}: the integration diverged at step {} (t = {:.4g} d/c): {}; expected a smaller --dt (now "
-                           "{:g}), more --damping (now {:g}) or a --gamma nearer 1 (now {:g})",
-                           s.set.name, step.step, step.step * dt, move, settings.time_step, settings.damping,
-                           settings.gamma));
+    throw RelaxDiverged(fmt::format("{}: the integration diverged at step {} (t = {:.4g} d/c): {}; expected a smaller "
+                                    "--dt (now {:g}), more --damping (now {:g}) or a --gamma nearer 1 (now {:g})",
+                                    s.set.name, step.step, step.step * dt, move, settings.time_step, settings.damping,
+                                    settings.gamma),
+                        std::move(history));
 }
 
 // Kick (exact damping over half a step, then the force), used twice a step.
@@ -191,7 +193,7 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
         step.step = n;
         const bool settled = settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
                                                                       : shift_step(kernel, s, settings, step);
-        if (!settled) fail_diverged(s, settings, step, result.dt);
+        if (!settled) fail_diverged(s, settings, step, result.dt, std::move(result.history));
         step.time = settings.method == RelaxMethod::pressure ? n * result.dt : 0;
         record_errors(s, step);
         result.history.push_back(step);

@@ -2,6 +2,8 @@
 // methods of RelaxSettings until the stopping rule holds, with a history of every step.
 #pragma once
 
+#include "support/error.hpp"
+
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
 #include "relax/relax_settings.hpp"
@@ -43,9 +45,21 @@ struct RelaxResult {
     std::string stop;               // why it stopped: "tolerance" or "steps"
 };
 
+// A relaxation stopped because its integration diverged (a move not finite, or longer than a
+// quarter of the box in one step): the message names the step, the time and the settings to
+// change; `history` holds the steps before it, all finite (what is safe to write).
+class RelaxDiverged : public Error {
+public:
+    RelaxDiverged(const std::string& message, std::vector<RelaxStep> steps)
+        : Error(ExitCode::input, message), history(std::move(steps))
+    {
+    }
+    std::vector<RelaxStep> history;
+};
+
 // Relaxes `set` (which needs a periodic box) at one h for every particle. `observe` is called
 // after step 0 and every step. Throws Error(input) for settings out of range, a set without
-// a box and an h whose support does not fit twice into the box.
+// a box and an h whose support does not fit twice into the box, and RelaxDiverged.
 RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
                             const std::function<void(const RelaxState&, const RelaxStep&)>& observe = {});
 

@@ -1031,6 +1031,12 @@ expect 3 'to_nowhere.h5: the external link in / to nowhere.h5:/PartType0 leads t
 # set sphkern made is not blamed ("particle 0 at (1.2e+67, ...) lies outside the periodic box").
 expect 3 'poisson: the integration diverged at step [0-9]+ \(t = .*\): .*; expected a smaller --dt \(now 0.2\), more --damping \(now 0.5\) or a --gamma nearer 1 \(now 1000\)' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50
 expect 3 'fcc: the integration diverged at step 1 .*--gamma nearer 1 \(now 1e-06\)' -- pairing cubic_bspline fcc --k 1.2 --gamma 1e-6
+# What is safe to write is written: the steps before the divergence (all finite) go to --history,
+# and the error says where; the diverged positions are not written (--output).
+expect 3 'diverged at step [0-9]+ .*; the history up to step [0-9]+ is in .*diverged.csv$' -- relax wendland_c2 poisson --count 500 --gamma 1000 --steps 50 --history "$work/diverged.csv" --output "$work/diverged-set.csv"
+check "relax: the history before a divergence is written, every number finite" \
+    /usr/bin/python3 -c "import csv, math, sys; rows = list(csv.DictReader(open(sys.argv[1]))); sys.exit(not (rows and rows[0]['step'] == '0' and all(math.isfinite(float(v)) for r in rows for v in r.values())))" "$work/diverged.csv"
+check "relax: a diverged set is not written" test ! -e "$work/diverged-set.csv"
 
 # A particle within one box width outside a periodic box is wrapped in (as documented); farther is refused.
 /usr/bin/python3 -c "
