@@ -135,7 +135,7 @@ void OutputFolder::remove_created_parents()
 OutputFolder::~OutputFolder()
 {
     unregister_staging_path(staging_);
-    if (committed_) {
+    if (committed_ || keep_staging_) {
         if (!created_parents_.empty()) unregister_created_folders();
         return;
     }
@@ -176,13 +176,30 @@ void OutputFolder::commit()
                                                          "use --force to replace it");
     if (error != EEXIST && error != ENOTEMPTY)
         throw Error(ExitCode::output, target_.string() + ": cannot move the results into place: " + std::strerror(error));
-    // --force: exchange with the existing folder only if it is still one sphkern wrote,
-    // then remove the old one, which now sits at the staging path.
-    if (!written_by_sphkern(target_))
-        throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
-                                          marker_name + " inside); refusing to replace it");
-    if (rename_with(staging_, target_, RENAME_EXCHANGE) != 0)
-        throw Error(ExitCode::output, target_.string() + ": cannot replace: " + std::strerror(errno));
+    // --force: exchange with the existing folder if it is one sphkern wrote, then remove the
+    // old one, which now sits at the staging path. What was replaced is checked again after
+    // the exchange: another process may have moved a folder of its own to the target in
+    // between. Such a folder is exchanged back, never removed, and the signal handler leaves
+    // the staging path alone while a folder not ours may sit there.
+    const std::string not_ours = std::string(": exists and is not a results folder sphkern wrote (no ") + marker_name + " inside); ";
+    if (!written_by_sphkern(target_)) throw Error(ExitCode::output, target_.string() + not_ours + "refusing to replace it");
+    unregister_staging_path(staging_);
+    if (rename_with(staging_, target_, RENAME_EXCHANGE) != 0) {
+        const int error = errno;
+        register_staging_path(staging_);
+        throw Error(ExitCode::output, target_.string() + ": cannot replace: " + std::strerror(error));
+    }
+    if (!written_by_sphkern(staging_)) {
+        if (rename_with(staging_, target_, RENAME_EXCHANGE) == 0) {
+            register_staging_path(staging_);
+            throw Error(ExitCode::output, target_.string() + not_ours + "it was moved there while the results were "
+                                                                         "moved in, and is back in place");
+        }
+        keep_staging_ = true; // the other folder sits at the staging path: it is never removed
+        throw Error(ExitCode::output, target_.string() + not_ours + "it was moved there while the results were moved "
+                                                                     "in; it is now at " + staging_.string() +
+                                          " (nothing was removed)");
+    }
     committed_ = true;
     std::error_code ec;
     fs::remove_all(staging_, ec);

@@ -39,6 +39,7 @@ private:
     std::vector<std::filesystem::path> created_parents_; // outermost first
     bool overwrite_;
     bool committed_ = false;
+    bool keep_staging_ = false; // a folder sphkern did not write ended up at the staging path
 };
 
 // True if `folder` is a real folder (not a link) holding sphkern's marker file.
