@@ -4,6 +4,7 @@
 #include "support/io/provenance.hpp"
 #include "support/io/results_output.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/stray_children.hpp"
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -121,9 +122,12 @@ int main(int argc, char** argv)
     spdlog::set_level(spdlog::level::from_str(log_level));
 
     install_interrupt_handlers();
+    adopt_orphans(); // a daemon a plugin forks comes back to sphkern, which ends it at exit
     // Past a file-size limit (ulimit -f) a write fails with EFBIG, an error that names the
     // file and removes what was staged, instead of a signal that kills without a word.
     std::signal(SIGXFSZ, SIG_IGN);
     separate_results_from_stdout();
-    return run_parsed(commands);
+    const int status = run_parsed(commands);
+    end_stray_children();
+    return status;
 }

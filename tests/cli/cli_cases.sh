@@ -1092,6 +1092,20 @@ mkdir -p "$work/here"
 check "a relative --csv lands in the folder it was given in, whatever a plugin's constructor does" \
     test -s "$work/here/rel.csv" -a ! -e /rel.csv
 
+# A plugin that forks a daemon when it is loaded (a session of its own, every descriptor closed),
+# in the probe's child and in sphkern: nothing of it outlives sphkern.
+no_daemon_left() { # true if the daemons wrote their pids and none is running (a survivor is killed)
+    local pid left=0
+    [[ -s "$work/daemons.txt" ]] || return 1
+    for pid in $(cat "$work/daemons.txt"); do
+        if [[ -e /proc/$pid && $(awk '{print $3}' "/proc/$pid/stat") != Z ]]; then kill -9 "$pid"; left=1; fi
+    done
+    return $left
+}
+SPHKERN_TEST_DAEMON_PIDS="$work/daemons.txt" "$sphkern" particles forks_daemon fcc --size 6,6,6 --k 1.2 \
+    --plugin "$broken/forks_daemon.so" >/dev/null 2>&1
+check "a daemon a plugin forks does not outlive sphkern" no_daemon_left
+
 # A stale probe-cache entry (the file's own size and times, another kernel's name) heals: it
 # made wendland_c4 unknown and wendland_c2 "two plugins", run after run.
 stale="$work/stale-cache"

@@ -140,6 +140,12 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
     const ChildAnswer answer = read_answer(fds[0], pid, timeout_seconds);
     ::close(fds[0]);
     if (answer.timed_out) ::kill(pid, SIGKILL);
+    // What the work left in the child's process group (a plugin's forked children) ends with
+    // it: the group is killed while the child, exited but not reaped, still holds its id.
+    siginfo_t exited{};
+    while (::waitid(P_PID, static_cast<id_t>(pid), &exited, WEXITED | WNOWAIT) != 0 && errno == EINTR) {
+    }
+    ::kill(-pid, SIGKILL);
     int status = 0;
     wait_for(pid, &status);
     return outcome(answer, status, timeout_seconds);
