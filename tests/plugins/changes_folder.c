@@ -1,48 +1,12 @@
 /* Wendland C2 whose constructor moves the process to the root folder when it is loaded: a
  * relative output path given on the command line must still mean the folder it was given in. */
 #include <unistd.h>
-#include <sphkern/kernel_plugin.h>
-#include <sphkern/kernel_plugin_helpers.h>
-
-#define PI 3.14159265358979323846
 
 __attribute__((constructor)) static void move_away(void)
 {
     if (chdir("/") != 0) return;
 }
 
-static double sigma(int dim) { return dim == 2 ? 7.0 / (4.0 * PI) : 21.0 / (16.0 * PI); }
-
-static double w(double q, int dim, double k, const double* p)
-{
-    (void)k; (void)p;
-    if (q >= 2.0) return 0.0;
-    double t = 1.0 - 0.5 * q;
-    return sigma(dim) * t * t * t * t * (2.0 * q + 1.0);
-}
-
-static double dw(double q, int dim, double k, const double* p)
-{
-    (void)k; (void)p;
-    if (q >= 2.0) return 0.0;
-    double t = 1.0 - 0.5 * q;
-    return sigma(dim) * -5.0 * q * t * t * t;
-}
-
-SPHKERN_BATCH_FROM_SCALAR(w_batch, w)
-SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
-
-static const sphkern_kernel_descriptor descriptor = {
-    SPHKERN_DESCRIPTOR_VERSION,
-    .name = "changes_folder",
-    .title = "moves the process to /",
-    .reference = "",
-    .support = 2.0,
-    .dimensions = SPHKERN_DIM(2) | SPHKERN_DIM(3),
-    .w = w,
-    .dw = dw,
-    .w_batch = w_batch,
-    .dw_batch = dw_batch,
-};
-
-SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry(void) { return &descriptor; }
+#define WENDLAND_NAME "changes_folder"
+#define WENDLAND_TITLE "moves the process to /"
+#include "wendland_c2_plugin.h"
