@@ -174,10 +174,10 @@ struct Sweep {
 };
 
 
-// The search reach of every particle's support radius R h, in point order (one for all for one h).
-PointInputs reaches(const NeighbourGrid& grid, std::span<const double> h, double support)
+// The search reach of every particle's support radius R h, from h in point order (one for all for one h).
+PointInputs reaches(const NeighbourGrid& grid, const PointInputs& h, double support)
 {
-    PointInputs r = PointInputs::of(grid, h);
+    PointInputs r = h;
     r.all = search_reach(support * r.all);
     ParallelFor pass;
     pass.run(r.per_point.size(), grid.threads(), [&](int, std::size_t begin, std::size_t end) {
@@ -208,13 +208,15 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     ParticleMeasures out;
     out.threads = worker_threads(inputs.threads);
     const NeighbourGrid grid(set, kernel.support() * h_max, out.threads);
+    PointInputs h_points = PointInputs::of(grid, inputs.h);
+    PointInputs reach_points = reaches(grid, h_points, kernel.support());
     const Sweep sweep{kernel,
                       set,
                       inputs,
                       grid,
                       PointInputs::of(grid, inputs.volume),
-                      PointInputs::of(grid, inputs.h),
-                      reaches(grid, inputs.h, kernel.support()),
+                      std::move(h_points),
+                      std::move(reach_points),
                       inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass)};
 
     phases.lap("grid");

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -27,15 +28,17 @@ void record_errors(const RelaxState& s, RelaxStep& step)
 {
     const std::size_t n = s.set.size();
     const auto& f = s.forces;
-    const double e0 = parallel_sum(n, s.model.threads, [&](std::size_t i) {
-        const double d = f.density[i] / s.model.mass * s.model.volume - 1;
-        return d * d;
-    });
-    const double e1 = parallel_sum(n, s.model.threads, [&](std::size_t i) {
-        return (f.gx[i] * f.gx[i] + f.gy[i] * f.gy[i] + f.gz[i] * f.gz[i]) * s.model.h * s.model.h;
-    });
-    step.rms_e0 = std::sqrt(e0 / static_cast<double>(n));
-    step.rms_e1 = std::sqrt(e1 / static_cast<double>(n));
+    using Sums = std::array<double, 2>; // e0^2 and |e1|^2, in one pass
+    const Sums sums = parallel_reduce(
+        n, s.model.threads, Sums{0, 0},
+        [&](std::size_t i, Sums& a) {
+            const double d = f.density[i] / s.model.mass * s.model.volume - 1;
+            a[0] += d * d;
+            a[1] += (f.gx[i] * f.gx[i] + f.gy[i] * f.gy[i] + f.gz[i] * f.gz[i]) * s.model.h * s.model.h;
+        },
+        [](Sums& total, const Sums& block) { total[0] += block[0], total[1] += block[1]; });
+    step.rms_e0 = std::sqrt(sums[0] / static_cast<double>(n));
+    step.rms_e1 = std::sqrt(sums[1] / static_cast<double>(n));
 }
 
 // Moves particle i by (dx, dy, dz) and returns the squared length of the move.
