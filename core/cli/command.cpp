@@ -72,9 +72,7 @@ EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
 {
     EvaluationInputs inputs;
     inputs.a_p = options.ap;
-    // The lattice's gravity parser's names, so that its refusals read as before.
-    if (!options.gravity.empty())
-        inputs.gravity = parse_number_list(options.gravity, ValueSource::argument("--gravity"), 0);
+    if (!options.gravity.empty()) inputs.gravity = parse_number_list(options.gravity, ValueSource::option("--gravity"));
     inputs.site = options.site;
     if (!options.shells.empty()) inputs.shell_radii = parse_number_list(options.shells, ValueSource::option("--shells"));
     else if (options.continue_past_support)
@@ -86,7 +84,7 @@ EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
 EvaluationSources evaluation_sources(const EvaluationOptions& options)
 {
     // A site the lattice lacks is refused as input (exit 3), as it always was.
-    return {"--gravity \"" + options.gravity + "\"", {"--site", ExitCode::input},
+    return {ValueSource::option("--gravity"), {"--site", ExitCode::input},
             ValueSource::option("--shells " + options.shells)};
 }
 

@@ -3,6 +3,7 @@
 #include "cli/command.hpp"
 
 #include "relax/relax_report.hpp"
+#include "requests/pairing_request.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
 
@@ -35,7 +36,7 @@ void add_options(Command c, PairingOptions& o)
     c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma").capture_default_str();
     c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak").capture_default_str();
     c.add_option("--seed", r.seed, "Seed of the noise").capture_default_str();
-    c.add_option("--threads", r.threads, "Threads (default: every core)").check_range(0, 1024);
+    c.add_option("--threads", r.threads, "Threads (default: every core)");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -55,7 +56,7 @@ Action add_pairing_command(Command app)
         if (o.k) o.request.k_min = o.request.k_max = *o.k, o.request.samples = 1;
         else if (command.count("--kmin") != 1 || command.count("--kmax") != 1)
             throw Error(ExitCode::usage, "a range needs both --kmin and --kmax");
-        check_gamma(o.request.gamma, "--gamma");
+        check_pairing_request(o.request, pairing_sources(FrontEnd::command_line));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const Lattice lattice = load_lattice(o.lattice);

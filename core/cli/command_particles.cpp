@@ -4,13 +4,14 @@
 #include "cli/source_options.hpp"
 
 #include "particles/particle_report.hpp"
+#include "requests/particles_request.hpp"
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
 
-#include <cmath>
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -29,34 +30,24 @@ struct ParticlesOptions : CommonOptions, SourceOptions {
     std::size_t histogram = 0;
 };
 
-ParticleRequest request_of(const ParticlesOptions& o, const ParticleSet& set)
+std::optional<std::array<double, 2>> range_of(const std::vector<double>& values)
 {
-    ParticleRequest request;
-    const int rules = o.eta.has_value() + o.nh.has_value() + o.k.has_value() + !o.eta_range.empty() + !o.nh_range.empty();
-    if (rules > 1) throw Error(ExitCode::usage, "give one of --eta, --nh, --k, --eta-range and --nh-range");
-    if (o.eta) request.smoothing = {SmoothingRule::eta, *o.eta, 0};
-    else if (o.nh) request.smoothing = {SmoothingRule::nh, *o.nh, 0};
-    else if (o.k) request.smoothing = {SmoothingRule::k, *o.k, 0};
-    else if (!set.h.empty() && o.eta_range.empty() && o.nh_range.empty())
-        request.smoothing = {SmoothingRule::file, 0, o.support_per_h.value_or(0)};
-    else request.smoothing = {SmoothingRule::eta, 1.2, 0}; // the documented default
-    if (o.support_per_h && (request.smoothing.rule != SmoothingRule::file || *o.support_per_h <= 0))
-        throw Error(ExitCode::usage, "--support-per-h maps a file's h (a positive number); it does not go with --eta, --nh or --k");
-    if (!o.eta_range.empty() || !o.nh_range.empty()) {
-        const bool eta = !o.eta_range.empty();
-        const auto& range = eta ? o.eta_range : o.nh_range;
-        request.sweep = SmoothingSweep{eta ? SmoothingRule::eta : SmoothingRule::nh, range[0], range[1], o.steps};
-        if (!o.csv.empty() || !o.vtk.empty())
-            throw Error(ExitCode::usage, "--csv and --vtk write one h per particle; they do not go with a sweep");
-    }
-    if (!o.volume.empty()) request.volume = parse_volume_model(o.volume);
-    if (!o.gravity.empty()) request.gravity = parse_direction(o.gravity, set.dimension, "--gravity");
-    request.depth = o.depth;
-    request.rho0 = o.rho0;
-    request.threads = o.threads;
-    request.histogram_bins = o.histogram;
-    request.vectors = !o.csv.empty() || !o.vtk.empty(); // the per-particle files write e1 and m1
-    return request;
+    if (values.empty()) return std::nullopt;
+    return std::array<double, 2>{values[0], values[1]};
+}
+
+ParticleArguments arguments_of(const ParticlesOptions& o, const ValueSource& gravity)
+{
+    ParticleArguments a;
+    a.smoothing = {o.eta, o.nh, o.k, o.support_per_h};
+    a.eta_range = range_of(o.eta_range), a.nh_range = range_of(o.nh_range);
+    a.steps = o.steps;
+    if (!o.volume.empty()) a.volume = o.volume;
+    if (!o.gravity.empty()) a.gravity = parse_number_list(o.gravity, gravity);
+    a.depth = o.depth, a.rho0 = o.rho0, a.threads = o.threads;
+    a.histogram = static_cast<long long>(o.histogram);
+    a.per_particle_files = !o.csv.empty() || !o.vtk.empty(); // they write e1 and m1
+    return a;
 }
 
 void add_options(Command c, ParticlesOptions& o)
@@ -75,7 +66,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();
     c.add_option("--rho0", o.rho0, "Reference density of eps_rho (default: the set's total mass over its volume)");
     c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum");
-    c.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
+    c.add_option("--threads", o.threads, "Threads (default: every core)");
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
     c.add_option("--vtk", o.vtk, "Write the per-particle values as a legacy VTK file (ParaView)");
@@ -99,10 +90,12 @@ Action add_particles_command(Command app)
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         PhaseTimes phases;
+        const auto sources = particle_sources(FrontEnd::command_line);
+        check_threads(o.threads, sources.threads); // the set is read on them
         const ParticleSet set = load_particles(source_of(o), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        ParticleAnswer answer = analyse_particles(kernel, set, request_of(o, set));
+        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments_of(o, sources.gravity), set, sources));
         phases.merge(answer.phases);
         phases.restart();
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });

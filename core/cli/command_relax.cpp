@@ -7,6 +7,7 @@
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relax_report.hpp"
+#include "requests/relax_request.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/io/atomic_file.hpp"
@@ -48,7 +49,7 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h").capture_default_str();
     c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij").capture_default_str();
     c.add_option("--max-move", s.max_move, "shift: largest move of a step, in units of h").capture_default_str();
-    c.add_option("--threads", s.threads, "Threads (default: every core)").check_range(0, 1024);
+    c.add_option("--threads", s.threads, "Threads (default: every core)");
     c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
     c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
@@ -57,17 +58,6 @@ void add_options(Command c, RelaxOptions& o)
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
-}
-
-// One h for every particle: relaxation is fixed-h SPH.
-double relax_h(const RelaxOptions& o, const ParticleSet& set, const Kernel& kernel)
-{
-    if (o.eta.has_value() + o.nh.has_value() + o.k.has_value() > 1) throw Error(ExitCode::usage, "give one of --eta, --nh and --k");
-    SmoothingSpec spec{SmoothingRule::eta, o.eta.value_or(1.2), 0};
-    if (o.nh) spec = {SmoothingRule::nh, *o.nh, 0};
-    if (o.k) spec = {SmoothingRule::k, *o.k, 0};
-    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with --box", set.name));
-    return smoothing_lengths(set, kernel, spec, mean_volume(set)).front();
 }
 
 RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
@@ -110,10 +100,11 @@ Action add_relax_command(Command app)
     return [options, command] {
         auto& o = *options;
         set_memory_limit_gib(o.memory_limit);
-        o.settings.method = parse_relax_method(o.method);
-        check_relax_settings(o.settings);
-        // Before the run: g(r) is drawn after it.
-        check_rdf_settings(o.rdf_max, o.rdf_bins, ValueSource::option("--rdf-max"), ValueSource::option("--rdf-bins"));
+        const auto sources = relax_sources(FrontEnd::command_line);
+        o.settings.method = relax_method_of(o.method, sources.method);
+        check_relax_settings(o.settings, sources);
+        check_rdf(o.rdf_max, o.rdf_bins, sources); // before the run: g(r) is drawn after it
+        const SmoothingSpec spec = smoothing_spec({o.eta, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_particle_output_name(o.output);
@@ -121,7 +112,7 @@ Action add_relax_command(Command app)
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         ParticleSet set = load_particles(source_of(o), o.settings.threads);
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        const double h = relax_h(o, set, kernel);
+        const double h = relax_h(spec, set, kernel, sources.smoothing);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge(kernel, run, o);

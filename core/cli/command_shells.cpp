@@ -1,6 +1,7 @@
 // `sphkern shells`: the neighbour shells of a lattice site.
 #include "cli/command.hpp"
 #include "lattices/lattice_json.hpp"
+#include "lattices/numeric_inputs.hpp"
 #include "support/io/results_output.hpp"
 
 #include "lattices/shells.hpp"
@@ -32,7 +33,8 @@ Action add_shells_command(Command app)
         auto lattice = load_lattice(options->lattice);
         Eigen::Vector3d e = options->gravity.empty()
                                 ? lattice.gravity
-                                : parse_direction(options->gravity, lattice.dimension, "--gravity");
+                                : direction_of(parse_number_list(options->gravity, ValueSource::option("--gravity")),
+                                               lattice.dimension, ValueSource::option("--gravity"));
         if (options->json) {
             print_json(shells_json(lattice, options->site, options->radius, e), command_inputs(nullptr, &lattice));
             return 0;

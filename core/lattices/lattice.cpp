@@ -13,6 +13,7 @@
 
 #include <Eigen/LU>
 #include <nlohmann/json.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -225,19 +226,13 @@ Lattice load_lattice(const std::string& spec)
     fail_input(message + "; shipped lattices: " + list + ", or give a path to a lattice file");
 }
 
-Eigen::Vector3d parse_direction(const std::string& text, int dimension, const std::string& what)
-{
-    return direction_of(parse_number_list(text, ValueSource::argument(what), 0), dimension, what + " \"" + text + "\"");
-}
-
-Eigen::Vector3d direction_of(const std::vector<double>& components, int dimension, const std::string& named)
+Eigen::Vector3d direction_of(const std::vector<double>& components, int dimension, const ValueSource& source)
 {
     if (static_cast<int>(components.size()) != dimension)
-        fail_input(named + ": expected " + std::to_string(dimension) + " comma-separated components");
+        fail_input(fmt::format("{}: {} components, expected {} (one per dimension)", source.name, components.size(), dimension));
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
     for (int i = 0; i < dimension; ++i) v[i] = components[static_cast<std::size_t>(i)];
-    if (!v.allFinite()) fail_input(named + ": expected finite numbers");
-    if (v.cwiseAbs().maxCoeff() == 0) fail_input(named + " has zero length, expected a direction");
+    if (!v.allFinite() || v.cwiseAbs().maxCoeff() == 0) source.fail("expected a direction: finite components, not all zero");
     return v.stableNormalized();
 }
 

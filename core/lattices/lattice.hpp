@@ -48,7 +48,4 @@ Lattice load_lattice(const std::string& spec);
 // Names of the shipped lattices, sorted.
 std::vector<std::string> shipped_lattice_names();
 
-// Parses "x,y[,z]" into a unit vector of the lattice's dimension; throws Error(input).
-Eigen::Vector3d parse_direction(const std::string& text, int dimension, const std::string& what);
-
 } // namespace sphkern

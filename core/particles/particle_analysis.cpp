@@ -15,24 +15,6 @@ namespace sphkern {
 
 namespace {
 
-void check_request(const ParticleRequest& request)
-{
-    if (request.threads < 0 || request.threads > 1024)
-        fail_usage(fmt::format("--threads {}: expected 0 (every core) to 1024", request.threads));
-    if (request.histogram_bins > 100000) fail_usage(fmt::format("--histogram {}: expected at most 100000 bins", request.histogram_bins));
-    if (const auto& s = request.sweep) {
-        if (s->rule != SmoothingRule::eta && s->rule != SmoothingRule::nh) fail_input("a sweep runs over eta or N_H");
-        if (!std::isfinite(s->from) || !std::isfinite(s->to) || s->from <= 0 || s->to <= s->from)
-            fail_usage(fmt::format("sweep range {} {}: expected 0 < A < B", s->from, s->to));
-        if (s->steps < 1 || s->steps > 1000) fail_usage(fmt::format("--steps {}: expected 1 to 1000", s->steps));
-    }
-    if (request.gravity && request.gravity->norm() == 0) fail_usage("--gravity: the direction is zero");
-    if (request.rho0 && (!std::isfinite(*request.rho0) || *request.rho0 <= 0))
-        fail_usage(fmt::format("--rho0 {}: expected a positive number", *request.rho0));
-    if (!std::isfinite(request.depth) || request.depth < 0 || request.depth > 1e6)
-        fail_usage(fmt::format("--depth {}: expected a number in [0, 1e6] (units of h)", request.depth));
-}
-
 ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
 {
     ParticlePoint point;
@@ -63,7 +45,7 @@ void require_finite(const ParticlePoint& point, const ParticleSet& set, const Pa
         if (std::all_of(std::begin(fields), std::end(fields), [](double v) { return std::isfinite(v); })) continue;
         const std::string why = name == std::string("eps_rho") && !set.mass.empty()
                                     ? fmt::format(" (the masses over rho0 = {:g}); expected a reference density "
-                                                  "(--rho0) nearer the set's mass density",
+                                                  "rho0 nearer the set's mass density",
                                                   answer.rho0)
                                     : "; expected values within the range of a double";
         fail_input(fmt::format("{}: the statistics of {} overflow a double{}", set.name, name, why));
@@ -81,7 +63,6 @@ const Summary& ParticlePoint::statistic(const std::string& name) const
 
 ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request)
 {
-    check_request(request);
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
     PhaseTimes& phases = answer.phases;
@@ -101,7 +82,6 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
     phases.lap("volumes");
     answer.gravity = request.gravity ? request.gravity->normalized() : set.gravity;
-    if (set.dimension == 2 && answer.gravity.z() != 0) fail_input("--gravity: a 2D set takes x,y");
     // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
     answer.rho0 = request.rho0.value_or(1.0);
     if (!request.rho0 && !set.mass.empty())
@@ -126,7 +106,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
         if (const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.neighbours[i] == 0; }))
             fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
-                                   "larger h (--eta, --nh) or a denser set",
+                                   "larger h or a denser set",
                                    set.name, *i, h[*i]));
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         require_finite(point, set, answer);

@@ -141,7 +141,7 @@ struct Sweep {
     {
         if (std::isfinite(r.e0) && std::isfinite(r.eps_gradp))
             fail_input(fmt::format("{}: eps_rho of particle {} overflows a double (its masses over rho0 = {:g}); expected "
-                                   "a reference density (--rho0) nearer the set's mass density",
+                                   "a reference density rho0 nearer the set's mass density",
                                    set.name, r.i, in.rho0));
         fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", r.i, set.name),
                             fmt::format("h = {:.6g}", h), {nb.q.data(), nb.count});
@@ -192,7 +192,7 @@ void check_inputs(const ParticleSet& set, const MeasureInputs& in)
     if (in.h.size() != n || in.volume.size() != n || (!in.mass.empty() && in.mass.size() != n))
         fail_input(fmt::format("{}: smoothing lengths, volumes or masses missing for some particles", set.name));
     if (!std::isfinite(in.rho0) || in.rho0 <= 0) fail_input(fmt::format("the reference density {} is not positive", in.rho0));
-    if (!std::isfinite(in.depth) || in.depth < 0) fail_input(fmt::format("--depth {}: expected a non-negative number", in.depth));
+    if (!std::isfinite(in.depth) || in.depth < 0) fail_input(fmt::format("the depth {} of eps_gradp_sum is not a non-negative number", in.depth));
     if (!std::isfinite(in.spacing) || in.spacing <= 0) fail_input(fmt::format("{}: the mean spacing is not positive", set.name));
 }
 

@@ -11,7 +11,7 @@ VolumeModel parse_volume_model(const std::string& name)
     if (name == "uniform") return VolumeModel::uniform;
     if (name == "file") return VolumeModel::file;
     if (name == "voronoi") return VolumeModel::voronoi;
-    throw Error(ExitCode::usage, "--volume " + name + ": expected uniform, file or voronoi");
+    throw Error(ExitCode::usage, "\"" + name + "\" is unknown, expected uniform, file or voronoi");
 }
 
 const char* volume_model_name(VolumeModel model)
@@ -35,16 +35,16 @@ ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int t
     switch (model) {
     case VolumeModel::uniform:
         if (!set.box)
-            fail_input(fmt::format("{}: uniform volumes need a box (--box); a free set can use --volume file (m / rho)",
+            fail_input(fmt::format("{}: uniform volumes need a periodic box; expected a box, or each particle's volume (m / rho)",
                                    set.name));
         return fill([v = mean_volume(set)](std::size_t) { return v; });
     case VolumeModel::file:
         if (set.mass.empty() || set.density.empty())
-            fail_input(fmt::format("{}: --volume file needs masses and densities in the file; expected {}", set.name,
+            fail_input(fmt::format("{}: the file's volumes (m / rho) need masses and densities in the file; expected {}", set.name,
                                    set.mass.empty() ? "masses" : "densities"));
         return fill([&](std::size_t i) { return set.mass[i] / set.density[i]; });
     case VolumeModel::voronoi: {
-        if (!set.box) fail_input(fmt::format("{}: Voronoi volumes need a periodic box (--box)", set.name));
+        if (!set.box) fail_input(fmt::format("{}: Voronoi volumes need a periodic box", set.name));
         const auto cells = voronoi_volumes(set);
         return fill([&](std::size_t i) { return cells[i]; });
     }

@@ -24,8 +24,8 @@ double neighbour_number(double eta, double support, int dimension);
 double eta_for_neighbour_number(double nh, double support, int dimension);
 
 // h of every particle, filled on `threads` threads; `mean_volume` is V̄ of h = eta V̄^(1/D).
-// Throws Error(input) naming the choices when the rule does not fit the set (k without a
-// lattice, a file h without a convention).
+// The spec as checked against the set by requests/smoothing_request.hpp (a k without a
+// lattice, a file h without a convention: std::logic_error).
 ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
                                  double mean_volume, int threads = 1);
 

@@ -5,6 +5,7 @@
 
 #include "particles/particle_report.hpp"
 #include "particles/particle_set.hpp"
+#include "requests/particles_request.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 
@@ -59,28 +60,38 @@ ParticleSet set_of(const py::object& positions, const py::object& box)
     return set;
 }
 
-ParticleRequest request_of(ParticleSet& set, const Kernel& kernel, const py::object& h, const py::object& eta,
-                           const py::object& nh, const py::object& volume)
+std::optional<double> number_of(const py::object& value, const char* what)
 {
-    ParticleRequest request;
-    const int rules = !h.is_none() + !eta.is_none() + !nh.is_none();
-    if (rules > 1) fail_input("give one of h, eta and nh");
+    if (value.is_none()) return std::nullopt;
+    const DoubleArray a = real_array(value, what, "a number");
+    if (a.size() != 1) fail_input(fmt::format("{}: expected a number", what));
+    return *a.data();
+}
+
+// The arguments as the request takes them; h (sphkern's own, one per particle) goes into the set.
+ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const py::object& h, const py::object& eta,
+                               const py::object& nh, const py::object& volume, const py::object& gravity)
+{
+    if (!h.is_none() + !eta.is_none() + !nh.is_none() > 1) fail_input("give one of h, eta and nh");
+    ParticleArguments a;
     if (!h.is_none()) {
         set.h = per_particle(h, set.size(), "h");
-        request.smoothing = {SmoothingRule::file, 0, kernel.support()}; // sphkern's own h
-    } else if (!nh.is_none()) {
-        request.smoothing = {SmoothingRule::nh, nh.cast<double>(), 0};
-    } else {
-        request.smoothing = {SmoothingRule::eta, eta.is_none() ? 1.2 : eta.cast<double>(), 0};
+        a.smoothing.support_per_h = kernel.support();
     }
+    a.smoothing.eta = number_of(eta, "eta"), a.smoothing.nh = number_of(nh, "nh");
     if (py::isinstance<py::str>(volume)) {
         const auto name = volume.cast<std::string>();
         if (name != "uniform" && name != "voronoi") fail_input("volume: expected \"uniform\", \"voronoi\" or an array");
-        request.volume = parse_volume_model(name);
+        a.volume = name;
     } else if (!volume.is_none()) {
-        request.given_volumes = per_particle(volume, set.size(), "volume");
+        a.volumes = per_particle(volume, set.size(), "volume");
     }
-    return request;
+    if (!gravity.is_none()) {
+        const DoubleArray g = real_array(gravity, "gravity", "a sequence of numbers");
+        a.gravity = std::vector<double>(g.data(), g.data() + g.size());
+    }
+    a.per_particle_files = true; // the arrays returned
+    return a;
 }
 
 py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
@@ -119,18 +130,14 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                                const py::object& params) {
             auto kernel = kernel_of(kernel_spec, params);
             ParticleSet set = set_of(positions, box);
-            ParticleRequest request = request_of(set, kernel, h, eta, nh, volume);
-            if (!gravity.is_none()) {
-                const auto g = per_particle(gravity, static_cast<std::size_t>(set.dimension), "gravity");
-                request.gravity = Eigen::Vector3d(g[0], g[1], set.dimension == 3 ? g[2] : 0.0);
-            }
-            request.depth = depth;
-            request.threads = threads;
+            ParticleArguments arguments = arguments_of(set, kernel, h, eta, nh, volume, gravity);
+            arguments.depth = depth;
+            arguments.threads = threads;
             ParticleAnswer answer;
             {
                 py::gil_scoped_release unlocked;
                 validate_particle_set(set);
-                answer = analyse_particles(kernel, set, request);
+                answer = analyse_particles(kernel, set, particle_request(arguments, set, particle_sources(FrontEnd::python)));
             }
             const auto& m = *answer.measures;
             const std::size_t d = static_cast<std::size_t>(set.dimension);

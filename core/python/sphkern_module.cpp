@@ -105,12 +105,9 @@ std::optional<std::vector<double>> gravity_input(const py::object& gravity, int 
     }
 }
 
-// The argument names; gravity named as the command line names "--gravity 0,0,1", so that
-// both say the same line.
-EvaluationSources argument_sources(const std::optional<std::vector<double>>& gravity)
+EvaluationSources argument_sources()
 {
-    return {fmt::format("gravity \"{}\"", fmt::join(gravity.value_or(std::vector<double>{}), ",")),
-            ValueSource::argument("site"), ValueSource::argument("shells")};
+    return {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")};
 }
 
 EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, const py::object& gravity, int site)
@@ -126,7 +123,7 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
 {
     const auto components = gravity_input(gravity, lattice.dimension);
     if (!components) return lattice.gravity;
-    return direction_of(*components, lattice.dimension, argument_sources(components).gravity);
+    return direction_of(*components, lattice.dimension, argument_sources().gravity);
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
@@ -139,7 +136,7 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     request.k.assign(k.data(), k.data() + k.size());
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"),
-                             argument_sources(request.evaluation.gravity)};
+                             argument_sources()};
     check_eps_request(request, sources);
     std::vector<ErrorValues> values;
     {
@@ -175,7 +172,7 @@ py::object surface(const std::string& kernel_spec, const std::string& lattice_sp
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
-    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(request.evaluation.gravity),
+    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(),
                                  ValueSource::argument("layers")};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);
@@ -208,12 +205,12 @@ py::object roots(const std::string& kernel_spec, const std::string& lattice_spec
                                  convention);
     RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
                          ValueSource::argument("gamma"), ValueSource::argument("horizon"),
-                         ValueSource::argument("steps"), argument_sources(std::nullopt)};
+                         ValueSource::argument("steps"), argument_sources()};
     check_roots_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    sources.evaluation = argument_sources(request.evaluation.gravity);
+    sources.evaluation = argument_sources();
     nlohmann::json document;
     {
         py::gil_scoped_release unlocked;
@@ -231,12 +228,12 @@ py::object design(const std::string& kernel_spec, const std::string& lattice_spe
     request.parameter = param;
     request.k_min = kmin;
     request.k_max = kmax;
-    DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources(std::nullopt)};
+    DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources()};
     check_design_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    sources.evaluation = argument_sources(request.evaluation.gravity);
+    sources.evaluation = argument_sources();
     if (!range.is_none()) {
         const auto r = range.cast<std::vector<double>>();
         if (r.size() != 2) fail_input("range: expected two numbers [min, max]");

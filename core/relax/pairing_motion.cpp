@@ -9,7 +9,6 @@
 #include "stability/stability_budget.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
-#include "support/text/value_checks.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
@@ -22,19 +21,6 @@
 namespace sphkern {
 
 namespace {
-
-void check_request(const PairingRequest& r)
-{
-    check_k_interval(r.k_min, r.k_max, ValueSource::option("--kmin"), ValueSource::option("--kmax"),
-                     IntervalEnds::may_meet);
-    if (r.samples < 1 || r.samples > 1000) fail_usage(fmt::format("--samples {}: expected 1 to 1000", r.samples));
-    if (r.samples > 1 && r.k_max == r.k_min) fail_usage("--samples: several samples need kmin < kmax");
-    if (!std::isfinite(r.noise) || r.noise <= 0 || r.noise > 0.01)
-        fail_usage(fmt::format("--noise {:g}: expected a number in (0, 0.01] (units of d; the motion starts linear)", r.noise));
-    if (!std::isfinite(r.duration) || r.duration <= 0 || r.duration > 1e4)
-        fail_usage(fmt::format("--duration {:g}: expected a number in (0, 10000] (units of d / c)", r.duration));
-    check_horizon(r.horizon, "--horizon");
-}
 
 // Cells along each axis: the smallest even number whose block is more than twice the support wide.
 int block_cells(const Lattice& lattice, double reach)
@@ -212,7 +198,6 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
 
 std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request)
 {
-    check_request(request);
     auto k_of = [&](int i) {
         return request.samples == 1 ? request.k_min
                                     : request.k_min + (request.k_max - request.k_min) * i / (request.samples - 1);

@@ -46,7 +46,7 @@ struct PairingPoint {
     bool agrees = false;
 };
 
-// Throws Error(input) for a range or a setting out of bounds, or a lattice that is not an
+// The request as checked by requests/pairing_request.hpp. Throws Error(input) for a lattice that is not an
 // SPH equilibrium (as `stability` does).
 std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request);
 

@@ -9,9 +9,9 @@
 namespace sphkern {
 
 enum class RelaxMethod { pressure, shift };
-RelaxMethod parse_relax_method(const std::string& name); // Error(usage) for another name
 const char* relax_method_name(RelaxMethod method);
 
+// Checked by requests/relax_request.hpp (the engine takes them as given).
 struct RelaxSettings {
     RelaxMethod method = RelaxMethod::pressure;
     int steps = 200;         // at most this many steps
@@ -25,8 +25,5 @@ struct RelaxSettings {
     double max_move = 0.1;
     int threads = 0;         // 0: every core
 };
-
-// Throws Error(input) naming the option (its command-line name) for a value out of range.
-void check_relax_settings(const RelaxSettings& settings);
 
 } // namespace sphkern

@@ -169,8 +169,7 @@ RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const Re
 RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
                             const std::function<void(const RelaxState&, const RelaxStep&)>& observe)
 {
-    check_relax_settings(settings);
-    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with --box", set.name));
+    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box", set.name));
     kernel.require_dimension(set.dimension, set.name);
     RelaxResult result;
     result.spacing = length_unit(set);

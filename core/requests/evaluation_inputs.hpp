@@ -30,7 +30,7 @@ struct EvaluationInputs {
 
 // How the front end names the values in its errors.
 struct EvaluationSources {
-    std::string gravity; // the direction as given, e.g. "--gravity \"0,0,0\"" or "gravity \"0,0,0\""
+    ValueSource gravity; // "--gravity" or "gravity"
     ValueSource site;    // "--site" or "site" (a site the lattice lacks is refused as input, exit 3)
     ValueSource shells;  // e.g. "--shells 1,-1"
 };

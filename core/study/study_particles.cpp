@@ -1,9 +1,14 @@
 #include "study/study_particles.hpp"
 
+#include "requests/particles_request.hpp"
+#include "requests/relax_request.hpp"
 #include "support/error.hpp"
 #include "support/io/file_spec.hpp"
 
 #include <fmt/format.h>
+
+#include <climits>
+#include <optional>
 
 namespace sphkern {
 
@@ -15,6 +20,7 @@ std::uint64_t seed_of(const JsonNode& node)
     return seed ? static_cast<std::uint64_t>(seed->integer_in(0, 1LL << 53)) : 1;
 }
 
+// Read as numbers and strings, checked by the relax request's own checks, named by pointer.
 StudyRelax read_relax(const JsonNode& node)
 {
     node.expect_keys({"kernel", "nh", "eta", "steps", "method"});
@@ -22,14 +28,15 @@ StudyRelax read_relax(const JsonNode& node)
     r.json_path = node.path();
     r.kernel = node.at("kernel").string();
     if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
-    if (auto eta = node.find("eta")) r.smoothing = {SmoothingRule::eta, eta->number_in(0.1, 100), 0};
-    if (auto nh = node.find("nh")) r.smoothing = {SmoothingRule::nh, nh->number_in(1, 1e5), 0};
-    if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(1, 100000));
-    if (auto method = node.find("method")) {
-        const std::string name = method->string();
-        if (name != "pressure" && name != "shift") method->error("expected \"pressure\" or \"shift\"");
-        r.settings.method = parse_relax_method(name);
-    }
+    auto source = [&](const char* key) { return ValueSource::json(node.file(), node.path() + "/" + key); };
+    RelaxSources sources = relax_sources(FrontEnd::python);
+    sources.smoothing = {source("eta"), source("nh"), source("k"), source("support_per_h")};
+    sources.steps = source("steps");
+    auto number = [&](const char* key) { const auto n = node.find(key); return n ? std::optional(n->number()) : std::nullopt; };
+    r.smoothing = smoothing_spec({number("eta"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
+    if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(INT_MIN, INT_MAX));
+    if (auto method = node.find("method")) r.settings.method = relax_method_of(method->string(), source("method"));
+    check_relax_settings(r.settings, sources);
     return r;
 }
 
@@ -107,13 +114,11 @@ StudyParticles read_study_particles(const JsonNode& node, const std::filesystem:
     if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
     if (auto range = node.find("nh") ? node.find("nh") : node.find("eta")) {
         range->expect_keys({"min", "max", "steps"});
-        auto& sweep = particles.sweep;
-        sweep.rule = node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta;
-        const double top = sweep.rule == SmoothingRule::nh ? 1e5 : 100;
-        sweep.from = range->at("min").number_in(sweep.rule == SmoothingRule::nh ? 1 : 1e-3, top);
-        sweep.to = range->at("max").number_in(sweep.from, top);
-        if (!(sweep.to > sweep.from)) range->at("max").error("expected max > min");
-        sweep.steps = range->find("steps") ? static_cast<int>(range->at("steps").integer_in(1, 1000)) : 9;
+        const auto steps = range->find("steps");
+        particles.sweep = checked_sweep(node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta, range->at("min").number(),
+                                        range->at("max").number(), steps ? static_cast<int>(steps->integer_in(INT_MIN, INT_MAX)) : 9,
+                                        ValueSource::json(range->file(), range->path()),
+                                        ValueSource::json(range->file(), range->path() + "/steps"));
     }
     if (auto volume = node.find("volume")) {
         try {

@@ -95,8 +95,8 @@ expect 3 'fuzz-crash-8081568.json: /basis: degenerate basis: the vectors are cop
 expect 2 'error: ' -- shells fcc
 expect 2 'error: ' -- frobnicate
 expect 2 '--k -1 is not allowed' -- eps cubic_bspline fcc --k -1
-expect 3 'has zero length' -- eps cubic_bspline fcc --k 1 --gravity 0,0,0
-expect 3 'expected 3 comma-separated components' -- eps cubic_bspline fcc --k 1 --gravity 0,-1
+expect 2 '--gravity: expected a direction: finite components, not all zero' -- eps cubic_bspline fcc --k 1 --gravity 0,0,0
+expect 3 '--gravity: 2 components, expected 3 \(one per dimension\)' -- eps cubic_bspline fcc --k 1 --gravity 0,-1
 expect 3 'a_p = -1 is not allowed' -- eps cubic_bspline fcc --k 1 --ap -1
 expect 3 'no volume coefficient "hexagon"' -- eps cubic_bspline triangular --k 1 --ap hexagon
 expect 3 'composite is defined in 2D only, not on the 3D lattice fcc' -- eps composite fcc --k 1
@@ -814,23 +814,23 @@ expect 3 'the memory limit, --memory-limit' -- particles cubic_bspline poisson -
 expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
 expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
 expect 2 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0
-expect 2 '--nh 0.5: expected a neighbour number' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
+expect 2 '--nh 0.5: expected a number in \[1, 100000\]' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
 expect 2 'give one of --eta, --nh, --k' -- particles cubic_bspline fcc --size 8,8,8 --eta 1.2 --nh 50
-expect 2 '--volume cells: expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
-expect 2 'sweep range 2 1: expected 0 < A < B' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
+expect 2 '--volume: "cells" is unknown, expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
+expect 2 '--eta-range: \[2, 1\]: expected min < max' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
 expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2 --csv "$work/p.csv"
 expect 2 '--csv: an empty value' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
-expect 3 '--gravity' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
+expect 2 '--gravity: expected a direction' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
 expect 2 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
 printf 'x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n' >"$work/free.csv"
-expect 3 'free.csv: uniform volumes need a box' -- particles cubic_bspline "$work/free.csv"
+expect 3 'free.csv: uniform volumes need a periodic box' -- particles cubic_bspline "$work/free.csv"
 expect 3 'free.csv: Voronoi volumes need a periodic box' -- particles cubic_bspline "$work/free.csv" --volume voronoi
-expect 3 'free.csv: --volume file needs masses and densities' -- particles cubic_bspline "$work/free.csv" --volume file
+expect 3 'free.csv: the file.s volumes \(m / rho\) need masses and densities' -- particles cubic_bspline "$work/free.csv" --volume file
 printf 'x,y,m,rho\n0.1,0.2,1,1\n0.5,0.7,1,1\n0.9,0.1,1,1\n' >"$work/lonely.csv"
 expect 3 'lonely.csv: particle 0 has no neighbour inside its support' -- particles cubic_bspline "$work/lonely.csv" --eta 0.1
 printf 'x,y,h\n0.1,0.2,0.1\n0.5,0.7,0.1\n' >"$work/withh.csv"
 expect 3 'the file.s smoothing lengths need a convention: --support-per-h X' -- particles cubic_bspline "$work/withh.csv" --box 1,1
-expect 2 '--support-per-h maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
+expect 2 '--support-per-h: maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
 expect 5 'is a file this run reads' -- particles cubic_bspline "$work/withh.csv" --box 1,1 --support-per-h 2 --csv "$work/withh.csv"
 check "particles: the input survives an output aimed at it" grep -q '0.5,0.7,0.1' "$work/withh.csv"
 expect 5 'names the same file' -- particles cubic_bspline fcc --size 8,8,8 --csv "$work/same" --vtk "$work/same"
@@ -847,14 +847,14 @@ assert len(lines) == 1 + 8 * 8 * 8"
 check "particles --vtk: point data for every particle" grep -q '^POINT_DATA 512$' "$work/p.vtk"
 
 # relax and pairing: every setting out of range is one line and exit 2, as for every option.
-expect 2 '--steps 0: expected 1 to 10000000 steps' -- relax wendland_c2 poisson --count 500 --steps 0
+expect 2 '--steps 0, expected 1 to 10000000' -- relax wendland_c2 poisson --count 500 --steps 0
 expect 2 '--tolerance -1: expected a number in \[0, 1\]' -- relax wendland_c2 poisson --count 500 --tolerance -1
 expect 2 '--dt 0.9: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --dt 0.9
 expect 2 '--damping -1: expected a number in \[0, 100\]' -- relax wendland_c2 poisson --count 500 --damping -1
 expect 2 '--alpha 0: expected a number in \(0, 10\]' -- relax wendland_c2 poisson --count 500 --method shift --alpha 0
 expect 2 '--max-move 1: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --method shift --max-move 1
 expect 2 '--gamma 0: expected a number in \(0, 1000\]' -- relax wendland_c2 poisson --count 500 --gamma 0
-expect 2 '--method jiggle: expected pressure or shift' -- relax wendland_c2 poisson --count 500 --method jiggle
+expect 2 '--method: "jiggle" is unknown, expected pressure or shift' -- relax wendland_c2 poisson --count 500 --method jiggle
 expect 2 'give one of --eta, --nh and --k' -- relax wendland_c2 poisson --count 500 --eta 1.2 --nh 50
 expect 3 'free.csv: relaxation needs a periodic box' -- relax wendland_c2 "$work/free.csv"
 expect 3 'less than twice the support radius' -- relax wendland_c2 sc --size 4,4,4 --k 1.5
@@ -880,7 +880,7 @@ expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 --kmin 1
 expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
 expect 2 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
-expect 2 '--samples 0: expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
+expect 2 '--samples 0, expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
 expect 2 '--duration -1: expected a number' -- pairing cubic_bspline fcc --k 1.2 --duration -1
 expect 2 'expected 0 < kmin <= kmax <= 100' -- pairing cubic_bspline fcc --kmin 2 --kmax 1
 
@@ -889,11 +889,15 @@ relax_study() { study "$1" '{"name": "s", "kernels": ["wendland_c2"], "lattices"
 relax_study s_rk '{"kernel": "quintic"}'
 expect 3 's_rk.json: /particles/sources/0/relax: kernel: "quintic" is not one of the study.s kernels' -- run "$work/s_rk.json" -o "$work/out_rk"
 relax_study s_rm '{"kernel": "wendland_c2", "method": "jiggle"}'
-expect 3 's_rm.json: /particles/sources/0/relax/method: expected "pressure" or "shift"' -- run "$work/s_rm.json" -o "$work/out_rm"
+expect 3 's_rm.json: /particles/sources/0/relax/method: "jiggle" is unknown, expected pressure or shift' -- run "$work/s_rm.json" -o "$work/out_rm"
 relax_study s_rh '{"kernel": "wendland_c2", "nh": 100, "eta": 1.2}'
 expect 3 's_rh.json: /particles/sources/0/relax: expected one of "nh" and "eta"' -- run "$work/s_rh.json" -o "$work/out_rh"
 relax_study s_rs '{"kernel": "wendland_c2", "steps": 0}'
-expect 3 's_rs.json: /particles/sources/0/relax/steps: value 0 is out of range' -- run "$work/s_rs.json" -o "$work/out_rs"
+expect 3 's_rs.json: /particles/sources/0/relax/steps = 0, expected 1 to 10000000' -- run "$work/s_rs.json" -o "$work/out_rs"
+relax_study s_re '{"kernel": "wendland_c2", "eta": 0}'
+expect 3 's_re.json: /particles/sources/0/relax/eta = 0: expected a number in \(0, 100\]' -- run "$work/s_re.json" -o "$work/out_re"
+study s_sweep_order '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "nh": {"min": 60, "max": 30}}}'
+expect 3 's_sweep_order.json: /particles/nh: \[60, 30\]: expected min < max' -- run "$work/s_sweep_order.json" -o "$work/out_so"
 relax_study s_ru '{"kernel": "wendland_c2", "colour": 1}'
 expect 3 's_ru.json: /particles/sources/0/relax: unknown key "colour"' -- run "$work/s_ru.json" -o "$work/out_ru"
 check "a refused relax section leaves no output folder" test -z "$(leftovers out_rk)"

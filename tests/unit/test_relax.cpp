@@ -12,6 +12,7 @@
 #include "relax/glass_quality.hpp"
 #include "relax/pairing_motion.hpp"
 #include "relax/relaxation.hpp"
+#include "requests/relax_request.hpp"
 #include "stability/dispersion.hpp"
 #include "support/error.hpp"
 
@@ -214,13 +215,27 @@ TEST_CASE("relaxation refuses what it cannot do")
     CHECK_THROWS_AS(relax_particles(kernel, free, 0.3, RelaxSettings{}), Error);
     const ParticleSet small = lattice_block("sc", 4);
     CHECK_THROWS_AS(relax_particles(kernel, small, 1.5, RelaxSettings{}), Error); // support 3 d in a 4 d box
+    CHECK_THROWS_AS(require_rectangular_box(lattice_block("fcc", 4), "a file"), Error);
+}
+
+TEST_CASE("relax settings out of range are refused, named as each front end names them")
+{
     RelaxSettings bad;
     bad.time_step = 0.9;
-    CHECK_THROWS_AS(relax_particles(kernel, lattice_block("sc", 8), 1.2, bad), Error);
+    CHECK_THROWS_WITH_AS(check_relax_settings(bad, relax_sources(FrontEnd::command_line)),
+                         "--dt 0.9: expected a number in (0, 0.5] (units of h / c)", Error);
+    bad = RelaxSettings{};
+    bad.max_move = 0;
+    CHECK_THROWS_WITH_AS(check_relax_settings(bad, relax_sources(FrontEnd::python)),
+                         "max_move = 0: expected a number in (0, 0.5] (units of h)", Error);
     bad = RelaxSettings{};
     bad.steps = 0;
-    CHECK_THROWS_AS(check_relax_settings(bad), Error);
-    CHECK_THROWS_AS(require_rectangular_box(lattice_block("fcc", 4), "a file"), Error);
+    try {
+        check_relax_settings(bad, relax_sources(FrontEnd::command_line));
+        FAIL("steps = 0 was taken");
+    } catch (const Error& e) {
+        CHECK(e.code() == ExitCode::usage); // an option out of range: exit 2
+    }
 }
 
 TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")

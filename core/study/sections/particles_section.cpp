@@ -3,6 +3,7 @@
 
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
+#include "requests/relax_request.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 
@@ -18,8 +19,7 @@ ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticl
 {
     const StudyRelax& r = *s.relax;
     return at_source(study_source(study, r.json_path), [&] {
-        if (!set.box) fail_input("relaxation needs a periodic box");
-        const double h = smoothing_lengths(set, kernel, r.smoothing, mean_volume(set)).front();
+        const double h = relax_h(r.smoothing, set, kernel, smoothing_sources(FrontEnd::python));
         spdlog::info("particles: relaxing {} with {}", s.label, kernel.label());
         return relax_particles(kernel, std::move(set), h, r.settings).state.set;
     });

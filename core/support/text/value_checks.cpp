@@ -19,6 +19,29 @@ void ValueSource::fail(const std::string& problem) const
     throw Error(code, name.empty() ? problem : name + ": " + problem);
 }
 
+ValueSource value_named(FrontEnd front_end, std::string_view key)
+{
+    if (front_end == FrontEnd::python) return ValueSource::argument(std::string(key));
+    std::string option = "--" + std::string(key);
+    std::replace(option.begin(), option.end(), '_', '-');
+    return ValueSource::option(option);
+}
+
+void require_at_most_one(std::initializer_list<std::pair<bool, const ValueSource*>> given)
+{
+    int count = 0;
+    std::string names;
+    const ValueSource* first = nullptr;
+    std::size_t i = 0;
+    for (const auto& [set, source] : given) {
+        count += set;
+        if (!first) first = source;
+        names += (i == 0 ? "" : i + 1 == given.size() ? " and " : ", ") + source->name;
+        ++i;
+    }
+    if (count > 1) throw Error(first->code, "give one of " + names);
+}
+
 bool k_in_range(double k)
 {
     return std::isfinite(k) && k > 0 && k <= k_limit;
@@ -34,6 +57,20 @@ void check_range(double value, double min, double max, const ValueSource& source
 {
     if (!(value >= min && value <= max))
         throw Error(source.code, fmt::format("{}, expected {} to {}", source.about(value), min, max));
+}
+
+void check_number(double value, double min, double max, LowEnd low, const ValueSource& source, std::string_view unit)
+{
+    const bool above = low == LowEnd::open ? value > min : value >= min;
+    if (!(above && value <= max))
+        throw Error(source.code, fmt::format("{}: expected a number in {}{}, {}]{}", source.about(value),
+                                             low == LowEnd::open ? "(" : "[", min, max, unit));
+}
+
+void check_positive(double value, const ValueSource& source)
+{
+    if (!(std::isfinite(value) && value > 0))
+        throw Error(source.code, source.about(value) + ": expected a positive finite number");
 }
 
 void check_steps(int steps, const ValueSource& source)

@@ -6,10 +6,12 @@
 #include "support/error.hpp"
 
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sphkern {
@@ -45,6 +47,14 @@ decltype(auto) at_source(const ValueSource& source, F&& f)
     }
 }
 
+// How each front end names a value, from its key in Python's spelling ("max_move"): the
+// option "--max-move" (exit 2 out of range) or the argument "max_move" (exit 3).
+enum class FrontEnd { command_line, python };
+ValueSource value_named(FrontEnd front_end, std::string_view key);
+
+// "give one of --eta, --nh and --k" (or eta, nh and k) when more than one of `given` is set.
+void require_at_most_one(std::initializer_list<std::pair<bool, const ValueSource*>> given);
+
 // The smoothing coefficient k = h/d: finite, in (0, 100].
 constexpr double k_limit = 100;
 bool k_in_range(double k);
@@ -53,6 +63,12 @@ void check_k(double k, const ValueSource& source, std::string_view hint = {});
 
 // A number in [min, max] (NaN refused): "--points 0, expected 1 to 100000", "steps = 0, expected 1 to 2000".
 void check_range(double value, double min, double max, const ValueSource& source);
+// A number in [min, max], or (min, max] where `low` is open (NaN refused), with the unit after
+// the interval: "--dt 0.6: expected a number in (0, 0.5] (units of h / c)", "eta = 0: expected ...".
+enum class LowEnd { closed, open };
+void check_number(double value, double min, double max, LowEnd low, const ValueSource& source, std::string_view unit = {});
+// A positive finite number: "--rho0 0: expected a positive finite number".
+void check_positive(double value, const ValueSource& source);
 // The intervals of a k scan (roots --stability, stability over k): 1 to 2000.
 constexpr int max_scan_steps = 2000;
 void check_steps(int steps, const ValueSource& source);

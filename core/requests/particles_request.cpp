@@ -1,0 +1,70 @@
+#include "requests/particles_request.hpp"
+
+#include "lattices/numeric_inputs.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern {
+
+ParticleSources particle_sources(FrontEnd f)
+{
+    auto n = [f](const char* key) { return value_named(f, key); };
+    return {smoothing_sources(f), n("eta_range"), n("nh_range"), n("steps"),     n("volume"),
+            n("gravity"),         n("depth"),     n("rho0"),     n("threads"),   n("histogram"),
+            f == FrontEnd::command_line ? ValueSource::option("--csv and --vtk") : n("arrays")};
+}
+
+void check_threads(int threads, const ValueSource& source) { check_range(threads, 0, 1024, source); }
+
+namespace {
+
+std::optional<SmoothingSweep> sweep_of(const ParticleArguments& given, const ParticleSources& sources)
+{
+    if (!given.eta_range && !given.nh_range) return std::nullopt;
+    const bool eta = given.eta_range.has_value();
+    const auto& [from, to] = eta ? *given.eta_range : *given.nh_range;
+    if (given.per_particle_files) sources.per_particle_files.fail("write one h per particle; they do not go with a sweep");
+    return checked_sweep(eta ? SmoothingRule::eta : SmoothingRule::nh, from, to, given.steps,
+                         eta ? sources.eta_range : sources.nh_range, sources.steps);
+}
+
+} // namespace
+
+SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int steps, const ValueSource& range,
+                             const ValueSource& steps_source)
+{
+    for (const double value : {from, to}) {
+        if (rule == SmoothingRule::eta) check_number(value, 0, 100, LowEnd::open, range);
+        else check_number(value, 1, 1e5, LowEnd::closed, range, " (neighbours)");
+    }
+    if (!(to > from)) range.fail(fmt::format("[{}, {}]: expected min < max", from, to));
+    check_range(steps, 1, 1000, steps_source);
+    return {rule, from, to, steps};
+}
+
+ParticleRequest particle_request(const ParticleArguments& given, const ParticleSet& set, const ParticleSources& sources)
+{
+    const auto& s = sources.smoothing;
+    require_at_most_one({{given.smoothing.eta.has_value(), &s.eta}, {given.smoothing.nh.has_value(), &s.nh},
+                         {given.smoothing.k.has_value(), &s.k}, {given.eta_range.has_value(), &sources.eta_range},
+                         {given.nh_range.has_value(), &sources.nh_range}});
+    ParticleRequest request;
+    request.sweep = sweep_of(given, sources);
+    request.smoothing = smoothing_of(given.smoothing, set, s, !request.sweep);
+    if (given.volume) request.volume = at_source(sources.volume, [&] { return parse_volume_model(*given.volume); });
+    request.given_volumes = given.volumes;
+    if (given.gravity) request.gravity = direction_of(*given.gravity, set.dimension, sources.gravity);
+    check_number(given.depth, 0, 1e6, LowEnd::closed, sources.depth, " (units of h)");
+    request.depth = given.depth;
+    if (given.rho0) check_positive(*given.rho0, sources.rho0);
+    request.rho0 = given.rho0;
+    check_threads(given.threads, sources.threads);
+    request.threads = given.threads;
+    check_range(static_cast<double>(given.histogram), 0, 100000, sources.histogram);
+    request.histogram_bins = static_cast<std::size_t>(given.histogram);
+    request.vectors = given.per_particle_files;
+    return request;
+}
+
+} // namespace sphkern

@@ -1,0 +1,57 @@
+#include "requests/smoothing_request.hpp"
+
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphkern {
+
+SmoothingSources smoothing_sources(FrontEnd f)
+{
+    return {value_named(f, "eta"), value_named(f, "nh"), value_named(f, "k"), value_named(f, "support_per_h")};
+}
+
+SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSources& sources, SmoothingSpec fallback)
+{
+    require_at_most_one({{given.eta.has_value(), &sources.eta}, {given.nh.has_value(), &sources.nh},
+                         {given.k.has_value(), &sources.k}});
+    if (given.eta) check_number(*given.eta, 0, 100, LowEnd::open, sources.eta);
+    if (given.nh) check_number(*given.nh, 1, 1e5, LowEnd::closed, sources.nh, " (neighbours)");
+    if (given.k) check_k(*given.k, sources.k);
+    if (given.eta) return {SmoothingRule::eta, *given.eta, 0};
+    if (given.nh) return {SmoothingRule::nh, *given.nh, 0};
+    if (given.k) return {SmoothingRule::k, *given.k, 0};
+    return fallback;
+}
+
+void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, const SmoothingSources& sources)
+{
+    const std::string others = fmt::format("give {} E or {} N", sources.eta.name, sources.nh.name);
+    if (spec.rule == SmoothingRule::k && set.spacing <= 0)
+        fail_input(fmt::format("{}: {} needs a lattice (h = k d); for other sets {}", set.name, sources.k.name, others));
+    if (spec.rule != SmoothingRule::file) return;
+    if (set.h.empty()) fail_input(fmt::format("{}: the file has no smoothing lengths; {}", set.name, others));
+    const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
+    if (!(x > 0) || !std::isfinite(x))
+        fail_input(fmt::format("{}: the file's smoothing lengths need a convention: {} X, the support radius over the "
+                               "stored h (GADGET and SPlisHSPlasH 1, SWIFT its kernel gamma, PySPH the kernel's R, "
+                               "DualSPHysics 2), or {}",
+                               set.name, sources.support_per_h.name, others));
+}
+
+SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& set, const SmoothingSources& sources,
+                           bool file_h_allowed)
+{
+    const bool rule_given = given.eta || given.nh || given.k;
+    SmoothingSpec spec = smoothing_spec(given, sources);
+    if (!rule_given && !set.h.empty() && file_h_allowed) spec = {SmoothingRule::file, 0, given.support_per_h.value_or(0)};
+    if (given.support_per_h && (spec.rule != SmoothingRule::file || !(*given.support_per_h > 0)))
+        sources.support_per_h.fail(fmt::format("maps a file's h (a positive number); it does not go with {}, {} or {}",
+                                               sources.eta.name, sources.nh.name, sources.k.name));
+    check_smoothing_fits(spec, set, sources);
+    return spec;
+}
+
+} // namespace sphkern
