@@ -5,6 +5,7 @@
 
 #include "particles/particle_report.hpp"
 #include "requests/particles_request.hpp"
+#include "requests/source_request.hpp"
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
@@ -92,7 +93,7 @@ Action add_particles_command(Command app)
         PhaseTimes phases;
         const auto sources = particle_sources(FrontEnd::command_line);
         check_threads(o.threads, sources.threads); // the set is read on them
-        const ParticleSet set = load_particles(source_of(o), o.threads);
+        const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments_of(o, sources.gravity), set, sources));

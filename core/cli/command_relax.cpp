@@ -8,6 +8,7 @@
 #include "particles/poisson_reference.hpp"
 #include "relax/relax_report.hpp"
 #include "requests/relax_request.hpp"
+#include "requests/source_request.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/io/atomic_file.hpp"
@@ -110,7 +111,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) check_particle_output_name(o.output);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
-        ParticleSet set = load_particles(source_of(o), o.settings.threads);
+        ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(spec, set, kernel, sources.smoothing);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);

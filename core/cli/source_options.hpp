@@ -21,7 +21,8 @@ struct SourceOptions {
 
 void add_source_options(Command command, SourceOptions& options);
 
-// Error(usage) for options that do not fit the kind of source.
+// Error(usage) for options that do not fit the kind of source (their values are checked by
+// the source request, requests/source_request.hpp).
 ParticleSource source_of(const SourceOptions& options);
 
 // The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.

@@ -170,9 +170,9 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
     }
     LatticeBlockSpec spec;
     spec.cells = {p.cells, p.cells, lattice.dimension == 3 ? p.cells : 1};
-    const ParticleSet sites = lattice_particles(lattice, spec, std::numeric_limits<std::size_t>::max());
+    const ParticleSet sites = lattice_particles(lattice, spec);
     spec.sigma = r.noise, spec.seed = r.seed;
-    ParticleSet start = lattice_particles(lattice, spec, std::numeric_limits<std::size_t>::max());
+    ParticleSet start = lattice_particles(lattice, spec);
     p.particles = start.size();
     RelaxSettings settings;
     settings.method = RelaxMethod::pressure;

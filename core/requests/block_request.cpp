@@ -22,8 +22,8 @@ void check_block_request(const BlockRequest& r, const BlockSources& sources)
 BlockRun run_block(const BlockRequest& r, const BlockSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
     const auto dimension = static_cast<std::size_t>(lattice.dimension);
-    if (r.cells.size() != dimension)
-        sources.size.fail("the lattice is " + std::to_string(dimension) + "D, give " + std::to_string(dimension) + " sizes");
+    if (r.cells.size() != dimension) // a value that does not fit the lattice: input, as for every source
+        fail_input(fmt::format("{}: the lattice is {}D, expected {} cell counts", sources.size.name, dimension, dimension));
     BlockRun run;
     for (std::size_t a = 0; a < r.cells.size(); ++a) run.options.cells[a] = r.cells[a];
     run.options.periodic = r.periodic;

@@ -1,5 +1,7 @@
 #include "study/study_inputs.hpp"
 
+#include "requests/source_request.hpp"
+
 #include "analysis/design.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
@@ -114,18 +116,6 @@ void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& i
         });
 }
 
-// A lattice source's cell counts, one per dimension of its lattice.
-void check_source_size(const Study& study, const StudyParticleSource& s)
-{
-    if (s.source.kind != SourceKind::lattice) return;
-    at_source(study_source(study, s.json_path), [&] {
-        const int dim = load_lattice(s.source.spec).dimension;
-        if (static_cast<int>(s.sizes) != dim)
-            fail_input("size: the lattice is " + std::to_string(dim) + "D, expected " + std::to_string(dim) +
-                       " cell counts");
-    });
-}
-
 // Each particle source read (a bad file is refused before any section runs); all of them
 // are held at once, so their count together is bounded by the memory budget (a source
 // that is relaxed counts twice: it is relaxed in a copy).
@@ -133,8 +123,9 @@ void load_particle_sets(const Study& study, StudyInputs& inputs)
 {
     std::size_t total = 0;
     for (const auto& s : study.particles->sources) {
-        check_source_size(study, s);
-        inputs.particle_sets.push_back(at_source(study_source(study, s.json_path), [&] { return load_particles(s.source); }));
+        inputs.particle_sets.push_back(at_source(study_source(study, s.json_path), [&] {
+            return load_source(s.source, source_sources(FrontEnd::python), 0);
+        }));
         total += inputs.particle_sets.back().size() * (s.relax ? 2 : 1);
         if (total > max_particles())
             study_source(study, s.json_path).fail("the particle sources up to this one hold " + std::to_string(total) +

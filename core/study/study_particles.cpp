@@ -2,6 +2,7 @@
 
 #include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"
+#include "requests/source_request.hpp"
 #include "support/error.hpp"
 #include "support/io/file_spec.hpp"
 
@@ -40,6 +41,13 @@ StudyRelax read_relax(const JsonNode& node)
     return r;
 }
 
+// The source request's names for a source's keys: JSON pointers (`dim`: its dimension's key).
+SourceSources sources_at(const JsonNode& node, const std::string& dim)
+{
+    auto at = [&](const std::string& key) { return ValueSource::json(node.file(), node.path() + key); };
+    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), ""};
+}
+
 StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)
 {
     node.expect_object();
@@ -54,27 +62,28 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
         src.spec = resolve_beside(lattice->string(), study_file, {".json"});
         const auto size = node.at("size");
         const std::size_t n = size.expect_array(2, 3);
-        s.sizes = n;
+        src.cell_counts = n;
         std::string cells;
         for (std::size_t a = 0; a < n; ++a) {
-            src.block.cells[a] = size[a].integer_in(1, 1000000);
+            src.block.cells[a] = size[a].integer_in(LLONG_MIN, LLONG_MAX);
             if (a) cells += 'x';
             cells += std::to_string(src.block.cells[a]);
         }
-        if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number_in(0, 10);
+        if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number();
         src.block.seed = seed_of(node);
         s.label = fmt::format("{}, {} cells, sigma = {:g} d", lattice->string(), cells, src.block.sigma);
     } else if (auto poisson = node.find("poisson")) {
         node.expect_keys({"poisson", "count", "seed", "box", "relax"});
         src.kind = SourceKind::poisson;
         src.spec = "poisson";
-        src.poisson.dimension = static_cast<int>(poisson->integer_in(2, 3));
-        src.poisson.count = static_cast<std::size_t>(node.at("count").integer_in(2, 1LL << 40));
+        src.poisson.dimension = static_cast<int>(poisson->integer_in(INT_MIN, INT_MAX));
+        src.poisson.count = static_cast<std::size_t>(node.at("count").integer_in(0, LLONG_MAX));
         src.poisson.seed = seed_of(node);
         if (auto box = node.find("box")) {
-            const std::size_t n = box->expect_array(static_cast<std::size_t>(src.poisson.dimension),
-                                                     static_cast<std::size_t>(src.poisson.dimension));
-            for (std::size_t a = 0; a < n; ++a) src.poisson.box[static_cast<int>(a)] = (*box)[a].number_in(1e-300, 1e300);
+            const std::size_t n = box->expect_array(2, 3);
+            for (std::size_t a = 0; a < n; ++a) src.poisson.box[static_cast<int>(a)] = (*box)[a].number();
+            check_particle_source(src, sources_at(node, "/poisson"));
+            if (n != static_cast<std::size_t>(src.poisson.dimension)) box->error("expected one side per dimension");
         }
         s.label = fmt::format("poisson, {}D, {} particles", src.poisson.dimension, src.poisson.count);
     } else {
@@ -85,13 +94,14 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
         if (auto box = node.find("box")) {
             const std::size_t n = box->expect_array(2, 3);
             Eigen::Vector3d sides(1, 1, 1);
-            for (std::size_t a = 0; a < n; ++a) sides[static_cast<int>(a)] = (*box)[a].number_in(1e-300, 1e300);
+            for (std::size_t a = 0; a < n; ++a) sides[static_cast<int>(a)] = (*box)[a].number();
             src.box = sides;
         }
         if (auto array = node.find("array")) src.file.array = array->string();
-        if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(2, 3));
+        if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(INT_MIN, INT_MAX));
         s.label = name;
     }
+    check_particle_source(src, sources_at(node, src.kind == SourceKind::poisson ? "/poisson" : "/dim"));
     if (auto relax = node.find("relax")) {
         s.relax = read_relax(*relax);
         s.label += fmt::format(", relaxed ({}, {} = {:g}, {} steps)", s.relax->kernel,

@@ -27,7 +27,6 @@ struct StudyParticleSource {
     std::string label;     // "fcc, sigma = 0.1 d, 20x20x20", "poisson, 3D, 20000", the file
     std::string json_path;
     ParticleSource source;
-    std::size_t sizes = 0; // a lattice's cell counts given: must match its dimension
     std::optional<StudyRelax> relax;
 };
 

@@ -114,7 +114,7 @@ expect 3 'gradient form "up" is unknown' -- surface cubic_bspline fcc --k 1.2 --
 expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size 0,10,10
 expect 3 'positive number of cells' -- block cubic_bspline fcc --k 1.2 --size -4,10,10
 expect 3 'more than the limit of' -- block cubic_bspline fcc --k 1.2 --size 100000,100000,100000
-expect 2 'the lattice is 3D, give 3 sizes' -- block cubic_bspline fcc --k 1.2 --size 10,10
+expect 3 '--size 10,10: the lattice is 3D, expected 3 cell counts' -- block cubic_bspline fcc --k 1.2 --size 10,10
 expect 2 'expected N1,N2\[,N3\] integers' -- block cubic_bspline fcc --k 1.2 --size 10,x,10
 expect 3 'a periodic block needs more than' -- block cubic_bspline fcc --k 1.2 --size 3,3,3 --periodic
 expect 5 'is a folder' -- block cubic_bspline fcc --k 1.2 --size 4,4,4 --vtk "$work"
@@ -803,14 +803,14 @@ check "a path too long left no folder" test -z "$(ls -A "$work/longpath")"
 
 # Particle sets.
 expect 2 'a lattice source needs --size' -- particles cubic_bspline fcc --k 1.2
-expect 2 'the lattice is 3D, give 3 sizes' -- particles cubic_bspline fcc --size 8,8
-expect 2 'expected positive whole numbers of cells' -- particles cubic_bspline fcc --size 8,0.5,8
+expect 3 '--size: the lattice is 3D, expected 3 cell counts' -- particles cubic_bspline fcc --size 8,8
+expect 2 'expected whole numbers of cells' -- particles cubic_bspline fcc --size 8,0.5,8
 expect 3 'less than twice the support radius' -- particles cubic_bspline fcc --size 3,3,3 --k 1.2
-expect 3 '--sigma -1: expected a number in \[0, 10\]' -- particles cubic_bspline fcc --size 8,8,8 --sigma -1
+expect 2 '--sigma -1: expected a number in \[0, 10\]' -- particles cubic_bspline fcc --size 8,8,8 --sigma -1
 expect 2 '--sigma disturbs a lattice' -- particles cubic_bspline poisson --count 100 --sigma 0.1
 expect 2 'a poisson set needs --count N' -- particles cubic_bspline poisson
-expect 3 '--count 1: expected 2 to' -- particles cubic_bspline poisson --count 1
-expect 3 'the memory limit, --memory-limit' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
+expect 2 '--count 1, expected 2 to' -- particles cubic_bspline poisson --count 1
+expect 3 'more than the memory limit of [0-9]+ particles \(--memory-limit\)' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
 expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
 expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
 expect 2 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0

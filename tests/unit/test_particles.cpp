@@ -35,7 +35,6 @@ using sphkern::test::shipped_kernel;
 
 namespace {
 
-const std::size_t plenty = 100'000'000;
 
 // Every measure of particle i written out from the definitions: all pairs, every periodic
 // image in the 3^D neighbouring boxes, the support edge inside.
@@ -83,7 +82,7 @@ ParticleSet random_set(int dim, std::size_t n, bool periodic, std::uint64_t seed
     PoissonSpec spec;
     spec.dimension = dim, spec.count = n, spec.seed = seed;
     spec.box = Eigen::Vector3d(1.0, 1.3, 0.9);
-    auto set = poisson_particles(spec, plenty);
+    auto set = poisson_particles(spec);
     if (!periodic) set.box.reset();
     return set;
 }
@@ -181,7 +180,7 @@ TEST_CASE("on an unperturbed periodic lattice block every particle has the latti
         const double k = 1.13;
         LatticeBlockSpec spec;
         spec.cells = lattice.dimension == 2 ? std::array<long long, 3>{12, 12, 1} : std::array<long long, 3>{7, 7, 7};
-        const auto set = lattice_particles(lattice, spec, plenty);
+        const auto set = lattice_particles(lattice, spec);
         ParticleRequest request;
         request.smoothing = {SmoothingRule::k, k, 0};
         const auto answer = analyse_particles(kernel, set, request);
@@ -214,7 +213,7 @@ TEST_CASE("Voronoi volumes: a lattice's cell is a_p d^D to 1e-12, and a random s
         const auto lattice = load_lattice(name);
         LatticeBlockSpec spec;
         spec.cells = lattice.dimension == 2 ? std::array<long long, 3>{6, 5, 1} : std::array<long long, 3>{4, 3, 5};
-        const auto set = lattice_particles(lattice, spec, plenty);
+        const auto set = lattice_particles(lattice, spec);
         const double a_p = lattice.volume_coefficient("voronoi");
         for (double v : voronoi_volumes(set)) REQUIRE(std::abs(v - a_p) < 1e-12 * a_p);
     }
@@ -257,7 +256,7 @@ TEST_CASE("Poisson sets: the mean of e0 is V W(0) - 1/N and its variance V int W
         for (std::uint64_t seed = 1; seed <= 16; ++seed) {
             PoissonSpec spec;
             spec.dimension = dim, spec.count = n, spec.seed = seed;
-            const auto set = poisson_particles(spec, plenty);
+            const auto set = poisson_particles(spec);
             ParticleRequest request;
             request.smoothing = {SmoothingRule::nh, 60, 0};
             const auto answer = analyse_particles(kernel, set, request);
@@ -365,20 +364,20 @@ TEST_CASE("sources, validation and the neighbour grid are the same on 1, 2 and 7
     // Over seven random blocks of particles, so that seven threads each draw one at least.
     PoissonSpec poisson;
     poisson.dimension = 3, poisson.count = 7 * random_block_size + 123, poisson.seed = 4;
-    const auto one = poisson_particles(poisson, plenty, 1);
+    const auto one = poisson_particles(poisson, 1);
     LatticeBlockSpec block;
     block.cells = {80, 80, 80}, block.sigma = 0.4, block.seed = 3;
     const auto lattice = load_lattice("fcc");
-    const auto disturbed = lattice_particles(lattice, block, plenty, 1);
+    const auto disturbed = lattice_particles(lattice, block, 1);
     REQUIRE(disturbed.size() > 7 * random_block_size);
     const NeighbourGrid grid(one, 0.03, 1);
     for (int threads : {2, 7}) {
         CAPTURE(threads);
-        const auto other = poisson_particles(poisson, plenty, threads);
+        const auto other = poisson_particles(poisson, threads);
         CHECK(other.x == one.x);
         CHECK(other.y == one.y);
         CHECK(other.z == one.z);
-        const auto moved = lattice_particles(lattice, block, plenty, threads);
+        const auto moved = lattice_particles(lattice, block, threads);
         CHECK(moved.x == disturbed.x);
         CHECK(moved.z == disturbed.z);
         const NeighbourGrid built(one, 0.03, threads);
@@ -407,11 +406,11 @@ TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend
 {
     const auto lattice = load_lattice("fcc");
     LatticeBlockSpec spec = perturbed_block(8, 7);
-    const auto a = lattice_particles(lattice, spec, plenty), b = lattice_particles(lattice, spec, plenty);
+    const auto a = lattice_particles(lattice, spec), b = lattice_particles(lattice, spec);
     CHECK(a.x == b.x);
     CHECK(a.z == b.z);
     spec.seed = 8;
-    CHECK(lattice_particles(lattice, spec, plenty).x != a.x);
+    CHECK(lattice_particles(lattice, spec).x != a.x);
     const auto kernel = shipped_kernel("morris_quintic");
     ParticleRequest request;
     request.smoothing = {SmoothingRule::k, 1.0, 0};
@@ -427,7 +426,7 @@ TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend
 
 TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with that g, not the set's")
 {
-    const auto set = lattice_particles(load_lattice("fcc"), perturbed_block(6, 3), plenty);
+    const auto set = lattice_particles(load_lattice("fcc"), perturbed_block(6, 3));
     const auto kernel = shipped_kernel("cubic_bspline");
     ParticleRequest request;
     request.smoothing = {SmoothingRule::k, 1.2, 0};
@@ -458,7 +457,7 @@ TEST_CASE("the neighbour number gives h: a Poisson set's mean neighbour count is
     const auto kernel = shipped_kernel("cubic_bspline");
     PoissonSpec spec;
     spec.dimension = 3, spec.count = 30000, spec.seed = 2;
-    const auto set = poisson_particles(spec, plenty);
+    const auto set = poisson_particles(spec);
     ParticleRequest request;
     request.smoothing = {SmoothingRule::nh, 57, 0};
     const auto answer = analyse_particles(kernel, set, request);

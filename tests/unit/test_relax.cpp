@@ -27,14 +27,13 @@ using sphkern::test::shipped_kernel;
 
 namespace {
 
-const std::size_t plenty = 100'000'000;
 
 ParticleSet poisson_set(std::size_t n, int dim, double side, std::uint64_t seed)
 {
     PoissonSpec spec;
     spec.count = n, spec.dimension = dim, spec.seed = seed;
     spec.box = Eigen::Vector3d(side, side, side);
-    return poisson_particles(spec, plenty);
+    return poisson_particles(spec);
 }
 
 ParticleSet lattice_block(const std::string& name, long long cells, double sigma = 0)
@@ -43,7 +42,7 @@ ParticleSet lattice_block(const std::string& name, long long cells, double sigma
     const Lattice lattice = load_lattice(name);
     spec.cells = {cells, cells, lattice.dimension == 3 ? cells : 1};
     spec.sigma = sigma;
-    return lattice_particles(lattice, spec, plenty);
+    return lattice_particles(lattice, spec);
 }
 
 // rho_i, sum_j V grad_i W_ij and a_i written out from the definitions over all periodic images.

@@ -434,8 +434,8 @@ TEST_CASE("block request: sizes are refused naming the option, and deep inside a
     request.cells = {10, 10};
     check_block_request(request, sources);
     auto dimension = refusal([&] { run_block(request, sources, kernel, load_lattice("fcc")); });
-    CHECK(dimension.first == "--size 10,10: the lattice is 3D, give 3 sizes");
-    CHECK(dimension.second == ExitCode::usage);
+    CHECK(dimension.first == "--size 10,10: the lattice is 3D, expected 3 cell counts");
+    CHECK(dimension.second == ExitCode::input); // a value that does not fit the lattice
     request.threads = -1;
     CHECK(refusal([&] { check_block_request(request, sources); }).first == "--threads -1, expected 0 to 1024");
     // sc, layers d apart, support 2.4 d: layers 3 to 6 of 10 see complete neighbourhoods.

@@ -1,31 +1,19 @@
 #include "particles/sources/lattice_particles.hpp"
 
-#include "support/error.hpp"
 #include "support/process/block_random.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <boost/random/normal_distribution.hpp>
-#include <fmt/format.h>
 
 #include <cmath>
 
 namespace sphkern {
 
-ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles, int threads)
+ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, int threads)
 {
     const int dim = lattice.dimension;
     double count = lattice.sites();
-    for (int a = 0; a < dim; ++a) {
-        if (spec.cells[static_cast<std::size_t>(a)] < 1)
-            fail_input(fmt::format("--size: {} cells along axis {}; expected at least 1", spec.cells[static_cast<std::size_t>(a)],
-                                   a + 1));
-        count *= static_cast<double>(spec.cells[static_cast<std::size_t>(a)]);
-    }
-    if (count > static_cast<double>(max_particles))
-        fail_input(fmt::format("--size: {:.0f} particles, more than the memory limit of {} particles (--memory-limit)",
-                               count, max_particles));
-    if (!std::isfinite(spec.sigma) || spec.sigma < 0 || spec.sigma > 10)
-        fail_input(fmt::format("--sigma {}: expected a number in [0, 10] (units of d)", spec.sigma));
+    for (int a = 0; a < dim; ++a) count *= static_cast<double>(spec.cells[static_cast<std::size_t>(a)]);
 
     ParticleSet set;
     set.name = lattice.name;

@@ -17,9 +17,8 @@ struct LatticeBlockSpec {
 };
 
 // Particles in cell-major order: id = ((c3 * N2 + c2) * N1 + c1) * sites + s, placed (and
-// disturbed) on `threads` threads; the set does not depend on the number. Throws Error(input)
-// for a size that is not positive or over `max_particles`.
-ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, std::size_t max_particles,
-                              int threads = 1);
+// disturbed) on `threads` threads; the set does not depend on the number. The spec as checked
+// by requests/source_request.hpp (positive cells, sigma in [0, 10], within the memory budget).
+ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, int threads = 1);
 
 } // namespace sphkern

@@ -2,10 +2,8 @@
 
 #include "lattices/lattice.hpp"
 #include "particles/particles_memory.hpp"
-#include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 
-#include <fmt/format.h>
 
 namespace sphkern {
 
@@ -22,8 +20,8 @@ ParticleSet load_particles(const ParticleSource& source, int threads)
 {
     threads = worker_threads(threads);
     switch (source.kind) {
-    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, max_particles(), threads);
-    case SourceKind::poisson: return poisson_particles(source.poisson, max_particles(), threads);
+    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, threads);
+    case SourceKind::poisson: return poisson_particles(source.poisson, threads);
     case SourceKind::file: break;
     }
     ParticleFileOptions options = source.file;
@@ -31,11 +29,7 @@ ParticleSet load_particles(const ParticleSource& source, int threads)
     ParticleSet set = read_particle_file(source.spec, options);
     if (source.box) {
         PeriodicBox box;
-        for (int a = 0; a < set.dimension; ++a) {
-            if (!std::isfinite((*source.box)[a]) || (*source.box)[a] <= 0)
-                fail_input(fmt::format("--box: side {} is {}; expected a positive number", a + 1, (*source.box)[a]));
-            box.edges(a, a) = (*source.box)[a];
-        }
+        for (int a = 0; a < set.dimension; ++a) box.edges(a, a) = (*source.box)[a];
         set.box = box;
     }
     validate_particle_set(set, threads);

@@ -18,6 +18,7 @@ struct ParticleSource {
     SourceKind kind = SourceKind::lattice;
     std::string spec;                     // the lattice (name or file) or the particle file
     LatticeBlockSpec block;               // lattice
+    std::size_t cell_counts = 0;          // lattice: how many counts were given (block.cells holds 1 for the rest)
     PoissonSpec poisson;                  // poisson
     ParticleFileOptions file;             // file
     std::optional<Eigen::Vector3d> box;   // a periodic rectangular box for a file (or poisson's sides)
@@ -27,7 +28,8 @@ struct ParticleSource {
 SourceKind source_kind(const std::string& spec);
 
 // Loads (generates) and validates the set on `threads` threads (0: every core); the set does
-// not depend on the number. Every limit comes from the memory budget.
+// not depend on the number. The source as checked by requests/source_request.hpp; a file's
+// size is checked against the memory budget as it is read.
 ParticleSet load_particles(const ParticleSource& source, int threads = 0);
 
 } // namespace sphkern

@@ -1,25 +1,16 @@
 #include "particles/sources/poisson_particles.hpp"
 
-#include "support/error.hpp"
 #include "support/process/block_random.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <boost/random/uniform_real_distribution.hpp>
-#include <fmt/format.h>
 
 #include <cmath>
 
 namespace sphkern {
 
-ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles, int threads)
+ParticleSet poisson_particles(const PoissonSpec& spec, int threads)
 {
-    if (spec.dimension != 2 && spec.dimension != 3) fail_input(fmt::format("--dim {}: expected 2 or 3", spec.dimension));
-    if (spec.count < 2 || spec.count > max_particles)
-        fail_input(fmt::format("--count {}: expected 2 to {} particles (the memory limit, --memory-limit)", spec.count,
-                               max_particles));
-    for (int a = 0; a < spec.dimension; ++a)
-        if (!std::isfinite(spec.box[a]) || spec.box[a] <= 0)
-            fail_input(fmt::format("--box: side {} is {}; expected a positive number", a + 1, spec.box[a]));
     ParticleSet set;
     set.name = "poisson";
     set.dimension = spec.dimension;

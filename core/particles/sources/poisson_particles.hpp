@@ -15,8 +15,8 @@ struct PoissonSpec {
 };
 
 // Drawn block by block of particles, one random stream per block: the same set on any number
-// of threads. Throws Error(input) for a count below 2 or over `max_particles`, or a box side
-// that is not positive.
-ParticleSet poisson_particles(const PoissonSpec& spec, std::size_t max_particles, int threads = 1);
+// of threads. The spec as checked by requests/source_request.hpp (dimension 2 or 3, at least
+// 2 particles within the memory budget, positive box sides).
+ParticleSet poisson_particles(const PoissonSpec& spec, int threads = 1);
 
 } // namespace sphkern

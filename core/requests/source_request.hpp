@@ -1,0 +1,27 @@
+// Where a particle set comes from (`particles`, `relax`, a study's sources): a lattice block,
+// a Poisson set or a file, each value checked once, named as the front end names it, and
+// the lattice read once.
+#pragma once
+
+#include "particles/sources/particle_source.hpp"
+#include "support/text/value_checks.hpp"
+
+#include <cstddef>
+
+namespace sphkern {
+
+struct SourceSources {
+    ValueSource size, sigma, count, dim, box;
+    std::string budget; // how the front end sets the memory budget, if it can: "--memory-limit"
+};
+SourceSources source_sources(FrontEnd front_end);
+
+// What needs no lattice or file: cells 1 to 1e6, sigma [0, 10] (units of d); a Poisson
+// dimension of 2 or 3, count 2 to 2^40; box sides positive and finite.
+void check_particle_source(const ParticleSource& source, const SourceSources& sources);
+
+// Checked, then made or read: a block takes as many cell counts as its lattice has dimensions,
+// and a block or a Poisson set over the memory budget is refused before it is made.
+ParticleSet load_source(const ParticleSource& source, const SourceSources& sources, int threads);
+
+} // namespace sphkern
