@@ -58,9 +58,8 @@ std::vector<OutputTarget> given_outputs(const Command& command, const std::vecto
 std::vector<std::string> read_inputs(const std::string& source, const std::string& kernel,
                                      const std::vector<std::string>& plugins);
 
-// Prints `document` to stdout, pretty and complete.
-// Prints a --json document with its "provenance" (an array: each element) and, when
-// given, its "inputs" (command_inputs).
+// Prints a --json document to stdout, pretty and complete, with its "provenance" (an array:
+// each element) and, when given, its "inputs" (command_inputs).
 void print_json(nlohmann::json document, const nlohmann::json& inputs = nullptr);
 
 // {"kernels": [descriptor], "lattices": [definition]} of a command's kernel and lattice

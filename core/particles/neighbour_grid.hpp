@@ -21,8 +21,8 @@ public:
     // along x, and a bin's candidates lie within stencil_reach bins across (x_bins_per_reach
     // times as many along x). Smaller bins across hold fewer candidates but in more and
     // shorter runs, which cost more than the candidates they save on the sets measured; along
-    // x, where a row of bins is one run, narrow bins let a point cut each run to the chord of
-    // its own support (for_each_run_near): about 3 candidates per neighbour instead of 6.
+    // x, where a row of bins is one run, narrow bins let a cluster cut each run to the chord of
+    // its support (for_each_run_near_box): about 3 candidates per neighbour instead of 6.
     static constexpr std::size_t stencil_reach = 1;
     static constexpr std::size_t x_bins_per_reach = 4;
     // The particles of this many consecutive bins along x form a cluster (half a reach along
@@ -66,18 +66,9 @@ public:
     }
 
     // visit(begin, end) for each run of points that may lie within `reach` (at most the
-    // grid's reach) of point p: the rows of bins around p's bin, each cut along x to the
-    // chord of the sphere of radius `reach` through the row. In a fixed order.
-    template <class Visit>
-    void for_each_run_near(std::size_t p, double reach, Visit&& visit) const
-    {
-        const double at[3] = {x_[p], y_[p], z_[p]};
-        for_each_run_near_box(at, at, reach, visit);
-    }
-
-    // The same for every point of the box [lo, hi] (inside one bin across, as the points of
-    // one cluster are): the rows around it, each cut along x to [lo_x - chord, hi_x + chord]
-    // with the chord of `reach` at the row's distance from the box. In a fixed order.
+    // grid's reach) of a point of the box [lo, hi] (inside one bin across, as the points of
+    // one cluster are): the rows of bins around it, each cut along x to [lo_x - chord,
+    // hi_x + chord] with the chord of `reach` at the row's distance from the box. In a fixed order.
     template <class Visit>
     void for_each_run_near_box(const double* lo, const double* hi, double reach, Visit&& visit) const
     {

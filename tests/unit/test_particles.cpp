@@ -603,7 +603,8 @@ TEST_CASE("the runs cut to a point's support hold every point within it once, ab
             for (std::size_t p = 0; p < grid.points(); p += 5)
                 for (double r : {reach, 0.55 * reach}) {
                     std::vector<int> seen(grid.points(), 0);
-                    grid.for_each_run_near(p, r, [&](std::size_t first, std::size_t last) {
+                    const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]}; // a box of one point
+                    grid.for_each_run_near_box(at, at, r, [&](std::size_t first, std::size_t last) {
                         for (std::size_t j = first; j < last; ++j) seen[j] += 1;
                         candidates += last - first;
                     });

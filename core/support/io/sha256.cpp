@@ -84,13 +84,6 @@ private:
 
 } // namespace
 
-std::string sha256_hex(std::string_view bytes)
-{
-    Sha256 h;
-    h.update(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-    return h.hex();
-}
-
 std::string file_sha256_hex(const std::filesystem::path& file)
 {
     std::ifstream in(file, std::ios::binary);
