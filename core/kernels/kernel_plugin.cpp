@@ -66,6 +66,18 @@ private:
     int folder_;
 };
 
+// The dynamic loader's own words ("undefined symbol: f") from Boost.DLL's message, which wraps
+// them ("load() failed (dlerror system message: PATH: undefined symbol: f): Bad file
+// descriptor", the errno being stale); the whole message where it has no such part.
+std::string loader_reason(std::string what, const std::string& path)
+{
+    const std::string marker = "dlerror system message: ";
+    const auto begin = what.find(marker), end = what.rfind("): ");
+    if (begin != std::string::npos && end != std::string::npos && end > begin) what = what.substr(begin + marker.size(), end - begin - marker.size());
+    if (what.starts_with(path + ": ")) what.erase(0, path.size() + 2);
+    return what;
+}
+
 // Loads `path` (a /proc/self/fd name); `name` is the file as the user gave it.
 std::shared_ptr<boost::dll::shared_library> open_library(const std::string& path, const std::string& name)
 {
@@ -75,9 +87,7 @@ std::shared_ptr<boost::dll::shared_library> open_library(const std::string& path
             boost::dll::fs::path(path), boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
     } catch (const std::exception& e) {
         if (errno == EMFILE || errno == ENFILE) fail_resource(errno, name + ": cannot be opened");
-        std::string why = e.what();
-        for (auto at = why.find(path); at != std::string::npos; at = why.find(path)) why.replace(at, path.size(), name);
-        throw Error(ExitCode::plugin, name + ": not a loadable shared library: " + why);
+        throw Error(ExitCode::plugin, name + ": not a loadable shared library: " + loader_reason(e.what(), path));
     }
 }
 

@@ -154,6 +154,8 @@ expect 4 'crash_in_w.so: plugin crashed with signal 11' -- kernels --plugin "$br
 expect 4 'endless_loop.so: plugin did not finish within 2 s' -- eps "$broken/endless_loop.so" triangular --k 1
 expect 4 'no_entry.so: not a sphkern kernel plugin' -- check --plugin "$broken/no_entry.so"
 expect 4 'not-a-plugin.so: not a loadable shared library' -- check --plugin "$broken/not-a-plugin.so"
+expect 4 'undefined_symbol.so: not a loadable shared library: undefined symbol: sphkern_test_function_nobody_defines$' -- \
+    check --plugin "$broken/undefined_symbol.so"
 expect 4 'two plugins are named "cubic_bspline"' -- kernels --plugin "$broken/duplicate_name.so"
 expect 1 '^$' -- check --plugin "$broken/unnormalised.so"
 expect 0 '^$' -- check cubic_bspline
