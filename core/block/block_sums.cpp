@@ -4,8 +4,7 @@
 #include "particles/neighbour_gather.hpp"
 #include "particles/pair_pass.hpp"
 #include "support/process/parallel_for.hpp"
-
-#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+#include "support/vector_clones.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -18,7 +17,7 @@ namespace {
 constexpr std::size_t lanes = neighbour_lanes;
 
 // The sum of W over the `live` neighbours, in eight lanes added in a fixed order.
-SPHKERN_VECTOR_CLONES double density_sum(const double* __restrict w, std::size_t n, std::size_t live)
+SPHKERN_ENGINE_CLONES double density_sum(const double* __restrict w, std::size_t n, std::size_t live)
 {
     double acc[lanes] = {};
     for (std::size_t base = 0; base < n; base += lanes)
@@ -34,7 +33,7 @@ SPHKERN_VECTOR_CLONES double density_sum(const double* __restrict w, std::size_t
 // sides, so a neighbour's depth is depth_i + height, through a periodic side too: it is not
 // gathered.
 template <GradientForm form>
-SPHKERN_VECTOR_CLONES double gradient_sum(double depth_i, double rho_i, const Neighbours& nb, const double* e,
+SPHKERN_ENGINE_CLONES double gradient_sum(double depth_i, double rho_i, const Neighbours& nb, const double* e,
                                           std::size_t n)
 {
     const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();

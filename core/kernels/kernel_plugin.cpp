@@ -9,8 +9,9 @@
 #include "support/io/results_output.hpp"
 #include "support/process/interruption.hpp"
 #include "support/process/isolated_call.hpp"
-#include "support/process/plugin_call_guard.hpp"
-#include "support/process/plugin_watchdog.hpp"
+#include "kernels/plugin_host/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_host.hpp"
+#include "kernels/plugin_host/plugin_watchdog.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
@@ -405,6 +406,7 @@ std::string probe_kernel_plugin(const std::filesystem::path& file) { return prob
 
 std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem::path& file)
 {
+    host_plugins();
     PluginFile opened(file);
     const std::string& name = opened.name();
     const ProbeVerdict probe = probe_open_plugin(opened);

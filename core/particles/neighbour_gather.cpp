@@ -2,8 +2,7 @@
 
 #include "kernels/kernel.hpp"
 #include "support/error.hpp"
-
-#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+#include "support/vector_clones.hpp"
 
 #include <fmt/format.h>
 
@@ -426,7 +425,7 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
 
 double search_reach(double support_radius) { return support_radius * std::sqrt(1 + 2 * support_edge); }
 
-SPHKERN_VECTOR_CLONES void distances(Neighbours& nb, std::size_t padded, double inv_h)
+SPHKERN_ENGINE_CLONES void distances(Neighbours& nb, std::size_t padded, double inv_h)
 {
     const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
     double *__restrict q = nb.q.data(), *__restrict inv_r = nb.inv_r.data();
@@ -438,14 +437,14 @@ SPHKERN_VECTOR_CLONES void distances(Neighbours& nb, std::size_t padded, double 
     for (std::size_t j = nb.count; j < padded; ++j) q[j] = inv_r[j] = 0;
 }
 
-SPHKERN_VECTOR_CLONES void fill_distances(Neighbours& nb)
+SPHKERN_ENGINE_CLONES void fill_distances(Neighbours& nb)
 {
     const double* __restrict r2 = nb.r2.data();
     double* __restrict r = nb.r.data();
     for (std::size_t j = 0; j < nb.count; ++j) r[j] = std::sqrt(r2[j]);
 }
 
-SPHKERN_VECTOR_CLONES void scale_distances(const double* __restrict r, std::size_t n, double factor, double* __restrict q)
+SPHKERN_ENGINE_CLONES void scale_distances(const double* __restrict r, std::size_t n, double factor, double* __restrict q)
 {
     for (std::size_t j = 0; j < n; ++j) q[j] = r[j] * factor;
 }

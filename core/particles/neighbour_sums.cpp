@@ -1,6 +1,6 @@
 #include "particles/neighbour_sums.hpp"
 
-#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+#include "support/vector_clones.hpp"
 
 namespace sphkern {
 
@@ -35,7 +35,7 @@ struct PairArrays {
 // Without masses (m null), total[sm] stays 0: m_j = rho0 V_j, and eps_rho is e0. With one
 // volume for all (uniform_volume), v is not read; the padding then needs W = W' = 0.
 template <bool with_mass, bool uniform_volume>
-SPHKERN_VECTOR_CLONES void sums_over(const PairArrays& in, double* __restrict total)
+SPHKERN_ENGINE_CLONES void sums_over(const PairArrays& in, double* __restrict total)
 {
     const UnalignedQuad *dx = as_quads(in.dx), *dy = as_quads(in.dy), *dz = as_quads(in.dz);
     const UnalignedQuad *inv_r = as_quads(in.inv_r), *v = as_quads(in.v), *m = as_quads(in.m);

@@ -5,8 +5,7 @@
 #include "particles/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
-
-#include <sphkern/kernel_plugin_helpers.h> // SPHKERN_VECTOR_CLONES
+#include "support/vector_clones.hpp"
 
 #include <fmt/format.h>
 
@@ -21,7 +20,7 @@ double ForceField::pressure(double density, const ForceModel& model) const
 
 namespace {
 
-SPHKERN_VECTOR_CLONES double sum_of(const double* __restrict w, std::size_t n)
+SPHKERN_ENGINE_CLONES double sum_of(const double* __restrict w, std::size_t n)
 {
     double total = 0;
     for (std::size_t j = 0; j < n; ++j) total += w[j];
@@ -33,7 +32,7 @@ SPHKERN_VECTOR_CLONES double sum_of(const double* __restrict w, std::size_t n)
 struct PairSums {
     double g[3] = {0, 0, 0}, a[3] = {0, 0, 0};
 };
-SPHKERN_VECTOR_CLONES PairSums pair_sums(const double* __restrict dx, const double* __restrict dy,
+SPHKERN_ENGINE_CLONES PairSums pair_sums(const double* __restrict dx, const double* __restrict dy,
                                          const double* __restrict dz, const double* __restrict r,
                                          const double* __restrict dw, const double* __restrict pi, std::size_t n,
                                          double scale, double pi_i)

@@ -4,7 +4,7 @@
 #include "support/io/json_input.hpp"
 #include "support/io/output_folder.hpp"
 #include "support/process/parallel_for.hpp"
-#include "support/process/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "support/process/work_budget.hpp"
 
 #include <doctest/doctest.h>

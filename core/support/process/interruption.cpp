@@ -1,8 +1,6 @@
 #include "support/process/interruption.hpp"
 
 #include "support/error.hpp"
-#include "support/process/plugin_faults.hpp"
-#include "support/process/plugin_watchdog.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -111,9 +109,11 @@ extern "C" void on_signal(int sig)
 
 constexpr int handled[] = {SIGINT, SIGTERM, SIGHUP};
 
-void take_signals(struct sigaction* saved, struct sigaction* saved_faults)
+SignalHook hook; // constant-initialised: empty until a plugin is first loaded
+
+void take_signals(struct sigaction* saved, struct sigaction* saved_hooked)
 {
-    take_fault_signals(saved_faults);
+    if (hook.take) hook.take(saved_hooked);
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
@@ -125,15 +125,23 @@ void take_signals(struct sigaction* saved, struct sigaction* saved_faults)
 std::mutex scope_mutex;
 int scopes = 0;
 struct sigaction host_handlers[3];
-struct sigaction host_faults[fault_signal_count];
+struct sigaction host_hooked[max_hooked_signals];
 
 } // namespace
+
+void set_signal_hook(SignalHook h)
+{
+    std::lock_guard lock(scope_mutex);
+    if (hook.take) return;
+    hook = h;
+    if (owns_process.load()) hook.take(nullptr);
+    else if (scopes > 0) hook.take(host_hooked);
+}
 
 void install_interrupt_handlers()
 {
     owns_process = true;
     take_signals(nullptr, nullptr);
-    start_plugin_watchdog();
 }
 
 void restore_interrupt_handlers()
@@ -147,8 +155,7 @@ InterruptScope::InterruptScope() : exceptions_(std::uncaught_exceptions())
     std::lock_guard lock(scope_mutex);
     if (scopes++ > 0 || owns_process.load()) return;
     received = 0;
-    take_signals(host_handlers, host_faults);
-    start_plugin_watchdog();
+    take_signals(host_handlers, host_hooked);
 }
 
 InterruptScope::~InterruptScope()
@@ -156,7 +163,7 @@ InterruptScope::~InterruptScope()
     std::lock_guard lock(scope_mutex);
     if (--scopes > 0 || owns_process.load()) return;
     for (int i = 0; i < 3; ++i) ::sigaction(handled[i], &host_handlers[i], nullptr);
-    give_back_fault_signals(host_faults);
+    if (hook.give_back) hook.give_back(host_hooked);
     const int sig = received.exchange(0);
     // SIGINT that ended the call is already the call's error; any other arrival goes to the host.
     const bool reported = sig == SIGINT && std::uncaught_exceptions() > exceptions_;

@@ -4,9 +4,21 @@
 // handler (async-signal-safe system calls only).
 #pragma once
 
+#include <csignal>
 #include <filesystem>
 
 namespace sphkern {
+
+// Handlers a layer above adds to the ones taken here (the plugin host's, for the fault
+// signals): installed wherever the interrupt handlers are, `saved` receiving up to
+// max_hooked_signals handlers that were in place, and given back with them.
+constexpr int max_hooked_signals = 8;
+struct SignalHook {
+    void (*take)(struct sigaction* saved) = nullptr;
+    void (*give_back)(const struct sigaction* saved) = nullptr;
+};
+// Once per process; where the handlers are already sphkern's, the hook takes its signals now.
+void set_signal_hook(SignalHook hook);
 
 // Installs the handlers for a program that owns its process (the command line): from now on
 // a second signal ends it at once.

@@ -1,9 +1,9 @@
-#include "support/process/plugin_watchdog.hpp"
+#include "kernels/plugin_host/plugin_watchdog.hpp"
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
-#include "support/process/plugin_call_guard.hpp"
-#include "support/process/plugin_faults.hpp"
+#include "kernels/plugin_host/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_faults.hpp"
 
 #include <spdlog/spdlog.h>
 

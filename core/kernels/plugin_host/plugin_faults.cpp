@@ -1,8 +1,8 @@
-#include "support/process/plugin_faults.hpp"
+#include "kernels/plugin_host/plugin_faults.hpp"
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
-#include "support/process/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_call_guard.hpp"
 
 #include <atomic>
 #include <cstdlib>

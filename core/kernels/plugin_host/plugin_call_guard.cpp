@@ -1,6 +1,6 @@
-#include "support/process/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_call_guard.hpp"
 
-#include "support/process/plugin_faults.hpp"
+#include "kernels/plugin_host/plugin_faults.hpp"
 #include "support/text/printable_text.hpp"
 
 #include <atomic>
