@@ -28,6 +28,7 @@ struct Expressions {
     std::vector<std::string> parameter_names;
     std::vector<double> breakpoints;
     double support = 0;
+    bool normalise = false; // "normalise": true: W is f divided by its integral, else f as written
 };
 
 // A muparser instance per thread (muparser is not thread-safe), bound to its own variables.
@@ -39,6 +40,8 @@ struct Parsers {
     explicit Parsers(const Expressions& e) : params(e.parameter_names.size())
     {
         for (mu::Parser* p : {&w, &dw}) {
+            // muparser's own _pi is 3.141592653589 with GCC: a constant written with it would be 2.5e-13 off.
+            p->DefineConst("_pi", pi);
             p->DefineVar("q", &q);
             p->DefineVar("k", &k);
             for (std::size_t i = 0; i < params.size(); ++i) p->DefineVar(e.parameter_names[i], &params[i]);
@@ -96,19 +99,22 @@ public:
         return value;
     }
 
-    double w(double q, int dim, double k, const double* p) const override { return sigma(dim, p) * shape(q, k, p); }
+    // W = factor * f: f as written (the author's constant), unless the file asks sphkern to normalise it.
+    double factor(int dim, const double* params) const { return e_.normalise ? sigma(dim, params) : 1.0; }
+
+    double w(double q, int dim, double k, const double* p) const override { return factor(dim, p) * shape(q, k, p); }
     double dw(double q, int dim, double k, const double* p) const override
     {
-        return sigma(dim, p) * shape_derivative(q, k, p);
+        return factor(dim, p) * shape_derivative(q, k, p);
     }
     void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        const double s = sigma(dim, p);
+        const double s = factor(dim, p);
         for (std::size_t i = 0; i < n; ++i) out[i] = s * shape(q[i], k, p);
     }
     void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        const double s = sigma(dim, p);
+        const double s = factor(dim, p);
         for (std::size_t i = 0; i < n; ++i) out[i] = s * shape_derivative(q[i], k, p);
     }
 
@@ -143,6 +149,7 @@ void check_expression(const JsonNode& node, const std::string& text, const std::
         mu::Parser parser;
         double q = 0.5, k = 1;
         std::vector<double> values(names.size(), 0.0);
+        parser.DefineConst("_pi", pi);
         parser.DefineVar("q", &q);
         parser.DefineVar("k", &k);
         for (std::size_t i = 0; i < names.size(); ++i) parser.DefineVar(names[i], &values[i]);
@@ -205,8 +212,10 @@ std::vector<double> read_breakpoints(const JsonNode& root, double support)
     return breakpoints;
 }
 
-// Finite values and a usable normalisation with the default parameters, or an error at /w.
-void require_normalisable(const JsonNode& root, const KernelDefinition& kernel, const ExpressionFunctions& functions)
+// Finite values and a positive finite integral with the default parameters, or an error at
+// /w. A wrong constant is check's business; a W with no positive integral is no kernel.
+void require_normalisable(const JsonNode& root, const KernelDefinition& kernel, const ExpressionFunctions& functions,
+                          bool normalise)
 {
     std::vector<double> defaults;
     for (const auto& p : kernel.parameters) defaults.push_back(p.default_value);
@@ -214,7 +223,8 @@ void require_normalisable(const JsonNode& root, const KernelDefinition& kernel, 
         double s = functions.sigma(dim, defaults.data());
         if (!std::isfinite(s) || s <= 0)
             root.at("w").error("the integral of w over " + std::to_string(dim) +
-                               "D space is not a positive finite number, so it cannot be normalised");
+                               "D space is not a positive finite number" +
+                               (normalise ? ", so it cannot be normalised" : ""));
         for (int i = 0; i <= 60; ++i) {
             double q = 1.5 * kernel.support * i / 60;
             if (!std::isfinite(functions.w(q, dim, 1.0, defaults.data())) ||
@@ -234,11 +244,12 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     auto document = read_json_file(file);
     JsonNode root(document, file.string());
     root.expect_keys({"$schema", "name", "title", "reference", "support", "dimensions", "parameters", "breakpoints",
-                      "w", "dw"});
+                      "w", "dw", "normalise"});
     auto kernel = std::make_shared<KernelDefinition>();
     Expressions e;
     kernel->source = std::filesystem::absolute(file).lexically_normal().string();
     kernel->from_expression = true;
+    kernel->origin = KernelOrigin::expression;
     kernel->name = identifier(root.at("name"));
     kernel->title = root.find("title") ? printable_text(root.at("title").string()) : kernel->name;
     kernel->reference = root.find("reference") ? printable_text(root.at("reference").text()) : "";
@@ -255,9 +266,11 @@ std::shared_ptr<const KernelDefinition> load_expression_kernel(const std::filesy
     } else {
         kernel->derivative_note = "no \"dw\" expression: dW/dr is a central difference of W (step 1e-6 q)";
     }
+    if (auto normalise = root.find("normalise")) e.normalise = normalise->boolean();
+    kernel->normalised = e.normalise;
     kernel->truncations = {kernel->support};
     auto functions = std::make_shared<ExpressionFunctions>(e);
-    require_normalisable(root, *kernel, *functions);
+    require_normalisable(root, *kernel, *functions, e.normalise);
     kernel->functions = functions;
     return kernel;
 }

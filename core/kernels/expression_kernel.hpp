@@ -1,6 +1,7 @@
 // Kernels written as expressions: a JSON file with the shape f(q) (muparser syntax),
-// its support, dimensions, parameters and optionally its derivative; sphkern computes
-// the normalisation per dimension by quadrature (README, "Expression kernels").
+// its support, dimensions, parameters and optionally its derivative. W is f as written
+// (its constant is the author's, and check judges it), or with "normalise": true f divided
+// by its integral per dimension and parameter values, by quadrature (guide-kernel-authors.md).
 #pragma once
 
 #include "kernels/kernel_definition.hpp"

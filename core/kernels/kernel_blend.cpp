@@ -71,6 +71,7 @@ std::shared_ptr<const KernelDefinition> make_blend(const Kernel& a, const Kernel
     bp.erase(std::unique(bp.begin(), bp.end()), bp.end());
     blend->separate_derivative = da.separate_derivative || db.separate_derivative;
     blend->from_expression = da.from_expression && db.from_expression;
+    blend->origin = KernelOrigin::blend;
     blend->truncations = {da.support};
     if (db.support != da.support) blend->truncations.push_back(db.support);
     blend->functions = std::make_shared<BlendFunctions>(a, b);

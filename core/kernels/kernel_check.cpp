@@ -62,6 +62,14 @@ struct Checks {
     }
 };
 
+// The expression file whose keys ("w", "dw", "support") a hint names, or empty: a plugin's
+// or a blend's hints name the plugin's functions and descriptor.
+std::string expression_file(const Kernel& kernel)
+{
+    const auto& d = kernel.definition();
+    return d.origin == KernelOrigin::expression ? d.source : std::string();
+}
+
 // ok when the condition holds, else `otherwise`.
 CheckStatus ok_or(bool condition, CheckStatus otherwise) { return condition ? CheckStatus::ok : otherwise; }
 
@@ -87,6 +95,7 @@ double check_derivative(const Kernel& kernel, int dim, const std::vector<double>
     }
     double relative = mismatch / std::max(scale, 1e-300);
     const auto& definition = kernel.definition();
+    const std::string file = expression_file(kernel);
     if (!definition.derivative_note.empty())
         checks.add(dim, "derivative", CheckStatus::ok, definition.derivative_note);
     else if (definition.separate_derivative)
@@ -97,8 +106,11 @@ double check_derivative(const Kernel& kernel, int dim, const std::vector<double>
         checks.add(dim, "derivative", ok_or(relative <= 1e-6, CheckStatus::fail),
                    "largest relative difference from a numerical dW/dr: " + format(relative, 3) + " at q = " +
                        format(worst_q, 4),
-                   "compare dw with the derivative of w near q = " + format(worst_q, 4) +
-                       "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE");
+                   file.empty() ? "compare dw with the derivative of w near q = " + format(worst_q, 4) +
+                                      "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE"
+                                : "\"dw\" in " + file + " is not the derivative of \"w\" with respect to q near q = " +
+                                      format(worst_q, 4) +
+                                      ": correct \"dw\", or leave it out and sphkern differentiates \"w\"");
     return scale;
 }
 
@@ -134,6 +146,7 @@ void check_continuity(const Kernel& kernel, int dim, const std::vector<double>& 
 {
     const double w0 = std::abs(kernel.w(0, dim, check_k));
     dw_scale = std::max(dw_scale, 1e-300);
+    const std::string file = expression_file(kernel);
     for (std::size_t i = 1; i < edges.size(); ++i) {
         double b = edges[i];
         bool at_support = i + 1 == edges.size();
@@ -146,13 +159,18 @@ void check_continuity(const Kernel& kernel, int dim, const std::vector<double>& 
         bool w_ok = w_jump <= 1e-7 * std::max(w0, 1e-300);
         bool dw_ok = dw_jump <= 1e-7 * dw_scale;
         const CheckStatus status = w_ok ? ok_or(dw_ok, CheckStatus::warn) : (at_support ? CheckStatus::warn : CheckStatus::fail);
+        std::string hint;
+        if (at_support)
+            hint = (file.empty() ? "W or dW/dr does not reach zero at R"
+                                 : "\"w\" or \"dw\" in " + file + " is not zero at \"support\" = " + format(b)) +
+                   ": the errors jump where a shell crosses the support; a kernel that ends smoothly at R avoids it";
+        else
+            hint = (file.empty() ? "the pieces" : "the pieces of \"w\" or \"dw\" in " + file) + " do not meet at q = " +
+                   format(b) + ": check each piece's formula and constant there";
         checks.add(dim, "continuity", status,
                    where + ": jump of W " + format(w_jump, 4) + ", of dW/dr " + format(dw_jump, 4) +
                        " (in units of h^-D, h^-(D+1))",
-                   at_support ? "W or dW/dr does not reach zero at R: the errors jump where a shell crosses the "
-                                "support; a kernel that ends smoothly at R avoids it"
-                              : "the pieces do not meet at q = " + format(b) +
-                                    ": check each piece's formula and constant there");
+                   hint);
     }
 }
 
@@ -189,9 +207,11 @@ void check_breakpoints(const Kernel& kernel, int dim, Checks& checks)
         }
         if (!found.empty()) break;
     }
+    const std::string file = expression_file(kernel);
     checks.add(dim, "breakpoints", ok_or(found.empty(), CheckStatus::warn),
                found.empty() ? "W and dW/dr smooth between the declared breakpoints" : found + ", which is not a declared breakpoint",
-               "declare the breakpoint (or fix the formula): quadratures and derivatives are split at breakpoints only");
+               (file.empty() ? "declare the breakpoint" : "add that q to \"breakpoints\" in " + file) +
+                   " (or fix the formula): quadratures and derivatives are split at breakpoints only");
 }
 
 // A support larger than the kernel: W = 0 on the last part of [0, R]. Exactly zero, not
@@ -208,10 +228,13 @@ void check_support(const Kernel& kernel, int dim, Checks& checks)
             break;
         }
     const bool over = last < R * 0.99;
+    const std::string file = expression_file(kernel);
     checks.add(dim, "support", over ? CheckStatus::warn : CheckStatus::ok,
                over ? "W is zero from q = " + format(last + delta, 4) + " to the declared support R = " + format(R)
                     : "W is non-zero up to the declared support R = " + format(R),
-               "declare the support where W ends: R sets the neighbour count N_H, H/d and the k windows");
+               (file.empty() ? "declare the support where W ends"
+                             : "set \"support\" in " + file + " where \"w\" ends") +
+                   ": R sets the neighbour count N_H, H/d and the k windows");
 }
 
 // The integral of the formula past R, out to 4 R: what truncation at R cuts off. Not
@@ -240,6 +263,8 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
     const auto [integral, error] = kernel_integral(kernel, dim, check_k);
     const double deviation = std::abs(integral - 1);
     std::string detail = "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")";
+    if (kernel.definition().normalised) detail += "; \"normalise\": true, so sphkern divides \"w\" by its integral";
+    const std::string file = expression_file(kernel), D = std::to_string(dim) + "D";
     if (deviation <= normalization_ok) {
         checks.add(dim, "normalization", CheckStatus::ok, detail);
         return integral;
@@ -248,15 +273,35 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
     if (std::isfinite(whole) && std::abs(whole - 1) <= normalization_truncation) {
         checks.add(dim, "normalization", deviation <= normalization_warn ? CheckStatus::warn : CheckStatus::fail,
                    detail + "; the formula continued past R integrates to " + format(whole),
-                   "normalised over all space, not over the support: cutting the formula at R changes its integral "
-                   "by " + format(integral - 1, 3) + "; divide W by " + format(integral) + " in " +
-                       std::to_string(dim) + "D or choose a larger R");
+                   file.empty()
+                       ? "normalised over all space, not over the support: cutting the formula at R changes its "
+                         "integral by " + format(integral - 1, 3) + "; divide W by " + format(integral) + " in " + D +
+                             " or choose a larger R"
+                       : "\"w\" in " + file + " is normalised over all space, not over \"support\": cutting the "
+                         "formula at R changes its integral by " + format(integral - 1, 3) + "; multiply \"w\" and "
+                         "\"dw\" by " + format(1 / integral) + " in " + D +
+                             ", choose a larger \"support\", or set \"normalise\": true");
         return integral;
     }
+    std::string hint;
+    if (file.empty()) {
+        hint = "the normalisation constant is off by a factor " + format(integral) + " in " + D +
+               " (eps_rho inherits it one to one): divide the " + D + " constant by " + format(integral);
+    } else {
+        // The right constant as the W(0) it gives: the constant itself where the rest of the
+        // formula is 1 at q = 0, as usual.
+        const double w0 = kernel.w(0, dim, check_k);
+        hint = "the constant of \"w\" in " + file + " is off by a factor " + format(integral) + " in " + D +
+               " (eps_rho inherits it one to one): multiply \"w\" and \"dw\" by " + format(1 / integral) + " in " + D;
+        if (w0 != 0)
+            hint += ", so that W(0) = " + format(w0 / integral) +
+                    " (the right constant where the rest of \"w\" is 1 at q = 0)";
+        if (kernel.definition().dimensions.size() > 1)
+            hint += "; one formula has one constant for all its \"dimensions\": give " + D + " a file of its own";
+        hint += ", or set \"normalise\": true";
+    }
     checks.add(dim, "normalization", deviation <= normalization_truncation ? CheckStatus::warn : CheckStatus::fail, detail,
-               "the normalisation constant is off by a factor " + format(integral) + " in " + std::to_string(dim) +
-                   "D (eps_rho inherits it one to one): divide the " + std::to_string(dim) + "D constant by " +
-                   format(integral));
+               hint);
     return integral;
 }
 
@@ -264,6 +309,7 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
 void check_finiteness(const Kernel& kernel, int dim, Checks& checks)
 {
     const double R = kernel.support();
+    const std::string file = expression_file(kernel);
     int bad = 0;
     double bad_q = 0;
     for (double k : {0.75, 1.0, 1.25})
@@ -276,7 +322,8 @@ void check_finiteness(const Kernel& kernel, int dim, Checks& checks)
     checks.add(dim, "finiteness", bad ? CheckStatus::fail : CheckStatus::ok,
                bad ? std::to_string(bad) + " non-finite values, first at q = " + format(bad_q)
                    : "W and dW/dr finite on [0, 1.5 R] at k = 0.75, 1, 1.25",
-               "a division by zero or a power of a negative number near q = " + format(bad_q) +
+               (file.empty() ? std::string() : "\"w\" or \"dw\" in " + file + ": ") +
+                   "a division by zero or a power of a negative number near q = " + format(bad_q) +
                    "? every q >= 0 must give a finite value");
 }
 
@@ -300,9 +347,18 @@ void check_gradient_moment(const Kernel& kernel, int dim, double integral, Check
                    detail + "; a separate derivative: reported, not checked (it is the continuum gradient error times -D)");
         return;
     }
+    const std::string file = expression_file(kernel);
+    std::string hint;
+    if (consistent)
+        hint = (file.empty() ? "W does not vanish at R"
+                             : "\"w\" in " + file + " does not vanish at \"support\" = " + format(R)) +
+               ": the truncated kernel's gradient misses a surface term";
+    else
+        hint = (file.empty() ? "dW/dr is not the derivative of W"
+                             : "\"dw\" in " + file + " is not the derivative of \"w\"") +
+               " (a wrong factor or sign?)";
     checks.add(dim, "gradient_moment", consistent ? ok_or(!jump_at_support, CheckStatus::warn) : CheckStatus::fail, detail,
-               consistent ? "W does not vanish at R: the truncated kernel's gradient misses a surface term"
-                          : "dW/dr is not the derivative of W (a wrong factor or sign?)");
+               hint);
 }
 
 // The second moment, the kernel's width in units of h^2 (reported); returns it.

@@ -40,6 +40,9 @@ public:
     virtual double fourier_transform(double, int, double, const double*) const { return 0.0; }
 };
 
+// What made a kernel: check words its hints in the terms of that file.
+enum class KernelOrigin { plugin, expression, blend };
+
 struct KernelDefinition {
     std::string abi;    // "2.0" for a plugin, empty otherwise
     std::string source; // the plugin or expression file, or how the kernel was made
@@ -51,7 +54,9 @@ struct KernelDefinition {
     std::vector<KernelParameter> parameters;
     std::vector<double> breakpoints;   // interior q where the definition changes
     bool separate_derivative = false;  // dW/dr is its own formula
-    bool from_expression = false;      // an expression file (its faults are input errors, not plugin errors)
+    bool from_expression = false;      // expression files only (its faults are input errors, not plugin errors)
+    KernelOrigin origin = KernelOrigin::plugin;
+    bool normalised = false;           // an expression file with "normalise": true: sphkern divides W by its integral
     std::string derivative_note;       // how dW/dr is obtained when it is not a formula
     // q at which the kernel (or a part of it) is cut to zero: {R}, or each part's R for a blend.
     std::vector<double> truncations;

@@ -180,7 +180,7 @@ kernel x_param '{"name": "x", "support": 2, "dimensions": [2], "parameters": [{"
 expect 3 'x_param.json: /parameters/0: expected min <= default <= max' -- eps "$work/x_param.json" triangular --k 1
 kernel x_key '{"name": "x", "support": 2, "dimensions": [2], "w": "1", "derivative": "0"}'
 expect 3 'x_key.json: /: unknown key "derivative"' -- eps "$work/x_key.json" triangular --k 1
-kernel x_ok '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'
+kernel x_ok '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "normalise": true, "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'
 expect 0 '^$' -- check --plugin "$work/x_ok.json"
 expect 3 'x_ok has no parameter "beta"' -- design "$work/x_ok.json" triangular --param beta
 kernel x_1d '{"name": "x_1d", "support": 1, "dimensions": [1], "w": "q < 1 ? 1 - q : 0"}'
@@ -1156,6 +1156,34 @@ for i in range(400): print(f'{random.random()},{random.random()},{random.random(
 " >>"$work/massive.csv"
 expect 3 'massive.csv: the statistics of eps_rho overflow a double \(the masses over rho0 = 1e-300\)' -- particles cubic_bspline "$work/massive.csv" --box 1,1,1 --nh 40 --rho0 1e-300
 expect 3 'massive.csv: eps_rho of particle [0-9]+ overflows a double \(its masses over rho0 = 4.94066e-324\)' -- particles cubic_bspline "$work/massive.csv" --box 1,1,1 --nh 40 --rho0 5e-324 --json
+
+# An expression kernel is used as written and its constant checked as a plugin's is:
+# Wendland C4 in 3D, support 2, with its constant 495/(256 pi), then with the support-1
+# constant 495/(32 pi), 8 times too large in w and dw (check fails, exit 1, and its hint gives
+# the constant), then the same with "normalise": true.
+c4() { # c4 NAME CONSTANT [KEYS] [DW_FACTOR]
+    kernel "$1" '{"name": "'"$1"'", "support": 2, "dimensions": [3], '"${3:-}"'
+      "w": "q < 2 ? '"$2"' * (1 - q/2)^6 * (1 + 3*q + 35/12*q^2) : 0",
+      "dw": "q < 2 ? -'"$2"' * '"${4:-14/3}"' * q * (1 - q/2)^5 * (1 + 2.5*q) : 0"}'
+}
+c4 x_c4 '495/(256*_pi)'
+expect 0 '^$' -- check --plugin "$work/x_c4.json"
+c4 x_c4_wrong '495/(32*_pi)'
+expect 1 '^$' -- check --plugin "$work/x_c4_wrong.json"
+out=$("$sphkern" check --plugin "$work/x_c4_wrong.json")
+# The factor and the right constant, 495/(32 pi R^3) for R = 2, to the ten digits check prints.
+read -r factor inverse right < <(python3 -c 'import math; print("%.10g %.10g %.10g" % (2**3, 2**-3, 495 / (32 * math.pi * 2**3)))')
+check "the 3D constant $right in the hint: $out" grep -qF "hint (3D normalization): the constant of \"w\" in $work/x_c4_wrong.json is off by a factor $factor in 3D (eps_rho inherits it one to one): multiply \"w\" and \"dw\" by $inverse in 3D, so that W(0) = $right" <<<"$out"
+c4 x_c4_normalise '495/(32*_pi)' '"normalise": true,'
+expect 0 '^$' -- check --plugin "$work/x_c4_normalise.json"
+c4 x_c4_yes '495/(256*_pi)' '"normalise": "yes",'
+expect 3 '^sphkern: error: .*x_c4_yes.json: /normalise: expected true or false, got a string$' -- check --plugin "$work/x_c4_yes.json"
+expect 3 'x_c4_yes.json: /normalise: expected true or false, got a string$' -- eps "$work/x_c4_yes.json" fcc --k 1.2
+c4 x_c4_dw '495/(256*_pi)' '' 4
+expect 1 '^$' -- check --plugin "$work/x_c4_dw.json"
+out=$("$sphkern" check --plugin "$work/x_c4_dw.json")
+check "a wrong dw is named in the file's terms: $out" grep -qF "hint (3D derivative): \"dw\" in $work/x_c4_dw.json is not the derivative of \"w\"" <<<"$out"
+check "no C macro in an expression file's hints: $out" test -z "$(grep SPHKERN_ <<<"$out")"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -242,7 +242,7 @@ def test_plugins_are_probed_as_the_command_line_probes_them(tmp_path):
     expression = tmp_path / "x_cubic.json"
     expression.write_text(json.dumps({
         "name": "x_cubic", "support": 2, "dimensions": [3],
-        "w": "q < 1 ? 1 - 1.5*q^2 + 0.75*q^3 : (q < 2 ? 0.25*(2-q)^3 : 0)"}))
+        "w": "(q < 1 ? 1 - 1.5*q^2 + 0.75*q^3 : (q < 2 ? 0.25*(2-q)^3 : 0)) / _pi"}))
     assert sphkern.load_plugin(str(expression))["name"] == "x_cubic"
     close(float(sphkern.eps(str(expression), "fcc", 1.2)["eps_rho"]),
           float(sphkern.eps("cubic_bspline", "fcc", 1.2)["eps_rho"]))

@@ -143,6 +143,12 @@ TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-de
     CHECK(s["derivative"] == "fail");
     CHECK(s["gradient_moment"] == "fail");
     CHECK(s["second_derivative"] == "fail");
+    // A plugin's hint speaks of its C terms (an expression file's of its keys: test_design.cpp).
+    bool named = false;
+    for (const auto& c : wrong["checks"])
+        named |= c["check"] == "derivative" &&
+                 c.value("hint", std::string()).find("SPHKERN_KERNEL_SEPARATE_DERIVATIVE") != std::string::npos;
+    CHECK(named);
     CHECK(statuses(checked("hidden_jump"), 1)["breakpoints"] == "warn");
     CHECK(statuses(checked("over_declared_support"), 1)["support"] == "warn");
     auto missing = checked("missing_breakpoint");
