@@ -47,9 +47,10 @@ SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& s
     const bool rule_given = given.eta || given.nh || given.k;
     SmoothingSpec spec = smoothing_spec(given, sources);
     if (!rule_given && !set.h.empty() && file_h_allowed) spec = {SmoothingRule::file, 0, given.support_per_h.value_or(0)};
-    if (given.support_per_h && (spec.rule != SmoothingRule::file || !(*given.support_per_h > 0)))
-        sources.support_per_h.fail(fmt::format("maps a file's h (a positive number); it does not go with {}, {} or {}",
-                                               sources.eta.name, sources.nh.name, sources.k.name));
+    const auto x = given.support_per_h;
+    if (x && (spec.rule != SmoothingRule::file || !(*x > 0) || !std::isfinite(*x)))
+        sources.support_per_h.fail(fmt::format("maps a file's h (a positive finite number); it does not go with {}, "
+                                               "{} or {}", sources.eta.name, sources.nh.name, sources.k.name));
     check_smoothing_fits(spec, set, sources);
     return spec;
 }
