@@ -21,6 +21,9 @@ inline DoubleArray real_array(const pybind11::object& values, const std::string&
         return values.cast<DoubleArray>();
     } catch (const pybind11::cast_error&) {
         fail_input(what + ": expected " + expected);
+    } catch (const pybind11::error_already_set& e) { // numpy's own refusal, as of a text
+        if (!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError)) throw;
+        fail_input(what + ": expected " + expected);
     }
 }
 
