@@ -1,7 +1,9 @@
 // sphkern.particles: the particle-set measures on numpy arrays. Positions are copied once
 // (into the engine's own layout); the per-particle results come back as numpy arrays.
 #include "particles_binding.hpp"
+#include "docstrings.hpp"
 #include "python_arrays.hpp"
+#include "python_types.hpp"
 
 #include "particles/particle_report.hpp"
 #include "particles/particle_set.hpp"
@@ -60,6 +62,17 @@ ParticleSet set_of(const py::object& positions, const py::object& box)
     return set;
 }
 
+// Masses and densities, one positive finite number per particle, refused naming the argument.
+std::vector<double> positive_per_particle(const py::object& value, std::size_t n, const char* what, const char* field)
+{
+    auto values = per_particle(value, n, what);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!std::isfinite(values[i]) || values[i] <= 0)
+            fail_input(fmt::format("{}: the {} of particle {} is {}, expected a positive finite number", what, field, i,
+                                   values[i]));
+    return values;
+}
+
 std::optional<double> number_of(const py::object& value, const char* what)
 {
     if (value.is_none()) return std::nullopt;
@@ -68,16 +81,29 @@ std::optional<double> number_of(const py::object& value, const char* what)
     return *a.data();
 }
 
-// The arguments as the request takes them; h (sphkern's own, one per particle) goes into the set.
-ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const py::object& h, const py::object& eta,
+// What the arguments give per particle goes into the set, as a file's columns would: h as
+// stored (the support radius is support_per_h times it; sphkern's own h by default), masses
+// and densities (the volumes m / rho where no volume is given).
+struct PerParticle {
+    py::object h, support_per_h, masses, densities;
+};
+
+// The arguments as the request takes them.
+ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const PerParticle& given, const py::object& eta,
                                const py::object& nh, const py::object& volume, const py::object& gravity)
 {
-    if (!h.is_none() + !eta.is_none() + !nh.is_none() > 1) fail_input("give one of h, eta and nh");
+    if (!given.h.is_none() + !eta.is_none() + !nh.is_none() > 1) fail_input("give one of h, eta and nh");
+    if (!given.densities.is_none() && given.masses.is_none())
+        fail_input("densities: they give the volumes m / rho; expected masses too");
+    if (!given.densities.is_none() && !volume.is_none()) fail_input("give one of volume and densities");
     ParticleArguments a;
-    if (!h.is_none()) {
-        set.h = per_particle(h, set.size(), "h");
-        a.smoothing.support_per_h = kernel.support();
-    }
+    if (!given.h.is_none()) set.h = per_particle(given.h, set.size(), "h");
+    // Given alone, the request refuses it (it maps a given h).
+    a.smoothing.support_per_h = number_of(given.support_per_h, "support_per_h");
+    if (!given.h.is_none() && !a.smoothing.support_per_h) a.smoothing.support_per_h = kernel.support();
+    if (!given.masses.is_none()) set.mass = positive_per_particle(given.masses, set.size(), "masses", "mass");
+    if (!given.densities.is_none())
+        set.density = positive_per_particle(given.densities, set.size(), "densities", "density");
     a.smoothing.eta = number_of(eta, "eta"), a.smoothing.nh = number_of(nh, "nh");
     if (py::isinstance<py::str>(volume)) {
         const auto name = volume.cast<std::string>();
@@ -124,13 +150,17 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {
     m.def(
         "particles",
-        [kernel_of, to_python](const std::string& kernel_spec, const py::object& positions, const py::object& box,
-                               const py::object& h, const py::object& eta, const py::object& nh,
-                               const py::object& volume, const py::object& gravity, double depth, int threads,
-                               const py::object& params) {
+        [kernel_of, to_python](const std::string& kernel_spec, const ArrayLike& positions, const OptionalSequence& box,
+                               const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& eta,
+                               const OptionalFloat& nh, const OptionalArrayLike& masses,
+                               const OptionalArrayLike& densities, const OptionalFloat& rho0,
+                               const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
+                               const OptionalParams& params) {
             auto kernel = kernel_of(kernel_spec, params);
             ParticleSet set = set_of(positions, box);
-            ParticleArguments arguments = arguments_of(set, kernel, h, eta, nh, volume, gravity);
+            ParticleArguments arguments =
+                arguments_of(set, kernel, {h, support_per_h, masses, densities}, eta, nh, volume, gravity);
+            arguments.rho0 = number_of(rho0, "rho0");
             arguments.depth = depth;
             arguments.threads = threads;
             ParticleAnswer answer;
@@ -154,12 +184,10 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             return out;
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
-        py::arg("eta") = py::none(), py::arg("nh") = py::none(), py::arg("volume") = py::none(),
-        py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0, py::arg("params") = py::none(),
-        "Consistency errors of a kernel on particles at `positions` (N x 2 or N x 3), as `sphkern particles --json` "
-        "prints them, plus per-particle numpy arrays e0, eps_rho, eps_gradp, eps_gradp_sum, e1, m1, E, neighbours, "
-        "h and volume. h: sphkern's h (support R h), a number or one per particle; or eta, or nh (default eta 1.2). "
-        "volume: \"uniform\" (needs box), \"voronoi\" (needs box) or an array.",
+        py::arg("support_per_h") = py::none(), py::arg("eta") = py::none(), py::arg("nh") = py::none(),
+        py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
+        py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
+        py::arg("params") = py::none(), doc::particles,
         py::call_guard<InterruptScope>());
 }
 

@@ -7,8 +7,10 @@
 #include "analysis/results_json.hpp"
 #include "kernels/kernel_json.hpp"
 #include "lattices/lattice_json.hpp"
+#include "docstrings.hpp"
 #include "particles_binding.hpp"
 #include "python_arrays.hpp"
+#include "python_types.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
@@ -126,8 +128,8 @@ Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
     return direction_of(*components, lattice.dimension, argument_sources().gravity);
 }
 
-py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const py::object& k_values,
-             const py::object& a_p, const py::object& gravity, int site, const py::object& params)
+py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const ArrayLike& k_values,
+             const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params)
 {
     const DoubleArray k = real_array(k_values, "k", "a number or an array of numbers");
     auto lattice = load_lattice(lattice_spec);
@@ -162,8 +164,9 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     return out;
 }
 
-py::object surface(const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
-                   int layers, const py::object& a_p, const py::object& gravity, int site, const py::object& params)
+py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
+                 int layers, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
+                 const OptionalParams& params)
 {
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
@@ -182,7 +185,7 @@ py::object surface(const std::string& kernel_spec, const std::string& lattice_sp
 // The roots request from its arguments: the texts as types, the stability model checked with or without `stability`.
 RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis, bool stability,
                            double gamma, int steps, double horizon, const std::string& h_model,
-                           const py::object& convention)
+                           const std::optional<std::string>& convention)
 {
     RootsRequest r;
     r.window_min = kmin;
@@ -192,14 +195,15 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.lateral = lateral;
     r.stability = stability;
     r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model")};
-    if (!convention.is_none()) r.convention = &code_convention(convention.cast<std::string>(), "convention");
+    if (convention) r.convention = &code_convention(*convention, "convention");
     return r;
 }
 
-py::object roots(const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
-                 const py::object& a_p, const py::object& gravity, int site, const py::object& params, double epsilon,
-                 bool lateral, const std::string& axis, bool details, bool stability, double gamma, int steps,
-                 double horizon, const std::string& h_model, const py::object& convention)
+// The whole document of `roots --json`, whatever the options: they only add keys to it.
+py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
+               const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params,
+               double epsilon, bool lateral, const std::string& axis, bool stability, double gamma, int steps,
+               double horizon, const std::string& h_model, const std::optional<std::string>& convention)
 {
     auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
                                  convention);
@@ -217,12 +221,12 @@ py::object roots(const std::string& kernel_spec, const std::string& lattice_spec
         const auto result = run_roots(request, sources, kernel, lattice);
         document = roots_request_document(request, result, kernel, lattice);
     }
-    return to_python(details || stability || request.convention ? document : document["roots"]);
+    return to_python(document);
 }
 
-py::object design(const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
-                  const py::object& range, double kmin, double kmax, const py::object& a_p, const py::object& gravity,
-                  int site, const py::object& params)
+py::dict design(const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
+                const OptionalSequence& range, double kmin, double kmax, const NameOrNumber& a_p,
+                const OptionalSequence& gravity, int site, const OptionalParams& params)
 {
     DesignRequest request;
     request.parameter = param;
@@ -253,13 +257,14 @@ public:
     explicit KernelHandle(Kernel kernel) : kernel_(std::move(kernel)) {}
     std::string name() const { return kernel_.name(); }
     double support() const { return kernel_.support(); }
-    py::object info() const { return to_python(kernel_json(kernel_.definition())); }
-    py::array_t<double> w(const DoubleArray& q, int dim, double k) const { return apply(q, dim, k, false); }
-    py::array_t<double> dw(const DoubleArray& q, int dim, double k) const { return apply(q, dim, k, true); }
+    py::dict info() const { return to_python(kernel_json(kernel_.definition())); }
+    py::array_t<double> w(const ArrayLike& q, int dim, double k) const { return apply(q, dim, k, false); }
+    py::array_t<double> dw(const ArrayLike& q, int dim, double k) const { return apply(q, dim, k, true); }
 
 private:
-    py::array_t<double> apply(const DoubleArray& q, int dim, double k, bool derivative) const
+    py::array_t<double> apply(const ArrayLike& values, int dim, double k, bool derivative) const
     {
+        const DoubleArray q = real_array(values, "q", "a number or an array of numbers");
         check_k(k, ValueSource::argument("k"));
         kernel_.require_dimension(dim, std::to_string(dim) + "D space");
         std::vector<py::ssize_t> shape(q.shape(), q.shape() + q.ndim());
@@ -329,42 +334,42 @@ void translate_errors()
 // Every kernel and lattice, and files loaded into the module.
 void bind_catalogues(py::module_& m, const Guard& guard)
 {
-    m.def("kernels", [] {
+    m.def("kernels", []() -> py::list {
         std::lock_guard lock(registry_mutex);
         nlohmann::json list = nlohmann::json::array();
         for (const auto& p : registry().plugins()) list.push_back(kernel_json(*p));
         return to_python(list);
-    }, "Every kernel, as `sphkern kernels --json` lists them.", guard);
-    m.def("lattices", [] {
+    }, doc::kernels, guard);
+    m.def("lattices", []() -> py::list {
         nlohmann::json list = nlohmann::json::array();
         for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
         return to_python(list);
-    }, "The shipped lattices, as `sphkern lattices --json` lists them.", guard);
-    m.def("load_plugin", [](const std::string& path) {
+    }, doc::lattices, guard);
+    m.def("load_plugin", [](const std::string& path) -> py::dict {
         std::lock_guard lock(registry_mutex);
         return to_python(kernel_json(*registry().find(path)));
-    }, py::arg("path"), "Loads a plugin library or an expression kernel file, probed as the command line probes it.", guard);
-    m.def("load_lattice", [](const std::string& path) { return to_python(lattice_json(read_lattice(path))); },
-          py::arg("path"), "Reads and validates a lattice file.", guard);
+    }, py::arg("path"), doc::load_plugin, guard);
+    m.def("load_lattice",
+          [](const std::string& path) -> py::dict { return to_python(lattice_json(read_lattice(path))); },
+          py::arg("path"), doc::load_lattice, guard);
 }
 
 // The hydrostatic errors at k, the neighbour shells and the surface profile.
 void bind_accuracy(py::module_& m, const Guard& guard)
 {
     m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
-          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
-          "eps_rho, eps_gradp, eps_lateral and nh (numpy arrays shaped like k) of a kernel on a lattice.", guard);
+          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), doc::eps, guard);
     m.def("shells",
-          [](const std::string& lattice_spec, double radius, int site, const py::object& gravity) {
+          [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
               auto lattice = load_lattice(lattice_spec);
               return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
           },
-          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(),
-          "Neighbour shells of a site, as `sphkern shells --json`.", guard);
+          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
+          guard);
     m.def("surface", &surface,
           py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), "Errors layer by layer below a free surface, as `sphkern surface --json`.", guard);
+          py::arg("params") = py::none(), doc::surface, guard);
 }
 
 // The roots in k of both errors, with stability and a code's convention on request.
@@ -374,15 +379,9 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
           py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
-          py::arg("axis") = "k", py::arg("details") = false, py::arg("stability") = false,
-          py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100, py::arg("horizon") = default_horizon,
-          py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
-          "The roots in k of eps_rho and eps_gradp (a list of dicts); details=True gives the whole document of "
-          "`sphkern roots --json`: roots, jumps and the condition (22) intervals, best_k_at_window_edge. "
-          "stability=True (with gamma, steps, horizon, h_model 'fixed' or 'adaptive') adds `stability`: the stable k, "
-          "their overlap with condition (22) and the recommended k (`at_window_edge`, as `roots --stability`); "
-          "convention='pysph', 'dualsphysics', 'swift', 'gadget' or 'splishsplash' adds `convention` "
-          "(as `roots --convention`). With either, the whole document is returned.", guard);
+          py::arg("axis") = "k", py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
+          py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
+          doc::roots, guard);
 }
 
 // Linear stability through the one stability request.
@@ -391,8 +390,8 @@ void bind_stability(py::module_& m, const Guard& guard)
     m.def("stability",
           [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
              std::optional<std::vector<double>> wavevector, std::optional<double> kmin, std::optional<double> kmax,
-             int steps, int grid, int path, int threads, double horizon, const py::object& params,
-             const std::string& h_model) {
+             int steps, int grid, int path, int threads, double horizon, const OptionalParams& params,
+             const std::string& h_model) -> py::dict {
               const auto request = stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads,
                                                      horizon, h_model);
               const StabilitySources sources{ValueSource::argument("k"),       ValueSource::argument("kmin"),
@@ -414,11 +413,7 @@ void bind_stability(py::module_& m, const Guard& guard)
           py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
           py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
-          py::arg("h_model") = "fixed",
-          "Linear stability, as `sphkern stability --json`: the modes at `wavevector`, the dispersion curves "
-          "(`path` points), stability against k (`kmin`, `kmax`, `steps`) or the Brillouin-zone scan; `horizon` "
-          "(d/c) separates weak instabilities from unstable ones; h_model 'fixed' or 'adaptive' (h = eta "
-          "(m/rho)^(1/D) with the grad-h terms; k is the equilibrium h = k d in both).", guard);
+          py::arg("h_model") = "fixed", doc::stability, guard);
 }
 
 // Kernel design: where both errors vanish.
@@ -427,28 +422,28 @@ void bind_design(py::module_& m, const Guard& guard)
     m.def("design", &design,
           py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
           py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
-          py::arg("site") = 0, py::arg("params") = py::none(),
-          "Every (k, parameter) where both errors vanish, as `sphkern design --json`.", guard);
+          py::arg("site") = 0, py::arg("params") = py::none(), doc::design, guard);
 }
 
 // A kernel as an object, its functions vectorised over q.
 void bind_kernel(py::module_& m, const Guard& guard)
 {
-    py::class_<KernelHandle>(m, "Kernel", "A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q.")
-        .def_property_readonly("name", &KernelHandle::name)
-        .def_property_readonly("support", &KernelHandle::support)
-        .def_property_readonly("info", &KernelHandle::info)
-        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, guard)
-        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, guard);
-    m.def("kernel", [](const std::string& spec, const py::object& params) { return KernelHandle(kernel_of(spec, params)); },
-          py::arg("name"), py::arg("params") = py::none(), "A kernel by name, plugin file or blend A+B.", guard);
+    py::class_<KernelHandle>(m, "Kernel", doc::kernel_class)
+        .def_property_readonly("name", &KernelHandle::name, doc::kernel_name)
+        .def_property_readonly("support", &KernelHandle::support, doc::kernel_support)
+        .def_property_readonly("info", &KernelHandle::info, doc::kernel_info)
+        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_w, guard)
+        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_dw, guard);
+    m.def("kernel",
+          [](const std::string& spec, const OptionalParams& params) { return KernelHandle(kernel_of(spec, params)); },
+          py::arg("name"), py::arg("params") = py::none(), doc::kernel, guard);
 }
 
 } // namespace
 
 PYBIND11_MODULE(sphkern, m)
 {
-    m.doc() = "sphkern: accuracy of SPH smoothing kernels on regular particle lattices";
+    m.doc() = doc::module;
     m.attr("__version__") = SPHKERN_VERSION;
     const auto folder = module_folder();
     set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());

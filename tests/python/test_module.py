@@ -80,10 +80,10 @@ def test_options_mirror_the_command_line():
 def test_documents_equal_the_command_lines():
     close(sphkern.kernels(), cli_json("kernels"))
     close(sphkern.lattices(), cli_json("lattices"))
-    close(sphkern.roots("cubic_bspline", "triangular", details=True), cli_json("roots", "cubic_bspline", "triangular")[0])
+    close(sphkern.roots("cubic_bspline", "triangular"), cli_json("roots", "cubic_bspline", "triangular")[0])
     close(sphkern.roots("morris_quintic", "fcc", kmin=0.8, kmax=1.3),
-          cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")[0]["roots"])
-    close(sphkern.roots("wendland_c4", "hcp", axis="eta", kmin=1.0, kmax=1.6, lateral=True, details=True),
+          cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")[0])
+    close(sphkern.roots("wendland_c4", "hcp", axis="eta", kmin=1.0, kmax=1.6, lateral=True),
           cli_json("roots", "wendland_c4", "hcp", "--axis", "eta", "--kmin", "1.0", "--kmax", "1.6", "--lateral")[0])
     close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
     close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
@@ -123,7 +123,7 @@ def test_stability_verdicts_horizon_and_window_edge():
     close(sphkern.stability("morris_quintic", "fcc", kmin=0.88, kmax=0.9, steps=4, horizon=50),
           cli_json("stability", "morris_quintic", "fcc", "--kmin", "0.88", "--kmax", "0.9", "--steps", "4", "--horizon", "50"))
     # The best k of condition (22) on the window's edge is flagged.
-    assert sphkern.roots("wendland_c2", "hcp", details=True)["best_k_note"] == "at the window edge; widen --kmin/--kmax"
+    assert sphkern.roots("wendland_c2", "hcp")["best_k_note"] == "at the window edge; widen --kmin/--kmax"
 
 
 def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line():
@@ -138,7 +138,7 @@ def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line()
     # The recommended k on the window's edge is flagged, in Python too.
     edge = sphkern.roots("cubic_bspline", "fcc", kmin=0.99, kmax=1.0, stability=True, steps=4)["stability"]["recommended"]
     assert edge["at_window_edge"] and edge["note"] == "at the window edge; widen --kmin/--kmax"
-    assert sphkern.roots("wendland_c2", "hcp", details=True)["best_k_at_window_edge"] is True
+    assert sphkern.roots("wendland_c2", "hcp")["best_k_at_window_edge"] is True
     close(sphkern.stability("cubic_bspline", "fcc", 1.1, h_model="adaptive"),
           cli_json("stability", "cubic_bspline", "fcc", "--k", "1.1", "--h-model", "adaptive"))
     with pytest.raises(ValueError) as raised:
@@ -147,6 +147,23 @@ def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line()
     with pytest.raises(ValueError) as raised:
         sphkern.roots("cubic_bspline", "fcc", convention="phantom")
     assert "phantom" in str(raised.value)
+
+
+def test_roots_returns_one_dict_whatever_the_options():
+    plain = sphkern.roots("cubic_bspline", "fcc")
+    assert type(plain) is dict and type(plain["roots"]) is list and len(plain["roots"]) > 0
+    assert {"roots", "jumps", "acceptance", "acceptance_every_direction", "sites", "all_sites",
+            "best_k_at_window_edge", "window"} <= plain.keys()
+    close(plain["roots"], cli_json("roots", "cubic_bspline", "fcc")[0]["roots"])
+    for options, added in [({"lateral": True}, set()), ({"axis": "eta", "kmin": 1.0, "kmax": 1.6}, set()),
+                           ({"stability": True, "steps": 10}, {"stability"}), ({"convention": "swift"}, {"convention"}),
+                           ({"stability": True, "steps": 10, "convention": "gadget"}, {"stability", "convention"})]:
+        document = sphkern.roots("cubic_bspline", "fcc", **options)
+        assert type(document) is dict and type(document["roots"]) is list, options
+        # The same keys, but for those the options add (and the note of a best k on the window's edge).
+        assert document.keys() - {"best_k_note"} == plain.keys() | added, options
+    with pytest.raises(TypeError):
+        sphkern.roots("cubic_bspline", "fcc", details=True)  # the whole document is always returned
 
 
 def test_kernel_functions_are_vectorised_and_equal_the_plugin():

@@ -51,6 +51,79 @@ def test_volumes_and_h_as_arrays_and_2d():
     assert np.array_equal(same["e0"], r["e0"])
 
 
+def cubic_bspline_2d(q):
+    """The cubic B-spline in 2D, h^2 W(q) (support 2h), written out independently of the plugin."""
+    return 10 / (7 * np.pi) * np.where(q < 1, 1 - 1.5 * q**2 + 0.75 * q**3, np.where(q < 2, 0.25 * (2 - q) ** 3, 0))
+
+
+def brute_force_sums(x, h, weights, box):
+    """sum_j weights_j W_ij over every j (the self term included), W with particle i's own h,
+    by the minimum image in a periodic box with a corner at the origin."""
+    d = x[None, :, :] - x[:, None, :]
+    d -= box * np.round(d / box)
+    q = np.linalg.norm(d, axis=2) / h[:, None]
+    return (cubic_bspline_2d(q) / h[:, None] ** 2 * weights[None, :]).sum(axis=1)
+
+
+def mass_set():
+    rng = np.random.default_rng(11)
+    n, box = 300, np.array([1.0, 0.8])
+    x = rng.uniform(0, 1, (n, 2)) * box
+    h = 0.06 * rng.uniform(0.9, 1.1, n)  # sphkern's h: the support is 2 h
+    m = 0.8 / n * rng.uniform(0.8, 1.2, n)
+    rho = rng.uniform(0.9, 1.1, n)
+    return x, h, m, rho, box
+
+
+def test_eps_rho_with_masses_is_the_sum_over_the_masses():
+    x, h, m, rho, box = mass_set()
+    r = sphkern.particles("cubic_bspline", x, box=box, h=h, masses=m, densities=rho)
+    volume = m / rho
+    assert np.array_equal(r["volume"], volume)  # densities give the volumes m / rho
+    rho0 = m.sum() / volume.sum()  # by default, the total mass over the total volume
+    assert r["rho0"] == pytest.approx(rho0, rel=1e-14)
+    sum_m = brute_force_sums(x, h, m, box)
+    assert np.allclose(r["eps_rho"], sum_m / rho0 - 1, rtol=0, atol=1e-12)
+    assert np.allclose(r["e0"], brute_force_sums(x, h, volume, box) - 1, rtol=0, atol=1e-12)
+    assert np.abs(r["eps_rho"] - r["e0"]).max() > 1e-3  # with these masses, eps_rho is not e0
+    # A reference density given, and volumes given instead of densities.
+    given = sphkern.particles("cubic_bspline", x, box=box, h=h, masses=m, rho0=0.9, volume="voronoi")
+    assert given["rho0"] == 0.9
+    assert np.allclose(given["eps_rho"], sum_m / 0.9 - 1, rtol=0, atol=1e-12)
+    # One mass for all: eps_rho is sum_j W_ij m / rho0 - 1.
+    one = sphkern.particles("cubic_bspline", x, box=box, h=h, masses=0.002, rho0=1.0)
+    assert np.allclose(one["eps_rho"], brute_force_sums(x, h, np.full(len(x), 0.002), box) - 1, rtol=0, atol=1e-12)
+    # Without masses eps_rho is e0.
+    assert np.array_equal(sphkern.particles("cubic_bspline", x, box=box, h=h)["eps_rho"],
+                          sphkern.particles("cubic_bspline", x, box=box, h=h)["e0"])
+
+
+def test_masses_densities_and_a_stored_h_equal_the_command_line(tmp_path):
+    x, h, m, rho, box = mass_set()
+    stored = 2 * h  # the support radius, as GADGET stores it: support_per_h = 1
+    with open(tmp_path / "set.csv", "w") as f:
+        f.write("x,y,h,m,rho\n")
+        for p, hh, mm, r in zip(x, stored, m, rho):
+            f.write(f"{p[0]!r},{p[1]!r},{hh!r},{mm!r},{r!r}\n")
+    args = [CLI, "particles", "cubic_bspline", str(tmp_path / "set.csv"), "--support-per-h", "1", "--box", "1,0.8"]
+    doc = json.loads(subprocess.run(args + ["--json"], check=True, capture_output=True, text=True).stdout)
+    subprocess.run(args + ["--csv", str(tmp_path / "out.csv")], check=True, capture_output=True)
+    rows = np.genfromtxt(tmp_path / "out.csv", delimiter=",", names=True)
+
+    r = sphkern.particles("cubic_bspline", x, box=box, h=stored, support_per_h=1, masses=m, densities=rho)
+    assert doc["volume"] == "file" and r["rho0"] == doc["rho0"]
+    for key in doc["statistics"]:
+        for stat, value in doc["statistics"][key].items():
+            assert r["statistics"][key][stat] == pytest.approx(value, rel=1e-13, abs=1e-15), (key, stat)
+    assert np.array_equal(r["eps_rho"], rows["eps_rho"]) and np.array_equal(r["e0"], rows["e0"])
+    # The stored h is mapped to sphkern's: support_per_h times it is the support radius 2 h.
+    assert np.array_equal(r["h"], h)
+    own = sphkern.particles("cubic_bspline", x, box=box, h=h, masses=m, densities=rho)
+    assert np.array_equal(own["eps_rho"], r["eps_rho"])
+    swift = sphkern.particles("cubic_bspline", x, box=box, h=h / 0.9, support_per_h=1.8, masses=m, densities=rho)
+    assert np.array_equal(swift["h"], 1.8 * (h / 0.9) / 2)
+
+
 @pytest.mark.parametrize("kwargs, message", [
     ({"positions": np.zeros((4, 1))}, "positions: expected an array of shape (N, 2) or (N, 3)"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "volume": "uniform"},
@@ -81,6 +154,28 @@ def test_volumes_and_h_as_arrays_and_2d():
      "volume: expected \"uniform\", \"voronoi\" or an array"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1 + 0.5j},
      "h: complex numbers; expected real numbers"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": np.r_[1.0, -1.0, np.ones(48)]},
+     "masses: the mass of particle 1 is -1, expected a positive finite number"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": np.ones(3)},
+     "masses: expected a number or an array of 50 numbers"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": 1.0,
+      "densities": np.r_[np.ones(49), np.nan]}, "densities: the density of particle 49 is nan, expected a positive"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "densities": 1.0},
+     "densities: they give the volumes m / rho; expected masses too"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": 1.0, "densities": 1.0,
+      "volume": "voronoi"}, "give one of volume and densities"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": 1.0, "rho0": 0},
+     "rho0 = 0: expected a positive finite number"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": 1 + 1j},
+     "masses: complex numbers; expected real numbers"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1, "support_per_h": 0},
+     "support_per_h: maps a file's h (a positive finite number); it does not go with eta, nh or k"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1,
+      "support_per_h": float("inf")}, "support_per_h: maps a file's h (a positive finite number)"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "eta": 1.2, "support_per_h": 2},
+     "support_per_h: maps a file's h (a positive finite number); it does not go with eta, nh or k"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1, "support_per_h": "two"},
+     "support_per_h: expected a number"),
 ])
 def test_bad_input_raises_value_error(kwargs, message):
     assert "--" not in message  # Python's errors name its arguments, never an option

@@ -1,0 +1,489 @@
+// The module's docstrings (numpydoc: summary, Parameters, Returns, Examples). pybind11 puts
+// each function's signature, made from its binding, on the first line above them.
+// tests/python/test_docstrings.py checks that every parameter is described and runs the examples.
+#pragma once
+
+namespace sphkern::doc {
+
+inline constexpr const char* module = R"doc(sphkern: accuracy of SPH smoothing kernels on particle lattices and any particle set.
+
+Every function returns what the command line's --json prints, as Python objects, with
+numpy arrays where the input is an array. Lengths on a lattice are in units of its
+nearest-neighbour distance d, and k = h / d. Bad input raises ValueError naming the
+argument; a plugin that cannot be loaded or run raises RuntimeError.
+)doc";
+
+inline constexpr const char* kernels = R"doc(Every kernel found, as `sphkern kernels --json` lists them.
+
+The shipped plugins, those on SPHKERN_PLUGIN_PATH and the files loaded with load_plugin.
+
+Returns
+-------
+list of dict
+    One dict per kernel: name, title, support (the support radius R in units of h),
+    dimensions, parameters, breakpoints, separate_derivative, reference and file.
+
+Examples
+--------
+>>> "cubic_bspline" in [k["name"] for k in sphkern.kernels()]
+True
+)doc";
+
+inline constexpr const char* lattices = R"doc(The shipped lattices, as `sphkern lattices --json` lists them.
+
+Returns
+-------
+list of dict
+    One dict per lattice: name, title, dimension, sites (of the motif), gravity,
+    volume_coefficients (a_p of each volume model) and file.
+
+Examples
+--------
+>>> fcc = next(l for l in sphkern.lattices() if l["name"] == "fcc")
+>>> fcc["dimension"], fcc["sites"]
+(3, 1)
+)doc";
+
+inline constexpr const char* load_plugin = R"doc(Load a kernel plugin library or an expression kernel file.
+
+The file is probed as the command line probes it (in a child process); afterwards its
+kernel is known by name to every function.
+
+Parameters
+----------
+path : str
+    A plugin library (.so) or an expression kernel file (.json).
+
+Returns
+-------
+dict
+    The kernel's entry, as kernels() lists it.
+
+Examples
+--------
+>>> import json, os, tempfile
+>>> path = os.path.join(tempfile.mkdtemp(), "example_cubic.json")
+>>> with open(path, "w") as f:
+...     json.dump({"name": "example_cubic", "support": 2, "dimensions": [3],
+...                "w": "q < 1 ? 1 - 1.5*q^2 + 0.75*q^3 : (q < 2 ? 0.25*(2-q)^3 : 0)"}, f)
+>>> sphkern.load_plugin(path)["name"]
+'example_cubic'
+)doc";
+
+inline constexpr const char* load_lattice = R"doc(Read and validate a lattice file.
+
+Parameters
+----------
+path : str
+    A lattice file (JSON; share/docs/lattice-format.md).
+
+Returns
+-------
+dict
+    The lattice's entry, as lattices() lists it. Its path can be given wherever a
+    function takes a lattice.
+
+Examples
+--------
+>>> fcc = next(l for l in sphkern.lattices() if l["name"] == "fcc")
+>>> sphkern.load_lattice(fcc["file"])["name"]
+'fcc'
+)doc";
+
+inline constexpr const char* eps = R"doc(The hydrostatic errors of a kernel on a lattice at one or many k.
+
+One C++ loop over every k, without the GIL.
+
+Parameters
+----------
+kernel : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+lattice : str
+    A lattice name or a lattice file.
+k : float or array_like
+    k = h / d, the smoothing length over the nearest-neighbour distance; in (0, 100].
+a_p : str or float, default "voronoi"
+    The volume coefficient: a model the lattice offers ("voronoi", "ball", "cube") or
+    a positive number (V = a_p d^D).
+gravity : sequence of float, optional
+    The direction of gravity, one component per dimension. Default: the lattice's.
+site : int, default 0
+    The motif site the errors are computed at.
+params : dict of str to float, optional
+    The kernel's parameters, as `--set NAME=VALUE`.
+
+Returns
+-------
+dict of numpy.ndarray
+    eps_rho, eps_gradp, eps_lateral (float) and nh (int, the neighbours inside the
+    support), each shaped like k.
+
+Examples
+--------
+>>> r = sphkern.eps("cubic_bspline", "fcc", [1.0, 1.2])
+>>> r["eps_rho"].shape, r["nh"].dtype.kind
+((2,), 'i')
+>>> bool(abs(sphkern.eps("cubic_bspline", "fcc", 1.2)["eps_rho"]) < 0.01)
+True
+)doc";
+
+inline constexpr const char* shells = R"doc(The neighbour shells of a lattice site, as `sphkern shells --json`.
+
+Parameters
+----------
+lattice : str
+    A lattice name or a lattice file.
+radius : float
+    The shells up to this distance, in units of d.
+site : int, default 0
+    The motif site at the centre.
+gravity : sequence of float, optional
+    The direction of the gravity moment. Default: the lattice's.
+
+Returns
+-------
+dict
+    lattice, site, radius and shells: one dict per shell with radius, radius_squared,
+    count, cumulative and gravity_moment.
+
+Examples
+--------
+>>> [s["count"] for s in sphkern.shells("fcc", 1.5)["shells"]]
+[12, 6]
+)doc";
+
+inline constexpr const char* surface = R"doc(The errors layer by layer below a free surface, as `sphkern surface --json`.
+
+Parameters
+----------
+kernel : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+lattice : str
+    A lattice name or a lattice file.
+k : float
+    k = h / d, in (0, 100].
+form : str, default "sum"
+    The gradient form: "sum", "difference" or "monaghan".
+layers : int, default 4
+    At least this many planes below the surface, until the bulk.
+a_p : str or float, default "voronoi"
+    The volume coefficient: a model the lattice offers or a positive number.
+gravity : sequence of float, optional
+    The direction of gravity, normal to a family of lattice planes. Default: the lattice's.
+site : int, default 0
+    The site on the top plane.
+params : dict of str to float, optional
+    The kernel's parameters.
+
+Returns
+-------
+dict
+    kernel, lattice, k, form, a_p, spacing, termination, terminations, first_moments,
+    layers (one dict per plane: depth, n, eps_rho, eps_gradp, neighbours, sites) and bulk.
+
+Examples
+--------
+>>> s = sphkern.surface("cubic_bspline", "fcc", 1.2)
+>>> len(s["layers"]) >= 4, s["form"]
+(True, 'sum')
+)doc";
+
+inline constexpr const char* roots = R"doc(The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k.
+
+Always the whole document of `sphkern roots --json` (one dict, whatever the options);
+`stability` and `convention` add a key each.
+
+Parameters
+----------
+kernel : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+lattice : str
+    A lattice name or a lattice file.
+kmin, kmax : float, default 0.75 and 1.25
+    The window, on the scale of `axis`.
+a_p : str or float, default "voronoi"
+    The volume coefficient: a model the lattice offers or a positive number.
+gravity : sequence of float, optional
+    The direction of gravity. Default: the lattice's.
+site : int, default 0
+    The motif site the roots are reported for.
+params : dict of str to float, optional
+    The kernel's parameters.
+epsilon : float, default 0.01
+    The tolerance of condition (22): |eps_rho| <= epsilon and |eps_gradp| <= epsilon.
+lateral : bool, default False
+    Count the lateral error in condition (22) too.
+axis : str, default "k"
+    The scale of the window: "k" (h / d), "eta" (h / V^(1/D)) or "nh" (neighbours).
+stability : bool, default False
+    Add "stability": the stable k of the window, their overlap with condition (22) and
+    the recommended k, as `roots --stability`.
+gamma : float, default 5/3
+    With stability: the adiabatic index.
+steps : int, default 100
+    With stability: the intervals of the k scan.
+horizon : float, default 100
+    With stability: the growth time, in d/c, that separates weak instabilities from
+    unstable ones.
+h_model : str, default "fixed"
+    With stability: "fixed" or "adaptive" (h = eta (m / rho)^(1/D) with the grad-h terms).
+convention : str, optional
+    Add "convention": the answer in a code's convention ("pysph", "dualsphysics",
+    "swift", "gadget" or "splishsplash"), as `roots --convention`.
+
+Returns
+-------
+dict
+    roots (a list of dicts: function "rho" or "gradp", k, eps_rho, eps_gradp, lateral,
+    neighbours, support_radius), jumps, acceptance and acceptance_every_direction
+    (condition (22) along gravity and for every direction: verdict, intervals, best_k,
+    best_max_error, epsilon), sites and all_sites (the same per site and over all sites),
+    best_k_at_window_edge (and best_k_note when it is), window, k_range, eta_range, axis,
+    a_p, site, lateral_in_verdict, kernel and lattice; "stability" with stability=True and
+    "convention" with a convention.
+
+Examples
+--------
+>>> r = sphkern.roots("cubic_bspline", "fcc")
+>>> [x["function"] for x in r["roots"]], r["acceptance"]["verdict"]
+(['rho', 'rho', 'gradp'], 'pass')
+>>> "stability" in sphkern.roots("cubic_bspline", "fcc", stability=True, steps=10)
+True
+)doc";
+
+inline constexpr const char* stability = R"doc(Linear stability of SPH on a lattice, as `sphkern stability --json`.
+
+k alone: the Brillouin-zone scan; with wavevector, the modes there; with path, the
+dispersion curves; kmin and kmax (without k): the verdict against k.
+
+Parameters
+----------
+kernel : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+lattice : str
+    A lattice name or a lattice file.
+k : float, optional
+    k = h / d of the zone scan, the modes at `wavevector` or the curves along `path`.
+gamma : float, default 5/3
+    The adiabatic index of the equation of state.
+wavevector : sequence of float, optional
+    A wave vector, one component per dimension, in units of 1/d.
+kmin, kmax : float, optional
+    The k interval of a scan against k (both, without k).
+steps : int, default 50
+    The intervals of the scan against k.
+grid : int, default 0
+    Points per reciprocal axis of the zone grid (0: 8 in 3D, 32 in 2D, doubled until the
+    minimum settles).
+path : int, default 0
+    About this many points along the high-symmetry path (0: no curves).
+threads : int, default 0
+    Threads (0: every core).
+horizon : float, default 100
+    The growth time, in d/c, that separates weak instabilities from unstable ones.
+params : dict of str to float, optional
+    The kernel's parameters.
+h_model : str, default "fixed"
+    "fixed" or "adaptive" (h = eta (m / rho)^(1/D) with the grad-h terms; k is the
+    equilibrium h = k d in both).
+
+Returns
+-------
+dict
+    For the zone scan: verdict ("stable", "weak" or "unstable"), stable, growth_time (in
+    d/c), min_omega2, mode, branches, sound_speed, long_wave, zone_scan and the inputs
+    (kernel, lattice, k, gamma, horizon, h_model); the other requests as the command
+    line's JSON has them.
+
+Examples
+--------
+>>> s = sphkern.stability("cubic_bspline", "fcc", 1.2)
+>>> s["verdict"] in ("stable", "weak", "unstable"), s["h_model"]
+(True, 'fixed')
+)doc";
+
+inline constexpr const char* design = R"doc(Every (k, parameter) where both errors vanish, as `sphkern design --json`.
+
+Parameters
+----------
+kernel : str
+    A kernel with a parameter, or a blend "A+B" (parameter alpha).
+lattice : str
+    A lattice name or a lattice file.
+param : str
+    The parameter to solve for.
+range : sequence of float, optional
+    [min, max] of the parameter. Default: blends [-1, 2], else the declared range.
+kmin, kmax : float, default 0.75 and 1.25
+    The k window.
+a_p : str or float, default "voronoi"
+    The volume coefficient: a model the lattice offers or a positive number.
+gravity : sequence of float, optional
+    The direction of gravity. Default: the lattice's.
+site : int, default 0
+    The motif site.
+params : dict of str to float, optional
+    The kernel's other parameters.
+
+Returns
+-------
+dict
+    kernel, lattice, parameter, range, k_range, a_p, note and solutions (one dict each:
+    k, parameter, eps_rho, eps_gradp, neighbours, jacobian_condition, non_negative,
+    ap_plus_1_percent, method).
+
+Examples
+--------
+>>> d = sphkern.design("cubic_bspline+desbrun_spiky", "triangular", "alpha")
+>>> len(d["solutions"]) > 0, d["parameter"]
+(True, 'alpha')
+)doc";
+
+inline constexpr const char* kernel_class = R"doc(A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q = r / h.
+
+Made by sphkern.kernel(name).
+)doc";
+
+inline constexpr const char* kernel_name = "The kernel's name.";
+inline constexpr const char* kernel_support = "The support radius R, in units of h.";
+inline constexpr const char* kernel_info = "The kernel's entry, as kernels() lists it.";
+
+inline constexpr const char* kernel_w = R"doc(The kernel h^D W(q) in D dimensions.
+
+Parameters
+----------
+q : float or array_like
+    q = r / h, each >= 0.
+dim : int
+    The dimension D (one the kernel supports).
+k : float, default 1.0
+    k = h / d, for kernels whose formula depends on it.
+
+Returns
+-------
+numpy.ndarray
+    h^D W, shaped like q.
+
+Examples
+--------
+>>> sphkern.kernel("cubic_bspline").w([0.0, 1.0, 2.0], 3)
+array([0.31830989, 0.07957747, 0.        ])
+)doc";
+
+inline constexpr const char* kernel_dw = R"doc(The kernel's derivative h^(D+1) dW/dr at q in D dimensions.
+
+Parameters
+----------
+q : float or array_like
+    q = r / h, each >= 0.
+dim : int
+    The dimension D (one the kernel supports).
+k : float, default 1.0
+    k = h / d, for kernels whose formula depends on it.
+
+Returns
+-------
+numpy.ndarray
+    h^(D+1) dW/dr, shaped like q.
+
+Examples
+--------
+>>> bool(sphkern.kernel("cubic_bspline").dw(1.0, 3) < 0)
+True
+)doc";
+
+inline constexpr const char* kernel = R"doc(A kernel as an object, its functions vectorised over q.
+
+Parameters
+----------
+name : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+params : dict of str to float, optional
+    The kernel's parameters.
+
+Returns
+-------
+Kernel
+    With name, support, info, w(q, dim, k) and dw(q, dim, k).
+
+Examples
+--------
+>>> kern = sphkern.kernel("wendland_c2")
+>>> kern.name, kern.support
+('wendland_c2', 2.0)
+)doc";
+
+inline constexpr const char* particles = R"doc(The consistency errors of a kernel on any particle set, as `sphkern particles --json`.
+
+Positions are copied once; the sums run without the GIL. With masses, eps_rho is
+sum_j m_j W_ij / rho0 - 1; without, it equals e0 = sum_j V_j W_ij - 1 (share/docs/method.md,
+section 11). Lengths (positions, box, h) are in any one unit; masses, densities and rho0 in
+units consistent with it.
+
+Parameters
+----------
+kernel : str
+    A kernel name, a plugin or expression file, or a blend "A+B".
+positions : array_like
+    The positions, shape (N, 2) or (N, 3).
+box : sequence of float, optional
+    The sides of a periodic box with a corner at the origin, one per dimension.
+    Default: no box (free particles).
+h : float or array_like, optional
+    The smoothing lengths, one number or one per particle, as stored: the support radius
+    is support_per_h times h.
+support_per_h : float, optional
+    The support radius over the stored h, as the command line's --support-per-h
+    (GADGET and SPlisHSPlasH 1, SWIFT its kernel gamma, DualSPHysics 2). Default: the
+    kernel's support R, that is h is sphkern's own.
+eta : float, optional
+    h = eta V^(1/D) with V the mean volume, in (0, 100]. Default, without h and nh: 1.2.
+nh : float, optional
+    h from the neighbour number N_H, in [1, 100000].
+masses : float or array_like, optional
+    The masses m_j, one number or one per particle: eps_rho is computed with them.
+densities : float or array_like, optional
+    The densities rho_j, one number or one per particle: with masses they give the
+    volumes V_j = m_j / rho_j. Not with volume.
+rho0 : float, optional
+    The reference density of eps_rho, with masses. Default: the total mass over the total
+    volume.
+volume : str or array_like, optional
+    The volumes V_j: "uniform" (box / N), "voronoi" (both need box) or one number or
+    one per particle. Default: m / rho with densities, else "uniform".
+gravity : sequence of float, optional
+    The direction of the gradient errors, one component per dimension. Default: -y in
+    2D, -z in 3D.
+depth : float, default 1.0
+    The depth of the sum form's eps_gradp_sum, in units of h.
+threads : int, default 0
+    Threads (0: every core).
+params : dict of str to float, optional
+    The kernel's parameters.
+
+Returns
+-------
+dict
+    The document of `particles --json` (statistics of every measure, rho0, eta, nh,
+    mean_neighbours, source, ...) with per-particle numpy arrays in its place: e0, eps_rho,
+    eps_gradp, eps_gradp_sum (N), e1 and m1 (N, D), E (N, D, D), neighbours (N, int),
+    h (N, sphkern's own h: the support is R h) and volume (N).
+
+Examples
+--------
+>>> import numpy as np
+>>> x = np.random.default_rng(1).uniform(0, 1, (400, 2))
+>>> r = sphkern.particles("cubic_bspline", x, box=[1, 1], eta=1.3)
+>>> r["eps_rho"].shape, r["E"].shape
+((400,), (400, 2, 2))
+
+Masses and densities, and h stored as the support radius (GADGET's convention):
+
+>>> m, rho = np.full(400, 1 / 400), np.ones(400)
+>>> s = sphkern.particles("cubic_bspline", x, box=[1, 1], h=2 * r["h"], support_per_h=1.0,
+...                       masses=m, densities=rho)
+>>> bool(np.array_equal(s["h"], r["h"])), s["rho0"]
+(True, 1.0)
+)doc";
+
+} // namespace sphkern::doc
