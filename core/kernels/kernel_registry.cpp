@@ -49,6 +49,13 @@ std::vector<fs::path> kernel_plugin_folders()
 
 namespace {
 
+// One file reached twice (given by its path and found in a plugin folder) is one plugin.
+bool same_file(const std::string& a, const std::string& b)
+{
+    std::error_code ec;
+    return a == b || fs::equivalent(a, b, ec);
+}
+
 [[noreturn]] void fail_duplicate(const std::string& name, const std::string& a, const std::string& b)
 {
     throw Error(ExitCode::plugin, "two plugins are named \"" + name + "\": " + a + " and " + b);
@@ -155,7 +162,9 @@ const std::vector<std::shared_ptr<const KernelDefinition>>& KernelRegistry::plug
     all_.clear();
     for (auto& c : candidates_)
         if (auto p = load(c)) all_.push_back(p);
-    for (const auto& p : explicit_) all_.push_back(p);
+    for (const auto& p : explicit_)
+        if (std::none_of(all_.begin(), all_.end(), [&](const auto& q) { return same_file(q->source, p->source); }))
+            all_.push_back(p);
     for (std::size_t i = 0; i < all_.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (all_[i]->name == all_[j]->name) fail_duplicate(all_[i]->name, all_[j]->source, all_[i]->source);
@@ -248,10 +257,11 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_named(const std::st
     for (auto& c : candidates_) {
         if (!c.name || *c.name != spec) continue;
         auto loaded = load(c);
-        if (!loaded || loaded->name != spec) continue;
-        if (found) fail_duplicate(spec, found_source, fs::absolute(c.file).lexically_normal().string());
+        const std::string source = fs::absolute(c.file).lexically_normal().string();
+        if (!loaded || loaded->name != spec || (found && same_file(found_source, source))) continue;
+        if (found) fail_duplicate(spec, found_source, source);
         found = loaded;
-        found_source = fs::absolute(c.file).lexically_normal().string();
+        found_source = source;
     }
     return found;
 }

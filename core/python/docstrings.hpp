@@ -467,7 +467,8 @@ dict
     The document of `particles --json` (statistics of every measure, rho0, eta, nh,
     mean_neighbours, source, ...) with per-particle numpy arrays in its place: e0, eps_rho,
     eps_gradp, eps_gradp_sum (N), e1 and m1 (N, D), E (N, D, D), neighbours (N, int),
-    h (N, sphkern's own h: the support is R h) and volume (N).
+    h (N, sphkern's own h: the support is R h) and volume (N); the volume model the
+    document names ("uniform", "file", "voronoi") is under volume_model.
 
 Examples
 --------
@@ -482,8 +483,8 @@ Masses and densities, and h stored as the support radius (GADGET's convention):
 >>> m, rho = np.full(400, 1 / 400), np.ones(400)
 >>> s = sphkern.particles("cubic_bspline", x, box=[1, 1], h=2 * r["h"], support_per_h=1.0,
 ...                       masses=m, densities=rho)
->>> bool(np.array_equal(s["h"], r["h"])), s["rho0"]
-(True, 1.0)
+>>> bool(np.array_equal(s["h"], r["h"])), s["rho0"], s["volume_model"]
+(True, 1.0, 'file')
 )doc";
 
 } // namespace sphkern::doc

@@ -173,6 +173,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             const std::size_t d = static_cast<std::size_t>(set.dimension);
             py::dict out = to_python(particle_answer_json(kernel, set, answer));
             out["h"] = column(answer.h);
+            out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
             out["volume"] = column(answer.volumes);
             for (const auto& [name, values] :
                  {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho_values()}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})

@@ -4,6 +4,7 @@ arrays of any shape. Run by ctest with PYTHONPATH=<build>/python and SPHKERN_CLI
 import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -273,3 +274,17 @@ def test_a_lattice_file_loads_and_is_usable(tmp_path):
     assert described["sites"] == 2 and described["dimension"] == 2
     close(float(sphkern.eps("cubic_bspline", str(honeycomb), 1.1)["eps_rho"]),
           cli_json("eps", "cubic_bspline", str(honeycomb), "--k", "1.1")["eps_rho"])
+
+
+def test_a_shipped_plugin_loaded_by_its_path_is_still_found_by_name():
+    # In a fresh interpreter: the loaded plugin stays in the module's registry.
+    script = """
+import sphkern
+shipped = [k for k in sphkern.kernels() if k["name"] == "wendland_c2"][0]["file"]
+assert sphkern.load_plugin(shipped)["name"] == "wendland_c2"
+print(sphkern.eps("wendland_c2", "fcc", 1.2)["eps_rho"], len([k for k in sphkern.kernels() if k["name"] == "wendland_c2"]))
+"""
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=os.environ)
+    assert out.returncode == 0, out.stderr
+    eps_rho, listed = out.stdout.split()
+    assert float(eps_rho) == float(sphkern.eps("wendland_c2", "fcc", 1.2)["eps_rho"]) and listed == "1"

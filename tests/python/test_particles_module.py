@@ -45,7 +45,7 @@ def test_volumes_and_h_as_arrays_and_2d():
     rng = np.random.default_rng(3)
     x = rng.uniform(0, 2, (2000, 2))
     r = sphkern.particles("cubic_bspline", x, box=[2, 2], nh=40, volume="voronoi")
-    assert r["volume"].sum() == pytest.approx(4.0, rel=1e-10)
+    assert r["volume"].sum() == pytest.approx(4.0, rel=1e-10) and r["volume_model"] == "voronoi"
     assert r["e1"].shape == (2000, 2) and r["E"].shape == (2000, 2, 2)
     same = sphkern.particles("cubic_bspline", x, box=[2, 2], h=r["h"][0], volume=r["volume"])
     assert np.array_equal(same["e0"], r["e0"])
