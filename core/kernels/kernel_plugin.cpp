@@ -10,6 +10,7 @@
 #include "support/process/interruption.hpp"
 #include "support/process/isolated_call.hpp"
 #include "kernels/plugin_host/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_faults.hpp"
 #include "kernels/plugin_host/plugin_host.hpp"
 #include "kernels/plugin_host/plugin_watchdog.hpp"
 #include "support/text/value_checks.hpp"
@@ -22,12 +23,15 @@
 #include <boost/dll/shared_library.hpp>
 #include <fmt/format.h>
 
+#include <atomic>
+#include <csetjmp>
 #include <cstddef>
 #include <cstring>
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <type_traits>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -142,6 +146,7 @@ constexpr std::size_t required_v2_size = offsetof(sphkern_kernel_descriptor, get
 
 // The functions of a plugin: its descriptor's pointers, and the library they live in. Every
 // call runs under a PluginCallGuard, so that a crash, exit() or hang in it names the plugin.
+// In a library host a crash raises instead (plugin_faults), and the plugin is not called again.
 class PluginFunctions final : public KernelFunctions {
 public:
     PluginFunctions(std::shared_ptr<boost::dll::shared_library> library, const PluginDescriptor& d,
@@ -154,48 +159,74 @@ public:
     }
     double w(double q, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(w_);
-        return d_.fields.w(q, dim, k, p);
+        return call(w_, [&] { return d_.fields.w(q, dim, k, p); });
     }
     double dw(double q, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(dw_);
-        return d_.fields.dw(q, dim, k, p);
+        return call(dw_, [&] { return d_.fields.dw(q, dim, k, p); });
     }
     void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(w_batch_);
-        d_.fields.w_batch(q, out, n, dim, k, p);
+        call(w_batch_, [&] { d_.fields.w_batch(q, out, n, dim, k, p); });
     }
     void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(dw_batch_);
-        d_.fields.dw_batch(q, out, n, dim, k, p);
+        call(dw_batch_, [&] { d_.fields.dw_batch(q, out, n, dim, k, p); });
     }
     void w_dw_batch(const double* q, double* w, double* dw, std::size_t n, int dim, double k,
                     const double* p) const override
     {
         if (!d_.fused) return KernelFunctions::w_dw_batch(q, w, dw, n, dim, k, p);
-        PluginCallGuard in(w_dw_batch_);
-        d_.fused->w_dw(q, w, dw, n, dim, k, p);
+        call(w_dw_batch_, [&] { d_.fused->w_dw(q, w, dw, n, dim, k, p); });
     }
     bool has_second_derivative() const override { return d_.second != nullptr; }
     double d2w(double q, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(d2w_);
-        return d_.second->d2w(q, dim, k, p);
+        return call(d2w_, [&] { return d_.second->d2w(q, dim, k, p); });
     }
     bool has_fourier_transform() const override { return d_.fourier != nullptr; }
     double fourier_transform(double kh, int dim, double k, const double* p) const override
     {
-        PluginCallGuard in(fourier_);
-        return d_.fourier->transform(kh, dim, k, p);
+        return call(fourier_, [&] { return d_.fourier->transform(kh, dim, k, p); });
     }
 
 private:
+    // f() inside the guard; where faults are recoverable, a crash in it comes back here as the
+    // signal (sigsetjmp saves no mask: no system call per call) and is thrown.
+    template <class F>
+    auto call(const PluginCall& function, F&& f) const -> decltype(f())
+    {
+        if (const PluginCall* where = crashed_in_.load()) refuse_after_crash(*where);
+        PluginCallGuard in(function);
+        if (!plugin_faults_recoverable()) return f();
+        sigjmp_buf point;
+        if (const int sig = sigsetjmp(point, 0)) {
+            crashed_signal_ = sig;
+            crashed_in_ = &function;
+            throw Error(ExitCode::plugin, std::string(function.plugin()) + " " + crash_description(sig) + " in " +
+                                              function.function() + "; it is not called again in this process");
+        }
+        set_recovery_point(&point);
+        if constexpr (std::is_void_v<decltype(f())>) {
+            f();
+            set_recovery_point(nullptr);
+        } else {
+            const auto value = f();
+            set_recovery_point(nullptr);
+            return value;
+        }
+    }
+    [[noreturn]] void refuse_after_crash(const PluginCall& where) const
+    {
+        throw Error(ExitCode::plugin, std::string(where.plugin()) + " " + crash_description(crashed_signal_.load()) +
+                                          " in " + where.function() + " earlier; it is not called again in this process");
+    }
+
     std::shared_ptr<boost::dll::shared_library> library_; // keeps the descriptor and its functions mapped
     PluginDescriptor d_;
     PluginCall w_, dw_, w_batch_, dw_batch_, w_dw_batch_, d2w_, fourier_;
+    mutable std::atomic<const PluginCall*> crashed_in_{nullptr};
+    mutable std::atomic<int> crashed_signal_{0};
 };
 
 } // namespace

@@ -1,8 +1,9 @@
-"""A plugin that passes its probe and fails later, inside the module: a crash, abort() or exit()
-in its W, or a W that never returns, ends the interpreter with exit 4 and one line naming the
-plugin file and the function (there is no safe way to go on inside a process whose plugin code
-has crashed, and no way to stop a thread inside foreign code). Python's own fault handlers
-(faulthandler) are back after every call. Each case runs in its own interpreter."""
+"""A plugin that passes its probe and fails later, inside the module. A crash or abort() in its
+code (on any thread, a stack overflow too) raises RuntimeError naming the plugin file and the
+function; the plugin is not called again, and everything else in the module goes on working.
+exit() in its W, or a W that never returns, still ends the interpreter with exit 4 and one
+line (nothing returns from exit(), and no thread can be stopped inside foreign code). Python's
+own fault handlers (faulthandler) are back after every call. Each case runs in its own interpreter."""
 import os
 import subprocess
 import sys
@@ -20,17 +21,57 @@ def python(code, timeout=60, **env):
 
 
 @pytest.mark.parametrize("plugin, call, message", [
-    ("crash_in_band", "w(0.52, 3)", "plugin kernel crash_in_band crashed with signal 11 (SIGSEGV) in the batch W"),
-    ("abort_above_k", "w(0.5, 3, k=1.4)", "plugin kernel abort_above_k crashed with signal 6 (SIGABRT) in the batch W"),
-    ("crash_big_batch", "w([0.5] * 200, 3)", "plugin kernel crash_big_batch crashed with signal 11 (SIGSEGV) in the batch W"),
-    ("exit_in_w", "w(0.5, 3, k=1.4)", "plugin kernel exit_in_w called exit() or pthread_exit() in the batch W"),
+    ("crash_in_band", "w(0.52, 3)", "crashed with signal 11 (SIGSEGV) in the batch W"),
+    ("abort_above_k", "w(0.5, 3, k=1.4)", "crashed with signal 6 (SIGABRT) in the batch W"),
+    ("crash_big_batch", "w([0.5] * 200, 3)", "crashed with signal 11 (SIGSEGV) in the batch W"),
+    ("overflows_stack", "w(0.5, 3, k=1.4)", "crashed with signal 11 (SIGSEGV) in the batch W"),
 ])
-def test_a_plugin_that_fails_after_its_probe_ends_python_with_one_line(plugin, call, message):
+def test_a_plugin_that_crashes_after_its_probe_raises_and_the_module_goes_on(plugin, call, message):
     path = os.path.join(BROKEN, plugin + ".so")
-    status, lines = python(f"sphkern.load_plugin({path!r})\nk = sphkern.kernel({plugin!r})\n"
-                           f"assert k.w(0.5, 3) > 0\nk.{call}\nprint('not reached')")
+    named = f"{path}: plugin kernel {plugin} {message}"
+    status, lines = python(f"""
+sphkern.load_plugin({path!r})
+k = sphkern.kernel({plugin!r})
+assert k.w(0.5, 3) > 0
+try:
+    k.{call}
+    raise SystemExit("not raised")
+except RuntimeError as e:
+    assert str(e) == {named + "; it is not called again in this process"!r}, str(e)
+try:
+    k.w(0.5, 3)  # a call that worked before the crash: the plugin is not called again
+    raise SystemExit("called again")
+except RuntimeError as e:
+    assert str(e) == {named + " earlier; it is not called again in this process"!r}, str(e)
+assert sphkern.eps("cubic_bspline", "fcc", 1.2)["eps_rho"] == sphkern.eps("cubic_bspline", "fcc", 1.2)["eps_rho"]
+print("went on")
+""")
+    assert status == 0 and lines == [], (status, lines)
+
+
+def test_a_crash_on_the_engines_threads_raises_once_and_the_next_call_works():
+    path = os.path.join(BROKEN, "crash_in_band.so")
+    status, lines = python(f"""
+import numpy as np
+x = np.random.default_rng(1).uniform(0, 1, (20000, 3))
+try:
+    sphkern.particles({path!r}, x, box=[1, 1, 1], eta=1.3, threads=4)
+    raise SystemExit("not raised")
+except RuntimeError as e:
+    assert "plugin kernel crash_in_band crashed with signal 11 (SIGSEGV)" in str(e), str(e)
+r = sphkern.particles("cubic_bspline", x, box=[1, 1, 1], eta=1.3, threads=4)
+assert r["e0"].shape == (20000,)
+""")
+    assert status == 0 and lines == [], (status, lines)
+
+
+def test_exit_in_a_plugin_still_ends_python_with_one_line():
+    path = os.path.join(BROKEN, "exit_in_w.so")
+    status, lines = python(f"sphkern.load_plugin({path!r})\nk = sphkern.kernel('exit_in_w')\n"
+                           f"assert k.w(0.5, 3) > 0\nk.w(0.5, 3, k=1.4)\nprint('not reached')")
     assert status == 4, (status, lines)
-    assert len(lines) == 1 and lines[0] == f"sphkern: error: {path}: {message}; nothing was written", lines
+    assert lines == [f"sphkern: error: {path}: plugin kernel exit_in_w called exit() or pthread_exit() in the batch W; "
+                     "nothing was written"], lines
 
 
 def test_a_plugin_call_that_never_returns_is_stopped_after_the_bound():

@@ -18,6 +18,7 @@ constexpr int faults[fault_signal_count] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIG
 constexpr const char* fault_names[fault_signal_count] = {"SIGSEGV", "SIGBUS", "SIGFPE", "SIGILL", "SIGABRT"};
 struct sigaction fallback[fault_signal_count]; // where a fault outside a plugin call goes; SIG_DFL at first
 pid_t owner = 0;                               // a forked child's exit() is not this process's
+thread_local sigjmp_buf* recovery = nullptr;   // reached in the handler only once the thread is in a call
 
 int index_of(int sig)
 {
@@ -30,6 +31,14 @@ extern "C" void on_fault(int sig, siginfo_t* info, void*)
 {
     const int i = index_of(sig);
     if (const PluginCall* call = current_plugin_call()) {
+        if (sigjmp_buf* point = recovery) { // a library host: back to the call, which raises
+            recovery = nullptr;
+            sigset_t again;
+            sigemptyset(&again);
+            sigaddset(&again, sig);
+            ::sigprocmask(SIG_UNBLOCK, &again, nullptr); // sigsetjmp saved no mask
+            ::siglongjmp(*point, sig);
+        }
         char what[64] = "crashed with signal ";
         const char digits[3] = {static_cast<char>('0' + sig / 10), static_cast<char>('0' + sig % 10), 0};
         std::strcat(what, sig >= 10 ? digits : digits + 1);
@@ -79,6 +88,15 @@ void watch_exit_in_plugin_calls()
         owner = ::getpid();
         std::atexit(on_exit_call);
     });
+}
+
+bool plugin_faults_recoverable() { return !process_is_owned() && owner != 0 && ::getpid() == owner; }
+
+void set_recovery_point(sigjmp_buf* point) noexcept { recovery = point; }
+
+std::string crash_description(int sig)
+{
+    return "crashed with signal " + std::to_string(sig) + " (" + fault_names[index_of(sig)] + ")";
 }
 
 void end_process_with_line(int code, const char* const* parts, int count)

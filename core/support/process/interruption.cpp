@@ -138,6 +138,8 @@ void set_signal_hook(SignalHook h)
     else if (scopes > 0) hook.take(host_hooked);
 }
 
+bool process_is_owned() { return owns_process.load(); }
+
 void install_interrupt_handlers()
 {
     owns_process = true;

@@ -24,6 +24,9 @@ void set_signal_hook(SignalHook hook);
 // a second signal ends it at once.
 void install_interrupt_handlers();
 
+// Whether sphkern owns its process (the command line), not a library host's guest (Python).
+bool process_is_owned();
+
 // Takes the handlers back after a library's constructors may have replaced them, where
 // sphkern has them: in the command line, or inside an InterruptScope. Elsewhere (a Python
 // interpreter between calls) the host's handlers stay.
