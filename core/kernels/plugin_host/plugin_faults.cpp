@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <pthread.h>
 #include <unistd.h>
 
 namespace sphkern {
@@ -18,6 +19,7 @@ constexpr int faults[fault_signal_count] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIG
 constexpr const char* fault_names[fault_signal_count] = {"SIGSEGV", "SIGBUS", "SIGFPE", "SIGILL", "SIGABRT"};
 struct sigaction fallback[fault_signal_count]; // where a fault outside a plugin call goes; SIG_DFL at first
 pid_t owner = 0;                               // a forked child's exit() is not this process's
+bool forked = false;                           // in a child: a crash ends it (the probe reads how)
 thread_local sigjmp_buf* recovery = nullptr;   // reached in the handler only once the thread is in a call
 
 int index_of(int sig)
@@ -87,10 +89,11 @@ void watch_exit_in_plugin_calls()
     std::call_once(once, [] {
         owner = ::getpid();
         std::atexit(on_exit_call);
+        ::pthread_atfork(nullptr, nullptr, [] { forked = true; });
     });
 }
 
-bool plugin_faults_recoverable() { return !process_is_owned() && owner != 0 && ::getpid() == owner; }
+bool plugin_faults_recoverable() { return !process_is_owned() && owner != 0 && !forked; }
 
 void set_recovery_point(sigjmp_buf* point) noexcept { recovery = point; }
 
