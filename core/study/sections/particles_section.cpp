@@ -3,6 +3,7 @@
 
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
+#include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
@@ -25,14 +26,28 @@ ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticl
     });
 }
 
+// The section's sweep and volumes as the particle request takes them (statistics only), each
+// named by its JSON Pointer.
+ParticleRequest particle_request_of(const Study& study, const ParticleSet& set)
+{
+    const StudyParticles& p = *study.particles;
+    ParticleArguments given;
+    const bool nh = p.sweep.rule == SmoothingRule::nh;
+    (nh ? given.nh_range : given.eta_range) = std::array<double, 2>{p.sweep.from, p.sweep.to};
+    given.steps = p.sweep.steps;
+    if (p.volume) given.volume = volume_model_name(*p.volume);
+    ParticleSources sources = particle_sources(FrontEnd::python);
+    auto at = [&](const std::string& key) { return study_source(study, p.json_path + key); };
+    sources.nh_range = at("/nh"), sources.eta_range = at("/eta"), sources.volume = at("/volume");
+    sources.steps = at(nh ? "/nh/steps" : "/eta/steps");
+    return particle_request(given, set, sources);
+}
+
 // Every kernel of the study that supports the set's dimension, on one source.
 void analyse_source(const Study& study, const StudyInputs& inputs, const StudyParticleSource& s, const ParticleSet& set,
                     StudyResults& results)
 {
-    ParticleRequest request;
-    request.sweep = study.particles->sweep;
-    request.volume = study.particles->volume;
-    request.vectors = false; // the study keeps statistics only
+    const ParticleRequest request = particle_request_of(study, set);
     for (const auto& kernel : inputs.kernels) {
         if (!kernel.supports(set.dimension)) continue;
         throw_if_interrupted();
