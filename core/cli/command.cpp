@@ -56,16 +56,30 @@ Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std:
     return Kernel(registry.find(spec), parse_sets(sets));
 }
 
-void add_evaluation_options(Command command, EvaluationOptions& options)
+void add_point_options(Command command, EvaluationOptions& options, const std::string& gravity_help,
+                       const std::string& site_help)
 {
     command.add_option("--ap", options.ap, "Volume coefficient: a name the lattice offers or a positive number")
         .capture_default_str();
-    command.add_option("--gravity", options.gravity, "Gravity direction x,y[,z] (default: the lattice's)");
-    command.add_option("--site", options.site, "Motif site of the particle").capture_default_str();
+    command.add_option("--gravity", options.gravity, gravity_help);
+    command.add_option("--site", options.site, site_help).capture_default_str();
+}
+
+void add_evaluation_options(Command command, EvaluationOptions& options)
+{
+    add_point_options(command, options, "Gravity direction x,y[,z] (default: the lattice's)", "Motif site of the particle");
     command.add_option("--shells", options.shells,
                        "Sum over these shell radii only (in d, comma-separated), as the paper does");
     command.add_flag("--continue-past-support", options.continue_past_support,
                      "Evaluate the kernel's formula past q = R instead of truncating (needs --shells)");
+}
+
+KernelOnLattice kernel_on_lattice(const CommonOptions& options, const std::string& kernel, const std::string& lattice,
+                                  const std::vector<std::string>& sets)
+{
+    Lattice loaded = load_lattice(lattice);
+    auto registry = discover_kernels(options);
+    return {std::move(loaded), make_kernel(registry, kernel, sets)};
 }
 
 EvaluationInputs evaluation_inputs(const EvaluationOptions& options)

@@ -38,6 +38,15 @@ std::map<std::string, double> parse_sets(const std::vector<std::string>& sets);
 KernelRegistry discover_kernels(const CommonOptions& options);
 Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std::vector<std::string>& sets);
 
+// What a command on one kernel and one lattice runs on: the lattice, then the kernel (the
+// plugins discovered, --set applied), in that order, so that a bad lattice is said first.
+struct KernelOnLattice {
+    Lattice lattice;
+    Kernel kernel;
+};
+KernelOnLattice kernel_on_lattice(const CommonOptions& options, const std::string& kernel, const std::string& lattice,
+                                  const std::vector<std::string>& sets);
+
 // The evaluation options shared by eps, roots and the commands after them.
 struct EvaluationOptions {
     std::string ap = "voronoi";
@@ -47,6 +56,9 @@ struct EvaluationOptions {
     bool continue_past_support = false;
 };
 void add_evaluation_options(Command command, EvaluationOptions& options);
+// --ap, --gravity and --site alone (design, surface), with the command's own words for the last two.
+void add_point_options(Command command, EvaluationOptions& options, const std::string& gravity_help,
+                       const std::string& site_help);
 // The options as numbers, for a request; the option names, for its errors.
 EvaluationInputs evaluation_inputs(const EvaluationOptions& options);
 EvaluationSources evaluation_sources(const EvaluationOptions& options);

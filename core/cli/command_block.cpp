@@ -81,9 +81,7 @@ Action add_block_command(Command app)
         const BlockSources sources{ValueSource::option("--size " + options->size), ValueSource::option("--threads"),
                                    ValueSource::option("--k")};
         check_block_request(request, sources);
-        auto lattice = load_lattice(options->lattice);
-        auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto run = run_block(request, sources, kernel, lattice);
         const auto& result = run.result;
         if (!options->vtk.empty())

@@ -48,10 +48,7 @@ Action add_design_command(Command app)
         .expected(2);
     command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
     command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
-    command.add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
-        .capture_default_str();
-    command.add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z] (default: the lattice's)");
-    command.add_option("--site", options->evaluation.site, "Motif site").capture_default_str();
+    add_point_options(command, options->evaluation, "Gravity x,y[,z] (default: the lattice's)", "Motif site");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
@@ -59,9 +56,7 @@ Action add_design_command(Command app)
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);
         check_design_request(request, sources);
-        auto lattice = load_lattice(options->lattice);
-        auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto outcome = run_design(request, sources, kernel, lattice);
         if (options->json)
             print_json(design_json(kernel, outcome.problem, outcome.result), command_inputs(&kernel, &lattice));

@@ -48,9 +48,7 @@ Action add_eps_command(Command app)
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);
         check_eps_request(request, sources);
-        auto lattice = load_lattice(options->lattice);
-        auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto result = run_eps_at_k(request, sources, kernel, lattice);
         if (options->json) print_json(eps_document(result), command_inputs(&kernel, &lattice));
         else print_eps(result);

@@ -57,9 +57,7 @@ Action add_pairing_command(Command app)
         else if (command.count("--kmin") != 1 || command.count("--kmax") != 1)
             throw Error(ExitCode::usage, "a range needs both --kmin and --kmax");
         check_pairing_request(o.request, pairing_sources(FrontEnd::command_line));
-        auto registry = discover_kernels(o);
-        auto kernel = make_kernel(registry, o.kernel, o.sets);
-        const Lattice lattice = load_lattice(o.lattice);
+        const auto [lattice, kernel] = kernel_on_lattice(o, o.kernel, o.lattice, o.sets);
         const auto points = pairing_motion(kernel, lattice, o.request);
         if (o.json) print_json(pairing_json(kernel, lattice, o.request, points), command_inputs(&kernel, &lattice));
         else print_pairing(results_file(), kernel, lattice, o.request, points);

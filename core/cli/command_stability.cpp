@@ -250,9 +250,7 @@ Action add_stability_command(Command app)
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);
         check_stability_request(request, sources);
-        auto lattice = load_lattice(options->lattice);
-        auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto document = run_stability(request, sources, kernel, lattice);
         if (options->json) print_json(document);
         else print_stability(document, stability_mode(request), kernel.label(), lattice, *options);

@@ -45,10 +45,7 @@ Action add_surface_command(Command app)
     command.add_option("--k", options->k, "Smoothing coefficient, h = k d").required();
     command.add_option("--layers", options->layers, "Report at least this many layers").capture_default_str();
     command.add_option("--form", options->form, "Gradient form: sum, difference or monaghan").capture_default_str();
-    command.add_option("--ap", options->evaluation.ap, "Volume coefficient: a name or a positive number")
-        .capture_default_str();
-    command.add_option("--gravity", options->evaluation.gravity, "Gravity x,y[,z], normal to a lattice plane");
-    command.add_option("--site", options->evaluation.site, "Motif site on the top layer").capture_default_str();
+    add_point_options(command, options->evaluation, "Gravity x,y[,z], normal to a lattice plane", "Motif site on the top layer");
     command.add_option("--termination", options->termination,
                         "Which plane type is on top (an index from the listed terminations; default: --site's)")
         .check_non_negative();
@@ -59,9 +56,7 @@ Action add_surface_command(Command app)
         const auto request = request_from(*options);
         const auto sources = option_sources(*options);
         check_surface_request(request, sources);
-        auto lattice = load_lattice(options->lattice);
-        auto registry = discover_kernels(*options);
-        auto kernel = make_kernel(registry, options->kernel, options->sets);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto result = run_surface(request, sources, kernel, lattice);
         if (options->json)
             print_json(surface_request_document(request, result, kernel, lattice), command_inputs(&kernel, &lattice));
