@@ -159,6 +159,25 @@ def test_pysph_arrays_and_conventions_are_asked_for(tmp_path):
     assert doc["source"]["particles"] == N
 
 
+def test_pysph_properties_it_did_not_output_are_absent(tmp_path):
+    # PySPH's dump writes a property outside its output arrays as an empty dataset, stored=False.
+    x, h, m, rho = particles()
+    with h5py.File(tmp_path / "dump.h5", "w") as f:
+        arrays = f.create_group("particles/fluid/arrays")
+        for key, values in (("x", x[:, 0]), ("y", x[:, 1]), ("z", x[:, 2]), ("h", h), ("m", m), ("rho", np.array([]))):
+            arrays[key] = values
+            arrays[key].attrs["stored"] = values.size > 0
+    write_csv(tmp_path / "no-rho.csv", x, h, m, rho)
+    args = ["--support-per-h", str(GAMMA), "--box", f"{L},{L},{L}", "--volume", "uniform"]
+    doc = run(str(tmp_path / "dump.h5"), *args)
+    assert doc["volume"] == "uniform" and doc["source"]["particles"] == N
+    # The same statistics as the set without its densities (uniform volumes need none).
+    close(doc, run(str(tmp_path / "no-rho.csv"), *args), 1e-13)
+    # A property that is needed and was not output is refused as missing, not as a bad shape.
+    assert "volumes (m / rho) need masses and densities in the file; expected densities" in refused(
+        str(tmp_path / "dump.h5"), "--support-per-h", str(GAMMA), "--box", f"{L},{L},{L}", "--volume", "file")
+
+
 def test_broken_hdf5_files_give_one_line(tmp_path):
     x, h, m, rho = particles()
     write_swift(tmp_path / "good.hdf5", x, h, m, rho)

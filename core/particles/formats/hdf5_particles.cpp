@@ -301,7 +301,13 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     set.x = f.dataset(base + "x", shape);
     const std::size_t n = set.x.size();
     set.y = f.column(base + "y", n);
-    auto optional_column = [&](const char* p) { return f.exists(base + p) ? f.column(base + p, n) : std::vector<double>{}; };
+    // PySPH's dump writes a property it was not asked to output as an empty dataset (its
+    // attribute "stored" false): absent, as if it were not in the file.
+    auto optional_column = [&](const char* p) {
+        const std::string path = base + p;
+        if (!f.exists(path) || (n > 0 && f.rows(path) == 0)) return std::vector<double>{};
+        return f.column(path, n);
+    };
     set.z = optional_column("z");
     set.h = optional_column("h");
     set.mass = optional_column("m");
