@@ -96,7 +96,7 @@ Action add_particles_command(Command app)
         const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments_of(o, sources.gravity), set, sources));
+        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments_of(o, sources.gravity), kernel, set, sources));
         phases.merge(answer.phases);
         phases.restart();
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });

@@ -32,6 +32,9 @@ struct ParticleSet {
     std::vector<double> h, mass, density; // each empty or one value per particle
     std::optional<PeriodicBox> box;
     double support_per_h = 0;   // a file's own convention (SWIFT's kernel gamma), 0 if unknown
+    // The kernel that convention belongs to: as the file names it ("Wendland C2") and as
+    // sphkern does ("wendland_c2", empty if sphkern ships no such kernel); empty if not said.
+    std::string file_kernel, file_kernel_name;
     double spacing = 0;         // a lattice's nearest-neighbour distance d, 0 for other sets
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -1); // the lattice's, else -y (2D) or -z (3D)
 

@@ -167,7 +167,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             {
                 py::gil_scoped_release unlocked;
                 validate_particle_set(set);
-                answer = analyse_particles(kernel, set, particle_request(arguments, set, particle_sources(FrontEnd::python)));
+                answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
             }
             const auto& m = *answer.measures;
             const std::size_t d = static_cast<std::size_t>(set.dimension);

@@ -43,7 +43,8 @@ SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int ste
     return {rule, from, to, steps};
 }
 
-ParticleRequest particle_request(const ParticleArguments& given, const ParticleSet& set, const ParticleSources& sources)
+ParticleRequest particle_request(const ParticleArguments& given, const Kernel& kernel, const ParticleSet& set,
+                                 const ParticleSources& sources)
 {
     const auto& s = sources.smoothing;
     require_at_most_one({{given.smoothing.eta.has_value(), &s.eta}, {given.smoothing.nh.has_value(), &s.nh},
@@ -52,6 +53,7 @@ ParticleRequest particle_request(const ParticleArguments& given, const ParticleS
     ParticleRequest request;
     request.sweep = sweep_of(given, sources);
     request.smoothing = smoothing_of(given.smoothing, set, s, !request.sweep);
+    check_file_kernel(request.smoothing, set, kernel.name(), s);
     if (given.volume) request.volume = at_source(sources.volume, [&] { return parse_volume_model(*given.volume); });
     request.given_volumes = given.volumes;
     if (given.gravity) request.gravity = direction_of(*given.gravity, set.dimension, sources.gravity);

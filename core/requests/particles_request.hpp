@@ -35,8 +35,9 @@ struct ParticleSources {
 // `per_particle_files` names the outputs ("--csv and --vtk") on the command line.
 ParticleSources particle_sources(FrontEnd front_end);
 
-// The request, or an Error naming the first value at fault.
-ParticleRequest particle_request(const ParticleArguments& given, const ParticleSet& set, const ParticleSources& sources);
+// The request of `kernel` on `set`, or an Error naming the first value at fault.
+ParticleRequest particle_request(const ParticleArguments& given, const Kernel& kernel, const ParticleSet& set,
+                                 const ParticleSources& sources);
 
 // A sweep over eta in (0, 100] or N_H in [1, 1e5], from < to, in 1 to 1000 steps.
 SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int steps, const ValueSource& range,

@@ -41,6 +41,19 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
                                set.name, sources.support_per_h.name, others));
 }
 
+void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const std::string& kernel,
+                       const SmoothingSources& sources)
+{
+    if (spec.rule != SmoothingRule::file || spec.support_per_h > 0 || set.file_kernel.empty() ||
+        set.file_kernel_name == kernel)
+        return;
+    fail_input(fmt::format("{}: the file's h and its kernel gamma {} are for its kernel \"{}\"{}, not {}; expected that "
+                           "kernel, or {} X to map its h to {}'s support",
+                           set.name, set.support_per_h, set.file_kernel,
+                           set.file_kernel_name.empty() ? "" : " (sphkern's " + set.file_kernel_name + ")", kernel,
+                           sources.support_per_h.name, kernel));
+}
+
 SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& set, const SmoothingSources& sources,
                            bool file_h_allowed)
 {

@@ -28,6 +28,11 @@ SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSou
 // A k only on a lattice; a file's h only where the file has h and its convention is known.
 void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, const SmoothingSources& sources);
 
+// A file's h under the file's own convention (SWIFT's kernel gamma) is for the file's kernel:
+// `kernel` (sphkern's name) must be that one, unless the convention is given (support_per_h).
+void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const std::string& kernel,
+                       const SmoothingSources& sources);
+
 // The spec for a set: none given, the file's h where the set has h and `file_h_allowed`.
 SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& set, const SmoothingSources& sources,
                            bool file_h_allowed = true);

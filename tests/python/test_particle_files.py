@@ -47,7 +47,7 @@ def write_csv(path, x, h, m, rho):
             f.write(f"{p[0]!r},{p[1]!r},{p[2]!r},{hh!r},{mm!r},{r!r}\n")
 
 
-def write_swift(path, x, h, m, rho, gamma=True):
+def write_swift(path, x, h, m, rho, gamma=True, kernel=None, kernel_gamma=GAMMA):
     with h5py.File(path, "w") as f:
         header = f.create_group("Header")
         header.attrs["BoxSize"] = [L, L, L]
@@ -55,7 +55,9 @@ def write_swift(path, x, h, m, rho, gamma=True):
         header.attrs["NumPart_Total"] = [N, 0, 0, 0, 0, 0]
         header.attrs["MassTable"] = [0.0] * 6
         if gamma:
-            f.create_group("HydroScheme").attrs["Kernel gamma"] = GAMMA
+            f.create_group("HydroScheme").attrs["Kernel gamma"] = kernel_gamma
+        if kernel:
+            f.require_group("HydroScheme").attrs["Kernel function"] = np.bytes_(kernel)  # fixed length, as SWIFT writes
         part = f.create_group("PartType0")
         part["Coordinates"] = x
         part["SmoothingLengths"] = h
@@ -157,6 +159,30 @@ def test_pysph_arrays_and_conventions_are_asked_for(tmp_path):
     # Without --array, PySPH's "fluid" is the default.
     doc = run(str(tmp_path / "pysph.h5"), "--eta", "1.2", "--box", "1,1,1")
     assert doc["source"]["particles"] == N
+
+
+def test_a_swift_snapshot_of_another_kernel_is_refused_unless_its_h_is_mapped(tmp_path):
+    # SWIFT's cubic spline (M4): gamma = sqrt(10/3) in 3D (Dehnen & Aly 2012, table 1).
+    x, h, m, rho = particles()
+    cubic_gamma = np.sqrt(10 / 3)
+    write_swift(tmp_path / "cubic.hdf5", x, h, m, rho, kernel="Cubic spline (M4)", kernel_gamma=cubic_gamma)
+    line = refused(str(tmp_path / "cubic.hdf5"))  # run with wendland_c2
+    assert 'are for its kernel "Cubic spline (M4)" (sphkern\'s cubic_bspline), not wendland_c2' in line, line
+    assert "--support-per-h X" in line, line
+    # The kernel the file names takes the file's h as it is; a mapped h goes with any kernel.
+    done = subprocess.run([CLI, "particles", "cubic_bspline", str(tmp_path / "cubic.hdf5"), "--json"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    write_csv(tmp_path / "cubic.csv", x, h, m, rho)
+    close(json.loads(done.stdout), json.loads(subprocess.run(
+        [CLI, "particles", "cubic_bspline", str(tmp_path / "cubic.csv"), "--support-per-h", repr(cubic_gamma),
+         "--box", f"{L},{L},{L}", "--json"], capture_output=True, text=True, check=True).stdout), 1e-13)
+    assert run(str(tmp_path / "cubic.hdf5"), "--support-per-h", str(GAMMA))["source"]["particles"] == N
+    # A label sphkern does not know is still a kernel other than the one asked for.
+    write_swift(tmp_path / "other.hdf5", x, h, m, rho, kernel="Gaussian (truncated)")
+    assert 'are for its kernel "Gaussian (truncated)", not wendland_c2' in refused(str(tmp_path / "other.hdf5"))
+    write_swift(tmp_path / "same.hdf5", x, h, m, rho, kernel="Wendland C2")
+    assert run(str(tmp_path / "same.hdf5"))["source"]["particles"] == N
 
 
 def test_pysph_properties_it_did_not_output_are_absent(tmp_path):

@@ -5,6 +5,7 @@
 
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
+#include "support/text/printable_text.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -204,6 +205,30 @@ struct File {
             fail_input(fmt::format("{}: attribute {} of {} cannot be read", name, attr, object));
         return values;
     }
+    // A text attribute of `object` (fixed or variable length), "" when there is none.
+    std::string text_attribute(const std::string& object, const std::string& attr) const
+    {
+        if (!exists(object) || H5Aexists_by_name(id, object.c_str(), attr.c_str(), links) <= 0) return {};
+        Handle a(H5Aopen_by_name(id, object.c_str(), attr.c_str(), H5P_DEFAULT, links), H5Aclose);
+        check_links();
+        Handle type(H5Aget_type(a.get()), H5Tclose);
+        Handle space(H5Aget_space(a.get()), H5Sclose);
+        if (H5Tget_class(type.get()) != H5T_STRING || H5Sget_simple_extent_npoints(space.get()) != 1) return {};
+        std::string text;
+        if (H5Tis_variable_str(type.get()) > 0) {
+            char* value = nullptr;
+            Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
+            H5Tset_size(memory.get(), H5T_VARIABLE);
+            if (H5Aread(a.get(), memory.get(), &value) >= 0 && value) text = value;
+            if (value) H5free_memory(value);
+        } else {
+            const std::size_t size = H5Tget_size(type.get());
+            if (size == 0 || size > 4096) return {};
+            std::string buffer(size, '\0');
+            if (H5Aread(a.get(), type.get(), buffer.data()) >= 0) text = buffer.c_str();
+        }
+        return printable_text(text);
+    }
     static std::string shape_text(const std::vector<hsize_t>& shape)
     {
         std::string text;
@@ -211,6 +236,18 @@ struct File {
         return "(" + text + ")";
     }
 };
+
+// sphkern's name of a kernel as SWIFT names it (its kernel_hydro.h), or "" for another.
+std::string swift_kernel_name(const std::string& label)
+{
+    static const std::pair<const char*, const char*> names[] = {
+        {"Cubic spline (M4)", "cubic_bspline"}, {"Quartic spline (M5)", "quartic_bspline"},
+        {"Quintic spline (M6)", "morris_quintic"}, {"Wendland C2", "wendland_c2"},
+        {"Wendland C4", "wendland_c4"},       {"Wendland C6", "wendland_c6"}};
+    for (const auto& [swift, sphkern] : names)
+        if (label == swift) return sphkern;
+    return {};
+}
 
 ParticleSet read_snapshot(const File& f)
 {
@@ -258,6 +295,8 @@ ParticleSet read_snapshot(const File& f)
     }
     const auto gamma = f.attribute("/HydroScheme", "Kernel gamma");
     if (!gamma.empty()) set.support_per_h = gamma[0];
+    set.file_kernel = f.text_attribute("/HydroScheme", "Kernel function");
+    set.file_kernel_name = swift_kernel_name(set.file_kernel);
     return set;
 }
 
@@ -388,7 +427,9 @@ void append_part(ParticleSet& set, ParticleSet&& part, const std::string& part_n
                                    part_name, piece->empty() ? "missing" : "present", whole->empty() ? "missing" : "present"));
         whole->insert(whole->end(), piece->begin(), piece->end());
     }
-    if (first) set.dimension = part.dimension, set.gravity = part.gravity, set.box = part.box, set.support_per_h = part.support_per_h;
+    if (!first) return;
+    set.dimension = part.dimension, set.gravity = part.gravity, set.box = part.box;
+    set.support_per_h = part.support_per_h, set.file_kernel = part.file_kernel, set.file_kernel_name = part.file_kernel_name;
 }
 
 // A snapshot in one file, or in NumFilesPerSnapshot files BASE.0.hdf5 ... (SWIFT's distributed

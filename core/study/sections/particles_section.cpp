@@ -28,7 +28,7 @@ ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticl
 
 // The section's sweep and volumes as the particle request takes them (statistics only), each
 // named by its JSON Pointer.
-ParticleRequest particle_request_of(const Study& study, const ParticleSet& set)
+ParticleRequest particle_request_of(const Study& study, const Kernel& kernel, const ParticleSet& set)
 {
     const StudyParticles& p = *study.particles;
     ParticleArguments given;
@@ -40,14 +40,13 @@ ParticleRequest particle_request_of(const Study& study, const ParticleSet& set)
     auto at = [&](const std::string& key) { return study_source(study, p.json_path + key); };
     sources.nh_range = at("/nh"), sources.eta_range = at("/eta"), sources.volume = at("/volume");
     sources.steps = at(nh ? "/nh/steps" : "/eta/steps");
-    return particle_request(given, set, sources);
+    return particle_request(given, kernel, set, sources);
 }
 
 // Every kernel of the study that supports the set's dimension, on one source.
 void analyse_source(const Study& study, const StudyInputs& inputs, const StudyParticleSource& s, const ParticleSet& set,
                     StudyResults& results)
 {
-    const ParticleRequest request = particle_request_of(study, set);
     for (const auto& kernel : inputs.kernels) {
         if (!kernel.supports(set.dimension)) continue;
         throw_if_interrupted();
@@ -58,7 +57,7 @@ void analyse_source(const Study& study, const StudyInputs& inputs, const StudyPa
         c.dimension = set.dimension;
         c.particles = set.size();
         at_source(study_source(study, s.json_path), [&] {
-            auto answer = analyse_particles(kernel, set, request);
+            auto answer = analyse_particles(kernel, set, particle_request_of(study, kernel, set));
             c.volume = answer.volume;
             c.points = std::move(answer.points);
             for (const auto& p : c.points)
