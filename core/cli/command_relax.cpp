@@ -3,7 +3,9 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
+#include "analysis/code_conventions.hpp"
 #include "particles/formats/particle_writers.hpp"
+#include "particles/formats/swift_kernels.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relax_report.hpp"
@@ -59,6 +61,16 @@ void add_options(Command c, RelaxOptions& o)
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
+}
+
+// The relaxed set as SWIFT stores a set of its own kernels: h = H / gamma with SWIFT's
+// gamma (the support over twice the kernel's standard deviation), and the kernel's name;
+// for a kernel without that gamma, sphkern's h and R.
+ParticleOutput swift_output(const Kernel& kernel, const ParticleSet& set, double h, double mass)
+{
+    const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * h;
+    if (!(gamma > 0)) return {std::vector<double>(set.size(), h), kernel.support(), mass, ""};
+    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name())};
 }
 
 RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
@@ -117,9 +129,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge(kernel, run, o);
-        if (!o.output.empty())
-            write_particle_file(o.output, run.state.set,
-                                {std::vector<double>(run.state.set.size(), h), kernel.support(), run.state.model.mass});
+        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_output(kernel, run.state.set, h, run.state.model.mass));
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));

@@ -185,6 +185,23 @@ def test_a_swift_snapshot_of_another_kernel_is_refused_unless_its_h_is_mapped(tm
     assert run(str(tmp_path / "same.hdf5"))["source"]["particles"] == N
 
 
+def test_a_relaxed_glass_is_written_as_swift_writes_its_own_kernel(tmp_path):
+    out = tmp_path / "glass.hdf5"
+    subprocess.run([CLI, "relax", "wendland_c2", "poisson", "--count", "400", "--steps", "3", "--output", str(out)],
+                   capture_output=True, text=True, check=True)
+    with h5py.File(out, "r") as f:
+        gamma = f["HydroScheme"].attrs["Kernel gamma"]
+        assert f["HydroScheme"].attrs["Kernel function"] == b"Wendland C2"
+        stored = f["PartType0/SmoothingLengths"][:]
+    # SWIFT's Wendland C2 in 3D: gamma = sqrt(15 / 4) (kernel_hydro.h: 1.936492).
+    assert abs(gamma - np.sqrt(15 / 4)) < 1e-12
+    # H = gamma h_SWIFT is sphkern's support R h, with h = 1.2 mean spacings (the default eta) in a unit box.
+    assert np.allclose(stored * gamma, 2 * 1.2 * (1 / 400) ** (1 / 3), rtol=1e-12, atol=0)
+    assert run(str(out))["source"]["particles"] == 400  # read back with its own kernel
+    other = subprocess.run([CLI, "particles", "cubic_bspline", str(out)], capture_output=True, text=True)
+    assert other.returncode == 3 and 'are for its kernel "Wendland C2"' in other.stderr, other.stderr
+
+
 def test_pysph_properties_it_did_not_output_are_absent(tmp_path):
     # PySPH's dump writes a property outside its output arrays as an empty dataset, stored=False.
     x, h, m, rho = particles()

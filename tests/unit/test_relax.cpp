@@ -242,7 +242,7 @@ TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
     const ParticleSet set = poisson_set(500, 3, 2.0, 3);
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / "sphkern-relax-files";
     std::filesystem::create_directories(folder);
-    ParticleOutput output{std::vector<double>(set.size(), 0.31), 2.0, 0.016};
+    ParticleOutput output{std::vector<double>(set.size(), 0.31), 1.936492, 0.016, "Wendland C2"};
     for (const char* name : {"glass.h5", "glass.csv"}) {
         CAPTURE(name);
         write_particle_file(folder / name, set, output);
@@ -253,7 +253,9 @@ TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
         CHECK(back.h == output.h);
         CHECK(back.mass == std::vector<double>(set.size(), output.mass));
         if (std::string(name) == "glass.h5") {
-            CHECK(back.support_per_h == 2.0);
+            CHECK(back.support_per_h == 1.936492);
+            CHECK(back.file_kernel == "Wendland C2");
+            CHECK(back.file_kernel_name == "wendland_c2");
             REQUIRE(back.box);
             CHECK(back.box->edges.diagonal() == Eigen::Vector3d(2, 2, 2));
         }

@@ -2,6 +2,7 @@
 // SWIFT and GADGET snapshots and initial conditions (/Header, /PartType0) and PySPH output
 // (/particles/<array>/arrays/<property>).
 #include "particles/formats/particle_files.hpp"
+#include "particles/formats/swift_kernels.hpp"
 
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
@@ -237,18 +238,6 @@ struct File {
     }
 };
 
-// sphkern's name of a kernel as SWIFT names it (its kernel_hydro.h), or "" for another.
-std::string swift_kernel_name(const std::string& label)
-{
-    static const std::pair<const char*, const char*> names[] = {
-        {"Cubic spline (M4)", "cubic_bspline"}, {"Quartic spline (M5)", "quartic_bspline"},
-        {"Quintic spline (M6)", "morris_quintic"}, {"Wendland C2", "wendland_c2"},
-        {"Wendland C4", "wendland_c4"},       {"Wendland C6", "wendland_c6"}};
-    for (const auto& [swift, sphkern] : names)
-        if (label == swift) return sphkern;
-    return {};
-}
-
 ParticleSet read_snapshot(const File& f)
 {
     ParticleSet set;
@@ -296,7 +285,7 @@ ParticleSet read_snapshot(const File& f)
     const auto gamma = f.attribute("/HydroScheme", "Kernel gamma");
     if (!gamma.empty()) set.support_per_h = gamma[0];
     set.file_kernel = f.text_attribute("/HydroScheme", "Kernel function");
-    set.file_kernel_name = swift_kernel_name(set.file_kernel);
+    set.file_kernel_name = sphkern_kernel_of_swift(set.file_kernel);
     return set;
 }
 

@@ -57,6 +57,16 @@ void write_attribute(hid_t object, const char* name, hid_t type, const std::vect
     check(H5Awrite(attr.get(), type, values.data()), name);
 }
 
+// A fixed-length string, as SWIFT writes its own.
+void write_text_attribute(hid_t object, const char* name, const std::string& text)
+{
+    Id type(H5Tcopy(H5T_C_S1), H5Tclose, name);
+    check(H5Tset_size(type.get(), text.size()), name);
+    Id space(H5Screate(H5S_SCALAR), H5Sclose, name);
+    Id attr(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, name);
+    check(H5Awrite(attr.get(), type.get(), text.data()), name);
+}
+
 // Writes the dataset; `support_per_h` > 0 is stated on it as an attribute.
 template <class T>
 void write_dataset(hid_t group, const char* name, hid_t type, const std::vector<T>& values, hsize_t columns,
@@ -97,6 +107,7 @@ void write_particles(hid_t file, const ParticleSet& set, const ParticleOutput& o
     write_dataset(group.get(), "ParticleIDs", H5T_NATIVE_ULLONG, ids, 1);
     Id scheme(H5Gcreate2(file, "/HydroScheme", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "/HydroScheme");
     write_attribute(scheme.get(), "Kernel gamma", H5T_NATIVE_DOUBLE, std::vector<double>{output.support_per_h});
+    if (!output.kernel_label.empty()) write_text_attribute(scheme.get(), "Kernel function", output.kernel_label);
 }
 
 // The whole file as bytes: built in memory (HDF5's core driver without a backing store).

@@ -6,16 +6,18 @@
 #include "particles/particle_set.hpp"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace sphkern {
 
-// What is written beside the positions: sphkern's h of every particle (support R h), R
-// (SWIFT's "Kernel gamma", the support over the stored h) and one mass for all.
+// What is written beside the positions: the stored h of every particle, the support radius
+// over it (SWIFT's "Kernel gamma"), one mass for all and, for SWIFT, the kernel's name.
 struct ParticleOutput {
     std::vector<double> h;
-    double support_per_h = 0;
+    double support_per_h = 0;  // the support radius over h: SWIFT's "Kernel gamma"
     double mass = 0;
+    std::string kernel_label;  // SWIFT's "Kernel function", if the kernel is one of SWIFT's
 };
 
 // Throws Error(input) unless the set has a box whose edges lie along the axes.
