@@ -63,14 +63,17 @@ void add_options(Command c, RelaxOptions& o)
     add_json_option(c, o);
 }
 
-// The relaxed set as SWIFT stores a set of its own kernels: h = H / gamma with SWIFT's
-// gamma (the support over twice the kernel's standard deviation), and the kernel's name;
-// for a kernel without that gamma, sphkern's h and R.
-ParticleOutput swift_output(const Kernel& kernel, const ParticleSet& set, double h, double mass)
+// The relaxed set as SWIFT's initial conditions of its own kernels: h = H / gamma with SWIFT's
+// gamma (the support over twice the kernel's standard deviation), the kernel's name, and the
+// internal energy of an ideal gas whose sound speed is the relaxation's c = 1,
+// u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal gas has that sound speed).
+// A kernel without SWIFT's gamma is written with sphkern's h and R.
+ParticleOutput swift_output(const Kernel& kernel, const ParticleSet& set, double h, double mass, double eos_gamma)
 {
+    const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0;
     const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * h;
-    if (!(gamma > 0)) return {std::vector<double>(set.size(), h), kernel.support(), mass, ""};
-    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name())};
+    if (!(gamma > 0)) return {std::vector<double>(set.size(), h), kernel.support(), mass, "", u};
+    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
 }
 
 RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
@@ -129,7 +132,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge(kernel, run, o);
-        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_output(kernel, run.state.set, h, run.state.model.mass));
+        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_output(kernel, run.state.set, h, run.state.model.mass, o.settings.gamma));
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));

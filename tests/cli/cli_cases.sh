@@ -875,7 +875,7 @@ f = h5py.File('$work/glass.h5', 'r')
 assert list(f['Header'].attrs['BoxSize']) == [1, 1, 1] and f['Header'].attrs['Dimension'] == 3
 gamma = 15 ** 0.5 / 2  # SWIFT's Wendland C2 in 3D, sqrt(15/4) = 1.936492
 assert f['PartType0/Coordinates'].shape == (3000, 3)
-assert abs(f['PartType0/SmoothingLengths'].attrs['support_per_h'] - gamma) < 1e-12
+assert abs(f['PartType0/SmoothingLength'].attrs['support_per_h'] - gamma) < 1e-12
 assert abs(f['HydroScheme'].attrs['Kernel gamma'] - gamma) < 1e-12 and f['HydroScheme'].attrs['Kernel function'] == b'Wendland C2'"
 expect 0 '^$' -- relax wendland_c2 poisson --count 2000 --dim 2 --nh 30 --steps 20 --method shift --output "$work/glass2.csv"
 check "relax in 2D: a CSV particles reads back with its box" bash -c "'$sphkern' particles wendland_c2 '$work/glass2.csv' --box 1,1 --support-per-h \$(sed -n 's/.*support radius = \\([0-9.e+-]*\\) h/\\1/p' '$work/glass2.csv') | grep -q '2000 particles in 2D'"

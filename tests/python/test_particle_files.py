@@ -185,14 +185,22 @@ def test_a_swift_snapshot_of_another_kernel_is_refused_unless_its_h_is_mapped(tm
     assert run(str(tmp_path / "same.hdf5"))["source"]["particles"] == N
 
 
-def test_a_relaxed_glass_is_written_as_swift_writes_its_own_kernel(tmp_path):
+def test_a_relaxed_glass_is_written_as_swift_initial_conditions_of_its_kernel(tmp_path):
     out = tmp_path / "glass.hdf5"
     subprocess.run([CLI, "relax", "wendland_c2", "poisson", "--count", "400", "--steps", "3", "--output", str(out)],
                    capture_output=True, text=True, check=True)
     with h5py.File(out, "r") as f:
         gamma = f["HydroScheme"].attrs["Kernel gamma"]
         assert f["HydroScheme"].attrs["Kernel function"] == b"Wendland C2"
-        stored = f["PartType0/SmoothingLengths"][:]
+        stored = f["PartType0/SmoothingLength"][:]
+        # What SWIFT reads as initial conditions (hydro_read_particles, read_ic_single): all there.
+        for key in ("Coordinates", "Velocities", "Masses", "SmoothingLength", "InternalEnergy", "ParticleIDs"):
+            assert f["PartType0"][key].shape[0] == 400, key
+        for key in ("BoxSize", "NumPart_Total", "NumPart_Total_HighWord", "Flag_Entropy_ICs"):
+            assert key in f["Header"].attrs, key
+        assert not f["PartType0/Velocities"][:].any() and sorted(f["PartType0/ParticleIDs"][:]) == list(range(1, 401))
+        # An ideal gas with the relaxation's sound speed c = 1 and gamma = 5/3: u = c^2 / (gamma (gamma - 1)).
+        assert np.allclose(f["PartType0/InternalEnergy"][:], 1 / (5 / 3 * (5 / 3 - 1)), rtol=1e-15, atol=0)
     # SWIFT's Wendland C2 in 3D: gamma = sqrt(15 / 4) (kernel_hydro.h: 1.936492).
     assert abs(gamma - np.sqrt(15 / 4)) < 1e-12
     # H = gamma h_SWIFT is sphkern's support R h, with h = 1.2 mean spacings (the default eta) in a unit box.

@@ -89,6 +89,9 @@ void write_header(hid_t file, const ParticleSet& set)
     counts[0] = set.size();
     write_attribute(header.get(), "NumPart_Total", H5T_NATIVE_ULLONG, counts);
     write_attribute(header.get(), "NumPart_ThisFile", H5T_NATIVE_ULLONG, counts);
+    write_attribute(header.get(), "NumPart_Total_HighWord", H5T_NATIVE_UINT, std::vector<unsigned>(6, 0u));
+    write_attribute(header.get(), "Flag_Entropy_ICs", H5T_NATIVE_UINT, std::vector<unsigned>(6, 0u)); // u, not entropy
+    write_attribute(header.get(), "Time", H5T_NATIVE_DOUBLE, std::vector<double>{0.0});
     write_attribute(header.get(), "MassTable", H5T_NATIVE_DOUBLE, std::vector<double>(6, 0.0));
     write_attribute(header.get(), "NumFilesPerSnapshot", H5T_NATIVE_INT, std::vector<int>{1});
 }
@@ -101,7 +104,10 @@ void write_particles(hid_t file, const ParticleSet& set, const ParticleOutput& o
     for (std::size_t i = 0; i < n; ++i) coordinates[3 * i] = set.x[i], coordinates[3 * i + 1] = set.y[i], coordinates[3 * i + 2] = set.z[i];
     write_dataset(group.get(), "Coordinates", H5T_NATIVE_DOUBLE, coordinates, 3);
     write_dataset(group.get(), "Masses", H5T_NATIVE_DOUBLE, std::vector<double>(n, output.mass), 1);
-    write_dataset(group.get(), "SmoothingLengths", H5T_NATIVE_DOUBLE, output.h, 1, output.support_per_h);
+    // SWIFT's initial conditions name it in the singular (its snapshots in the plural).
+    write_dataset(group.get(), "SmoothingLength", H5T_NATIVE_DOUBLE, output.h, 1, output.support_per_h);
+    write_dataset(group.get(), "Velocities", H5T_NATIVE_DOUBLE, std::vector<double>(3 * n, 0.0), 3);
+    write_dataset(group.get(), "InternalEnergy", H5T_NATIVE_DOUBLE, std::vector<double>(n, output.internal_energy), 1);
     std::vector<unsigned long long> ids(n);
     for (std::size_t i = 0; i < n; ++i) ids[i] = i + 1;
     write_dataset(group.get(), "ParticleIDs", H5T_NATIVE_ULLONG, ids, 1);

@@ -12,12 +12,14 @@
 namespace sphkern {
 
 // What is written beside the positions: the stored h of every particle, the support radius
-// over it (SWIFT's "Kernel gamma"), one mass for all and, for SWIFT, the kernel's name.
+// over it (SWIFT's "Kernel gamma"), one mass for all, one internal energy and, for SWIFT, the
+// kernel's name. HDF5 holds what SWIFT reads as initial conditions (velocities zero).
 struct ParticleOutput {
     std::vector<double> h;
     double support_per_h = 0;  // the support radius over h: SWIFT's "Kernel gamma"
     double mass = 0;
     std::string kernel_label;  // SWIFT's "Kernel function", if the kernel is one of SWIFT's
+    double internal_energy = 0; // u of every particle (SWIFT's InternalEnergy), at rest
 };
 
 // Throws Error(input) unless the set has a box whose edges lie along the axes.
