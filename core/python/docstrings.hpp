@@ -3,6 +3,8 @@
 // tests/python/test_docstrings.py checks that every parameter is described and runs the examples.
 #pragma once
 
+#include <string>
+
 namespace sphkern::doc {
 
 inline constexpr const char* module = R"doc(sphkern: accuracy of SPH smoothing kernels on particle lattices and any particle set.
@@ -348,8 +350,8 @@ inline constexpr const char* kernel_name = "The kernel's name.";
 inline constexpr const char* kernel_support = "The support radius R, in units of h.";
 inline constexpr const char* kernel_info = "The kernel's entry, as kernels() lists it.";
 
-inline constexpr const char* kernel_w = R"doc(The kernel h^D W(q) in D dimensions.
-
+// The arguments Kernel.w and Kernel.dw share.
+inline constexpr const char* q_dim_k = R"doc(
 Parameters
 ----------
 q : float or array_like
@@ -359,7 +361,9 @@ dim : int
 k : float, default 1.0
     k = h / d, for kernels whose formula depends on it.
 
-Returns
+)doc";
+
+inline const std::string kernel_w = std::string("The kernel h^D W(q) in D dimensions.\n") + q_dim_k + R"doc(Returns
 -------
 numpy.ndarray
     h^D W, shaped like q.
@@ -370,18 +374,8 @@ Examples
 array([0.31830989, 0.07957747, 0.        ])
 )doc";
 
-inline constexpr const char* kernel_dw = R"doc(The kernel's derivative h^(D+1) dW/dr at q in D dimensions.
-
-Parameters
-----------
-q : float or array_like
-    q = r / h, each >= 0.
-dim : int
-    The dimension D (one the kernel supports).
-k : float, default 1.0
-    k = h / d, for kernels whose formula depends on it.
-
-Returns
+inline const std::string kernel_dw = std::string("The kernel's derivative h^(D+1) dW/dr at q in D dimensions.\n") + q_dim_k +
+                                     R"doc(Returns
 -------
 numpy.ndarray
     h^(D+1) dW/dr, shaped like q.

@@ -432,8 +432,8 @@ void bind_kernel(py::module_& m, const Guard& guard)
         .def_property_readonly("name", &KernelHandle::name, doc::kernel_name)
         .def_property_readonly("support", &KernelHandle::support, doc::kernel_support)
         .def_property_readonly("info", &KernelHandle::info, doc::kernel_info)
-        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_w, guard)
-        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_dw, guard);
+        .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_w.c_str(), guard)
+        .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_dw.c_str(), guard);
     m.def("kernel",
           [](const std::string& spec, const OptionalParams& params) { return KernelHandle(kernel_of(spec, params)); },
           py::arg("name"), py::arg("params") = py::none(), doc::kernel, guard);
