@@ -10,6 +10,7 @@
 #include "support/process/interruption.hpp"
 #include "support/process/isolated_call.hpp"
 #include "kernels/plugin_host/plugin_call_guard.hpp"
+#include "kernels/plugin_host/plugin_exit_hook.hpp"
 #include "kernels/plugin_host/plugin_faults.hpp"
 #include "kernels/plugin_host/plugin_host.hpp"
 #include "kernels/plugin_host/plugin_watchdog.hpp"
@@ -200,10 +201,10 @@ private:
         PluginCallGuard in(function);
         if (!plugin_faults_recoverable()) return f();
         sigjmp_buf point;
-        if (const int sig = sigsetjmp(point, 0)) {
-            crashed_signal_ = sig;
+        if (const int jump = sigsetjmp(point, 0)) {
+            crashed_signal_ = jump;
             crashed_in_ = &function;
-            throw Error(ExitCode::plugin, std::string(function.plugin()) + " " + crash_description(sig) + " in " +
+            throw Error(ExitCode::plugin, std::string(function.plugin()) + " " + what_happened(jump) + " in " +
                                               function.function() + "; it is not called again in this process");
         }
         set_recovery_point(&point);
@@ -218,8 +219,12 @@ private:
     }
     [[noreturn]] void refuse_after_crash(const PluginCall& where) const
     {
-        throw Error(ExitCode::plugin, std::string(where.plugin()) + " " + crash_description(crashed_signal_.load()) +
+        throw Error(ExitCode::plugin, std::string(where.plugin()) + " " + what_happened(crashed_signal_.load()) +
                                           " in " + where.function() + " earlier; it is not called again in this process");
+    }
+    static std::string what_happened(int jump)
+    {
+        return jump == exit_in_plugin_jump ? "called exit()" : crash_description(jump);
     }
 
     std::shared_ptr<boost::dll::shared_library> library_; // keeps the descriptor and its functions mapped
@@ -451,6 +456,7 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
     {
         PluginCallGuard in(loading);
         library = open_library(opened.loader_path(), name);
+        redirect_plugin_exits(library->native());
         opened.keep();
         reason = read_kernel_descriptor(call_entry(*library, name), descriptor,
                                         probe.in_child ? DescriptorCheck::fields : DescriptorCheck::with_functions);

@@ -728,11 +728,13 @@ expect 4 'crash_in_fused.so: plugin kernel crash_in_fused crashed with signal 11
 expect 4 'abort_above_k.so: plugin kernel abort_above_k crashed with signal 6 \(SIGABRT\) in .*W; nothing was written' -- \
     eps "$broken/abort_above_k.so" fcc --k 1.4
 expect 4 'exit_in_w.so: plugin kernel exit_in_w called exit\(\) or pthread_exit\(\) in .*W; nothing was written' -- eps "$broken/exit_in_w.so" fcc --k 1.4
+expect 4 'quick_exit_in_w.so: plugin kernel quick_exit_in_w called exit\(\) or pthread_exit\(\) in .*W; nothing was written' -- \
+    eps "$broken/quick_exit_in_w.so" fcc --k 1.4
 expect 4 'loops_above_k.so: plugin kernel loops_above_k did not return within 2 s \(endless loop' -- \
     eps "$broken/loops_above_k.so" fcc --k 1.4
 expect 4 'overflows_stack.so: plugin kernel overflows_stack crashed with signal 11 \(SIGSEGV\) in W' -- \
     eps "$broken/overflows_stack.so" fcc --k 1.4
-for plugin in exit_in_w abort_above_k loops_above_k; do
+for plugin in exit_in_w quick_exit_in_w abort_above_k loops_above_k; do
     study "s_$plugin" '{"name": "s", "kernels": ["'"$broken/$plugin"'.so"], "lattices": ["fcc"], "k": {"min": 0.75, "max": 1.5, "samples": 301}, "plots": false}'
     expect 4 "$plugin.so: plugin kernel $plugin " -- run "$work/s_$plugin.json" -o "$work/made_$plugin/a/b/out"
     check "$plugin in a study: no staging folder, no folder the run made" test ! -e "$work/made_$plugin"

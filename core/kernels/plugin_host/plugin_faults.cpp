@@ -97,6 +97,14 @@ bool plugin_faults_recoverable() { return !process_is_owned() && owner != 0 && !
 
 void set_recovery_point(sigjmp_buf* point) noexcept { recovery = point; }
 
+void jump_to_recovery_point(int value) noexcept
+{
+    if (sigjmp_buf* point = recovery; point && plugin_faults_recoverable()) {
+        recovery = nullptr;
+        ::siglongjmp(*point, value);
+    }
+}
+
 std::string crash_description(int sig)
 {
     return "crashed with signal " + std::to_string(sig) + " (" + fault_names[index_of(sig)] + ")";

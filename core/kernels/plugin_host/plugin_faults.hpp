@@ -29,6 +29,8 @@ bool plugin_faults_recoverable();
 // Where a crash inside a plugin call on this thread jumps back to (null: none); the jump's
 // value is the signal. Set only around one call, with no C++ object made after sigsetjmp.
 void set_recovery_point(sigjmp_buf* point) noexcept;
+// Jumps to this thread's recovery point with `value`, where there is one; else returns.
+void jump_to_recovery_point(int value) noexcept;
 // "crashed with signal 11 (SIGSEGV)".
 std::string crash_description(int sig);
 
