@@ -2,7 +2,7 @@
 // particles under the SPH pressure force, k by k.
 #include "cli/command.hpp"
 
-#include "relax/relax_report.hpp"
+#include "requests/relax_report.hpp"
 #include "requests/pairing_request.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"

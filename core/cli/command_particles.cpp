@@ -3,7 +3,7 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
-#include "particles/particle_report.hpp"
+#include "requests/particles_report.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/source_request.hpp"
 #include "particles/particles_memory.hpp"

@@ -3,16 +3,12 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
-#include "analysis/code_conventions.hpp"
 #include "particles/formats/particle_writers.hpp"
-#include "particles/formats/swift_kernels.hpp"
 #include "particles/particles_memory.hpp"
-#include "particles/poisson_reference.hpp"
-#include "relax/relax_report.hpp"
+#include "requests/relax_report.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
-#include "support/process/parallel_for.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/results_output.hpp"
 
@@ -63,36 +59,6 @@ void add_options(Command c, RelaxOptions& o)
     add_json_option(c, o);
 }
 
-// The relaxed set as SWIFT's initial conditions of its own kernels: h = H / gamma with SWIFT's
-// gamma (the support over twice the kernel's standard deviation), the kernel's name, and the
-// internal energy of an ideal gas whose sound speed is the relaxation's c = 1,
-// u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal gas has that sound speed).
-// A kernel without SWIFT's gamma is written with sphkern's h and R.
-ParticleOutput swift_output(const Kernel& kernel, const ParticleSet& set, double h, double mass, double eos_gamma)
-{
-    const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0;
-    const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * h;
-    if (!(gamma > 0)) return {std::vector<double>(set.size(), h), kernel.support(), mass, "", u};
-    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
-}
-
-RelaxedSet judge(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o)
-{
-    const ParticleSet& set = run.state.set;
-    RelaxedSet judged;
-    judged.eta = run.h / mean_spacing(set);
-    judged.nh = neighbour_number(judged.eta, kernel.support(), set.dimension);
-    ParticleRequest request;
-    request.smoothing = {SmoothingRule::eta, judged.eta, 0};
-    request.volume = VolumeModel::uniform;
-    request.threads = o.settings.threads;
-    request.vectors = false; // statistics only
-    judged.measures = analyse_particles(kernel, set, request);
-    judged.quality = glass_quality(set, o.rdf_max, o.rdf_bins, worker_threads(o.settings.threads));
-    judged.poisson_rms_e0 = poisson_rms_e0(kernel, set.dimension, run.h / run.spacing, judged.eta, set.size());
-    return judged;
-}
-
 // The run; where it diverges, the steps before it (all finite) still go to --history, and the
 // error says so. The set itself is not written: its positions are what diverged.
 RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o)
@@ -131,8 +97,8 @@ Action add_relax_command(Command app)
         const double h = relax_h(spec, set, kernel, sources.smoothing);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
-        const RelaxedSet judged = judge(kernel, run, o);
-        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_output(kernel, run.state.set, h, run.state.model.mass, o.settings.gamma));
+        const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
+        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_initial_conditions(kernel, run, o.settings.gamma));
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));

@@ -5,7 +5,7 @@
 #include "python_arrays.hpp"
 #include "python_types.hpp"
 
-#include "particles/particle_report.hpp"
+#include "requests/particles_report.hpp"
 #include "particles/particle_set.hpp"
 #include "requests/particles_request.hpp"
 #include "support/error.hpp"

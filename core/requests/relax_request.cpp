@@ -1,6 +1,10 @@
 #include "requests/relax_request.hpp"
 
+#include "analysis/code_conventions.hpp"
+#include "particles/formats/swift_kernels.hpp"
 #include "particles/particle_volumes.hpp"
+#include "particles/poisson_reference.hpp"
+#include "support/process/parallel_for.hpp"
 #include "relax/glass_quality.hpp"
 #include "requests/particles_request.hpp"
 #include "support/error.hpp"
@@ -39,6 +43,32 @@ void check_relax_settings(const RelaxSettings& s, const RelaxSources& sources)
 void check_rdf(double r_max, std::size_t bins, const RelaxSources& sources)
 {
     check_rdf_settings(r_max, bins, sources.rdf_max, sources.rdf_bins);
+}
+
+RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threads, double r_max, std::size_t bins)
+{
+    const ParticleSet& set = run.state.set;
+    RelaxedSet judged;
+    judged.eta = run.h / mean_spacing(set);
+    judged.nh = neighbour_number(judged.eta, kernel.support(), set.dimension);
+    ParticleRequest request; // the run's own h, not a value a user gave
+    request.smoothing = {SmoothingRule::eta, judged.eta, 0};
+    request.volume = VolumeModel::uniform;
+    request.threads = threads;
+    request.vectors = false;
+    judged.measures = analyse_particles(kernel, set, request);
+    judged.quality = glass_quality(set, r_max, bins, worker_threads(threads));
+    judged.poisson_rms_e0 = poisson_rms_e0(kernel, set.dimension, run.h / run.spacing, judged.eta, set.size());
+    return judged;
+}
+
+ParticleOutput swift_initial_conditions(const Kernel& kernel, const RelaxResult& run, double eos_gamma)
+{
+    const ParticleSet& set = run.state.set;
+    const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0, mass = run.state.model.mass;
+    const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * run.h;
+    if (!(gamma > 0)) return {std::vector<double>(set.size(), run.h), kernel.support(), mass, "", u};
+    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
 }
 
 double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& kernel, const SmoothingSources& sources)

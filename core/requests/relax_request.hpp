@@ -4,7 +4,9 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
+#include "particles/formats/particle_writers.hpp"
 #include "relax/relax_settings.hpp"
+#include "requests/relax_report.hpp"
 #include "requests/smoothing_request.hpp"
 
 #include <cstddef>
@@ -27,6 +29,17 @@ void check_relax_settings(const RelaxSettings& settings, const RelaxSources& sou
 
 // g(r) up to r_max mean spacings (above 0.5) in 1 to 100000 bins.
 void check_rdf(double r_max, std::size_t bins, const RelaxSources& sources);
+
+// The set a run made, judged: the particle measures at its h (uniform volumes, statistics
+// only), g(r) up to r_max mean spacings in `bins`, and a Poisson set's RMS e0 at the same h.
+RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threads, double r_max, std::size_t bins);
+
+// The relaxed set as SWIFT's initial conditions of its own kernels: h = H / gamma with SWIFT's
+// gamma (the support over twice the kernel's standard deviation), the kernel's name, and the
+// internal energy of an ideal gas whose sound speed is the relaxation's c = 1,
+// u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal gas has that sound speed).
+// A kernel without SWIFT's gamma is written with sphkern's h and R.
+ParticleOutput swift_initial_conditions(const Kernel& kernel, const RelaxResult& run, double eos_gamma);
 
 // The one h of a relaxation (fixed-h SPH; a file's own h is not used): the set must have a
 // periodic box and fit the spec (smoothing_spec's).

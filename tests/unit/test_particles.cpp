@@ -8,7 +8,7 @@
 #include "particles/neighbour_gather.hpp"
 #include "particles/neighbour_grid.hpp"
 #include "particles/particle_analysis.hpp"
-#include "particles/particle_report.hpp"
+#include "requests/particles_report.hpp"
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
 #include "support/error.hpp"

@@ -1,4 +1,4 @@
-#include "particles/particle_report.hpp"
+#include "requests/particles_report.hpp"
 
 #include "support/io/chunked_writer.hpp"
 #include "support/io/vtk_points.hpp"

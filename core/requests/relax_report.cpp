@@ -1,6 +1,6 @@
-#include "relax/relax_report.hpp"
+#include "requests/relax_report.hpp"
 
-#include "particles/particle_report.hpp"
+#include "requests/particles_report.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
