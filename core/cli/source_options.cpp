@@ -20,8 +20,7 @@ void add_source_options(Command c, SourceOptions& o)
     c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
     c.add_option("--seed", o.seed, "Lattice and poisson: the random seed").capture_default_str();
     c.add_option("--count", o.count, "Poisson: number of particles");
-    c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate")
-;
+    c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate");
     c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
     c.add_option("--array", o.array, "PySPH file: the particle array");
 }
