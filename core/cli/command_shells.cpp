@@ -1,14 +1,9 @@
 // `sphkern shells`: the neighbour shells of a lattice site.
 #include "cli/command.hpp"
-#include "lattices/lattice_json.hpp"
-#include "lattices/numeric_inputs.hpp"
-#include "support/io/results_output.hpp"
-
-#include "lattices/shells.hpp"
-
-#include <fmt/format.h>
+#include "requests/shells_request.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace sphkern::cli {
 
@@ -30,23 +25,12 @@ Action add_shells_command(Command app)
     add_plugin_option(command, *options);
     return [options] {
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
-        auto lattice = load_lattice(options->lattice);
-        Eigen::Vector3d e = options->gravity.empty()
-                                ? lattice.gravity
-                                : direction_of(parse_number_list(options->gravity, ValueSource::option("--gravity")),
-                                               lattice.dimension, ValueSource::option("--gravity"));
-        if (options->json) {
-            print_json(shells_json(lattice, options->site, options->radius, e), command_inputs(nullptr, &lattice));
-            return 0;
-        }
-        auto shells = lattice_shells(lattice, options->site, options->radius);
-        fmt::print(results_file(), "{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total", "sum (e.r^)^2");
-        int total = 0;
-        for (const auto& s : shells) {
-            total += s.count;
-            fmt::print(results_file(), "{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s.radius, s.radius * s.radius, s.count, total,
-                       s.directional_moment(e));
-        }
+        const auto lattice = load_lattice(options->lattice);
+        ShellsRequest request{options->radius, options->site, std::nullopt};
+        if (!options->gravity.empty()) request.gravity = parse_number_list(options->gravity, ValueSource::option("--gravity"));
+        const auto document = run_shells(request, shells_sources(FrontEnd::command_line), lattice);
+        if (options->json) print_json(document, command_inputs(nullptr, &lattice));
+        else print_shells(document);
         return 0;
     };
 }

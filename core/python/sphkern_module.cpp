@@ -19,6 +19,7 @@
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/roots_request.hpp"
+#include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
 #include "support/error.hpp"
@@ -119,13 +120,6 @@ EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, co
     inputs.gravity = gravity_input(gravity, lattice.dimension);
     inputs.site = site;
     return inputs;
-}
-
-Eigen::Vector3d gravity_of(const Lattice& lattice, const py::object& gravity)
-{
-    const auto components = gravity_input(gravity, lattice.dimension);
-    if (!components) return lattice.gravity;
-    return direction_of(*components, lattice.dimension, argument_sources().gravity);
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const ArrayLike& k_values,
@@ -362,7 +356,8 @@ void bind_accuracy(py::module_& m, const Guard& guard)
     m.def("shells",
           [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
               auto lattice = load_lattice(lattice_spec);
-              return to_python(shells_json(lattice, site, radius, gravity_of(lattice, gravity)));
+              const ShellsRequest request{radius, site, gravity_input(gravity, lattice.dimension)};
+              return to_python(run_shells(request, shells_sources(FrontEnd::python), lattice));
           },
           py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
           guard);

@@ -72,8 +72,9 @@ expect 3 'nowhere.json: no such file' -- shells "$work/nowhere.json" --radius 2
 mkdir "$work/folder.json"
 expect 3 'folder.json: is a folder' -- shells "$work/folder.json" --radius 2
 expect 3 'unknown lattice "fccc" \(did you mean "fcc"\?\)' -- shells fccc --radius 2
-expect 3 'radius 0 is not allowed' -- shells fcc --radius 0
-expect 3 'radius -1 is not allowed' -- shells fcc --radius -1
+expect 2 '--radius 0: expected a positive finite number' -- shells fcc --radius 0
+expect 2 '--radius -1: expected a positive finite number' -- shells fcc --radius -1
+expect 3 '--site: site 3 does not exist; lattice fcc has sites 0 to 0' -- shells fcc --radius 2 --site 3
 expect 3 'more than the limit of 5000000' -- shells fcc --radius 1e5
 
 # Skewed lattices the shell fuzzer found slow (seconds each before the basis reduction):

@@ -288,3 +288,12 @@ print(sphkern.eps("wendland_c2", "fcc", 1.2)["eps_rho"], len([k for k in sphkern
     assert out.returncode == 0, out.stderr
     eps_rho, listed = out.stdout.split()
     assert float(eps_rho) == float(sphkern.eps("wendland_c2", "fcc", 1.2)["eps_rho"]) and listed == "1"
+
+
+def test_shells_names_its_arguments():
+    with pytest.raises(ValueError, match=r"^radius = -1: expected a positive finite number$"):
+        sphkern.shells("fcc", -1.0)
+    with pytest.raises(ValueError, match=r"^site: site 3 does not exist; lattice fcc has sites 0 to 0$"):
+        sphkern.shells("fcc", 2.0, site=3)
+    with pytest.raises(ValueError, match=r"^gravity: 2 components, expected 3 \(one per dimension\)$"):
+        sphkern.shells("fcc", 2.0, gravity=[0, 1])
