@@ -33,14 +33,7 @@ extern "C" void on_fault(int sig, siginfo_t* info, void*)
 {
     const int i = index_of(sig);
     if (const PluginCall* call = current_plugin_call()) {
-        if (sigjmp_buf* point = recovery) { // a library host: back to the call, which raises
-            recovery = nullptr;
-            sigset_t again;
-            sigemptyset(&again);
-            sigaddset(&again, sig);
-            ::sigprocmask(SIG_UNBLOCK, &again, nullptr); // sigsetjmp saved no mask
-            ::siglongjmp(*point, sig);
-        }
+        jump_to_recovery_point(sig); // a library host: back to the call, which raises
         char what[64] = "crashed with signal ";
         const char digits[3] = {static_cast<char>('0' + sig / 10), static_cast<char>('0' + sig % 10), 0};
         std::strcat(what, sig >= 10 ? digits : digits + 1);
@@ -99,10 +92,16 @@ void set_recovery_point(sigjmp_buf* point) noexcept { recovery = point; }
 
 void jump_to_recovery_point(int value) noexcept
 {
-    if (sigjmp_buf* point = recovery; point && plugin_faults_recoverable()) {
-        recovery = nullptr;
-        ::siglongjmp(*point, value);
+    sigjmp_buf* point = recovery;
+    if (!point || !plugin_faults_recoverable()) return;
+    recovery = nullptr;
+    if (value > 0 && value < NSIG) { // from a fault handler: sigsetjmp saved no mask to unblock it
+        sigset_t again;
+        sigemptyset(&again);
+        sigaddset(&again, value);
+        ::sigprocmask(SIG_UNBLOCK, &again, nullptr);
     }
+    ::siglongjmp(*point, value);
 }
 
 std::string crash_description(int sig)

@@ -29,7 +29,9 @@ bool plugin_faults_recoverable();
 // Where a crash inside a plugin call on this thread jumps back to (null: none); the jump's
 // value is the signal. Set only around one call, with no C++ object made after sigsetjmp.
 void set_recovery_point(sigjmp_buf* point) noexcept;
-// Jumps to this thread's recovery point with `value`, where there is one; else returns.
+// Jumps to this thread's recovery point with `value` (a fault's signal, unblocked first, or
+// plugin_exit_hook's exit_in_plugin_jump), where faults are recoverable and there is one; else returns.
+// Async-signal-safe.
 void jump_to_recovery_point(int value) noexcept;
 // "crashed with signal 11 (SIGSEGV)".
 std::string crash_description(int sig);
