@@ -815,6 +815,9 @@ expect 2 '--sigma -1: expected a number in \[0, 10\]' -- particles cubic_bspline
 expect 2 '--sigma disturbs a lattice' -- particles cubic_bspline poisson --count 100 --sigma 0.1
 expect 2 'a poisson set needs --count N' -- particles cubic_bspline poisson
 expect 2 '--count 1, expected 2 to' -- particles cubic_bspline poisson --count 1
+expect 2 '^sphkern: error: --dim: 4: expected 2 or 3$' -- particles cubic_bspline poisson --count 100 --dim 4
+study s_pdim '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 4, "count": 500}], "nh": {"min": 30, "max": 60}}}'
+expect 3 's_pdim.json: /particles/sources/0/poisson: 4: expected 2 or 3$' -- run "$work/s_pdim.json" -o "$work/out_pdim"
 expect 3 'more than the memory limit of [0-9]+ particles \(--memory-limit\)' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
 expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
 expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
