@@ -10,10 +10,13 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <thread>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace sphkern;
@@ -67,6 +70,61 @@ TEST_CASE("the parallel executor carries a worker's exception and runs every ite
                                          if (thread == 2) throw std::runtime_error("worker 2 failed");
                                      }),
                          "worker 2 failed", std::runtime_error);
+}
+
+TEST_CASE("the kept threads serve passes one after another, nested passes and two callers at once")
+{
+    // Many short passes on kept threads: each item once per pass, on the thread counts asked.
+    std::vector<int> seen(64, 0);
+    for (int pass = 0; pass < 2000; ++pass) {
+        ParallelFor p;
+        p.run(seen.size(), 1 + pass % 5, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) ++seen[i];
+        });
+    }
+    CHECK(std::count(seen.begin(), seen.end(), 2000) == 64);
+
+    // A pass inside a pass finds the kept threads in use and starts its own.
+    std::vector<std::atomic<int>> inner(4 * 8);
+    ParallelFor outer;
+    outer.run(4, 4, [&](int, std::size_t begin, std::size_t end) {
+        for (std::size_t o = begin; o < end; ++o) {
+            ParallelFor nested;
+            nested.run(8, 3, [&](int, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i) ++inner[o * 8 + i];
+            });
+        }
+    });
+    CHECK(std::all_of(inner.begin(), inner.end(), [](const auto& v) { return v == 1; }));
+
+    // Two callers at once (a library host's threads): both complete, every item once.
+    std::vector<std::atomic<int>> shared(2 * 5000);
+    auto caller = [&](std::size_t half) {
+        for (int pass = 0; pass < 200; ++pass) {
+            ParallelFor p;
+            p.run(5000, 3, [&](int, std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) ++shared[half * 5000 + i];
+            });
+        }
+    };
+    std::thread other(caller, 1);
+    caller(0);
+    other.join();
+    CHECK(std::all_of(shared.begin(), shared.end(), [](const auto& v) { return v == 200; }));
+
+    // A forked child (an isolated plugin call) has none of the parent's kept threads: its passes still run.
+    const pid_t child = fork();
+    if (child == 0) {
+        std::vector<int> mine(100, 0);
+        ParallelFor p;
+        p.run(mine.size(), 4, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) ++mine[i];
+        });
+        _exit(std::count(mine.begin(), mine.end(), 1) == 100 ? 0 : 1);
+    }
+    int status = -1;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
 }
 
 TEST_CASE("an output folder is committed without replacing anything, and --force replaces only its own kind")

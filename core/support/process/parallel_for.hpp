@@ -6,6 +6,7 @@
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/worker_pool.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -52,19 +53,13 @@ public:
                 failed_ = true;
             }
         };
-        std::vector<std::thread> pool;
         std::string refused;
-        for (int t = 1; t < threads; ++t) {
-            try {
-                pool.emplace_back(guarded, t);
-            } catch (const std::system_error& e) {
-                refused = e.what();
-                failed_ = true; // the workers already running stop at their next item
-                break;
-            }
+        try {
+            if (threads == 1) guarded(0);
+            else if (!run_on_worker_pool(threads, guarded)) run_on_own_threads(threads, guarded);
+        } catch (const std::system_error& e) {
+            refused = e.what();
         }
-        if (refused.empty()) guarded(0);
-        for (auto& th : pool) th.join();
         if (!refused.empty())
             throw Error(ExitCode::input, "cannot start " + std::to_string(threads) + " threads (" + refused +
                                              "); use fewer threads");
@@ -94,6 +89,24 @@ public:
     }
 
 private:
+    // For a nested or concurrent pass, which finds the pool in use.
+    template <class Guarded>
+    void run_on_own_threads(int threads, const Guarded& guarded)
+    {
+        std::vector<std::thread> own;
+        for (int t = 1; t < threads; ++t) {
+            try {
+                own.emplace_back(guarded, t);
+            } catch (const std::system_error&) {
+                failed_ = true; // the workers already running stop at their next item
+                for (auto& th : own) th.join();
+                throw;
+            }
+        }
+        guarded(0);
+        for (auto& th : own) th.join();
+    }
+
     std::atomic<bool> failed_{false};
     std::mutex mutex_;
     std::exception_ptr first_error_;
