@@ -152,62 +152,70 @@ void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double 
 
 // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
 // along x within each row: every step's counters stay in cache, where one pass over all the
-// bins' counters (megabytes on a large set) missed it at every point. A stable sort has one
-// result, so the threads' shares (contiguous runs of points, rows) do not change it. Each
-// array is allocated once and first touched by the threads that fill it.
+// bins' counters (megabytes on a large set) missed it at every point. The first step carries
+// the points themselves into row order (read in order, written to one stream per row), so
+// that the second reads each row's points from memory in order: carrying indices instead
+// left the second step a cache miss per coordinate. A stable sort has one result, so the
+// threads' shares (contiguous runs of points, rows) do not change it. Each array is
+// allocated once and first touched by the threads that fill it.
 void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
 {
     const std::size_t rows = n_[1] * n_[2];
     // Each thread counts its run of points per row; fewer threads where the rows outnumber the points.
     const int counting = static_cast<int>(std::clamp<std::size_t>(count / (rows + 1), 1, static_cast<std::size_t>(threads_)));
-    FirstTouchVector<std::uint32_t> row(count), along(count);
-    std::vector<std::vector<std::uint64_t>> counts(static_cast<std::size_t>(counting));
+    FirstTouchVector<std::uint32_t> row(count);
+    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(counting));
     ParallelFor count_rows;
     count_rows.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
         auto& c = counts[static_cast<std::size_t>(t)];
         c.assign(rows, 0);
         for (std::size_t p = begin; p < end; ++p) {
             row[p] = static_cast<std::uint32_t>(bin_along(2, points.at(2, p)) * n_[1] + bin_along(1, points.at(1, p)));
-            along[p] = static_cast<std::uint32_t>(bin_along(0, points.at(0, p)));
             ++c[row[p]];
         }
     });
     // Thread t's first place in row r: the row's start and the earlier threads' points in it.
-    std::vector<std::uint64_t> row_start(rows + 1, 0);
+    std::vector<std::uint32_t> row_start(rows + 1, 0);
     for (std::size_t r = 0, at = 0; r < rows; ++r) {
-        row_start[r] = at;
+        row_start[r] = static_cast<std::uint32_t>(at);
         for (auto& c : counts) {
-            const std::uint64_t mine = c[r];
-            c[r] = at, at += mine;
+            const std::uint32_t mine = c[r];
+            c[r] = static_cast<std::uint32_t>(at), at += mine;
         }
     }
-    row_start[rows] = count;
-    FirstTouchVector<std::uint32_t> by_row(count); // the points, row after row, each row in their order
+    row_start[rows] = static_cast<std::uint32_t>(count);
+    // The points, row after row, each row in their order.
+    FirstTouchVector<double> row_x(count), row_y(count), row_z(count);
+    FirstTouchVector<std::uint32_t> row_source(count);
     ParallelFor place;
     place.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
         auto& next = counts[static_cast<std::size_t>(t)];
-        for (std::size_t p = begin; p < end; ++p) by_row[next[row[p]]++] = static_cast<std::uint32_t>(p);
+        for (std::size_t p = begin; p < end; ++p) {
+            const std::uint32_t k = next[row[p]]++;
+            row_x[k] = points.at(0, p), row_y[k] = points.at(1, p), row_z[k] = points.at(2, p);
+            row_source[k] = points.source(p) | (p >= particles_ ? ghost_bit : 0u);
+        }
     });
+    row = {};
     start_.resize(rows * n_[0] + 1);
-    x_.resize(count), y_.resize(count), z_.resize(count), source_.resize(count), ghost_.resize(count);
+    x_.resize(count), y_.resize(count), z_.resize(count), source_.resize(count);
     // Row by row: the bins along x counted, then each point written to its place.
     ParallelFor within_rows;
     within_rows.run(rows, threads_, [&](int, std::size_t first_row, std::size_t last_row) {
-        std::vector<std::uint64_t> fill(n_[0] + 1);
+        std::vector<std::uint32_t> fill(n_[0] + 1);
         for (std::size_t r = first_row; r < last_row; ++r) {
             std::fill(fill.begin(), fill.end(), 0);
-            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[along[by_row[k]] + 1];
+            for (std::uint32_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[bin_along(0, row_x[k]) + 1];
             fill[0] = row_start[r];
             for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
             std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
-            for (std::uint64_t k = row_start[r]; k < row_start[r + 1]; ++k) {
-                const std::size_t p = by_row[k], q = fill[along[p]]++;
-                x_[q] = points.at(0, p), y_[q] = points.at(1, p), z_[q] = points.at(2, p);
-                source_[q] = points.source(p), ghost_[q] = p >= particles_;
+            for (std::uint32_t k = row_start[r]; k < row_start[r + 1]; ++k) {
+                const std::uint32_t q = fill[bin_along(0, row_x[k])]++;
+                x_[q] = row_x[k], y_[q] = row_y[k], z_[q] = row_z[k], source_[q] = row_source[k];
             }
         }
     });
-    start_.back() = count;
+    start_.back() = static_cast<std::uint32_t>(count);
 }
 
 std::vector<double> NeighbourGrid::gather(std::span<const double> per_particle) const
@@ -215,7 +223,7 @@ std::vector<double> NeighbourGrid::gather(std::span<const double> per_particle) 
     std::vector<double> values(x_.size());
     ParallelFor pass;
     pass.run(x_.size(), threads_, [&](int, std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) values[p] = per_particle[source_[p]];
+        for (std::size_t p = begin; p < end; ++p) values[p] = per_particle[source(p)];
     });
     return values;
 }
