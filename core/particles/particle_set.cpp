@@ -30,7 +30,7 @@ double PeriodicBox::smallest_width(int dimension) const
 
 namespace {
 
-void check_positive(const std::vector<double>& values, const ParticleSet& set, const char* field, int threads)
+void check_positive(const ParticleValues& values, const ParticleSet& set, const char* field, int threads)
 {
     if (values.empty()) return;
     if (values.size() != set.size())

@@ -4,6 +4,8 @@
 // share/docs/method.md says what sphkern computes on it.
 #pragma once
 
+#include "support/process/first_touch.hpp"
+
 #include <Eigen/Core>
 
 #include <optional>
@@ -28,8 +30,8 @@ struct ParticleSet {
     // inputs too, which no output may replace.
     std::vector<std::string> linked_files;
     int dimension = 3;
-    std::vector<double> x, y, z;         // z is 0 in 2D
-    std::vector<double> h, mass, density; // each empty or one value per particle
+    ParticleValues x, y, z;              // z is 0 in 2D; first touched by the threads that fill them
+    ParticleValues h, mass, density;      // each empty or one value per particle
     std::optional<PeriodicBox> box;
     double support_per_h = 0;   // a file's own convention (SWIFT's kernel gamma), 0 if unknown
     // The kernel that convention belongs to: as the file names it ("Wendland C2") and as

@@ -25,13 +25,13 @@ namespace sphkern {
 
 namespace {
 
-std::vector<double> per_particle(const py::object& value, std::size_t n, const char* what)
+ParticleValues per_particle(const py::object& value, std::size_t n, const char* what)
 {
     const DoubleArray a = real_array(value, what, fmt::format("a number or an array of {} numbers", n));
-    if (a.ndim() == 0 || (a.ndim() == 1 && a.size() == 1)) return std::vector<double>(n, *a.data());
+    if (a.ndim() == 0 || (a.ndim() == 1 && a.size() == 1)) return ParticleValues(n, *a.data());
     if (a.ndim() != 1 || static_cast<std::size_t>(a.size()) != n)
         fail_input(fmt::format("{}: expected a number or an array of {} numbers", what, n));
-    return std::vector<double>(a.data(), a.data() + n);
+    return ParticleValues(a.data(), a.data() + n);
 }
 
 ParticleSet set_of(const py::object& positions, const py::object& box)
@@ -63,7 +63,7 @@ ParticleSet set_of(const py::object& positions, const py::object& box)
 }
 
 // Masses and densities, one positive finite number per particle, refused naming the argument.
-std::vector<double> positive_per_particle(const py::object& value, std::size_t n, const char* what, const char* field)
+ParticleValues positive_per_particle(const py::object& value, std::size_t n, const char* what, const char* field)
 {
     auto values = per_particle(value, n, what);
     for (std::size_t i = 0; i < n; ++i)
@@ -110,7 +110,8 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Per
         if (name != "uniform" && name != "voronoi") fail_input("volume: expected \"uniform\", \"voronoi\" or an array");
         a.volume = name;
     } else if (!volume.is_none()) {
-        a.volumes = per_particle(volume, set.size(), "volume");
+        const auto volumes = per_particle(volume, set.size(), "volume");
+        a.volumes.assign(volumes.begin(), volumes.end());
     }
     if (!gravity.is_none()) {
         const DoubleArray g = real_array(gravity, "gravity", "a sequence of numbers");

@@ -250,8 +250,8 @@ TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
         REQUIRE(back.size() == set.size());
         CHECK(back.x == set.x);
         CHECK(back.z == set.z);
-        CHECK(back.h == output.h);
-        CHECK(back.mass == std::vector<double>(set.size(), output.mass));
+        CHECK(std::equal(back.h.begin(), back.h.end(), output.h.begin(), output.h.end()));
+        CHECK(back.mass == ParticleValues(set.size(), output.mass));
         if (std::string(name) == "glass.h5") {
             CHECK(back.support_per_h == 1.936492);
             CHECK(back.file_kernel == "Wendland C2");

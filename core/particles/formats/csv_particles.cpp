@@ -81,7 +81,7 @@ ParticleSet read_csv_particles(const std::filesystem::path& file, const Particle
     set.name = name;
     set.dimension = column_of[2] >= 0 ? 3 : 2;
     if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
-    std::vector<double>* targets[6] = {&set.x, &set.y, &set.z, &set.h, &set.mass, &set.density};
+    ParticleValues* targets[6] = {&set.x, &set.y, &set.z, &set.h, &set.mass, &set.density};
     std::string_view line;
     while (next_line(line)) {
         if (line.find_first_not_of(" \t") == std::string_view::npos) continue;

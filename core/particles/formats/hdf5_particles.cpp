@@ -151,7 +151,7 @@ struct File {
         return static_cast<std::size_t>(dims[0]);
     }
     // A dataset of doubles (any stored number type is converted) with its shape.
-    std::vector<double> dataset(const std::string& path, std::vector<hsize_t>& shape) const
+    ParticleValues dataset(const std::string& path, std::vector<hsize_t>& shape) const
     {
         Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
         check_links();
@@ -176,12 +176,12 @@ struct File {
                                    name, path, shape[0], total * sizeof(double),
                                    static_cast<double>(shape[0]) * bytes_per_particle,
                                    static_cast<double>(memory_limit_bytes())));
-        std::vector<double> values(static_cast<std::size_t>(total));
+        ParticleValues values(static_cast<std::size_t>(total));
         if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
             fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
         return values;
     }
-    std::vector<double> column(const std::string& path, std::size_t count) const
+    ParticleValues column(const std::string& path, std::size_t count) const
     {
         std::vector<hsize_t> shape;
         auto values = dataset(path, shape);
@@ -264,7 +264,7 @@ ParticleSet read_snapshot(const File& f)
         set.z.push_back(set.dimension == 3 ? coordinates[i * columns + 2] : 0.0);
     }
     if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
-    auto optional_column = [&](std::initializer_list<const char*> names) -> std::vector<double> {
+    auto optional_column = [&](std::initializer_list<const char*> names) -> ParticleValues {
         for (const char* dataset : names)
             if (f.exists("/PartType0") && f.exists(std::string("/PartType0/") + dataset))
                 return f.column(std::string("/PartType0/") + dataset, n);
@@ -333,7 +333,7 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     // attribute "stored" false): absent, as if it were not in the file.
     auto optional_column = [&](const char* p) {
         const std::string path = base + p;
-        if (!f.exists(path) || (n > 0 && f.rows(path) == 0)) return std::vector<double>{};
+        if (!f.exists(path) || (n > 0 && f.rows(path) == 0)) return ParticleValues{};
         return f.column(path, n);
     };
     set.z = optional_column("z");
@@ -406,7 +406,7 @@ void check_same_header(const File& first, const File& part)
 
 void append_part(ParticleSet& set, ParticleSet&& part, const std::string& part_name)
 {
-    const std::pair<std::vector<double>*, std::vector<double>*> columns[] = {
+    const std::pair<ParticleValues*, ParticleValues*> columns[] = {
         {&set.x, &part.x}, {&set.y, &part.y}, {&set.z, &part.z}, {&set.h, &part.h}, {&set.mass, &part.mass}, {&set.density, &part.density}};
     const bool first = set.x.empty();
     for (const auto& [whole, piece] : columns) {

@@ -48,7 +48,7 @@ void apply_dimension(ParticleSet& set, const ParticleFileOptions& options)
     if (*options.dimension != 2 || set.dimension != 3)
         fail_input(fmt::format("{}: --dim {} for a set with {} coordinates; expected --dim 2 for a 3-column set",
                                set.name, *options.dimension, set.dimension));
-    auto constant = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; }); };
+    auto constant = [](const ParticleValues& v) { return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; }); };
     if (constant(set.z)) {
     } else if (constant(set.y)) {
         set.y.swap(set.z); // a 2D set in the x-z plane (DualSPHysics)

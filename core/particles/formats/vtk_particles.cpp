@@ -167,7 +167,7 @@ public:
 
     std::vector<double> points; // x, y, z of each point
     std::size_t count = 0;
-    std::map<ParticleField, std::vector<double>> arrays;
+    std::map<ParticleField, ParticleValues> arrays;
 
 private:
     void read_section(const std::string& keyword)
@@ -232,7 +232,7 @@ private:
         std::vector<double> values;
         in_.values(type, components * tuples, field ? &values : nullptr, "array " + array);
         if (field && field != ParticleField::x && field != ParticleField::y && field != ParticleField::z)
-            arrays[*field] = std::move(values);
+            arrays[*field] = ParticleValues(values.begin(), values.end());
     }
 
     VtkCursor& in_;
