@@ -21,7 +21,11 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
     const int threads = m.threads;
     const std::pair<const char*, std::span<const double>> fields[] = {
         {"e0", m.e0}, {"eps_rho", m.eps_rho_values()}, {"eps_gradp", m.eps_gradp}, {"eps_gradp_sum", m.eps_gradp_sum}};
-    for (const auto& [name, values] : fields) point.statistics.emplace_back(name, summarise(values, threads));
+    for (const auto& [name, values] : fields) {
+        // Without masses eps_rho is e0: its summary is e0's.
+        const bool same = !point.statistics.empty() && values.data() == m.e0.data();
+        point.statistics.emplace_back(name, same ? point.statistics.front().second : summarise(values, threads));
+    }
     point.statistics.emplace_back("|e1|", summarise(m.e1_norm, threads));
     point.statistics.emplace_back("|m1|", summarise(m.m1_norm, threads));
     point.statistics.emplace_back("||E||_F", summarise(m.E_norm, threads));

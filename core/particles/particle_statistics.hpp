@@ -6,6 +6,8 @@
 
 #include "support/process/parallel_for.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -26,25 +28,40 @@ struct Moments {
     double count = 0, mean = 0, m2 = 0, min = std::numeric_limits<double>::infinity(), max = -min;
 };
 
-// An unsigned key in the order of the doubles (-0 just below +0); its top 16 bits are a bucket
-// of a histogram in value order.
-std::uint64_t order_key(double v);
-inline constexpr int bucket_shift = 48;
-inline constexpr std::size_t buckets = std::size_t{1} << 16;
+// An unsigned key in the order of the doubles (-0 just below +0).
+inline std::uint64_t order_key(double v)
+{
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    return bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
+}
 
-// The summary from the blocks' moments (in block order), the threads' bucket counts and a
-// gather of the keys in the buckets of the ranks the percentiles need.
+// 65536 buckets of equal width in keys between the smallest value's key and the largest's: a
+// histogram in value order, fine where the values crowd (a fixed slice of the key's top bits
+// put a quarter of a set of magnitudes in one bucket, sorted out on one thread).
+inline constexpr std::size_t buckets = std::size_t{1} << 16;
+struct KeyBuckets {
+    std::uint64_t lo = 0;
+    int shift = 0;
+    KeyBuckets(double min, double max);
+    // Keys outside [min, max] (NaN) go to the last bucket.
+    std::size_t of(std::uint64_t key) const { return std::min<std::uint64_t>((key - lo) >> shift, buckets - 1); }
+};
+
+// The percentiles from the threads' bucket counts (integers: the same whatever thread counted
+// what) and a gather of the keys in the buckets of the ranks they need.
 class Percentiles {
 public:
-    Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, std::size_t n);
+    Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, std::size_t n, const KeyBuckets& of, int threads);
     // The slot of a key's bucket among those to gather, -1 for none.
-    int slot(std::uint64_t key) const { return slot_[key >> bucket_shift]; }
+    int slot(std::uint64_t key) const { return slot_[of_.of(key)]; }
     std::size_t slots() const { return bucket_of_.size(); }
-    // p1, p50, p99 from the gathered keys of each slot (any order within a slot).
-    void finish(const std::vector<std::vector<std::uint64_t>>& keys, Summary& s) const;
+    // p1, p50, p99 from each thread's gathered keys per slot (any order within a slot).
+    void finish(const std::vector<std::vector<std::vector<std::uint64_t>>>& parts, Summary& s) const;
 
 private:
     std::size_t n_;
+    KeyBuckets of_;
+    int threads_;
     std::vector<std::uint64_t> first_; // first rank of each bucket
     std::vector<std::int8_t> slot_;
     std::vector<std::size_t> bucket_of_, ranks_;
@@ -82,31 +99,35 @@ inline Summary summarise_moments(std::span<const double> values, int threads = 1
 
 // The summary of value(i) over i in [0, n) (n > 0) on `threads` threads: std is the population
 // standard deviation; percentiles interpolate linearly between order statistics (numpy's
-// default), which are exact. The same bits on any number of threads. value(i) is called three
-// times per item (two passes over each block, one gather), so it may compute the value.
+// default), which are exact. The same bits on any number of threads. value(i) is called four
+// times per item (two passes over each block, a count and a gather), so it may compute the value.
 template <class Value>
 Summary summarise_values(std::size_t n, int threads, const Value& value)
 {
     using namespace statistics_detail;
-    // A thread counts into its own 65536 buckets: one per 65536 values at most.
+    Summary s = moments(n, threads, value, [](int, double) {});
+    const KeyBuckets of(s.min, s.max);
+    // A thread counts into its own buckets (allocated and first touched by it): one thread per 65536 values at most.
     const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / buckets + 1));
-    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers), std::vector<std::uint32_t>(buckets, 0));
-    Summary s = moments(n, workers, value, [&](int thread, double v) { ++counts[static_cast<std::size_t>(thread)][order_key(v) >> bucket_shift]; });
-    const Percentiles percentiles(counts, n);
-    std::vector<std::vector<std::vector<std::uint64_t>>> parts(
-        static_cast<std::size_t>(workers), std::vector<std::vector<std::uint64_t>>(percentiles.slots()));
+    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers));
+    ParallelFor counting;
+    counting.run(n, workers, [&](int t, std::size_t begin, std::size_t end) {
+        auto& c = counts[static_cast<std::size_t>(t)];
+        c.assign(buckets, 0);
+        for (std::size_t i = begin; i < end; ++i) ++c[of.of(order_key(value(i)))];
+    });
+    const Percentiles percentiles(counts, n, of, workers);
+    std::vector<std::vector<std::vector<std::uint64_t>>> parts(static_cast<std::size_t>(workers));
     ParallelFor gathering;
     gathering.run(n, workers, [&](int t, std::size_t begin, std::size_t end) {
         auto& part = parts[static_cast<std::size_t>(t)];
+        part.resize(percentiles.slots());
         for (std::size_t i = begin; i < end; ++i) {
             const std::uint64_t key = order_key(value(i));
             if (const int k = percentiles.slot(key); k >= 0) part[static_cast<std::size_t>(k)].push_back(key);
         }
     });
-    std::vector<std::vector<std::uint64_t>> keys(percentiles.slots());
-    for (std::size_t k = 0; k < keys.size(); ++k)
-        for (const auto& part : parts) keys[k].insert(keys[k].end(), part[k].begin(), part[k].end());
-    percentiles.finish(keys, s);
+    percentiles.finish(parts, s);
     return s;
 }
 

@@ -310,7 +310,12 @@ TEST_CASE("statistics over several blocks: exact percentiles, and the same bits 
     std::vector<double> spread(300007), crowded(200003);
     for (std::size_t i = 0; i < spread.size(); ++i) spread[i] = i % 1000 == 0 ? (i % 2000 ? -0.0 : 0.0) : normal(random);
     for (auto& v : crowded) v = 58.0 + static_cast<double>(random() % 5);
-    for (const auto* values : {&spread, &crowded}) {
+    // Neighbouring doubles on both sides of 1 (where a key's high bits carry), between two far
+    // values: the cluster lies in one bucket of the histogram, its keys straddle a power of two.
+    std::vector<double> straddling{0.7, 2.0};
+    for (int j = -60000; j < 60000; ++j) straddling.push_back(std::nextafter(1.0, j < 0 ? 0.0 : 2.0) + j * 0x1p-52);
+    std::shuffle(straddling.begin(), straddling.end(), random);
+    for (const auto* values : {&spread, &crowded, &straddling}) {
         const auto one = summarise(*values, 1);
         CHECK(one.p1 == reference(*values, 0.01));
         CHECK(one.p50 == reference(*values, 0.5));
@@ -500,9 +505,9 @@ TEST_CASE("files: CSV and VTK round trips, DualSPHysics-style CSV, and one-line 
     two.dimension = 2;
     const auto dual = read_particle_file(dir / "dual.csv", two);
     CHECK(dual.dimension == 2);
-    CHECK(dual.x == std::vector<double>{0.5, 1.5, 2.5});
-    CHECK(dual.y == std::vector<double>{1.0, 1.0, 3.0}); // the x-z plane
-    CHECK(dual.density == std::vector<double>{1000.5, 999.0, 998.0});
+    CHECK(dual.x == ParticleValues{0.5, 1.5, 2.5});
+    CHECK(dual.y == ParticleValues{1.0, 1.0, 3.0}); // the x-z plane
+    CHECK(dual.density == ParticleValues{1000.5, 999.0, 998.0});
 
     auto refused = [&](const std::string& name, const std::string& text, const std::string& expected) {
         CAPTURE(name);
