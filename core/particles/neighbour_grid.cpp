@@ -153,11 +153,11 @@ void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double 
 // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
 // along x within each row: every step's counters stay in cache, where one pass over all the
 // bins' counters (megabytes on a large set) missed it at every point. The first step carries
-// the points themselves into row order (read in order, written to one stream per row), so
-// that the second reads each row's points from memory in order: carrying indices instead
-// left the second step a cache miss per coordinate. A stable sort has one result, so the
-// threads' shares (contiguous runs of points, rows) do not change it. Each array is
-// allocated once and first touched by the threads that fill it.
+// the points themselves into the grid's arrays in row order (read in order, written to one
+// stream per row); the second sorts each row in place through a buffer of one row, reading
+// memory in order (carrying indices instead left it a cache miss per coordinate). A stable
+// sort has one result, so the threads' shares (contiguous runs of points, rows) do not change
+// it. Each array is allocated once and first touched by the threads that fill it.
 void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
 {
     const std::size_t rows = n_[1] * n_[2];
@@ -184,34 +184,36 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
         }
     }
     row_start[rows] = static_cast<std::uint32_t>(count);
-    // The points, row after row, each row in their order.
-    FirstTouchVector<double> row_x(count), row_y(count), row_z(count);
-    FirstTouchVector<std::uint32_t> row_source(count);
+    x_.resize(count), y_.resize(count), z_.resize(count), source_.resize(count);
     ParallelFor place;
     place.run(count, counting, [&](int t, std::size_t begin, std::size_t end) {
         auto& next = counts[static_cast<std::size_t>(t)];
         for (std::size_t p = begin; p < end; ++p) {
             const std::uint32_t k = next[row[p]]++;
-            row_x[k] = points.at(0, p), row_y[k] = points.at(1, p), row_z[k] = points.at(2, p);
-            row_source[k] = points.source(p) | (p >= particles_ ? ghost_bit : 0u);
+            x_[k] = points.at(0, p), y_[k] = points.at(1, p), z_[k] = points.at(2, p);
+            source_[k] = points.source(p) | (p >= particles_ ? ghost_bit : 0u);
         }
     });
     row = {};
     start_.resize(rows * n_[0] + 1);
-    x_.resize(count), y_.resize(count), z_.resize(count), source_.resize(count);
-    // Row by row: the bins along x counted, then each point written to its place.
+    // Row by row: the bins along x counted, then each point written from the row's copy to its place.
     ParallelFor within_rows;
     within_rows.run(rows, threads_, [&](int, std::size_t first_row, std::size_t last_row) {
         std::vector<std::uint32_t> fill(n_[0] + 1);
+        std::vector<double> bx, by, bz;
+        std::vector<std::uint32_t> bs;
         for (std::size_t r = first_row; r < last_row; ++r) {
+            const std::uint32_t from = row_start[r], to = row_start[r + 1];
+            bx.assign(x_.begin() + from, x_.begin() + to), by.assign(y_.begin() + from, y_.begin() + to);
+            bz.assign(z_.begin() + from, z_.begin() + to), bs.assign(source_.begin() + from, source_.begin() + to);
             std::fill(fill.begin(), fill.end(), 0);
-            for (std::uint32_t k = row_start[r]; k < row_start[r + 1]; ++k) ++fill[bin_along(0, row_x[k]) + 1];
-            fill[0] = row_start[r];
+            for (double x : bx) ++fill[bin_along(0, x) + 1];
+            fill[0] = from;
             for (std::size_t b = 0; b < n_[0]; ++b) fill[b + 1] += fill[b];
             std::copy(fill.begin(), fill.end() - 1, start_.begin() + static_cast<std::ptrdiff_t>(r * n_[0]));
-            for (std::uint32_t k = row_start[r]; k < row_start[r + 1]; ++k) {
-                const std::uint32_t q = fill[bin_along(0, row_x[k])]++;
-                x_[q] = row_x[k], y_[q] = row_y[k], z_[q] = row_z[k], source_[q] = row_source[k];
+            for (std::size_t k = 0; k < bx.size(); ++k) {
+                const std::uint32_t q = fill[bin_along(0, bx[k])]++;
+                x_[q] = bx[k], y_[q] = by[k], z_[q] = bz[k], source_[q] = bs[k];
             }
         }
     });
