@@ -5,7 +5,6 @@
 #include "particles/neighbour_sums.hpp"
 #include "particles/pair_pass.hpp"
 #include "support/error.hpp"
-#include "support/process/huge_pages.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
@@ -222,11 +221,10 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     phases.lap("grid");
     const std::size_t n = set.size();
     // Written in the particles' own order, random in memory on a disordered set.
-    for (auto* v : {&out.e0, &out.eps_gradp, &out.eps_gradp_sum, &out.e1_norm, &out.m1_norm, &out.E_norm})
-        resize_on_huge_pages(*v, n);
-    resize_on_huge_pages(out.neighbours, n);
-    if (!inputs.mass.empty()) resize_on_huge_pages(out.eps_rho, n);
-    if (inputs.vectors) resize_on_huge_pages(out.e1, n), resize_on_huge_pages(out.m1, n), resize_on_huge_pages(out.E, n);
+    for (auto* v : {&out.e0, &out.eps_gradp, &out.eps_gradp_sum, &out.e1_norm, &out.m1_norm, &out.E_norm}) v->resize(n);
+    out.neighbours.resize(n);
+    if (!inputs.mass.empty()) out.eps_rho.resize(n);
+    if (inputs.vectors) out.e1.resize(n), out.m1.resize(n), out.E.resize(n);
     spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
@@ -243,7 +241,9 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
         [&](int thread) { results[static_cast<std::size_t>(thread)].flush(out); });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-    for (int count : out.neighbours) out.pairs += static_cast<std::size_t>(count);
+    out.pairs = parallel_reduce(
+        n, out.threads, std::size_t{0}, [&](std::size_t i, std::size_t& pairs) { pairs += static_cast<std::size_t>(out.neighbours[i]); },
+        [](std::size_t& total, std::size_t block) { total += block; });
     phases.lap("sums");
     out.phases = phases;
     return out;

@@ -1,9 +1,12 @@
 // Large per-particle arrays whose pages are first touched by the threads that fill them: a
 // vector with this allocator leaves trivial values uninitialised on resize, so the page
 // faults (and the kernel's zeroing of each page) are spread over the worker threads instead
-// of falling on the one that allocates.
+// of falling on the one that allocates. Arrays of a huge page or more ask for huge pages:
+// with 4 KiB pages, sixteen threads faulting in fresh memory wait on each other in the
+// kernel, and the process's exit spends its time returning the pages one by one.
 #pragma once
 
+#include "support/process/huge_pages.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <memory>
@@ -23,6 +26,13 @@ struct FirstTouchAllocator : std::allocator<T> {
     FirstTouchAllocator() = default;
     template <class U>
     FirstTouchAllocator(const FirstTouchAllocator<U>&) noexcept {}
+
+    T* allocate(std::size_t n)
+    {
+        T* p = std::allocator<T>::allocate(n);
+        if (n * sizeof(T) >= huge_page_bytes) advise_huge_pages(p, n * sizeof(T));
+        return p;
+    }
 
     template <class U, class... Args>
     void construct(U* p, Args&&... args)

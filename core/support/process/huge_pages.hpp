@@ -9,7 +9,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 namespace sphkern {
 
@@ -23,16 +22,6 @@ inline void advise_huge_pages(const void* data, std::size_t bytes)
     const auto begin = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t lo = (begin + page - 1) / page * page, hi = (begin + bytes) / page * page;
     if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
-}
-
-// v.resize(n), its storage first advised to use huge pages when it spans one at least.
-template <class Vector>
-void resize_on_huge_pages(Vector& v, std::size_t n)
-{
-    using T = typename Vector::value_type;
-    v.reserve(n);
-    if (n * sizeof(T) >= huge_page_bytes) advise_huge_pages(v.data(), n * sizeof(T));
-    v.resize(n);
 }
 
 } // namespace sphkern
