@@ -1,9 +1,9 @@
 // The particle engine's one pass over every particle and its neighbours, which the measures,
 // the block's sums, relax's densities and forces and g(r) all run: on `threads` threads, the
-// clusters of the grid in cell order (a thread's clusters contiguous, so that neighbouring
-// clusters share their candidates in cache), each cluster's candidates gathered once, then
-// each of its particles (ghosts skipped) given its neighbours within its own reach. Progress
-// is shown from the first thread's share (every thread has as many clusters).
+// clusters of the grid in cell order, each cluster's candidates gathered once, then each of
+// its particles (ghosts skipped) given its neighbours within its own reach. A visitor writes
+// per particle or adds integers per thread, so which thread takes which cluster changes no
+// result. Progress is shown by the first thread, in the runs of clusters taken by all.
 #pragma once
 
 #include "particles/neighbour_gather.hpp"
@@ -11,6 +11,8 @@
 #include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <optional>
 #include <string>
 
@@ -31,20 +33,28 @@ template <class Visit, class Done>
 void pair_pass(const NeighbourGrid& grid, const std::string& set_name, const PairPassInputs& in, int threads,
                const Visit& visit, const Done& done)
 {
+    // Runs of clusters are taken as threads become free: a run's clusters are neighbours and
+    // share their candidates in cache, and no thread waits on another whose share held more
+    // particles (the clusters of ghosts at a periodic box's faces hold none to visit).
+    const std::size_t clusters = grid.clusters(), workers = static_cast<std::size_t>(std::max(1, threads));
+    const std::size_t run = std::max<std::size_t>(1, clusters / (16 * workers));
+    std::atomic<std::size_t> next{0};
     ParallelFor pass;
-    pass.run(grid.clusters(), threads, [&](int thread, std::size_t begin, std::size_t end) {
+    pass.run(workers, threads, [&](int thread, std::size_t, std::size_t) {
         ClusterCandidates cluster;
         Neighbours nb;
         std::optional<Progress> progress;
-        if (thread == 0 && !in.progress.empty()) progress.emplace(in.progress, (end - begin + 255) / 256);
-        for (std::size_t c = begin; c < end && pass.keep_going(); ++c) {
-            if (progress && ((c - begin) & 255) == 255) progress->step(std::to_string(c - begin + 1) + " clusters");
-            gather_cluster(grid, c, in.reach, in.a, in.b, cluster);
-            for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-                if (grid.is_ghost(p)) continue;
-                const double reach = in.reach[p];
-                gather_from_cluster(grid, cluster, p, reach * reach, set_name, nb, in.with_r2);
-                visit(thread, p, nb);
+        if (thread == 0 && !in.progress.empty()) progress.emplace(in.progress, (clusters + run - 1) / run);
+        for (std::size_t begin; pass.keep_going() && (begin = next.fetch_add(run)) < clusters;) {
+            if (progress) progress->reach(begin / run, "cluster " + std::to_string(begin));
+            for (std::size_t c = begin; c < std::min(clusters, begin + run); ++c) {
+                gather_cluster(grid, c, in.reach, in.a, in.b, cluster);
+                for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
+                    if (grid.is_ghost(p)) continue;
+                    const double reach = in.reach[p];
+                    gather_from_cluster(grid, cluster, p, reach * reach, set_name, nb, in.with_r2);
+                    visit(thread, p, nb);
+                }
             }
         }
         done(thread);

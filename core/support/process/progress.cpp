@@ -39,9 +39,9 @@ Progress::~Progress()
     if (terminal_ && done_ > 0) std::fprintf(stderr, "\r\033[K");
 }
 
-void Progress::step(const std::string& item)
+void Progress::reach(std::size_t done, const std::string& item)
 {
-    ++done_;
+    done_ = done;
     const auto now = Clock::now();
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     if (terminal_) {

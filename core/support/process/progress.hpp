@@ -14,7 +14,9 @@ class Progress {
 public:
     Progress(std::string what, std::size_t total);
     ~Progress();
-    void step(const std::string& item);
+    void step(const std::string& item) { reach(done_ + 1, item); }
+    // `done` of the total finished (work shared out among threads, told by one of them).
+    void reach(std::size_t done, const std::string& item);
 
 private:
     using Clock = std::chrono::steady_clock;
