@@ -1,6 +1,6 @@
 /* Wendland C2 whose constructor forks a daemon, as a careless plugin might: a grandchild in a
- * session of its own, every descriptor closed, which writes its pid to the file named by
- * SPHKERN_TEST_DAEMON_PIDS and sleeps. sphkern must not leave it running when it exits. */
+ * session of its own, which writes its pid to the file named by SPHKERN_TEST_DAEMON_PIDS,
+ * closes every descriptor and sleeps. sphkern must not leave it running when it exits. */
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,11 +9,19 @@
 __attribute__((constructor)) static void fork_daemon(void)
 {
     const char* record = getenv("SPHKERN_TEST_DAEMON_PIDS");
-    if (!record) return;
+    int ready[2];
+    if (!record || pipe(ready) != 0) return;
     pid_t first = fork();
-    if (first != 0) return; /* the loading process goes on (the intermediate exits at once) */
+    if (first != 0) {
+        /* The loading process goes on once the daemon has written its pid (the intermediate
+         * exits at once): a fast sphkern must not end before there is a daemon to find. */
+        char byte;
+        close(ready[1]);
+        if (read(ready[0], &byte, 1) < 0) byte = 0;
+        close(ready[0]);
+        return;
+    }
     if (setsid() < 0 || fork() != 0) _exit(0);
-    for (int fd = 0; fd < 1024; ++fd) close(fd);
     int out = open(record, O_WRONLY | O_APPEND | O_CREAT, 0644);
     if (out >= 0) {
         char line[32];
@@ -21,6 +29,8 @@ __attribute__((constructor)) static void fork_daemon(void)
         if (write(out, line, (size_t)n) != n) _exit(1);
         close(out);
     }
+    if (write(ready[1], "r", 1) != 1) _exit(1);
+    for (int fd = 0; fd < 1024; ++fd) close(fd);
     sleep(120);
     _exit(0);
 }
