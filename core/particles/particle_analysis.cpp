@@ -72,8 +72,9 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     PhaseTimes& phases = answer.phases;
     answer.volume = request.volume.value_or(default_volume_model(set));
     const int threads = worker_threads(request.threads);
-    answer.volumes = request.given_volumes.empty() ? particle_volumes(set, answer.volume, threads)
-                                                   : ParticleValues(request.given_volumes.begin(), request.given_volumes.end());
+    answer.volumes = request.given_volumes.empty()
+                         ? particle_volumes(set, answer.volume, threads)
+                         : PerParticle::of(ParticleValues(request.given_volumes.begin(), request.given_volumes.end()));
     if (answer.volumes.size() != set.size())
         fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
     // Every pass over the particles on the request's threads, sums in fixed blocks (the same on any number).
@@ -102,7 +103,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         phases.restart();
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume, threads);
         phases.lap("h");
-        MeasureInputs inputs{h, answer.volumes, set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
+        MeasureInputs inputs{h.view(), answer.volumes.view(), set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
                              request.threads, request.vectors};
         auto measures = measure_particles(kernel, set, inputs);
         phases.merge(measures.phases);
@@ -114,7 +115,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
                                    set.name, *i, h[*i]));
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         require_finite(point, set, answer);
-        const Summary h_range = summarise_moments(h, threads);
+        const Summary h_range = statistics_detail::moments(h.size(), threads, [&](std::size_t i) { return h[i]; }, [](int, double) {});
         point.eta = h_range.mean / unit;
         point.nh = neighbour_number(point.eta, R, dim);
         point.h_min = h_range.min, point.h_max = h_range.max;

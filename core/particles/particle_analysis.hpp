@@ -50,7 +50,7 @@ struct ParticleAnswer {
     VolumeModel volume = VolumeModel::uniform;
     double mean_volume = 0, rho0 = 1, spacing = 1;
     Eigen::Vector3d gravity;
-    ParticleValues h, volumes;                   // of the single h (h not kept for sweeps)
+    PerParticle h, volumes;                      // of the single h (h not kept for sweeps)
     std::optional<ParticleMeasures> measures;    // of the single h
     std::vector<ParticlePoint> points;           // one, or one per sweep value
     int threads = 1;

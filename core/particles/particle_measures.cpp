@@ -36,8 +36,10 @@ using Clock = std::chrono::steady_clock;
 struct PointInputs {
     std::vector<double> per_point; // empty when uniform
     double all = 0;
-    static PointInputs of(const NeighbourGrid& grid, std::span<const double> per_particle)
+    static PointInputs of(const NeighbourGrid& grid, const PerParticleView& given)
     {
+        if (given.is_uniform()) return {{}, given.uniform};
+        const std::span<const double> per_particle = given.values;
         const double v = per_particle.front();
         const bool uniform = !first_index_where(per_particle.size(), grid.threads(), [&](std::size_t i) { return per_particle[i] != v; });
         return uniform ? PointInputs{{}, v} : PointInputs{grid.gather(per_particle), 0.0};
@@ -201,7 +203,12 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
 {
     check_inputs(set, inputs);
     kernel.require_dimension(set.dimension, set.name);
-    const double h_max = *std::max_element(inputs.h.begin(), inputs.h.end());
+    const double h_max = inputs.h.is_uniform()
+                             ? inputs.h.uniform
+                             : parallel_reduce(
+                                   set.size(), worker_threads(inputs.threads), 0.0,
+                                   [&](std::size_t i, double& m) { m = std::max(m, inputs.h[i]); },
+                                   [](double& m, double block) { m = std::max(m, block); });
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
     PhaseTimes phases;
     ParticleMeasures out;

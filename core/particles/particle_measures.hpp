@@ -5,6 +5,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "particles/per_particle.hpp"
 #include "particles/particle_set.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/phase_times.hpp"
@@ -18,8 +19,8 @@ namespace sphkern {
 
 // Views of the caller's arrays (nothing per particle is copied).
 struct MeasureInputs {
-    std::span<const double> h;      // sphkern's h of every particle (support R h)
-    std::span<const double> volume; // V_j
+    PerParticleView h;              // sphkern's h of every particle (support R h)
+    PerParticleView volume;         // V_j
     std::span<const double> mass;   // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
     double rho0 = 1;            // the reference density of eps_rho
     double spacing = 1;         // d of k = h / d, the argument of kernels that depend on k

@@ -29,15 +29,15 @@ VolumeModel default_volume_model(const ParticleSet& set)
     return !set.mass.empty() && !set.density.empty() ? VolumeModel::file : VolumeModel::uniform;
 }
 
-ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int threads)
+PerParticle particle_volumes(const ParticleSet& set, VolumeModel model, int threads)
 {
-    auto fill = [&](const auto& value) { return fill_particle_values(set.size(), threads, value); };
+    auto fill = [&](const auto& value) { return PerParticle::of(fill_particle_values(set.size(), threads, value)); };
     switch (model) {
     case VolumeModel::uniform:
         if (!set.box)
             fail_input(fmt::format("{}: uniform volumes need a periodic box; expected a box, or each particle's volume (m / rho)",
                                    set.name));
-        return fill([v = mean_volume(set)](std::size_t) { return v; });
+        return PerParticle::same(set.size(), mean_volume(set));
     case VolumeModel::file:
         if (set.mass.empty() || set.density.empty())
             fail_input(fmt::format("{}: the file's volumes (m / rho) need masses and densities in the file; expected {}", set.name,

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "particles/particle_set.hpp"
-#include "support/process/first_touch.hpp"
+#include "particles/per_particle.hpp"
 
 #include <string>
 #include <vector>
@@ -20,7 +20,7 @@ VolumeModel default_volume_model(const ParticleSet& set);
 
 // Filled on `threads` threads. Throws Error(input) where the set lacks what the model needs (a
 // box, masses and densities).
-ParticleValues particle_volumes(const ParticleSet& set, VolumeModel model, int threads = 1);
+PerParticle particle_volumes(const ParticleSet& set, VolumeModel model, int threads = 1);
 
 // The Voronoi cell of every particle in the periodic box (voro++; a 2D set as a slab one
 // spacing thick, whose cells are prisms of the 2D cells).

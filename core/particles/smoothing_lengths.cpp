@@ -22,13 +22,12 @@ double eta_for_neighbour_number(double nh, double support, int dimension)
     return std::pow(nh / unit_ball(dimension), 1.0 / dimension) / support;
 }
 
-ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
+PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
                                  double mean_volume, int threads)
 {
     const int dim = set.dimension;
     const double R = kernel.support();
-    auto fill = [&](const auto& value) { return fill_particle_values(set.size(), threads, value); };
-    auto uniform = [&](double value) { return fill([value](std::size_t) { return value; }); };
+    auto uniform = [&](double value) { return PerParticle::same(set.size(), value); };
     switch (spec.rule) {
     case SmoothingRule::eta: return uniform(spec.value * std::pow(mean_volume, 1.0 / dim));
     case SmoothingRule::nh: return uniform(eta_for_neighbour_number(spec.value, R, dim) * std::pow(mean_volume, 1.0 / dim));
@@ -39,7 +38,7 @@ ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, c
     }
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
     if (set.h.size() != set.size() || !(x > 0)) throw std::logic_error("smoothing_lengths: a file h without h or a convention");
-    return fill([&](std::size_t i) { return x * set.h[i] / R; });
+    return PerParticle::of(fill_particle_values(set.size(), threads, [&](std::size_t i) { return x * set.h[i] / R; }));
 }
 
 } // namespace sphkern

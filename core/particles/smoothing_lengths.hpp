@@ -4,7 +4,7 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
-#include "support/process/first_touch.hpp"
+#include "particles/per_particle.hpp"
 
 #include <vector>
 
@@ -26,7 +26,7 @@ double eta_for_neighbour_number(double nh, double support, int dimension);
 // h of every particle, filled on `threads` threads; `mean_volume` is V̄ of h = eta V̄^(1/D).
 // The spec as checked against the set by requests/smoothing_request.hpp (a k without a
 // lattice, a file h without a convention: std::logic_error).
-ParticleValues smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
+PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
                                  double mean_volume, int threads = 1);
 
 } // namespace sphkern

@@ -84,12 +84,12 @@ std::optional<double> number_of(const py::object& value, const char* what)
 // What the arguments give per particle goes into the set, as a file's columns would: h as
 // stored (the support radius is support_per_h times it; sphkern's own h by default), masses
 // and densities (the volumes m / rho where no volume is given).
-struct PerParticle {
+struct GivenPerParticle {
     py::object h, support_per_h, masses, densities;
 };
 
 // The arguments as the request takes them.
-ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const PerParticle& given, const py::object& eta,
+ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const GivenPerParticle& given, const py::object& eta,
                                const py::object& nh, const py::object& volume, const py::object& gravity)
 {
     if (!given.h.is_none() + !eta.is_none() + !nh.is_none() > 1) fail_input("give one of h, eta and nh");
@@ -122,6 +122,12 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Per
 }
 
 py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
+py::array_t<double> column(const PerParticle& values)
+{
+    py::array_t<double> out(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) out.mutable_at(i) = values[i];
+    return out;
+}
 
 template <std::size_t N>
 py::array_t<double> rows(std::span<const std::array<double, N>> values, std::size_t width)

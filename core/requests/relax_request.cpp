@@ -77,7 +77,7 @@ double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& 
         fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box",
                                set.name));
     check_smoothing_fits(spec, set, sources);
-    return smoothing_lengths(set, kernel, spec, mean_volume(set)).front();
+    return smoothing_lengths(set, kernel, spec, mean_volume(set))[0];
 }
 
 } // namespace sphkern
