@@ -1,7 +1,6 @@
 // Stability against k: the verdict of the Brillouin-zone scan (one scanner, the same at
-// every k whoever asks) at evenly spaced k; between stable (weak) samples whose margins come
-// close enough to zero (the horizon), more k are looked at (a narrow unstable window may hide
-// there), and every change of verdict is bisected to 1e-6 in k.
+// every k whoever asks) at evenly spaced k for the curves; the stable intervals from a cover
+// of k of their own (verdict_cover.hpp), exact to 1e-6 in k whatever the step count.
 #pragma once
 
 #include "analysis/acceptance.hpp"
@@ -14,11 +13,7 @@
 
 namespace sphkern {
 
-// Between two stable samples (two weak ones), midpoints are looked at (down to 1/16 of the
-// spacing) where a margin (the valley floor away from Γ and the long-wave minimum; the lowest
-// omega^2) could reach its threshold (0; -1/horizon^2) changing with k no faster than twice
-// the steepest slope between the samples nearby.
-// Edges between verdicts are bisected to this width in k.
+// Changes of verdict are found to this width in k.
 inline constexpr double stability_k_tolerance = 1e-6;
 
 struct StabilitySample {
@@ -38,12 +33,13 @@ struct StabilityOverK {
     std::string bravais;
     double horizon = default_horizon;
     std::vector<StabilitySample> samples; // the evenly spaced k
-    std::vector<StabilitySample> between; // k looked at between them (margins, edges excluded), ascending
+    std::vector<StabilitySample> between; // the other k the intervals looked at, ascending
     std::vector<KInterval> stable;        // no mode grows
     std::vector<KInterval> usable;        // no mode grows faster than the horizon (stable or weak)
 };
 
-// `steps` + 1 samples over [k_min, k_max]; `grid` the first zone grid per axis (0: default).
+// `steps` + 1 samples over [k_min, k_max] (the curve; the intervals do not depend on it);
+// `grid` the first zone grid per axis (0: default).
 StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
                                 double gamma, int grid, int threads, double horizon = default_horizon,
                                 HModel h_model = HModel::fixed);
