@@ -5,6 +5,7 @@
 
 #include "particles/formats/particle_writers.hpp"
 #include "particles/particles_memory.hpp"
+#include "particles/tiled_set.hpp"
 #include "requests/relax_report.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"
@@ -23,7 +24,7 @@ namespace sphkern::cli {
 namespace {
 
 struct RelaxOptions : CommonOptions, SourceOptions {
-    std::string kernel, method = "pressure", output, history;
+    std::string kernel, method = "pressure", output, history, tile;
     std::vector<std::string> sets;
     std::optional<double> eta, nh, k;
     RelaxSettings settings;
@@ -53,6 +54,7 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout) or .csv");
+    c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
     c.add_option("--history", o.history, "Write the history of the run as CSV");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
@@ -90,15 +92,22 @@ Action add_relax_command(Command app)
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_particle_output_name(o.output);
+        if (!o.tile.empty() && o.output.empty())
+            throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(spec, set, kernel, sources.smoothing);
         if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
+        const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
-        if (!o.output.empty()) write_particle_file(o.output, run.state.set, swift_initial_conditions(kernel, run, o.settings.gamma));
+        if (!o.output.empty()) {
+            const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
+            const ParticleSet& out = o.tile.empty() ? run.state.set : written;
+            write_particle_file(o.output, out, swift_initial_conditions(kernel, out, run, o.settings.gamma));
+        }
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));

@@ -3,6 +3,7 @@
 #include "analysis/code_conventions.hpp"
 #include "particles/formats/swift_kernels.hpp"
 #include "particles/particle_volumes.hpp"
+#include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "support/process/parallel_for.hpp"
 #include "relax/glass_quality.hpp"
@@ -10,6 +11,8 @@
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace sphkern {
 
@@ -62,13 +65,33 @@ RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threa
     return judged;
 }
 
-ParticleOutput swift_initial_conditions(const Kernel& kernel, const RelaxResult& run, double eos_gamma)
+ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run,
+                                        double eos_gamma)
 {
-    const ParticleSet& set = run.state.set;
     const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0, mass = run.state.model.mass;
     const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * run.h;
     if (!(gamma > 0)) return {std::vector<double>(set.size(), run.h), kernel.support(), mass, "", u};
     return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
+}
+
+std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, const ValueSource& source)
+{
+    std::array<int, 3> tiles{1, 1, 1};
+    if (text.empty()) return tiles;
+    const auto counts = parse_number_list(text, source, 1, 3);
+    for (std::size_t a = 0; a < counts.size(); ++a) {
+        if (counts[a] != std::floor(counts[a]) || counts[a] < 1 || counts[a] > 1000)
+            source.fail(fmt::format("{}: expected whole numbers of copies from 1 to 1000", text));
+        tiles[a] = static_cast<int>(counts[a]);
+    }
+    if (static_cast<int>(counts.size()) != set.dimension)
+        throw Error(ExitCode::input, fmt::format("{} {}: {} counts for a set in {} dimensions; expected {}", source.name,
+                                                 text, counts.size(), set.dimension, set.dimension));
+    const double copies = static_cast<double>(tiles[0]) * tiles[1] * tiles[2];
+    if (copies * static_cast<double>(set.size()) > static_cast<double>(max_particles()))
+        throw Error(ExitCode::input, fmt::format("{} {}: {:.0f} particles, more than the memory budget holds ({})",
+                                                 source.name, text, copies * static_cast<double>(set.size()), max_particles()));
+    return tiles;
 }
 
 double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& kernel, const SmoothingSources& sources)

@@ -9,6 +9,7 @@
 #include "requests/relax_report.hpp"
 #include "requests/smoothing_request.hpp"
 
+#include <array>
 #include <cstddef>
 #include <string>
 
@@ -39,7 +40,14 @@ RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threa
 // internal energy of an ideal gas whose sound speed is the relaxation's c = 1,
 // u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal gas has that sound speed).
 // A kernel without SWIFT's gamma is written with sphkern's h and R.
-ParticleOutput swift_initial_conditions(const Kernel& kernel, const RelaxResult& run, double eos_gamma);
+// `written`: the run's set, or copies of it side by side (tiled_set).
+ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
+                                        double eos_gamma);
+
+// Copies of the relaxed set side by side along each edge of its box ("2,2,2"): whole numbers
+// 1 to 1000, as many as the set's dimensions and within the memory budget (else exit 3), and
+// one copy for an empty text.
+std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, const ValueSource& source);
 
 // The one h of a relaxation (fixed-h SPH; a file's own h is not used): the set must have a
 // periodic box and fit the spec (smoothing_spec's).

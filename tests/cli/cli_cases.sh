@@ -870,6 +870,13 @@ expect 2 'expected a name ending in .h5, .hdf5 or .csv' -- relax wendland_c2 poi
 expect 3 'a parallelepiped, not a rectangular box' -- relax wendland_c2 fcc --size 8,8,8 --k 1.2 --output "$work/glass.h5"
 expect 5 'names the same file' -- relax wendland_c2 poisson --count 500 --output "$work/g.csv" --history "$work/g.csv"
 expect 0 '^$' -- relax wendland_c2 poisson --count 3000 --nh 60 --steps 20 --output "$work/glass.h5" --history "$work/history.csv"
+# Copies of the relaxed set side by side: the count and the box read back; bad counts refused.
+expect 0 '^$' -- relax wendland_c2 poisson --count 500 --nh 60 --steps 5 --output "$work/tiled.csv" --tile 2,3,1
+check "--tile 2,3,1 writes six copies in a box 2 x 3 x 1 times the unit box" bash -c "[[ \$(grep -vc '^#' '$work/tiled.csv') == 3001 ]] && grep -q '^# periodic box 2 3 1;' '$work/tiled.csv'"
+expect 2 '^sphkern: error: --tile: 0,1,1: expected whole numbers of copies from 1 to 1000' -- relax wendland_c2 poisson --count 500 --steps 1 --output "$work/t0.csv" --tile 0,1,1
+expect 2 '^sphkern: error: --tile copies the set --output writes; expected --output too' -- relax wendland_c2 poisson --count 500 --steps 1 --tile 2,2,2
+expect 3 '^sphkern: error: --tile 2,2: 2 counts for a set in 3 dimensions; expected 3' -- relax wendland_c2 poisson --count 500 --steps 1 --output "$work/t1.csv" --tile 2,2
+expect 3 'more than the memory budget holds' -- relax wendland_c2 poisson --count 500 --steps 1 --output "$work/t2.csv" --tile 1000,1000,1000
 check "relax --history: the documented columns, one row per step and the start" python3 -c "
 lines = open('$work/history.csv').read().splitlines()
 assert lines[0] == 'step,time,rms_move,max_move,rms_e0,rms_e1,kinetic', lines[0]

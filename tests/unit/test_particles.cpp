@@ -8,6 +8,7 @@
 #include "particles/neighbour_gather.hpp"
 #include "particles/neighbour_grid.hpp"
 #include "particles/particle_analysis.hpp"
+#include "particles/tiled_set.hpp"
 #include "requests/particles_report.hpp"
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
@@ -712,4 +713,50 @@ TEST_CASE("a long thin set gets no more bins than four per point, and every neig
         }
     CHECK(expected > set.size());
     CHECK(found == expected);
+}
+
+TEST_CASE("copies of a periodic set side by side: each copy where its shift puts it, and every particle's sums as in the original")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    for (const int dim : {2, 3}) {
+        CAPTURE(dim);
+        PoissonSpec spec;
+        spec.dimension = dim;
+        spec.count = dim == 2 ? 900 : 2000;
+        spec.box = Eigen::Vector3d(1.5, 1.0, 0.75);
+        auto set = poisson_particles(spec);
+        set.mass.assign(set.size(), 0.5);
+        const std::array<int, 3> tiles = dim == 2 ? std::array<int, 3>{3, 2, 1} : std::array<int, 3>{2, 1, 3};
+        const auto big = tiled_set(set, tiles, 3);
+        const std::size_t n = set.size(), copies = static_cast<std::size_t>(tiles[0] * tiles[1] * tiles[2]);
+        REQUIRE(big.size() == copies * n);
+        for (int a = 0; a < dim; ++a) CHECK(big.box->edges(a, a) == set.box->edges(a, a) * tiles[static_cast<std::size_t>(a)]);
+        // Copy (i0, i1, i2) holds the original moved by i0 edges along x, i1 along y, i2 along z.
+        std::size_t c = 0;
+        for (int i2 = 0; i2 < (dim == 3 ? tiles[2] : 1); ++i2)
+            for (int i1 = 0; i1 < tiles[1]; ++i1)
+                for (int i0 = 0; i0 < tiles[0]; ++i0, ++c)
+                    for (std::size_t i = 0; i < n; i += 97) {
+                        const std::size_t k = c * n + i;
+                        CHECK(big.x[k] == set.x[i] + i0 * spec.box.x());
+                        CHECK(big.y[k] == set.y[i] + i1 * spec.box.y());
+                        CHECK(big.z[k] == (dim == 3 ? set.z[i] + i2 * spec.box.z() : 0.0));
+                        CHECK(big.mass[k] == 0.5);
+                    }
+        // Periodic images are the copies: every copy of a particle has its sums (to rounding).
+        ParticleRequest request;
+        request.smoothing = {SmoothingRule::nh, dim == 2 ? 20.0 : 50.0, 0};
+        request.volume = VolumeModel::uniform;
+        const auto one = analyse_particles(kernel, set, request);
+        const auto all = analyse_particles(kernel, big, request);
+        double worst = 0;
+        for (std::size_t k = 0; k < big.size(); ++k) {
+            worst = std::max(worst, std::abs(all.measures->e0[k] - one.measures->e0[k % n]));
+            CHECK(all.measures->neighbours[k] == one.measures->neighbours[k % n]);
+        }
+        CHECK(worst < 1e-12);
+    }
+    ParticleSet open;
+    open.x = open.y = open.z = ParticleValues(4, 0.0);
+    CHECK_THROWS_AS(tiled_set(open, {2, 2, 2}), Error);
 }
