@@ -61,6 +61,18 @@ void add_options(Command c, RelaxOptions& o)
     add_json_option(c, o);
 }
 
+// --output holds a rectangular box; a lattice block cut from its primitive cell is told how
+// to cut it from a rectangular one.
+void require_box_for_output(const ParticleSet& set, const RelaxOptions& o)
+{
+    try {
+        require_rectangular_box(set, "--output " + o.output);
+    } catch (const Error& e) {
+        if (source_kind(o.source) != SourceKind::lattice || o.cell == "rectangular") throw;
+        throw Error(e.code(), std::string(e.what()) + "; --cell rectangular cuts the block from the lattice's rectangular cell");
+    }
+}
+
 // The run; where it diverges, the steps before it (all finite) still go to --history, and the
 // error says so. The set itself is not written: its positions are what diverged.
 RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o)
@@ -99,7 +111,7 @@ Action add_relax_command(Command app)
         ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(spec, set, kernel, sources.smoothing);
-        if (!o.output.empty()) require_rectangular_box(set, "--output " + o.output);
+        if (!o.output.empty()) require_box_for_output(set, o);
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);

@@ -17,6 +17,7 @@ void add_source_options(Command c, SourceOptions& o)
     c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk)")
         .required();
     c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
+    c.add_option("--cell", o.cell, "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)");
     c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
     c.add_option("--seed", o.seed, "Lattice and poisson: the random seed").capture_default_str();
     c.add_option("--count", o.count, "Poisson: number of particles");
@@ -32,6 +33,11 @@ ParticleSource source_of(const SourceOptions& o)
     source.kind = source_kind(o.source);
     if (source.kind != SourceKind::lattice && !o.size.empty())
         throw Error(ExitCode::usage, "--size cuts a lattice into a block; " + o.source + " is not a lattice");
+    if (source.kind != SourceKind::lattice && !o.cell.empty())
+        throw Error(ExitCode::usage, "--cell is the cell of a lattice block; " + o.source + " is not a lattice");
+    if (!o.cell.empty() && o.cell != "primitive" && o.cell != "rectangular")
+        throw Error(ExitCode::usage, "--cell: \"" + o.cell + "\" is unknown, expected primitive or rectangular");
+    source.block.rectangular = o.cell == "rectangular";
     if (source.kind != SourceKind::poisson && o.count)
         throw Error(ExitCode::usage, "--count is for poisson sets");
     if (source.kind == SourceKind::lattice) {
@@ -82,6 +88,7 @@ nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel)
     nlohmann::json inputs = command_inputs(&kernel, lattice ? &*lattice : nullptr);
     nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
                              {"count", o.count}, {"box", o.box}, {"array", o.array}};
+    if (!o.cell.empty()) source["cell"] = o.cell;
     if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
     inputs["particles"] = source;
     return inputs;

@@ -13,7 +13,7 @@
 namespace sphkern::cli {
 
 struct SourceOptions {
-    std::string source, size, box, array;
+    std::string source, size, box, array, cell;
     double sigma = 0;
     unsigned long long seed = 1, count = 0;
     int dim = 0;

@@ -55,7 +55,7 @@ ParticleSet load_source(const ParticleSource& s, const SourceSources& sources, i
                                    budget, sources.budget.empty() ? "" : " (" + sources.budget + ")"));
     };
     if (s.kind == SourceKind::lattice) {
-        const Lattice lattice = load_lattice(s.spec);
+        const Lattice lattice = block_cell(load_lattice(s.spec), s.block);
         if (s.cell_counts != static_cast<std::size_t>(lattice.dimension))
             throw Error(ExitCode::input, fmt::format("{}: the lattice is {}D, expected {} cell counts", sources.size.name,
                                                      lattice.dimension, lattice.dimension));

@@ -57,7 +57,7 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
     s.json_path = node.path();
     auto& src = s.source;
     if (auto lattice = node.find("lattice")) {
-        node.expect_keys({"lattice", "size", "sigma", "seed", "relax"});
+        node.expect_keys({"lattice", "size", "cell", "sigma", "seed", "relax"});
         src.kind = SourceKind::lattice;
         src.spec = resolve_beside(lattice->string(), study_file, {".json"});
         const auto size = node.at("size");
@@ -70,8 +70,15 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
             cells += std::to_string(src.block.cells[a]);
         }
         if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number();
+        if (auto cell = node.find("cell")) {
+            const std::string name = cell->string();
+            if (name != "primitive" && name != "rectangular")
+                cell->error("\"" + name + "\" is unknown, expected primitive or rectangular");
+            src.block.rectangular = name == "rectangular";
+        }
         src.block.seed = seed_of(node);
-        s.label = fmt::format("{}, {} cells, sigma = {:g} d", lattice->string(), cells, src.block.sigma);
+        s.label = fmt::format("{}, {} {}cells, sigma = {:g} d", lattice->string(), cells,
+                              src.block.rectangular ? "rectangular " : "", src.block.sigma);
     } else if (auto poisson = node.find("poisson")) {
         node.expect_keys({"poisson", "count", "seed", "box", "relax"});
         src.kind = SourceKind::poisson;

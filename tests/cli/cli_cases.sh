@@ -870,6 +870,12 @@ expect 2 'expected a name ending in .h5, .hdf5 or .csv' -- relax wendland_c2 poi
 expect 3 'a parallelepiped, not a rectangular box' -- relax wendland_c2 fcc --size 8,8,8 --k 1.2 --output "$work/glass.h5"
 expect 5 'names the same file' -- relax wendland_c2 poisson --count 500 --output "$work/g.csv" --history "$work/g.csv"
 expect 0 '^$' -- relax wendland_c2 poisson --count 3000 --nh 60 --steps 20 --output "$work/glass.h5" --history "$work/history.csv"
+# A lattice block cut from the lattice's rectangular cell: written where the primitive cell's block is refused.
+expect 3 '; --cell rectangular cuts the block from the lattice.s rectangular cell$' -- relax wendland_c2 fcc --size 8,8,8 --k 1.2 --steps 1 --output "$work/fcc_p.h5"
+expect 0 '^$' -- relax wendland_c2 fcc --size 6,4,3 --cell rectangular --k 1.2 --steps 3 --output "$work/fcc_r.csv"
+check "--cell rectangular: fcc's block of 6 x 4 x 3 rectangular cells holds 432 particles in a rectangular box" bash -c "[[ \$(grep -vc '^#' '$work/fcc_r.csv') == 433 ]]"
+expect 2 '^sphkern: error: --cell: "cubic" is unknown, expected primitive or rectangular' -- particles cubic_bspline fcc --size 6,6,6 --k 1.2 --cell cubic
+expect 2 '^sphkern: error: --cell is the cell of a lattice block; poisson is not a lattice' -- particles cubic_bspline poisson --count 500 --cell rectangular
 # Copies of the relaxed set side by side: the count and the box read back; bad counts refused.
 expect 0 '^$' -- relax wendland_c2 poisson --count 500 --nh 60 --steps 5 --output "$work/tiled.csv" --tile 2,3,1
 check "--tile 2,3,1 writes six copies in a box 2 x 3 x 1 times the unit box" bash -c "[[ \$(grep -vc '^#' '$work/tiled.csv') == 3001 ]] && grep -q '^# periodic box 2 3 1;' '$work/tiled.csv'"
@@ -944,6 +950,8 @@ early_study s_early_surface '"surface": {"volume_coefficient": "voronio"}'
 expect 3 's_early_surface.json: /surface/volume_coefficient: lattice fcc has no volume coefficient "voronio" \(did you mean "voronoi"\?\)' -- run "$work/s_early_surface.json" -o "$work/out_early_surface"
 early_study s_early_size '"particles": {"sources": [{"lattice": "fcc", "size": [4, 4]}], "nh": {"min": 30, "max": 60, "steps": 1}}'
 expect 3 's_early_size.json: /particles/sources/0: size: the lattice is 3D, expected 3 cell counts' -- run "$work/s_early_size.json" -o "$work/out_early_size"
+early_study s_early_cell '"particles": {"sources": [{"lattice": "fcc", "size": [4, 4, 4], "cell": "cubic"}], "nh": {"min": 30, "max": 60, "steps": 1}}'
+expect 3 's_early_cell.json: /particles/sources/0/cell: "cubic" is unknown, expected primitive or rectangular' -- run "$work/s_early_cell.json" -o "$work/out_early_cell"
 printf 'x,y,z\n0,0,0\n0.5,nan,0\n' >"$work/early_nan.csv"
 early_study s_early_file '"particles": {"sources": [{"file": "early_nan.csv"}], "nh": {"min": 30, "max": 60, "steps": 1}}'
 expect 3 'early_nan.csv.*(y|id 1|particle 1)' -- run "$work/s_early_file.json" -o "$work/out_early_file"

@@ -9,6 +9,7 @@
 #include "particles/neighbour_grid.hpp"
 #include "particles/particle_analysis.hpp"
 #include "particles/tiled_set.hpp"
+#include "lattices/rectangular_cell.hpp"
 #include "requests/particles_report.hpp"
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
@@ -759,4 +760,56 @@ TEST_CASE("copies of a periodic set side by side: each copy where its shift puts
     ParticleSet open;
     open.x = open.y = open.z = ParticleValues(4, 0.0);
     CHECK_THROWS_AS(tiled_set(open, {2, 2, 2}), Error);
+}
+
+TEST_CASE("a rectangular cell holds the lattice's own points, and a block cut from it has the lattice's sums at every site")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    for (const std::string name : {"triangular", "square", "fcc", "bcc", "hcp", "sc", "hex_prism"}) {
+        CAPTURE(name);
+        const auto lattice = load_lattice(name);
+        const auto cell = rectangular_cell(lattice);
+        const int dim = lattice.dimension;
+        REQUIRE(cell.motif.size() % lattice.motif.size() == 0);
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                if (a != b) CHECK(cell.basis(a, b) == 0);
+        // As many sites as the rectangle holds primitive cells, each a point of the lattice: the
+        // primitive site it is, by its fractional coordinates.
+        const double cells = std::abs(cell.basis.topLeftCorner(dim, dim).determinant() /
+                                      lattice.basis.topLeftCorner(dim, dim).determinant());
+        CHECK(static_cast<double>(cell.motif.size()) == doctest::Approx(cells * static_cast<double>(lattice.motif.size())));
+        std::vector<std::size_t> primitive_site;
+        for (const auto& s : cell.motif) {
+            const Eigen::Vector3d f = lattice.basis.inverse() * (cell.basis * s);
+            std::size_t found = lattice.motif.size();
+            for (std::size_t j = 0; j < lattice.motif.size(); ++j) {
+                const Eigen::Vector3d n = f - lattice.motif[j];
+                bool whole = true;
+                for (int a = 0; a < dim; ++a) whole = whole && std::abs(n[a] - std::round(n[a])) < 1e-9;
+                if (whole) found = j;
+            }
+            REQUIRE(found < lattice.motif.size());
+            primitive_site.push_back(found);
+        }
+        // Every particle of the rectangular block has the sums of its site on the lattice.
+        const double k = 1.13;
+        LatticeBlockSpec spec;
+        spec.cells = dim == 2 ? std::array<long long, 3>{8, 5, 1} : std::array<long long, 3>{6, 5, 5};
+        spec.rectangular = true;
+        const auto set = lattice_particles(block_cell(lattice, spec), spec);
+        for (int a = 0; a < dim; ++a) CHECK(set.box->edges(a, a) == cell.basis(a, a) * static_cast<double>(spec.cells[static_cast<std::size_t>(a)]));
+        ParticleRequest request;
+        request.smoothing = {SmoothingRule::k, k, 0};
+        const auto answer = analyse_particles(kernel, set, request);
+        const auto sites = errors_per_site(kernel, lattice, every_site(lattice), lattice.volume_coefficient("voronoi"),
+                                           lattice.gravity, k);
+        double worst = 0;
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            const auto values = sites[primitive_site[i % cell.motif.size()]]->at(k);
+            worst = std::max(worst, std::abs(answer.measures->e0[i] - values.eps_rho));
+            REQUIRE(answer.measures->neighbours[i] == values.neighbours);
+        }
+        CHECK(worst < 1e-12);
+    }
 }

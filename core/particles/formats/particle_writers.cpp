@@ -19,7 +19,7 @@ void require_rectangular_box(const ParticleSet& set, const std::string& what)
                        (set.dimension == 3 ? e(2, 0) * e(2, 0) + e(2, 1) * e(2, 1) : 0.0);
     if (off > 1e-24 * e.squaredNorm())
         fail_input(fmt::format("{}: the periodic box is a parallelepiped, not a rectangular box; {} stores three sides "
-                               "(use a lattice whose cell is rectangular, poisson or a file)",
+                               "(a block of a lattice's rectangular cell, poisson or a file with a rectangular box)",
                                set.name, what));
 }
 

@@ -1,5 +1,6 @@
 #include "particles/sources/lattice_particles.hpp"
 
+#include "lattices/rectangular_cell.hpp"
 #include "support/process/block_random.hpp"
 #include "support/process/parallel_for.hpp"
 
@@ -8,6 +9,11 @@
 #include <cmath>
 
 namespace sphkern {
+
+Lattice block_cell(const Lattice& lattice, const LatticeBlockSpec& spec)
+{
+    return spec.rectangular ? rectangular_cell(lattice) : lattice;
+}
 
 ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& spec, int threads)
 {

@@ -20,7 +20,7 @@ ParticleSet load_particles(const ParticleSource& source, int threads)
 {
     threads = worker_threads(threads);
     switch (source.kind) {
-    case SourceKind::lattice: return lattice_particles(load_lattice(source.spec), source.block, threads);
+    case SourceKind::lattice: return lattice_particles(block_cell(load_lattice(source.spec), source.block), source.block, threads);
     case SourceKind::poisson: return poisson_particles(source.poisson, threads);
     case SourceKind::file: break;
     }
