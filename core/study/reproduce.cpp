@@ -1,12 +1,16 @@
 #include "study/reproduce.hpp"
 
+#include "study/results_writer.hpp"
+#include "study/study_runner.hpp"
 #include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace sphkern {
 
@@ -93,6 +97,24 @@ NumberComparison compare_result_numbers(const nlohmann::json& recorded, const nl
         compare_values(recorded.value(section, nlohmann::json()), now.value(section, nlohmann::json()),
                        std::string("/") + section, limit, out);
     return out;
+}
+
+Reproduction reproduce_study(const std::string& file, KernelRegistry& registry)
+{
+    const auto recorded = read_json_file(file);
+    Study study = study_from_results(recorded, file);
+    StudyResults results = run_study(study, registry);
+    for (const auto& line : changed_inputs(recorded.value("inputs", nlohmann::json()), results.inputs))
+        spdlog::warn("{}: {}", file, line);
+    std::ostringstream text;
+    write_study_results_json(text, study, results);
+    const auto comparison = compare_result_numbers(recorded, nlohmann::json::parse(text.str()), 10);
+    if (comparison.differing == 0)
+        return {true, fmt::format("reproduced: all {} numbers of {} agree within a relative 1e-9\n", comparison.compared, file)};
+    std::string out = fmt::format("not reproduced: {} of {} numbers of {} differ; the first:\n", comparison.differing,
+                                  comparison.compared, file);
+    for (const auto& line : comparison.first) out += fmt::format("  {}\n", line);
+    return {false, out};
 }
 
 } // namespace sphkern

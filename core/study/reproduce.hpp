@@ -2,6 +2,7 @@
 // and whether the numbers agree.
 #pragma once
 
+#include "kernels/kernel_registry.hpp"
 #include "study/study.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -28,5 +29,13 @@ struct NumberComparison {
     std::vector<std::string> first;
 };
 NumberComparison compare_result_numbers(const nlohmann::json& recorded, const nlohmann::json& now, std::size_t limit);
+
+// Runs the study a results file records and compares its numbers: whether all agree, and the
+// text that says so (or the first differences). Inputs that changed are logged as warnings.
+struct Reproduction {
+    bool agreed = false;
+    std::string text;
+};
+Reproduction reproduce_study(const std::string& results_file, KernelRegistry& registry);
 
 } // namespace sphkern
