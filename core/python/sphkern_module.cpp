@@ -131,8 +131,8 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     EpsRequest request;
     request.k.assign(k.data(), k.data() + k.size());
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
-    const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"),
-                             argument_sources()};
+    const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
+                             ValueSource::argument("code"), ValueSource::argument("value")};
     check_eps_request(request, sources);
     std::vector<ErrorValues> values;
     {

@@ -1,5 +1,6 @@
 #include "requests/eps_request.hpp"
 
+#include "analysis/code_profiles.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
 
@@ -7,11 +8,18 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sphkern {
 
 void check_eps_request(const EpsRequest& r, const EpsSources& sources)
 {
+    if (r.code) {
+        const auto& profile = code_profile(r.code->code, sources.code);
+        if (profile.parameter == "nngb") check_positive(r.code->value, sources.code_value);
+        else check_number(r.code->value, 0, k_limit, LowEnd::open, sources.code_value);
+        return check_evaluation(r.evaluation, sources.evaluation);
+    }
     if (r.k.empty()) sources.k.fail("an empty array");
     for (double k : r.k) check_k(k, sources.k);
     // Refused as input (exit 3) since the axis is valid, only not here.
@@ -20,6 +28,32 @@ void check_eps_request(const EpsRequest& r, const EpsSources& sources)
                                sources.k.name));
     check_evaluation(r.evaluation, sources.evaluation);
 }
+
+namespace {
+
+// The k of a code's setting at the chosen site: from the lattice's own SPH density where the
+// code solves for h with it.
+double k_of_code(const CodeSetting& setting, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice,
+                 const Evaluation& evaluation, EpsAtK& result)
+{
+    const auto& profile = code_profile(setting.code, sources.code);
+    require_code_kernel(profile, kernel);
+    const int dim = lattice.dimension;
+    const double at_one = code_parameter(profile, kernel, dim, evaluation.a_p, 1, 0);
+    const double rest_k = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dim : 1.0);
+    const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
+    const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
+                                   evaluation.mode);
+    auto eps_rho = [&](double k) { return errors.at(k).eps_rho; };
+    const double k = k_of_code_parameter(profile, kernel, dim, evaluation.a_p, setting.value, k_max, eps_rho,
+                                         sources.code_value);
+    result.code = setting;
+    result.code_parameter = profile.parameter;
+    result.code_value_at_k = code_parameter(profile, kernel, dim, evaluation.a_p, k, eps_rho(k));
+    return k;
+}
+
+} // namespace
 
 EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
@@ -31,10 +65,14 @@ EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel
     result.axis = r.axis;
     result.a_p = evaluation.a_p;
     result.site = evaluation.site;
-    const double given = r.k.at(0);
-    result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
-    // Refused as input (exit 3): the k is the conversion's, not a value given.
-    check_k(result.k, ValueSource::argument("k"), fmt::format(" ({} on the eta axis)", sources.k.about(given)));
+    if (r.code) {
+        result.k = k_of_code(*r.code, sources, kernel, lattice, evaluation, result);
+    } else {
+        const double given = r.k.at(0);
+        result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
+        // Refused as input (exit 3): the k is the conversion's, not a value given.
+        check_k(result.k, ValueSource::argument("k"), fmt::format(" ({} on the eta axis)", sources.k.about(given)));
+    }
     result.eta = eta_of_k(result.k, evaluation.a_p, lattice.dimension);
     result.support_radius = kernel.support() * result.k;
     // Every site: the top-level values describe the chosen one.
@@ -62,10 +100,14 @@ nlohmann::json eps_document(const EpsAtK& r)
     nlohmann::json per_site = nlohmann::json::array();
     for (const auto& s : r.sites) per_site.push_back(site_report_json(s, r.dimension));
     const auto& v = r.chosen();
-    return {{"kernel", r.kernel}, {"lattice", r.lattice}, {"k", r.k}, {"a_p", r.a_p}, {"eta", r.eta},
+    nlohmann::json document = {{"kernel", r.kernel}, {"lattice", r.lattice}, {"k", r.k}, {"a_p", r.a_p}, {"eta", r.eta},
             {"site", r.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp}, {"lateral", v.lateral},
             {"neighbours", v.neighbours}, {"support_radius", r.support_radius}, {"sites", per_site},
             {"worst_site", r.sites[r.worst].site}};
+    if (r.code)
+        document["code"] = {{"name", r.code->code}, {"parameter", r.code_parameter}, {"value", r.code->value},
+                            {"value_at_k", r.code_value_at_k}};
+    return document;
 }
 
 namespace {
@@ -92,8 +134,10 @@ void print_every_site(const EpsAtK& r)
 void print_eps(const EpsAtK& r)
 {
     const auto& v = r.chosen();
-    fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", r.kernel, r.lattice, r.k, r.a_p,
-               r.axis == Axis::eta ? fmt::format(" (eta = {:.10g})", r.eta) : "");
+    const std::string given = r.code ? fmt::format(" ({} {} = {:.10g})", r.code->code, r.code_parameter, r.code->value)
+                              : r.axis == Axis::eta ? fmt::format(" (eta = {:.10g})", r.eta)
+                                                    : "";
+    fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", r.kernel, r.lattice, r.k, r.a_p, given);
     fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
                v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, r.support_radius);
     print_every_site(r);

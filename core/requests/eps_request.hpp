@@ -12,14 +12,22 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace sphkern {
 
+// A code's own setting instead of k (analysis/code_profiles): `swift` with its eta, ...
+struct CodeSetting {
+    std::string code;
+    double value = 0;
+};
+
 struct EpsRequest {
     std::vector<double> k; // on `axis`: the command line gives one, Python an array (flattened)
     Axis axis = Axis::k;   // k or eta; nh names a window, not a value
+    std::optional<CodeSetting> code; // instead of k (the command line's one value)
     EvaluationInputs evaluation;
 };
 
@@ -27,6 +35,7 @@ struct EpsRequest {
 struct EpsSources {
     ValueSource k, axis;
     EvaluationSources evaluation;
+    ValueSource code, code_value; // "--code" and the code's parameter ("--eta")
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.
@@ -39,6 +48,9 @@ struct EpsAtK {
     Axis axis = Axis::k;
     double k = 0, a_p = 0, eta = 0, support_radius = 0; // support_radius: H/d = R k
     int site = 0;                  // the chosen site, checked against the lattice by run_eps_at_k
+    std::optional<CodeSetting> code; // the code's setting given, whose k this is
+    std::string code_parameter;      // its name ("eta")
+    double code_value_at_k = 0;      // the code's parameter recomputed at k (equal to the given to 1e-12)
     std::vector<SiteReport> sites; // every site of the lattice, in order: sites[s].site == s
     std::size_t worst = 0;         // index into sites
     // Bounds-checked: an EpsAtK built by hand with a site it lacks throws, never reads past the end.

@@ -1152,6 +1152,18 @@ check "a stale cached name: wendland_c2 still found once" bash -c "XDG_CACHE_HOM
 check "a stale cached name: wendland_c4 found" bash -c "XDG_CACHE_HOME='$stale' '$sphkern' eps wendland_c4 fcc --k 1.2 >/dev/null"
 check "a stale cached name: the cache names the file by its descriptor again" rename_cached check
 
+# A code's own setting (eps --code): given only with --code, alone, for a kernel the code ships.
+expect 2 '^sphkern: error: --eta is a code.s setting; expected --code too' -- eps wendland_c2 fcc --eta 1.2
+expect 2 '^sphkern: error: --hdx: swift sets its resolution with --eta' -- eps wendland_c2 fcc --code swift --hdx 1.2
+expect 2 '^sphkern: error: give one of --k and --eta' -- eps wendland_c2 fcc --code swift --eta 1.2 --k 1
+expect 2 '^sphkern: error: --code: "swfit" is unknown, expected one of swift, phantom, gadget2, gadget4, pysph, dualsphysics \(did you mean "swift"\?\)' -- eps wendland_c2 fcc --code swfit --eta 1.2
+expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline' -- eps wendland_c2 fcc --code gadget2 --nngb 48
+expect 2 '^sphkern: error: --eta 0: expected a number in \(0, 100\]' -- eps wendland_c2 fcc --code swift --eta 0
+expect 2 '^sphkern: error: --code swift: expected its setting, --eta' -- eps wendland_c2 fcc --code swift
+expect 2 '^sphkern: error: --eta: 0.3: expected more than 0.772083, the eta of a particle with no neighbour inside its support' -- eps wendland_c2 fcc --code swift --eta 0.3
+expect 2 '^sphkern: error: --axis is the scale of --k; --code gives the code.s own setting' -- eps wendland_c2 fcc --code swift --eta 1.2 --axis eta
+expect 0 '^$' -- eps wendland_c2 fcc --code swift --eta 1.2348
+
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1

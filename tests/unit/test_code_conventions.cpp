@@ -2,6 +2,7 @@
 // lists, and each conversion against its definition written out for the sc lattice.
 #include "helpers.hpp"
 #include "analysis/code_conventions.hpp"
+#include "requests/eps_request.hpp"
 #include "stability/recommended_k.hpp"
 #include "support/error.hpp"
 
@@ -63,4 +64,74 @@ TEST_CASE("the recommended k is the centre of the widest overlap, flagged when i
     CHECK(edge.at_window_edge);
     CHECK(recommended_text(edge).find(window_edge_note) != std::string::npos);
     CHECK_FALSE(recommend_k({}, 0.75, 1.25, errors).found);
+}
+
+namespace {
+
+// The SPH density at a site of a lattice by a direct sum over its points (self included),
+// with m = a_p (rho0 = 1) and W(r, h) = w(r / h) / h^D.
+double brute_density(const Kernel& kernel, const Lattice& lattice, double a_p, double h)
+{
+    const int reach = static_cast<int>(kernel.support() * h) + 3, dim = lattice.dimension;
+    double sum = 0;
+    for (int i = -reach; i <= reach; ++i)
+        for (int j = -reach; j <= reach; ++j)
+            for (int l = (dim == 3 ? -reach : 0); l <= (dim == 3 ? reach : 0); ++l)
+                for (const auto& s : lattice.motif) {
+                    const double r = (lattice.basis * (Eigen::Vector3d(i, j, l) + s - lattice.motif[0])).norm();
+                    if (r < kernel.support() * h) sum += kernel.w(r / h, dim, h) / std::pow(h, dim);
+                }
+    return a_p * sum;
+}
+
+} // namespace
+
+TEST_CASE("a code's own setting gives the k at which that code's definition holds, with its own SPH density")
+{
+    const auto lattice = load_lattice("fcc");
+    const double a_p = lattice.volume_coefficient("voronoi"), m = a_p; // rho0 = 1, d = 1
+    struct Case {
+        const char* code;
+        const char* kernel;
+        double value;
+    };
+    const Case cases[] = {{"swift", "wendland_c2", 1.2348}, {"phantom", "wendland_c2", 1.2},
+                          {"gadget2", "cubic_bspline", 48}, {"gadget4", "wendland_c2", 100},
+                          {"pysph", "wendland_c2", 1.2},    {"dualsphysics", "wendland_c2", 1.0}};
+    for (const auto& c : cases) {
+        CAPTURE(c.code);
+        const auto kernel = shipped_kernel(c.kernel);
+        EpsRequest request;
+        request.code = CodeSetting{c.code, c.value};
+        const EpsSources sources{ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
+                                 ValueSource::option("--x")};
+        check_eps_request(request, sources);
+        const double k = run_eps_at_k(request, sources, kernel, lattice).k;
+        // Each definition written out at that k (the support H = 2 k for both kernels).
+        const double H = 2 * k, rho = brute_density(kernel, lattice, a_p, k), dx = std::cbrt(a_p);
+        const std::string code = c.code;
+        double value = 0;
+        if (code == "swift") value = H / std::sqrt(15.0 / 4) / std::cbrt(m / rho); // SWIFT's gamma of Wendland C2 in 3D
+        if (code == "phantom") value = (H / 2) / std::cbrt(m / rho);                 // radkern = 2
+        if (code == "gadget2" || code == "gadget4") value = 4 * M_PI / 3 * H * H * H * rho / m;
+        if (code == "pysph") value = (H / 2) / dx;                                   // radius_scale = 2
+        if (code == "dualsphysics") value = (H / 2) / (std::sqrt(3.0) * dx);         // support 2 h
+        CHECK(value == doctest::Approx(c.value).epsilon(1e-10));
+    }
+    // The density the codes solve with is not rho0: SWIFT's eta 1.2348 with Wendland C2 on fcc is
+    // another k than the one at rest, and its eps_rho fails condition (22).
+    EpsRequest swift;
+    swift.code = CodeSetting{"swift", 1.2348};
+    const auto at = run_eps_at_k(swift, {ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
+                                         ValueSource::option("--eta")},
+                                 shipped_kernel("wendland_c2"), lattice);
+    CHECK(std::abs(at.k - 1.2348 * std::sqrt(15.0 / 4) * std::cbrt(a_p) / 2) > 1e-3);
+    CHECK(std::abs(at.chosen().eps_rho) > 0.01);
+    // A kernel the code does not ship is refused, listing those it does.
+    EpsRequest gadget;
+    gadget.code = CodeSetting{"gadget2", 48};
+    CHECK_THROWS_WITH(run_eps_at_k(gadget, {ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
+                                            ValueSource::option("--nngb")},
+                                   shipped_kernel("wendland_c2"), lattice),
+                      "wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline");
 }

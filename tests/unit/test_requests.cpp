@@ -29,13 +29,15 @@ EvaluationSources option_evaluation(const std::string& shells)
 
 EpsSources eps_options(const std::string& shells = "")
 {
-    return {ValueSource::option("--k"), ValueSource::option("--axis"), option_evaluation(shells)};
+    return {ValueSource::option("--k"), ValueSource::option("--axis"), option_evaluation(shells), {}, {}};
 }
 
 EpsSources eps_arguments()
 {
     return {ValueSource::argument("k"), ValueSource::argument("axis"),
-            {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")}};
+            {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")},
+            {},
+            {}};
 }
 
 EpsRequest eps_at(std::vector<double> k)

@@ -1,0 +1,49 @@
+// The SPH codes' own settings of the resolution, each as its code defines it, on a lattice
+// at rest with particle volume V = a_p d^D (m = rho0 V). Where a code solves for h from the
+// SPH density (SWIFT, Phantom, GADGET), the density is the lattice's own SPH sum,
+// rho = rho0 (1 + eps_rho(k)), not rho0: at the recommended k of cubic/fcc the two differ by
+// about 0.2% in eta. The definitions, with H the support radius (sphkern's R h = R k d):
+//   swift         eta   = h_s / (m / rho)^(1/D),  H = gamma h_s, gamma = R / (2 sigma)
+//   phantom       hfact = h_p / (m / rho)^(1/D),  H = R h_p (its radkern is the kernel's R)
+//   gadget2/4     nngb  = omega_D H^D rho / m,    the weighted neighbour number
+//   pysph         hdx   = h_y / dx,               dx = V^(1/D), H = R h_y
+//   dualsphysics  coefh = h_d / (sqrt(D) dp),     dp = V^(1/D), H = 2 h_d
+// SPlisHSPlasH is left out: it fixes the support at four particle radii and the mass at
+// 0.8 (2 r)^3 rho0, so its one setting, the radius, also sets the volume.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "support/text/value_checks.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+struct CodeProfile {
+    std::string name;                 // "swift"
+    std::string parameter;            // "eta": the option --eta, the argument eta
+    bool from_sph_density = false;    // h solved from the SPH density (else from the rest spacing)
+    std::vector<std::string> kernels; // sphkern's names of the kernels the code ships
+    std::string source;               // where the code states its definition
+};
+const std::vector<CodeProfile>& code_profiles();
+
+// The profile of `name`; an unknown name is refused naming the source and listing the codes.
+const CodeProfile& code_profile(const std::string& name, const ValueSource& source);
+// Refuses (exit 3) a kernel the code does not ship, listing those it does.
+void require_code_kernel(const CodeProfile& profile, const Kernel& kernel);
+
+// The code's parameter at k, the lattice's SPH density at rest being rho0 (1 + eps_rho).
+double code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double k,
+                      double eps_rho);
+
+// The k at which the code's parameter is `value`; eps_rho(k) gives the lattice's density
+// error. Solved to 1e-12 in k where the parameter depends on the density; Error(input)
+// naming `source` where no k up to k_max gives it.
+double k_of_code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p,
+                           double value, double k_max, const std::function<double(double)>& eps_rho,
+                           const ValueSource& source);
+
+} // namespace sphkern
