@@ -20,7 +20,7 @@ struct RootsOptions : CommonOptions {
     bool stability = false;
     double gamma = 5.0 / 3.0, horizon = default_horizon;
     int steps = 100;
-    std::string convention;
+    std::string convention, code;
     std::string h_model = "fixed";
 };
 
@@ -36,6 +36,7 @@ RootsRequest request_from(const RootsOptions& o)
     r.stability = o.stability;
     r.model = {o.gamma, o.horizon, o.steps, parse_h_model(o.h_model, "--h-model")};
     if (!o.convention.empty()) r.convention = &code_convention(o.convention, "--convention");
+    if (!o.code.empty()) r.code = &code_profile(o.code, ValueSource::option("--code"));
     r.evaluation = evaluation_inputs(o.evaluation);
     return r;
 }
@@ -89,6 +90,8 @@ Action add_roots_command(Command app)
     command.add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
                                                              "dualsphysics (coefh), swift (eta), gadget (N_ngb), "
                                                              "splishsplash (H/r_p)");
+    command.add_option("--code", options->code, "Also give every k as an SPH code's own setting, with its own SPH "
+                                                 "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
     command.add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
                                                        "count as stable (weak)").capture_default_str();
     command.add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = eta (m/rho)^(1/D), "

@@ -27,6 +27,26 @@ void check_roots_request(const RootsRequest& r, const RootsSources& sources)
     check_evaluation(r.evaluation, sources.evaluation);
 }
 
+namespace {
+
+// Each k of the answer as the code's setting, with the lattice's density at the chosen site.
+RootsInCode in_code(const CodeProfile& profile, const RootsResult& result, const Kernel& kernel, int dimension,
+                    const HydrostaticErrors& site)
+{
+    require_code_kernel(profile, kernel);
+    auto value = [&](double k) { return code_parameter(profile, kernel, dimension, result.a_p, k, site.at(k).eps_rho); };
+    RootsInCode c;
+    c.best = value(result.analysis.all_along.best_k);
+    for (const auto& i : result.analysis.all_along.intervals) c.accurate.push_back({value(i.from), value(i.to)});
+    if (const auto& r = result.stability.recommended; r.found) {
+        c.recommended = KInterval{value(r.widest.from), value(r.widest.to)};
+        c.recommended_value = value(r.k);
+    }
+    return c;
+}
+
+} // namespace
+
 RootsResult run_roots(const RootsRequest& r, const RootsSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
     const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
@@ -45,6 +65,8 @@ RootsResult run_roots(const RootsRequest& r, const RootsSources& sources, const 
         result.stability = roots_stability(kernel, lattice, result.k_min, result.k_max, r.model,
                                            result.analysis.all_along.intervals,
                                            *sites[static_cast<std::size_t>(evaluation.site)]);
+    if (r.code)
+        result.in_code = in_code(*r.code, result, kernel, lattice.dimension, *sites[static_cast<std::size_t>(evaluation.site)]);
     return result;
 }
 
@@ -57,6 +79,14 @@ nlohmann::json roots_request_document(const RootsRequest& r, const RootsResult& 
     if (r.convention)
         document["convention"] = roots_convention_json(*r.convention, kernel, lattice.dimension, result.a_p,
                                                        result.analysis.all_along, result.stability.recommended);
+    if (const auto& c = result.in_code) {
+        nlohmann::json accurate = nlohmann::json::array();
+        for (const auto& i : c->accurate) accurate.push_back({i.from, i.to});
+        document["code"] = {{"name", r.code->name}, {"parameter", r.code->parameter}, {"best_k", c->best}, {"accurate", accurate}};
+        if (c->recommended)
+            document["code"].update({{"recommended", c->recommended_value},
+                                     {"recommended_interval", {c->recommended->from, c->recommended->to}}});
+    }
     return document;
 }
 
@@ -121,6 +151,20 @@ void print_roots_convention(const RootsRequest& r, const RootsResult& result, co
     fmt::print(results_file(), "{}\n", s);
 }
 
+void print_roots_in_code(const RootsRequest& r, const RootsResult& result)
+{
+    if (!result.in_code) return;
+    const auto& c = *result.in_code;
+    const std::string& p = r.code->parameter;
+    std::string s = fmt::format("in {}'s own setting ({}, with its SPH density): best k of condition (22) {} = {:.6g}",
+                                r.code->name, p, p, c.best);
+    for (const auto& i : c.accurate) s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", p, i.from, i.to);
+    if (c.recommended)
+        s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", p, c.recommended_value, c.recommended->from,
+                         c.recommended->to);
+    fmt::print(results_file(), "{}\n", s);
+}
+
 // Every site but the chosen one, after it.
 void print_other_sites(const RootsAnalysis& analysis, int chosen)
 {
@@ -141,6 +185,7 @@ void print_roots_tail(const RootsRequest& r, const RootsResult& result, const Ke
                    window_edge_note);
     print_roots_stability(r, result.stability);
     print_roots_convention(r, result, kernel, dimension);
+    print_roots_in_code(r, result);
 }
 
 } // namespace

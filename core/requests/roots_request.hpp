@@ -4,6 +4,7 @@
 #pragma once
 
 #include "analysis/code_conventions.hpp"
+#include "analysis/code_profiles.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_roots.hpp"
 #include "kernels/kernel.hpp"
@@ -13,6 +14,9 @@
 #include "support/text/value_checks.hpp"
 
 #include <nlohmann/json_fwd.hpp>
+
+#include <optional>
+#include <vector>
 
 namespace sphkern {
 
@@ -24,6 +28,7 @@ struct RootsRequest {
     bool stability = false;
     RootsStabilityOptions model; // checked whether or not `stability` asks for it
     const CodeConvention* convention = nullptr; // none: k only in sphkern's convention
+    const CodeProfile* code = nullptr;          // a code's own setting beside k, with its own density
     EvaluationInputs evaluation;
 };
 
@@ -37,11 +42,20 @@ struct RootsSources {
 // Every value that does not need the kernel or lattice; an Error naming its source.
 void check_roots_request(const RootsRequest& request, const RootsSources& sources);
 
+// The window's answers in a code's own setting (analysis/code_profiles), at the chosen site.
+struct RootsInCode {
+    double best = 0;                      // the best k of condition (22)
+    std::vector<KInterval> accurate;      // where condition (22) holds
+    std::optional<KInterval> recommended; // the recommended interval, if stability found one
+    double recommended_value = 0;         // at the recommended k
+};
+
 struct RootsResult {
     double a_p = 0;
     double k_min = 0, k_max = 0; // the window in k
     RootsAnalysis analysis;
     RootsStability stability; // empty unless the request asks for it
+    std::optional<RootsInCode> in_code; // with a code
 };
 
 RootsResult run_roots(const RootsRequest& request, const RootsSources& sources, const Kernel& kernel,

@@ -1163,6 +1163,18 @@ expect 2 '^sphkern: error: --code swift: expected its setting, --eta' -- eps wen
 expect 2 '^sphkern: error: --eta: 0.3: expected more than 0.772083, the eta of a particle with no neighbour inside its support' -- eps wendland_c2 fcc --code swift --eta 0.3
 expect 2 '^sphkern: error: --axis is the scale of --k; --code gives the code.s own setting' -- eps wendland_c2 fcc --code swift --eta 1.2 --axis eta
 expect 0 '^$' -- eps wendland_c2 fcc --code swift --eta 1.2348
+# roots --code: the recommended setting, given back to eps --code, is the recommended k.
+roots_code_round_trip() { /usr/bin/python3 -c "
+import json, subprocess, sys
+exe = sys.argv[1]
+r = json.loads(subprocess.run([exe, 'roots', 'cubic_bspline', 'fcc', '--stability', '--code', 'swift', '--json'], capture_output=True, text=True, check=True).stdout)
+doc = r[0] if isinstance(r, list) else r
+eta, k = doc['code']['recommended'], doc['stability']['recommended']['k']
+e = json.loads(subprocess.run([exe, 'eps', 'cubic_bspline', 'fcc', '--code', 'swift', '--eta', repr(eta), '--json'], capture_output=True, text=True, check=True).stdout)
+assert abs(e['k'] - k) < 1e-9, (e['k'], k)
+" "$sphkern"; }
+check "roots --code swift: the recommended eta is the recommended k, through eps --code" roots_code_round_trip
+expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline' -- roots wendland_c2 fcc --code gadget2
 
 # One rule for every command: an option's value outside its range exits 2, naming the option.
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
