@@ -129,6 +129,41 @@ Examples
 True
 )doc";
 
+inline constexpr const char* code_k = R"doc(The k at which an SPH code's own setting holds on a lattice at rest.
+
+As `sphkern eps --code`: SWIFT, Phantom and GADGET solve for h with the SPH density, and so
+does this, with the lattice's own density at the site; PySPH and DualSPHysics set h from
+the rest spacing.
+
+Parameters
+----------
+kernel : str
+    A kernel's name, or a plugin or expression file; the code must ship it.
+lattice : str
+    A lattice's name or file.
+code : str
+    "swift" (eta), "phantom" (hfact), "gadget2" or "gadget4" (the weighted neighbour
+    number), "pysph" (hdx) or "dualsphysics" (coefh).
+value : float
+    The code's setting.
+a_p : str or float, default "voronoi"
+    The volume coefficient: a name the lattice offers or a number.
+site : int, default 0
+    The motif site whose density the code sees.
+params : dict, optional
+    Parameter values of a kernel family.
+
+Returns
+-------
+float
+    k = h / d, sphkern's smoothing coefficient.
+
+Examples
+--------
+>>> round(sphkern.code_k("wendland_c2", "fcc", "swift", 1.2348), 4)
+1.0606
+)doc";
+
 inline constexpr const char* shells = R"doc(The neighbour shells of a lattice site, as `sphkern shells --json`.
 
 Parameters
@@ -232,6 +267,10 @@ h_model : str, default "fixed"
 convention : str, optional
     Add "convention": the answer in a code's convention ("pysph", "dualsphysics",
     "swift", "gadget" or "splishsplash"), as `roots --convention`.
+code : str, optional
+    Add "code": every k of the answer as a code's own setting, with its own SPH density
+    ("swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics"), as
+    `roots --code`.
 
 Returns
 -------
@@ -241,8 +280,8 @@ dict
     (condition (22) along gravity and for every direction: verdict, intervals, best_k,
     best_max_error, epsilon), sites and all_sites (the same per site and over all sites),
     best_k_at_window_edge (and best_k_note when it is), window, k_range, eta_range, axis,
-    a_p, site, lateral_in_verdict, kernel and lattice; "stability" with stability=True and
-    "convention" with a convention.
+    a_p, site, lateral_in_verdict, kernel and lattice; "stability" with stability=True,
+    "convention" with a convention and "code" with a code.
 
 Examples
 --------

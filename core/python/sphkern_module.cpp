@@ -179,7 +179,7 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
 // The roots request from its arguments: the texts as types, the stability model checked with or without `stability`.
 RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis, bool stability,
                            double gamma, int steps, double horizon, const std::string& h_model,
-                           const std::optional<std::string>& convention)
+                           const std::optional<std::string>& convention, const std::optional<std::string>& code)
 {
     RootsRequest r;
     r.window_min = kmin;
@@ -190,6 +190,7 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.stability = stability;
     r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model")};
     if (convention) r.convention = &code_convention(*convention, "convention");
+    if (code) r.code = &code_profile(*code, ValueSource::argument("code"));
     return r;
 }
 
@@ -197,10 +198,11 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
 py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, double kmin, double kmax,
                const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params,
                double epsilon, bool lateral, const std::string& axis, bool stability, double gamma, int steps,
-               double horizon, const std::string& h_model, const std::optional<std::string>& convention)
+               double horizon, const std::string& h_model, const std::optional<std::string>& convention,
+               const std::optional<std::string>& code)
 {
     auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
-                                 convention);
+                                 convention, code);
     RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
                          ValueSource::argument("gamma"), ValueSource::argument("horizon"),
                          ValueSource::argument("steps"), argument_sources()};
@@ -353,6 +355,23 @@ void bind_accuracy(py::module_& m, const Guard& guard)
 {
     m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
           py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), doc::eps, guard);
+    m.def(
+        "code_k",
+        [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& code, double value,
+           const NameOrNumber& a_p, int site, const OptionalParams& params) {
+            auto lattice = load_lattice(lattice_spec);
+            auto kernel = kernel_of(kernel_spec, params);
+            EpsRequest request;
+            request.code = CodeSetting{code, value};
+            request.evaluation = evaluation_of(lattice, a_p, py::none(), site);
+            const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
+                                     ValueSource::argument("code"), ValueSource::argument("value")};
+            check_eps_request(request, sources);
+            py::gil_scoped_release unlocked;
+            return run_eps_at_k(request, sources, kernel, lattice).k;
+        },
+        py::arg("kernel"), py::arg("lattice"), py::arg("code"), py::arg("value"), py::kw_only(),
+        py::arg("a_p") = "voronoi", py::arg("site") = 0, py::arg("params") = py::none(), doc::code_k, guard);
     m.def("shells",
           [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
               auto lattice = load_lattice(lattice_spec);
@@ -376,7 +395,7 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
           py::arg("axis") = "k", py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
           py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
-          doc::roots, guard);
+          py::arg("code") = py::none(), doc::roots, guard);
 }
 
 // Linear stability through the one stability request.

@@ -297,3 +297,16 @@ def test_shells_names_its_arguments():
         sphkern.shells("fcc", 2.0, site=3)
     with pytest.raises(ValueError, match=r"^gravity: 2 components, expected 3 \(one per dimension\)$"):
         sphkern.shells("fcc", 2.0, gravity=[0, 1])
+
+
+def test_a_codes_setting_as_the_command_line_gives_it():
+    # code_k is eps --code's k; roots(code=...) adds the command line's "code" document.
+    for kernel, code, value in [("wendland_c2", "swift", 1.2348), ("cubic_bspline", "gadget2", 48.0),
+                                ("wendland_c2", "pysph", 1.2)]:
+        k = sphkern.code_k(kernel, "fcc", code, value)
+        assert k == cli_json("eps", kernel, "fcc", "--code", code, {"swift": "--eta", "gadget2": "--nngb",
+                                                                    "pysph": "--hdx"}[code], repr(value))["k"]
+    close(sphkern.roots("cubic_bspline", "fcc", stability=True, steps=10, code="swift")["code"],
+          cli_json("roots", "cubic_bspline", "fcc", "--stability", "--steps", "10", "--code", "swift")[0]["code"])
+    with pytest.raises(ValueError, match="gadget2 does not ship it; its kernels are cubic_bspline"):
+        sphkern.code_k("wendland_c2", "fcc", "gadget2", 48)
