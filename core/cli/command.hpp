@@ -83,6 +83,7 @@ Action add_check_command(Command app);
 Action add_lattices_command(Command app);
 Action add_shells_command(Command app);
 Action add_eps_command(Command app);
+Action add_assess_command(Command app);
 Action add_roots_command(Command app);
 Action add_run_command(Command app);
 Action add_surface_command(Command app);

@@ -49,7 +49,7 @@ Commands add_commands(CLI::App& app)
         commands.emplace_back(app.get_subcommands({})[before], std::move(action));
     };
     for (auto* add_command : {cli::add_run_command, cli::add_kernels_command, cli::add_check_command,
-                              cli::add_lattices_command, cli::add_shells_command, cli::add_eps_command,
+                              cli::add_lattices_command, cli::add_shells_command, cli::add_eps_command, cli::add_assess_command,
                               cli::add_roots_command, cli::add_surface_command, cli::add_block_command,
                               cli::add_design_command, cli::add_stability_command, cli::add_spectrum_command,
                               cli::add_particles_command, cli::add_relax_command, cli::add_pairing_command,

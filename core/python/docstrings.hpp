@@ -129,6 +129,58 @@ Examples
 True
 )doc";
 
+inline constexpr const char* assess = R"doc(One verdict on a setting, k or an SPH code's own, on a lattice.
+
+As `sphkern assess`: the errors at every site against condition (22) with the margin, the
+linear verdict for fixed and adaptive h, the recommended setting of a window of k, and one
+line a person can act on.
+
+Parameters
+----------
+kernel : str
+    A kernel's name, or a plugin or expression file.
+lattice : str
+    A lattice's name or file.
+k : float, optional
+    The setting as sphkern's k = h / d; else code and value.
+code : str, optional
+    "swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics".
+value : float, optional
+    The code's own setting (SWIFT's eta, Phantom's hfact, GADGET's weighted neighbour
+    number, PySPH's hdx, DualSPHysics' coefh).
+kmin : float, default 0.75
+    The window of the recommended setting, smallest k.
+kmax : float, default 2.0
+    Its largest k.
+epsilon : float, default 0.01
+    The tolerance of condition (22).
+gamma : float, default 5/3
+    The adiabatic index of the stability analysis.
+horizon : float, default 100
+    The growth time, in d/c, that separates weak instabilities from unstable ones.
+a_p : str or float, default "voronoi"
+    The volume coefficient: a name the lattice offers or a number.
+gravity : sequence of float, optional
+    The direction of gravity; the lattice's by default.
+site : int, default 0
+    The motif site reported first.
+params : dict, optional
+    Parameter values of a kernel family.
+
+Returns
+-------
+dict
+    The document of `assess --json`: eps (as `eps --json`, with code), condition_22
+    (epsilon, holds, margin), stability (per h model: verdict, growth_time and mode where a
+    mode grows), window, recommended (found, k, interval, and code), verdict (the line).
+
+Examples
+--------
+>>> a = sphkern.assess("wendland_c2", "fcc", code="swift", value=1.2348)
+>>> a["condition_22"]["holds"], a["stability"][1]["verdict"]
+(False, 'stable')
+)doc";
+
 inline constexpr const char* code_k = R"doc(The k at which an SPH code's own setting holds on a lattice at rest.
 
 As `sphkern eps --code`: SWIFT, Phantom and GADGET solve for h with the SPH density, and so

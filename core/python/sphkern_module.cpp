@@ -18,6 +18,7 @@
 #include "stability/stability_scan.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
+#include "requests/assess_request.hpp"
 #include "requests/roots_request.hpp"
 #include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
@@ -398,6 +399,44 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("code") = py::none(), doc::roots, guard);
 }
 
+// One verdict on a setting: k, or a code's own (`sphkern assess`).
+void bind_assess(py::module_& m, const Guard& guard)
+{
+    m.def(
+        "assess",
+        [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
+           std::optional<std::string> code, std::optional<double> value, double kmin, double kmax, double epsilon,
+           double gamma, double horizon, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
+           const OptionalParams& params) -> py::dict {
+            AssessRequest request;
+            if (k.has_value() == (code.has_value() || value.has_value()))
+                fail_input("give k, or code and value (a code's own setting)");
+            if (code.has_value() != value.has_value()) fail_input("give code and value together");
+            if (k) request.setting.k = {*k};
+            if (code) request.setting.code = CodeSetting{*code, *value};
+            request.window_min = kmin, request.window_max = kmax;
+            request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon;
+            AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
+                                   ValueSource::argument("code"), ValueSource::argument("value")},
+                                  ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
+                                  ValueSource::argument("gamma"), ValueSource::argument("horizon")};
+            auto lattice = load_lattice(lattice_spec);
+            auto kernel = kernel_of(kernel_spec, params);
+            request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site);
+            check_assess_request(request, sources);
+            nlohmann::json document;
+            {
+                py::gil_scoped_release unlocked;
+                document = assess_document(request, run_assess(request, sources, kernel, lattice));
+            }
+            return to_python(document);
+        },
+        py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
+        py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,
+        py::arg("gamma") = 5.0 / 3.0, py::arg("horizon") = default_horizon, py::arg("a_p") = "voronoi",
+        py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), doc::assess, guard);
+}
+
 // Linear stability through the one stability request.
 void bind_stability(py::module_& m, const Guard& guard)
 {
@@ -468,6 +507,7 @@ PYBIND11_MODULE(sphkern, m)
     bind_catalogues(m, guard);
     bind_accuracy(m, guard);
     bind_roots(m, guard);
+    bind_assess(m, guard);
     bind_stability(m, guard);
     bind_design(m, guard);
     bind_kernel(m, guard);

@@ -1163,6 +1163,11 @@ expect 2 '^sphkern: error: --code swift: expected its setting, --eta' -- eps wen
 expect 2 '^sphkern: error: --eta: 0.3: expected more than 0.772083, the eta of a particle with no neighbour inside its support' -- eps wendland_c2 fcc --code swift --eta 0.3
 expect 2 '^sphkern: error: --axis is the scale of --k; --code gives the code.s own setting' -- eps wendland_c2 fcc --code swift --eta 1.2 --axis eta
 expect 0 '^$' -- eps wendland_c2 fcc --code swift --eta 1.2348
+# assess: one verdict; its setting refused as eps refuses it.
+check "assess ends with one line a person can act on" bash -c "'$sphkern' assess wendland_c2 fcc --code swift --eta 1.2348 | tail -1 | grep -qx 'swift eta 1.2348 with wendland_c2 on fcc: stable, inaccurate (|eps_gradP| 0.0205 > 0.01); recommended eta 1.7 (1.68 to 1.71)'"
+expect 2 '^sphkern: error: --k is required \(or --code and the code.s setting\)' -- assess wendland_c2 fcc
+expect 2 '^sphkern: error: --epsilon: 2: expected a number in \(0, 1\)' -- assess wendland_c2 fcc --k 1.2 --epsilon 2
+expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it' -- assess wendland_c2 fcc --code gadget2 --nngb 48
 # roots --code: the recommended setting, given back to eps --code, is the recommended k.
 roots_code_round_trip() { /usr/bin/python3 -c "
 import json, subprocess, sys

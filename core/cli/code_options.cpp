@@ -1,0 +1,49 @@
+#include "cli/code_options.hpp"
+
+#include "analysis/code_profiles.hpp"
+#include "support/error.hpp"
+
+#include <fmt/format.h>
+
+namespace sphkern::cli {
+
+void add_setting_options(Command c, SettingOptions& o, const std::string& k_help)
+{
+    c.add_option("--k", o.k, k_help);
+    c.add_option("--code", o.code, "Give the resolution as an SPH code sets it: swift, phantom, gadget2, gadget4, "
+                                   "pysph or dualsphysics, with its parameter below");
+    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
+    c.add_option("--hfact", o.hfact, "With --code phantom: Phantom's hfact, h = hfact (m / rho)^(1/D)");
+    c.add_option("--nngb", o.nngb, "With --code gadget2 or gadget4: the weighted neighbour number");
+    c.add_option("--hdx", o.hdx, "With --code pysph: PySPH's hdx, h = hdx dx");
+    c.add_option("--coefh", o.coefh, "With --code dualsphysics: DualSPHysics' coefh, h = coefh sqrt(D) dp");
+}
+
+std::optional<CodeSetting> code_setting(const SettingOptions& o)
+{
+    const std::pair<const char*, const std::optional<double>*> given[] = {
+        {"eta", &o.eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
+    std::optional<CodeSetting> setting;
+    for (const auto& [name, value] : given) {
+        if (!value->has_value()) continue;
+        if (o.code.empty()) throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+        const auto& profile = code_profile(o.code, ValueSource::option("--code"));
+        if (profile.parameter != name)
+            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, profile.parameter));
+        if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and --{}", name));
+        setting = CodeSetting{o.code, **value};
+    }
+    if (!o.code.empty() && !setting)
+        throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code,
+                                                 code_profile(o.code, ValueSource::option("--code")).parameter));
+    if (!setting && !o.k) throw Error(ExitCode::usage, "--k is required (or --code and the code's setting)");
+    return setting;
+}
+
+std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
+{
+    const std::string parameter = o.code.empty() ? "" : code_profile(o.code, ValueSource::option("--code")).parameter;
+    return {ValueSource::option("--code"), ValueSource::option("--" + parameter)};
+}
+
+} // namespace sphkern::cli

@@ -1,0 +1,28 @@
+// A code's own setting on the command line (`eps`, `assess`): --code NAME and that code's
+// parameter by its own name (--eta, --hfact, --nngb, --hdx, --coefh), or --k.
+#pragma once
+
+#include "cli/options.hpp"
+#include "requests/eps_request.hpp"
+
+#include <optional>
+#include <string>
+
+namespace sphkern::cli {
+
+struct SettingOptions {
+    std::optional<double> k;
+    std::string code;
+    std::optional<double> eta, hfact, nngb, hdx, coefh;
+};
+
+// --k (with `k_help`), --code and the codes' parameters.
+void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
+
+// The code's setting: its parameter given only with --code and alone, or none for --k.
+std::optional<CodeSetting> code_setting(const SettingOptions& options);
+
+// "--code" and the code's parameter ("--eta"), for the request's errors.
+std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& options);
+
+} // namespace sphkern::cli

@@ -1,0 +1,73 @@
+// `sphkern assess`: one verdict on a setting, k or an SPH code's own, on a lattice.
+#include "cli/code_options.hpp"
+#include "cli/command.hpp"
+#include "requests/assess_request.hpp"
+
+#include <memory>
+
+namespace sphkern::cli {
+
+namespace {
+
+struct AssessOptions : CommonOptions {
+    std::string kernel, lattice;
+    SettingOptions setting;
+    double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
+    std::vector<std::string> sets;
+    EvaluationOptions evaluation;
+};
+
+AssessRequest request_from(const AssessOptions& o)
+{
+    AssessRequest r;
+    r.setting.code = code_setting(o.setting);
+    if (o.setting.k) r.setting.k = {*o.setting.k};
+    r.setting.evaluation = evaluation_inputs(o.evaluation);
+    r.window_min = o.k_min, r.window_max = o.k_max;
+    r.epsilon = o.epsilon, r.gamma = o.gamma, r.horizon = o.horizon;
+    return r;
+}
+
+AssessSources option_sources(const AssessOptions& o)
+{
+    const auto [code, value] = code_sources(o.setting);
+    return {{ValueSource::option("--k"), ValueSource::option("--axis"), evaluation_sources(o.evaluation), code, value},
+            ValueSource::option("--kmin/--kmax"),
+            ValueSource::option("--epsilon"),
+            ValueSource::option("--gamma"),
+            ValueSource::option("--horizon")};
+}
+
+} // namespace
+
+Action add_assess_command(Command app)
+{
+    Command command = app.add_subcommand("assess", "One verdict on a setting (k, or an SPH code's own) on a lattice: "
+                                                   "accuracy, stability and the recommended setting");
+    auto options = std::make_shared<AssessOptions>();
+    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
+    command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k").capture_default_str();
+    command.add_option("--kmax", options->k_max, "Largest k of the window").capture_default_str();
+    command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
+    command.add_option("--gamma", options->gamma, "Adiabatic index of the stability analysis").capture_default_str();
+    command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
+        .capture_default_str();
+    add_evaluation_options(command, options->evaluation);
+    add_set_option(command, options->sets);
+    add_plugin_option(command, *options);
+    add_json_option(command, *options);
+    return [options] {
+        const auto sources = option_sources(*options);
+        const auto request = request_from(*options);
+        check_assess_request(request, sources);
+        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
+        const auto result = run_assess(request, sources, kernel, lattice);
+        if (options->json) print_json(assess_document(request, result), command_inputs(&kernel, &lattice));
+        else print_assess(request, result);
+        return 0;
+    };
+}
+
+} // namespace sphkern::cli

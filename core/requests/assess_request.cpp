@@ -1,0 +1,145 @@
+#include "requests/assess_request.hpp"
+
+#include "stability/brillouin_zone.hpp"
+#include "stability/dispersion.hpp"
+#include "stability/stability_over_k.hpp"
+#include "support/error.hpp"
+#include "support/io/results_output.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphkern {
+
+namespace {
+
+RootsRequest window_request(const AssessRequest& r, const CodeProfile* code)
+{
+    RootsRequest w;
+    w.window_min = r.window_min;
+    w.window_max = r.window_max;
+    w.epsilon = r.epsilon;
+    w.stability = true;
+    w.model = {r.gamma, r.horizon, 100, HModel::fixed};
+    w.code = code;
+    w.evaluation = r.setting.evaluation;
+    return w;
+}
+
+RootsSources window_sources(const AssessSources& s)
+{
+    return {s.window, s.epsilon, s.gamma, s.horizon, ValueSource::argument("steps"), s.setting.evaluation};
+}
+
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, const AssessRequest& r, HModel h)
+{
+    const auto sample = stability_sample(Dispersion(kernel, lattice, k, r.gamma, h), reciprocal_lattice(lattice), 0, 0,
+                                         r.horizon);
+    AssessStability s{h, sample.verdict, sample.growth_time, ""};
+    if (sample.verdict != Verdict::stable) s.mode = mode_kind_name(sample.mode.kind);
+    return s;
+}
+
+// "SWIFT eta 1.2348" or "k = 1.2".
+std::string setting_text(const AssessResult& a)
+{
+    if (a.at.code) return fmt::format("{} {} {:g}", a.at.code->code, a.at.code_parameter, a.at.code->value);
+    return fmt::format("k = {:g}", a.at.k);
+}
+
+// The verdict of the h model the code runs: SWIFT, Phantom and GADGET set h from the density.
+const AssessStability& own_model(const AssessResult& a)
+{
+    const bool adaptive = a.code && a.code->from_sph_density;
+    return a.stability[adaptive ? 1 : 0];
+}
+
+std::string stability_text(const AssessStability& s)
+{
+    if (s.verdict == Verdict::stable) return "stable";
+    return fmt::format("{} ({} mode growing in {:.3g} d/c)", s.verdict == Verdict::weak ? "weakly unstable" : "unstable",
+                       s.mode, s.growth_time);
+}
+
+std::string accuracy_text(const AssessResult& a, double epsilon)
+{
+    const auto& v = a.at.sites[a.at.worst].values;
+    const bool rho = std::abs(v.eps_rho) >= std::abs(v.eps_gradp);
+    const double worst = rho ? std::abs(v.eps_rho) : std::abs(v.eps_gradp);
+    return fmt::format("{} (|{}| {:.3g} {} {:g})", a.accurate(epsilon) ? "accurate" : "inaccurate",
+                       rho ? "eps_rho" : "eps_gradP", worst, a.accurate(epsilon) ? "<=" : ">", epsilon);
+}
+
+std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
+{
+    const auto& rec = a.window.stability.recommended;
+    if (!rec.found) return fmt::format("no setting of k in [{:g}, {:g}] is both accurate and stable", r.window_min, r.window_max);
+    if (const auto& c = a.window.in_code; c && c->recommended)
+        return fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g})", a.code->parameter, c->recommended_value,
+                           c->recommended->from, c->recommended->to);
+    return fmt::format("recommended k {:.3g} ({:.3g} to {:.3g})", rec.k, rec.widest.from, rec.widest.to);
+}
+
+} // namespace
+
+void check_assess_request(const AssessRequest& r, const AssessSources& sources)
+{
+    check_eps_request(r.setting, sources.setting);
+    check_k_interval(r.window_min, r.window_max, sources.window);
+    if (!std::isfinite(r.epsilon) || r.epsilon <= 0 || r.epsilon >= 1)
+        sources.epsilon.fail(fmt::format("{}: expected a number in (0, 1)", r.epsilon));
+    check_gamma(r.gamma, sources.gamma.name);
+    check_horizon(r.horizon, sources.horizon.name);
+}
+
+AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel, const Lattice& lattice)
+{
+    AssessResult a;
+    if (r.setting.code) a.code = &code_profile(r.setting.code->code, sources.setting.code);
+    a.at = run_eps_at_k(r.setting, sources.setting, kernel, lattice);
+    for (const auto& s : a.at.sites)
+        a.worst = std::max({a.worst, std::abs(s.values.eps_rho), std::abs(s.values.eps_gradp)});
+    for (const HModel h : {HModel::fixed, HModel::adaptive}) a.stability.push_back(stability_at(kernel, lattice, a.at.k, r, h));
+    a.window = run_roots(window_request(r, a.code), window_sources(sources), kernel, lattice);
+    a.verdict = fmt::format("{} with {} on {}: {}, {}; {}", setting_text(a), a.at.kernel, a.at.lattice,
+                            stability_text(own_model(a)), accuracy_text(a, r.epsilon), recommendation_text(a, r));
+    return a;
+}
+
+nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
+{
+    nlohmann::json stability = nlohmann::json::array();
+    for (const auto& s : a.stability) {
+        nlohmann::json one = {{"h_model", h_model_name(s.h_model)}, {"verdict", verdict_name(s.verdict)}};
+        if (s.verdict != Verdict::stable) one.update({{"growth_time", s.growth_time}, {"mode", s.mode}});
+        stability.push_back(one);
+    }
+    const auto& rec = a.window.stability.recommended;
+    nlohmann::json recommended = {{"found", rec.found}};
+    if (rec.found) recommended.update({{"k", rec.k}, {"interval", {rec.widest.from, rec.widest.to}}});
+    if (const auto& c = a.window.in_code; c && c->recommended)
+        recommended["code"] = {{"parameter", a.code->parameter}, {"value", c->recommended_value},
+                               {"interval", {c->recommended->from, c->recommended->to}}};
+    return {{"eps", eps_document(a.at)},
+            {"condition_22", {{"epsilon", r.epsilon}, {"holds", a.accurate(r.epsilon)}, {"margin", r.epsilon - a.worst}}},
+            {"stability", stability},
+            {"window", {r.window_min, r.window_max}},
+            {"recommended", recommended},
+            {"verdict", a.verdict}};
+}
+
+void print_assess(const AssessRequest& r, const AssessResult& a)
+{
+    print_eps(a.at);
+    fmt::print(results_file(), "condition (22), epsilon = {:g}: {} (margin {:.3g}: epsilon less the largest error at any site)\n",
+               r.epsilon, a.accurate(r.epsilon) ? "holds at every site" : "fails", r.epsilon - a.worst);
+    for (const auto& s : a.stability)
+        fmt::print(results_file(), "linear stability, {} h (gamma = {:g}): {}\n", h_model_name(s.h_model), r.gamma,
+                   stability_text(s));
+    fmt::print(results_file(), "{}\n", a.verdict);
+}
+
+} // namespace sphkern

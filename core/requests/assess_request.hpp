@@ -1,0 +1,55 @@
+// One verdict on a setting (`sphkern assess`, Python's sphkern.assess): a k, or an SPH code's
+// own setting, on a lattice: the errors at every site against condition (22) with the
+// margin, the linear verdict for fixed and adaptive h (with the growth time and the kind of
+// the fastest mode where unstable), the recommended setting of a window, and one line a
+// person can act on.
+#pragma once
+
+#include "requests/eps_request.hpp"
+#include "requests/roots_request.hpp"
+#include "stability/h_model.hpp"
+#include "stability/stability_scan.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+struct AssessRequest {
+    EpsRequest setting;                          // one k, or the code's setting
+    double window_min = 0.75, window_max = 2.0;  // in k: where a setting is recommended
+    double epsilon = 0.01;                       // of condition (22)
+    double gamma = 5.0 / 3.0, horizon = default_horizon;
+};
+
+struct AssessSources {
+    EpsSources setting;
+    ValueSource window, epsilon, gamma, horizon;
+};
+
+struct AssessStability {
+    HModel h_model = HModel::fixed;
+    Verdict verdict = Verdict::stable;
+    double growth_time = 0; // d/c, where a mode grows
+    std::string mode;       // its kind ("longitudinal", "transverse", "optical"), where one grows
+};
+
+struct AssessResult {
+    EpsAtK at;                  // k and the errors at every site
+    double worst = 0;           // the largest |eps_rho| or |eps_gradP| over the sites
+    std::vector<AssessStability> stability; // fixed h, then adaptive h
+    RootsResult window;         // condition (22), stability and the recommended k of the window
+    const CodeProfile* code = nullptr;
+    std::string verdict;        // the one line
+    bool accurate(double epsilon) const { return worst <= epsilon; }
+};
+
+void check_assess_request(const AssessRequest& request, const AssessSources& sources);
+AssessResult run_assess(const AssessRequest& request, const AssessSources& sources, const Kernel& kernel,
+                        const Lattice& lattice);
+nlohmann::json assess_document(const AssessRequest& request, const AssessResult& result);
+void print_assess(const AssessRequest& request, const AssessResult& result);
+
+} // namespace sphkern
