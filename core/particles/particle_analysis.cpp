@@ -115,7 +115,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
                                    set.name, *i, h[*i]));
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         require_finite(point, set, answer);
-        const Summary h_range = statistics_detail::moments(h.size(), threads, [&](std::size_t i) { return h[i]; }, [](int, double) {});
+        const Summary h_range = statistics_detail::moments(h.size(), threads, [&](std::size_t i) { return h[i]; });
         point.eta = h_range.mean / unit;
         point.nh = neighbour_number(point.eta, R, dim);
         point.h_min = h_range.min, point.h_max = h_range.max;

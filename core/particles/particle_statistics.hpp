@@ -69,19 +69,18 @@ private:
 
 Summary merge_moments(const std::vector<Moments>& blocks);
 
-// The moments of value(i) over [0, n), block by block; also calls each(thread, v) on every value.
-template <class Value, class Each>
-Summary moments(std::size_t n, int threads, const Value& value, const Each& each)
+// The moments of value(i) over [0, n), block by block.
+template <class Value>
+Summary moments(std::size_t n, int threads, const Value& value)
 {
     std::vector<Moments> blocks((n + particle_block_size - 1) / particle_block_size);
     ParallelFor pass;
-    pass.run_blocks(n, particle_block_size, threads, [&](int thread, std::size_t b, std::size_t begin, std::size_t end) {
+    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
         Moments& m = blocks[b];
         double sum = 0;
         for (std::size_t i = begin; i < end; ++i) {
             const double v = value(i);
             sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
-            each(thread, v);
         }
         m.count = static_cast<double>(end - begin), m.mean = sum / m.count;
         for (std::size_t i = begin; i < end; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
@@ -94,7 +93,7 @@ Summary moments(std::size_t n, int threads, const Value& value, const Each& each
 // Mean, std, RMS and range only (no percentiles) of `values`, the same on any thread count.
 inline Summary summarise_moments(std::span<const double> values, int threads = 1)
 {
-    return statistics_detail::moments(values.size(), threads, [&](std::size_t i) { return values[i]; }, [](int, double) {});
+    return statistics_detail::moments(values.size(), threads, [&](std::size_t i) { return values[i]; });
 }
 
 // The summary of value(i) over i in [0, n) (n > 0) on `threads` threads: std is the population
@@ -105,7 +104,7 @@ template <class Value>
 Summary summarise_values(std::size_t n, int threads, const Value& value)
 {
     using namespace statistics_detail;
-    Summary s = moments(n, threads, value, [](int, double) {});
+    Summary s = moments(n, threads, value);
     const KeyBuckets of(s.min, s.max);
     // A thread counts into its own buckets (allocated and first touched by it): one thread per 65536 values at most.
     const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / buckets + 1));
