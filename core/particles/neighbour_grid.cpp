@@ -195,8 +195,14 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
         }
     });
     row = {};
+    sort_rows(row_start);
+}
+
+// Row by row: the bins along x counted, then each point written from the row's copy to its place.
+void NeighbourGrid::sort_rows(const std::vector<std::uint32_t>& row_start)
+{
+    const std::size_t rows = row_start.size() - 1;
     start_.resize(rows * n_[0] + 1);
-    // Row by row: the bins along x counted, then each point written from the row's copy to its place.
     ParallelFor within_rows;
     within_rows.run(rows, threads_, [&](int, std::size_t first_row, std::size_t last_row) {
         std::vector<std::uint32_t> fill(n_[0] + 1);
@@ -217,7 +223,7 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
             }
         }
     });
-    start_.back() = static_cast<std::uint32_t>(count);
+    start_.back() = row_start.back();
 }
 
 std::vector<double> NeighbourGrid::gather(std::span<const double> per_particle) const

@@ -110,6 +110,7 @@ private:
     struct Unsorted;
     void size_bins(const Unsorted& points, std::size_t count, double reach);
     void sort_into_bins(const Unsorted& points, std::size_t count);
+    void sort_rows(const std::vector<std::uint32_t>& row_start);
 
     int threads_ = 1;
     std::size_t particles_ = 0;
