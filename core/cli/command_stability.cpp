@@ -25,7 +25,7 @@ std::vector<double> parse_wavevector(const std::string& text)
 }
 
 struct StabilityOptions : CommonOptions {
-    std::string kernel, lattice, wavevector, h_model = "fixed";
+    std::string kernel, lattice, wavevector, h_model = "fixed", code;
     double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
     int threads = 0, steps = 50;
     std::optional<int> grid, path;
@@ -65,6 +65,10 @@ StabilityRequest request_from(const StabilityOptions& o)
     r.h_model = parse_h_model(o.h_model, "--h-model");
     r.grid = o.grid;
     r.threads = o.threads;
+    if (!o.code.empty()) {
+        if (!r.k_min) throw Error(ExitCode::usage, "--code gives the stable intervals over k in a code's setting; expected --kmin and --kmax");
+        r.code = &code_profile(o.code, ValueSource::option("--code"));
+    }
     return r;
 }
 
@@ -89,6 +93,8 @@ void add_stability_options(Command command, StabilityOptions& o)
                                                "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
         .capture_default_str();
     command.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
+    command.add_option("--code", o.code, "With --kmin/--kmax: the stable intervals also in an SPH code's own setting, "
+                                         "with its own density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
 }
 
 } // namespace

@@ -50,6 +50,14 @@ void print_over_k(const nlohmann::json& document, const std::string& kernel, con
                h_model_name(options.h_model), intervals(document["stable_intervals"]));
     fmt::print(results_file(), "  no mode grows faster than the horizon ({:g} d/c) for k in{}\n", options.horizon,
                intervals(document["stable_at_horizon"]));
+    if (document.contains("code")) {
+        const auto& c = document["code"];
+        std::string s;
+        for (const auto& i : c["stable_at_horizon"]) s += fmt::format(" [{:.6g}, {:.6g}]", i[0].get<double>(), i[1].get<double>());
+        fmt::print(results_file(), "  in {}'s own setting ({}, with its SPH density): no mode grows faster than the horizon for {} in{}\n",
+                   c["name"].get<std::string>(), c["parameter"].get<std::string>(), c["parameter"].get<std::string>(),
+                   s.empty() ? " none" : s);
+    }
     fmt::print(results_file(), "  {:>10} {:>14} {:>9} {:>12} {}\n", "k", "min omega^2", "verdict", "growth time",
                "mode");
     for (const auto& p : document["samples"]) {

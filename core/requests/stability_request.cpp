@@ -1,5 +1,6 @@
 #include "requests/stability_request.hpp"
 
+#include "analysis/hydrostatic_errors.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/stability_json.hpp"
 #include "support/process/parallel_for.hpp"
@@ -45,6 +46,23 @@ void check_combination(const StabilityRequest& r, const StabilitySources& source
                     fmt::format("{} and {}: give one of them", bare_name(sources.wavevector), sources.path.name));
 }
 
+// The stable intervals in a code's own setting, with the lattice's density at site 0 (its
+// voronoi volume, as the dispersion matrix has it).
+nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, const Lattice& lattice, double k_max,
+                                 const nlohmann::json& document)
+{
+    require_code_kernel(code, kernel);
+    const double a_p = lattice.volume_coefficient("voronoi");
+    const HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max);
+    auto value = [&](double k) { return code_parameter(code, kernel, lattice.dimension, a_p, k, errors.at(k).eps_rho); };
+    nlohmann::json out = {{"name", code.name}, {"parameter", code.parameter}};
+    for (const char* key : {"stable_intervals", "stable_at_horizon"}) {
+        out[key] = nlohmann::json::array();
+        for (const auto& i : document[key]) out[key].push_back({value(i[0].get<double>()), value(i[1].get<double>())});
+    }
+    return out;
+}
+
 } // namespace
 
 void check_stability_request(const StabilityRequest& r, const StabilitySources& sources)
@@ -73,9 +91,12 @@ nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& 
         const auto kappa = checked_wavevector(*r.wavevector, lattice.dimension, sources.wavevector.name);
         return dispersion_document(kernel, lattice, *r.k, r.gamma, kappa, r.h_model);
     }
-    case StabilityMode::over_k:
-        return stability_over_k_document(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid, threads,
-                                         r.horizon, r.h_model);
+    case StabilityMode::over_k: {
+        auto document = stability_over_k_document(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid, threads,
+                                                  r.horizon, r.h_model);
+        if (r.code) document["code"] = intervals_in_code(*r.code, kernel, lattice, *r.k_max, document);
+        return document;
+    }
     case StabilityMode::zone_scan: break;
     }
     return stability_document(kernel, lattice, *r.k, r.gamma, grid, threads, r.horizon, r.h_model);

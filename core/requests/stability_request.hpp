@@ -2,6 +2,7 @@
 // Python's sphkern.stability): validated once, run by one dispatch on its mode.
 #pragma once
 
+#include "analysis/code_profiles.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "stability/h_model.hpp"
@@ -35,6 +36,7 @@ struct StabilityRequest {
     HModel h_model = HModel::fixed;
     std::optional<int> grid; // the first zone grid, 2 to 400; none: the default
     int threads = 0;         // 0: every core
+    const CodeProfile* code = nullptr; // over_k: the intervals in a code's own setting too
 };
 
 // over_k when a k range is given, else wavevector, path or the zone scan.
