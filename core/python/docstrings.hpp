@@ -379,6 +379,10 @@ params : dict of str to float, optional
 h_model : str, default "fixed"
     "fixed" or "adaptive" (h = eta (m / rho)^(1/D) with the grad-h terms; k is the
     equilibrium h = k d in both).
+code : str, optional
+    With kmin and kmax: add "code", the stable intervals in a code's own setting with its
+    own SPH density ("swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics"),
+    as `stability --code`.
 
 Returns
 -------

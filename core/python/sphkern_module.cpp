@@ -290,9 +290,14 @@ std::filesystem::path module_folder()
 // The adapter: the arguments as given (0 grid or path: none); the request checks them and which go together.
 StabilityRequest stability_request(std::optional<double> k, double gamma, const std::optional<std::vector<double>>& wavevector,
                                    std::optional<double> kmin, std::optional<double> kmax, int steps, int grid, int path,
-                                   int threads, double horizon, const std::string& h_model)
+                                   int threads, double horizon, const std::string& h_model,
+                                   const std::optional<std::string>& code)
 {
     StabilityRequest r;
+    if (code) {
+        if (!kmin) fail_input("code gives the stable intervals over k in a code's setting; expected kmin and kmax");
+        r.code = &code_profile(*code, ValueSource::argument("code"));
+    }
     r.h_model = parse_h_model(h_model, "h_model");
     r.k = k;
     r.k_min = kmin;
@@ -444,9 +449,9 @@ void bind_stability(py::module_& m, const Guard& guard)
           [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
              std::optional<std::vector<double>> wavevector, std::optional<double> kmin, std::optional<double> kmax,
              int steps, int grid, int path, int threads, double horizon, const OptionalParams& params,
-             const std::string& h_model) -> py::dict {
+             const std::string& h_model, const std::optional<std::string>& code) -> py::dict {
               const auto request = stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads,
-                                                     horizon, h_model);
+                                                     horizon, h_model, code);
               const StabilitySources sources{ValueSource::argument("k"),       ValueSource::argument("kmin"),
                                              ValueSource::argument("kmax"),    ValueSource::argument("gamma"),
                                              ValueSource::argument("horizon"), ValueSource::argument("wavevector"),
@@ -466,7 +471,7 @@ void bind_stability(py::module_& m, const Guard& guard)
           py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
           py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
           py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
-          py::arg("h_model") = "fixed", doc::stability, guard);
+          py::arg("h_model") = "fixed", py::arg("code") = py::none(), doc::stability, guard);
 }
 
 // Kernel design: where both errors vanish.
