@@ -77,10 +77,11 @@ std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
 {
     const auto& rec = a.window.stability.recommended;
     if (!rec.found) return fmt::format("no setting of k in [{:g}, {:g}] is both accurate and stable", r.window_min, r.window_max);
+    const std::string edge = rec.at_window_edge ? ", at the window's edge: widen it" : "";
     if (const auto& c = a.window.in_code; c && c->recommended)
-        return fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g})", a.code->parameter, c->recommended_value,
-                           c->recommended->from, c->recommended->to);
-    return fmt::format("recommended k {:.3g} ({:.3g} to {:.3g})", rec.k, rec.widest.from, rec.widest.to);
+        return fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g}{})", a.code->parameter, c->recommended_value,
+                           c->recommended->from, c->recommended->to, edge);
+    return fmt::format("recommended k {:.3g} ({:.3g} to {:.3g}{})", rec.k, rec.widest.from, rec.widest.to, edge);
 }
 
 } // namespace
