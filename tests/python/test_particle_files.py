@@ -77,6 +77,33 @@ def write_gadget(path, x, h, m, rho):
         part["Density"] = rho.astype(np.float32)
 
 
+def write_gadget4(path, x, support, m, rho, swift_mark=False):
+    """A snapshot as GADGET-4 writes it (io.cc, snap_io.cc): /Header, /Parameters and /Config
+    (its compile-time options) beside /PartType0, single-precision particle fields."""
+    with h5py.File(path, "w") as f:
+        header = f.create_group("Header")
+        header.attrs["NumPart_ThisFile"] = np.array([N, 0, 0, 0, 0, 0], dtype=np.uint64)
+        header.attrs["NumPart_Total"] = np.array([N, 0, 0, 0, 0, 0], dtype=np.uint64)
+        header.attrs["MassTable"] = np.zeros(6)
+        header.attrs["Time"], header.attrs["Redshift"], header.attrs["BoxSize"] = 0.0, 0.0, L
+        header.attrs["NumFilesPerSnapshot"] = np.int32(1)
+        header.attrs["Git_commit"], header.attrs["Git_date"] = np.bytes_("0123abc"), np.bytes_("2020-01-01")
+        if swift_mark:
+            header.attrs["Code"] = np.bytes_("SWIFT")
+        parameters = f.create_group("Parameters")
+        parameters.attrs["DesNumNgb"], parameters.attrs["BoxSize"] = 64, L
+        config = f.create_group("Config")
+        config.attrs["PERIODIC"], config.attrs["NTYPES"] = 1, 6
+        part = f.create_group("PartType0")
+        part["Coordinates"] = x.astype(np.float32)
+        part["Velocities"] = np.zeros_like(x, dtype=np.float32)
+        part["ParticleIDs"] = np.arange(1, N + 1, dtype=np.uint32)
+        part["Masses"] = m.astype(np.float32)
+        part["Density"] = rho.astype(np.float32)
+        part["SmoothingLength"] = support.astype(np.float32)
+        part["InternalEnergy"] = np.ones(N, dtype=np.float32)
+
+
 def write_pysph(path, x, h, m, rho):
     with h5py.File(path, "w") as f:
         for name, scale in (("fluid", 1.0), ("solid", 0.5)):
@@ -146,6 +173,23 @@ def test_every_format_gives_the_statistics_of_the_csv(tmp_path):
     write_csv(tmp_path / "gadget.csv", f32(x), f32(support), np.full(N, m[0]), f32(rho))
     close(run(str(tmp_path / "gadget.hdf5"), "--support-per-h", "1"),
           run(str(tmp_path / "gadget.csv"), "--support-per-h", "1", *box), 1e-13)
+
+
+def test_a_gadget4_snapshot_is_read_with_its_h_as_the_support(tmp_path):
+    x, h, m, rho = particles()
+    support = GAMMA * h
+    write_gadget4(tmp_path / "gadget4.hdf5", x, support, m, rho)
+    f32 = lambda a: a.astype(np.float32).astype(np.float64)
+    write_csv(tmp_path / "same.csv", f32(x), f32(support), f32(m), f32(rho))
+    box = ["--box", f"{L},{L},{L}"]
+    # No --support-per-h: the file is GADGET's, whose SmoothingLength is the support radius.
+    close(run(str(tmp_path / "gadget4.hdf5")), run(str(tmp_path / "same.csv"), "--support-per-h", "1", *box), 1e-13)
+    # A convention given still rules: the support is then 1.5 times the stored h.
+    close(run(str(tmp_path / "gadget4.hdf5"), "--support-per-h", "1.5"),
+          run(str(tmp_path / "same.csv"), "--support-per-h", "1.5", *box), 1e-13)
+    # A mark of SWIFT's makes it no GADGET file: its h then needs a convention.
+    write_gadget4(tmp_path / "marked.hdf5", x, support, m, rho, swift_mark=True)
+    assert "--support-per-h X" in refused(str(tmp_path / "marked.hdf5"))
 
 
 def test_pysph_arrays_and_conventions_are_asked_for(tmp_path):

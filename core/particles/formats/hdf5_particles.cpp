@@ -238,6 +238,17 @@ struct File {
     }
 };
 
+// GADGET-4 writes /Header, /Parameters and /Config (its compile-time options) beside its
+// particle groups; SWIFT writes no /Config, and /Code, /HydroScheme, /Units and /Header "Code"
+// = "SWIFT", none of which GADGET-4 writes. Initial conditions with neither mark stay unknown.
+bool written_by_gadget(const File& f)
+{
+    if (!f.exists("/Config") || !f.exists("/Parameters")) return false;
+    for (const char* swift : {"/Code", "/HydroScheme", "/Units"})
+        if (f.exists(swift)) return false;
+    return f.text_attribute("/Header", "Code").empty();
+}
+
 ParticleSet read_snapshot(const File& f)
 {
     ParticleSet set;
@@ -284,6 +295,8 @@ ParticleSet read_snapshot(const File& f)
     }
     const auto gamma = f.attribute("/HydroScheme", "Kernel gamma");
     if (!gamma.empty()) set.support_per_h = gamma[0];
+    // GADGET's SmoothingLength is the radius where its kernel reaches zero.
+    if (written_by_gadget(f)) set.support_per_h = 1;
     set.file_kernel = f.text_attribute("/HydroScheme", "Kernel function");
     set.file_kernel_name = sphkern_kernel_of_swift(set.file_kernel);
     return set;
