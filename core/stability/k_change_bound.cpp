@@ -1,7 +1,5 @@
 #include "stability/k_change_bound.hpp"
 
-#include "stability/zone_minimum.hpp"
-
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -26,24 +24,16 @@ OmegaRate from_pair(double low, double high, double eps)
 
 } // namespace
 
-KChangeRates::KChangeRates(const Kernel& kernel, const Lattice& lattice, const ReciprocalLattice& reciprocal, double k,
-                           double gamma, HModel h_model, int grid)
+KChangeRates::KChangeRates(const Kernel& kernel, const Lattice& lattice, const RateGrid& grid, double k, double gamma,
+                           HModel h_model)
     : k_(k), eps_(1e-5 * k), lo_(kernel, lattice, k - eps_, gamma, h_model), hi_(kernel, lattice, k + eps_, gamma, h_model)
 {
-    const int D = lattice.dimension, n = grid > 0 ? grid : zone_start_grid(D);
-    const int per[3] = {n, D > 1 ? n : 1, D > 2 ? n : 1};
-    for (int i = 0; i < per[0]; ++i)
-        for (int j = 0; j < per[1]; ++j)
-            for (int l = 0; l < per[2]; ++l) {
-                const Eigen::Vector3d f(-0.5 + double(i) / n, D > 1 ? -0.5 + double(j) / n : 0,
-                                        D > 2 ? -0.5 + double(l) / n : 0);
-                const Eigen::Vector3d kappa = fold_to_first_zone(reciprocal, reciprocal.vectors * f);
-                if (kappa.norm() < 1e-12) continue;
-                kappa_.push_back(kappa);
-                grid_.push_back(at(kappa));
-                if (lattice.sites() == 1)
-                    long_wave_.push_back(from_pair(long_wave_lowest(lo_, kappa), long_wave_lowest(hi_, kappa), eps_));
-            }
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const Eigen::Vector3d& kappa = grid.kappa(i);
+        grid_.push_back(at(kappa));
+        if (lattice.sites() == 1)
+            long_wave_.push_back(from_pair(long_wave_lowest(lo_, kappa), long_wave_lowest(hi_, kappa), eps_));
+    }
 }
 
 OmegaRate KChangeRates::at(const Eigen::Vector3d& kappa) const

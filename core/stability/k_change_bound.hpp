@@ -1,13 +1,15 @@
 // How fast omega^2 of the lowest branch changes with k, wave vector by wave vector (the method
 // document, "Over k"). At a simple eigenvalue d(omega^2)/dk = xi^H (dM/dk) xi
 // (Hellmann-Feynman), measured by central differences in k (k +- 1e-5 k) on the first zone
-// grid, at any other kappa on demand, and along the same directions for the long-wave limit.
+// grid (one point per orbit, rate_grid.hpp), at any other kappa on demand, and along the same
+// directions for the long-wave limit.
 #pragma once
 
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
+#include "stability/rate_grid.hpp"
 
 #include <Eigen/Core>
 
@@ -27,13 +29,11 @@ struct OmegaRate {
 
 class KChangeRates {
 public:
-    // `grid` points per reciprocal axis (0: the zone scan's first grid).
-    KChangeRates(const Kernel& kernel, const Lattice& lattice, const ReciprocalLattice& reciprocal, double k,
-                 double gamma, HModel h_model, int grid);
+    KChangeRates(const Kernel& kernel, const Lattice& lattice, const RateGrid& grid, double k, double gamma,
+                 HModel h_model);
 
     double k() const { return k_; }
-    std::size_t size() const { return kappa_.size(); } // grid points, Γ left out
-    const Eigen::Vector3d& kappa(std::size_t i) const { return kappa_[i]; }
+    std::size_t size() const { return grid_.size(); } // the grid's orbits
     const OmegaRate& on_grid(std::size_t i) const { return grid_[i]; }
     OmegaRate at(const Eigen::Vector3d& kappa) const;
     // Along the direction of grid point i; one site only (several: empty).
@@ -42,7 +42,6 @@ public:
 private:
     double k_, eps_;
     Dispersion lo_, hi_;
-    std::vector<Eigen::Vector3d> kappa_;
     std::vector<OmegaRate> grid_, long_wave_;
 };
 

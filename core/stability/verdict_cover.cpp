@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace sphkern {
 
@@ -72,8 +73,9 @@ private:
     const KChangeRates& rates(double k)
     {
         if (auto found = rates_.find(k); found != rates_.end()) return found->second;
-        return rates_.try_emplace(k, kernel_, lattice_, reciprocal_, k, model_.gamma, model_.h_model, model_.grid)
-            .first->second;
+        // The grid's orbits are found once, from the spectrum's symmetries at the first k asked.
+        if (!grid_) grid_.emplace(Dispersion(kernel_, lattice_, k, model_.gamma, model_.h_model), reciprocal_, model_.grid);
+        return rates_.try_emplace(k, kernel_, lattice_, *grid_, k, model_.gamma, model_.h_model).first->second;
     }
 
     const Kernel& kernel_;
@@ -82,6 +84,7 @@ private:
     const std::function<StabilitySample(double)>& at_;
     const ReciprocalLattice reciprocal_;
     std::map<double, StabilitySample> seen_;
+    std::optional<RateGrid> grid_;
     std::map<double, KChangeRates> rates_;
     bool certain_ = true;
 };
