@@ -2,8 +2,7 @@
 
 #include "analysis/code_conventions.hpp"
 #include "analysis/resolution_axis.hpp"
-#include "stability/recommended_k.hpp"
-#include "study/particles_outputs.hpp"
+#include "study/report_text.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/io/provenance.hpp"
 
@@ -36,10 +35,6 @@ std::string fixed(double v, int decimals = 5)
     return fmt::format("{:.{}f}", v, decimals);
 }
 
-// The method document: a copy travels with every results folder (method_document_path()),
-// so the link is relative and holds wherever the folder is moved or sent.
-std::string method_document() { return "[method.md](method.md)"; }
-
 // The value of k on the study's axis, for the tables: "" on the k axis (nh is the N_H column).
 std::string on_axis(const Study& study, double k, const StudyCase& c)
 {
@@ -58,17 +53,6 @@ std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& 
 }
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
-
-// "[a, b] [c, d]", or `none` if there is no interval.
-std::string intervals_text(const std::vector<KInterval>& intervals, const std::string& none)
-{
-    if (intervals.empty()) return none;
-    std::string s;
-    for (const auto& i : intervals) s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", i.from, i.to);
-    return s;
-}
-
-std::string intervals_text(const Acceptance& a) { return intervals_text(a.intervals, "-"); }
 
 // The cases grouped by lattice, mode and a_p, in the order they first appear.
 std::vector<std::vector<const StudyCase*>> grouped(const StudyResults& results)
@@ -336,64 +320,6 @@ std::string roots_markdown(const Study& study, const StudyResults& results)
     return s;
 }
 
-std::string surface_markdown(const StudyResults& results)
-{
-    std::string s;
-    if (!results.surface.empty()) {
-        s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
-             "P = 0 there), by lattice sums over the half-space (" + method_document() + " section 6). Each cell: eps_rho / eps_gradP.\n\n";
-        std::size_t columns = 0;
-        for (const auto& c : results.surface) columns = std::max(columns, c.profile.layers.size());
-        std::string current;
-        for (const auto& c : results.surface) {
-            if (c.lattice != current) {
-                current = c.lattice;
-                s += fmt::format("### {} (a_p = {} = {:.6f}, layer spacing {:.4f} d)\n\n| kernel | form | k |", c.lattice,
-                                 c.ap_name, c.a_p, c.profile.spacing);
-                for (std::size_t n = 0; n < columns; ++n) s += fmt::format(" n = {} |", n);
-                s += " bulk |\n|---|---|---|";
-                for (std::size_t n = 0; n <= columns; ++n) s += "---|";
-                s += "\n";
-            }
-            s += fmt::format("| {} | {} | {:.4f} |", c.kernel_label, c.form, c.k);
-            for (std::size_t n = 0; n < columns; ++n)
-                s += n < c.profile.layers.size() ? fmt::format(" {:+.4f} / {:+.4f} |", c.profile.layers[n].eps_rho,
-                                                               c.profile.layers[n].eps_gradp)
-                                                 : std::string(" |");
-            s += fmt::format(" {:+.4f} / {:+.4f} |\n", c.profile.bulk.eps_rho, c.profile.bulk.eps_gradp);
-        }
-        s += "\n";
-    }
-
-    return s;
-}
-
-std::string sweeps_markdown(const StudyResults& results)
-{
-    std::string s;
-    if (!results.sweeps.empty()) {
-        s += "## Kernel design: parameter sweeps\n\nFor each swept parameter, the (k, parameter) where eps_rho and "
-             "eps_gradP vanish together (sphkern design), with the designed kernel's condition (22) intervals; "
-             "the maps in the figures show both errors over (k, parameter) with both zero contours.\n\n"
-             "| lattice | kernel | a_p | k | parameter | cond(J) | dk, dparameter for a_p + 1% | W >= 0 | k where (22) holds |\n"
-             "|---|---|---|---|---|---|---|---|---|\n";
-        for (const auto& c : results.sweeps) {
-            if (c.design.solutions.empty())
-                s += fmt::format("| {} | {} | {} | - | - | | | | {} |\n", c.lattice, c.kernel, c.ap_name, c.design.note);
-            for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
-                const auto& d = c.design.solutions[i];
-                s += fmt::format("| {} | {} | {} | {:.6f} | {} = {:.6f} | {:.3g} | {:+.2e}, {:+.2e} | {} | {} |\n",
-                                 c.lattice, c.kernel, c.ap_name, d.k, c.parameter, d.parameter, d.jacobian_condition,
-                                 d.k_shift, d.parameter_shift, d.non_negative ? "yes" : "no",
-                                 intervals_text(c.designed_acceptance[i]));
-            }
-        }
-        s += "\n";
-    }
-
-    return s;
-}
-
 std::string figures_markdown(const std::vector<std::string>& figures)
 {
     std::string s;
@@ -410,69 +336,13 @@ std::string figures_markdown(const std::vector<std::string>& figures)
     return s;
 }
 
-// One recommended k per kernel, lattice and a_p, and the same resolution in other codes' conventions.
-std::string recommended_markdown(const StudyResults& results)
+// Each optional section's part, in the table's order.
+std::string sections_markdown(const Study& study, const StudyResults& results)
 {
-    std::string s = "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
-                    "faster than the horizon, with its margin in k and N_H, and the same resolution in the conventions of "
-                    "other codes (" + method_document() + " section 10).\n\n| lattice | kernel | a_p | k | N_H |";
-    for (const auto& c : code_conventions()) s += fmt::format(" {} {} |", c.name, c.quantity);
-    s += "\n|---|---|---|---|---|";
-    for (std::size_t i = 0; i < code_conventions().size(); ++i) s += "---|";
-    s += "\n";
-    for (const auto& c : results.stability)
-        for (const auto& o : c.overlap) {
-            const auto& r = o.recommended;
-            if (!r.found) {
-                s += fmt::format("| {} | {} | {} | none: no k is both accurate and stable | |", c.lattice,
-                                 c.kernel_label, o.ap_name);
-                for (std::size_t i = 0; i < code_conventions().size(); ++i) s += " |";
-                s += "\n";
-                continue;
-            }
-            s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
-                             r.k, r.margin, r.at_window_edge ? fmt::format(" ({})", window_edge_note) : "",
-                             r.neighbours, r.neighbours_from, r.neighbours_to);
-            for (double v : o.in_conventions) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " not defined |";
-            s += "\n";
-        }
-    return s + "\n";
-}
-
-std::string stability_markdown(const StudyResults& results)
-{
-    if (results.stability.empty()) return {};
-    std::string s = fmt::format(
-        "## Linear stability\n\nThe lattice at rest is stable at k when no plane wave grows: omega^2 >= -1e-9 (c/d)^2 "
-        "over the whole Brillouin zone and omega^2 / kappa^2 >= -1e-9 c^2 for long waves in every direction "
-        "(standard SPH, summation density, {} h, P = rho c^2 / gamma with gamma = {:.6g}; {} section 10; "
-        "with adaptive h, h = eta (m/rho)^(1/D) with the grad-h terms, and k is its value h = k d at rest). "
-        "A mode that grows more slowly than the horizon ({:g} d/c: growth time 1 / sqrt(-omega^2)) is weak: such k are "
-        "not in the stable k, but count as stable where they meet condition (22). "
-        "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        results.stability.front().h_model, results.stability.front().gamma, method_document(),
-        results.stability.front().over_k.horizon);
-    std::string lattice;
-    for (const auto& c : results.stability) {
-        if (c.lattice != lattice) {
-            s += lattice.empty() ? "" : "\n";
-            lattice = c.lattice;
-            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
-                             "|---|---|---|---|---|\n", lattice);
-        }
-        if (c.refused) {
-            s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, *c.refused);
-            continue;
-        }
-        std::string both;
-        for (const auto& o : c.overlap)
-            both += fmt::format("{}{}: {}", both.empty() ? "" : "; ", o.ap_name,
-                                intervals_text(o.both, o.accurate.empty() ? "none (condition (22) fails)"
-                                                                          : "none: every accurate k is unstable"));
-        s += fmt::format("| {} | [{:.4f}, {:.4f}] | {} | {} | {:.4f} |\n", c.kernel_label, c.over_k.samples.front().k,
-                         c.over_k.samples.back().k, intervals_text(c.over_k.stable, "none"), both, c.path_k);
-    }
-    return s + "\n" + recommended_markdown(results);
+    std::string s;
+    for (const auto& section : results.sections)
+        if (section) s += section->markdown(study);
+    return s;
 }
 
 // The terms the tables use, in the report itself so that it reads on its own.
@@ -506,8 +376,7 @@ std::string glossary_markdown()
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
 {
     return header_markdown(study, results.inputs) + glossary_markdown() + replication_markdown(results) + explanations_markdown(results) +
-           roots_markdown(study, results) + verdicts_markdown(study, results) + surface_markdown(results) +
-           sweeps_markdown(results) + stability_markdown(results) + particles_markdown(results) +
+           roots_markdown(study, results) + verdicts_markdown(study, results) + sections_markdown(study, results) +
            figures_markdown(figures);
 }
 

@@ -1,6 +1,7 @@
 #include "study/reproduce.hpp"
 
 #include "study/results_writer.hpp"
+#include "study/sections/section_table.hpp"
 #include "study/study_runner.hpp"
 #include "support/io/json_input.hpp"
 
@@ -93,9 +94,10 @@ std::vector<std::string> changed_inputs(const nlohmann::json& recorded, const nl
 NumberComparison compare_result_numbers(const nlohmann::json& recorded, const nlohmann::json& now, std::size_t limit)
 {
     NumberComparison out;
-    for (const char* section : {"cases", "comparison", "surface", "sweeps", "stability"})
-        compare_values(recorded.value(section, nlohmann::json()), now.value(section, nlohmann::json()),
-                       std::string("/") + section, limit, out);
+    std::vector<std::string> parts = {"cases", "comparison"};
+    for (const auto& kind : section_table()) parts.push_back(kind.key);
+    for (const auto& part : parts)
+        compare_values(recorded.value(part, nlohmann::json()), now.value(part, nlohmann::json()), "/" + part, limit, out);
     return out;
 }
 

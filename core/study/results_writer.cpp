@@ -1,9 +1,7 @@
 #include "study/results_writer.hpp"
 
-#include "analysis/code_conventions.hpp"
 #include "analysis/results_json.hpp"
-#include "stability/stability_json.hpp"
-#include "study/particles_outputs.hpp"
+#include "study/sections/section_table.hpp"
 #include "support/io/chunked_writer.hpp"
 #include "support/io/provenance.hpp"
 
@@ -20,41 +18,6 @@ nlohmann::json per_site_json(const StudyCase& c, double epsilon)
     nlohmann::json list = nlohmann::json::array();
     for (const auto& p : c.per_site) list.push_back(site_roots_json(p, epsilon));
     return list;
-}
-
-nlohmann::json stability_json(const StabilityCase& c)
-{
-    nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma},
-                            {"h_model", c.h_model}};
-    if (c.refused) {
-        entry["refused"] = *c.refused;
-        return entry;
-    }
-    nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
-                   verdicts = nlohmann::json::array(), growth = nlohmann::json::array(), kinds = nlohmann::json::array(),
-                   overlap = nlohmann::json::array();
-    for (const auto& s : c.over_k.samples) {
-        ks.push_back(s.k);
-        minima.push_back(s.branch_minima);
-        stable.push_back(s.stable);
-        verdicts.push_back(verdict_name(s.verdict));
-        const bool grows = std::isfinite(s.growth_time);
-        growth.push_back(grows ? nlohmann::json(s.growth_time) : nlohmann::json());
-        kinds.push_back(grows ? nlohmann::json(mode_kind_name(s.mode.kind)) : nlohmann::json());
-    }
-    for (const auto& o : c.overlap) {
-        auto recommended = recommended_json(o.recommended);
-        for (std::size_t i = 0; i < o.in_conventions.size(); ++i) // a convention undefined for the kernel is left out
-            if (std::isfinite(o.in_conventions[i])) recommended["conventions"][code_conventions()[i].name] = o.in_conventions[i];
-        overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
-                           {"accurate_and_stable", intervals_json(o.both)}, {"recommended", recommended}});
-    }
-    entry.update({{"bravais", c.over_k.bravais}, {"k", ks}, {"branch_minima", minima}, {"stable", stable},
-                  {"horizon", c.over_k.horizon}, {"verdict", verdicts}, {"growth_time", growth}, {"mode", kinds},
-                  {"stable_intervals", intervals_json(c.over_k.stable)},
-                  {"stable_at_horizon", intervals_json(c.over_k.usable)}, {"overlap", overlap},
-                  {"dispersion", {{"k", c.path_k}, {"path", dispersion_path_json(c.path)}}}});
-    return entry;
 }
 
 nlohmann::json explanations_json(const StudyCase& c)
@@ -126,37 +89,6 @@ nlohmann::json comparison_json(const StudyResults& results)
     return comparison;
 }
 
-nlohmann::json surface_results_json(const StudyResults& results)
-{
-    nlohmann::json surface = nlohmann::json::array();
-    for (const auto& c : results.surface) {
-        auto entry = surface_json(c.profile);
-        entry.update({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
-                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k}});
-        surface.push_back(entry);
-    }
-    return surface;
-}
-
-nlohmann::json sweeps_json(const StudyResults& results, double epsilon)
-{
-    nlohmann::json sweeps = nlohmann::json::array();
-    for (const auto& c : results.sweeps) {
-        nlohmann::json solutions = nlohmann::json::array();
-        for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
-            const auto& s = c.design.solutions[i];
-            solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
-                                 {"eps_gradp", s.values.eps_gradp}, {"jacobian_condition", s.jacobian_condition},
-                                 {"non_negative", s.non_negative},
-                                 {"acceptance", acceptance_json(c.designed_acceptance[i], epsilon)}});
-        }
-        sweeps.push_back({{"lattice", c.lattice}, {"kernel", c.kernel}, {"parameter", c.parameter},
-                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
-                          {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
-    }
-    return sweeps;
-}
-
 } // namespace
 
 // Streamed: every part but the curves is a small JSON value; the curves, most of the
@@ -173,11 +105,13 @@ void write_study_results_json(std::ostream& out, const Study& study, const Study
         w.text(case_head(results.cases[i], study.epsilon));
         write_curve(w, results.cases[i]);
     }
-    nlohmann::json stability = nlohmann::json::array();
-    for (const auto& c : results.stability) stability.push_back(stability_json(c));
-    w.print("\n ],\n \"comparison\": {},\n \"surface\": {},\n \"sweeps\": {},\n \"stability\": {},\n \"particles\": {}\n}}\n",
-            comparison_json(results).dump(1), surface_results_json(results).dump(1), sweeps_json(results, study.epsilon).dump(1),
-            stability.dump(1), particles_results_json(results).dump(1));
+    w.print("\n ],\n \"comparison\": {}", comparison_json(results).dump(1));
+    for (std::size_t i = 0; i < section_table().size(); ++i) { // a section the study has not: an empty list
+        const auto& section = results.sections[i];
+        w.print(",\n \"{}\": {}", section_table()[i].key,
+                (section ? section->json(study) : nlohmann::json::array()).dump(1));
+    }
+    w.text("\n}\n");
 }
 
 } // namespace sphkern

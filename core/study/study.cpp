@@ -3,8 +3,7 @@
 #include "study/study_error.hpp"
 #include "support/text/printable_text.hpp"
 
-#include "analysis/surface_profile.hpp"
-#include "stability/stability_budget.hpp"
+#include "study/sections/section_table.hpp"
 #include "support/error.hpp"
 #include "support/io/file_spec.hpp"
 #include "support/io/install_paths.hpp"
@@ -56,17 +55,46 @@ std::optional<double> parse_radius(const nlohmann::json& value)
     return r > 0 && r < 1e3 ? std::optional(r) : std::nullopt;
 }
 
-namespace {
-
-const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
-
-std::vector<std::string> string_list(const JsonNode& node)
+std::vector<std::string> read_string_list(const JsonNode& node)
 {
     node.expect_array(1, 1000);
     std::vector<std::string> items;
     for (std::size_t i = 0; i < node.size(); ++i) items.push_back(node[i].string());
     return items;
 }
+
+std::map<std::string, double> read_parameter_values(const JsonNode& set)
+{
+    set.expect_object();
+    std::map<std::string, double> values;
+    for (const auto& [name, unused] : set.value().items()) values[name] = set.at(name).number();
+    return values;
+}
+
+StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item)
+{
+    StudyVolumeCoefficient ap;
+    if (item.is_number()) {
+        ap.name = item.value().dump();
+        ap.value = item.number();
+    } else {
+        ap.name = item.string();
+        char* end = nullptr;
+        const double v = std::strtod(ap.name.c_str(), &end);
+        if (*end == '\0') ap.value = v;
+    }
+    if (ap.value && !(*ap.value > 0 && *ap.value <= 1e6)) item.error("expected a positive volume coefficient up to 1e6");
+    return ap;
+}
+
+std::optional<double> read_k_or_best(const JsonNode& node)
+{
+    if (!node.is_string()) return node.number_in(1e-3, 100);
+    if (node.string() != "best") node.error("expected a number or \"best\"");
+    return std::nullopt;
+}
+
+namespace {
 
 // A name of [a-z0-9_-]: a study's or a mode's.
 std::string read_name(const JsonNode& node)
@@ -109,21 +137,12 @@ StudyMode read_mode(const JsonNode& node)
     if (auto shells = node.find("shells")) mode.shells_by_support = read_shells(*shells);
     if (auto c = node.find("continue_past_support")) {
         if (c->is_boolean()) mode.continue_all = c->boolean();
-        else if (c->is_array()) mode.continue_kernels = string_list(*c);
+        else if (c->is_array()) mode.continue_kernels = read_string_list(*c);
         else c->error("expected true, false or an array of kernel names, got " + json_type_name(c->value()));
         if ((mode.continue_all || !mode.continue_kernels.empty()) && mode.shells_by_support.empty())
             c->error("continuing past the support needs explicit \"shells\" in the same mode");
     }
     return mode;
-}
-
-// "set": {"parameter": value, ...}
-std::map<std::string, double> parameter_values(const JsonNode& set)
-{
-    set.expect_object();
-    std::map<std::string, double> values;
-    for (const auto& [name, unused] : set.value().items()) values[name] = set.at(name).number();
-    return values;
 }
 
 StudyKernel read_kernel(const JsonNode& item, const fs::path& file)
@@ -135,99 +154,13 @@ StudyKernel read_kernel(const JsonNode& item, const fs::path& file)
     } else if (item.is_object()) {
         item.expect_keys({"kernel", "set"});
         k.spec = item.at("kernel").string();
-        if (auto set = item.find("set")) k.parameters = parameter_values(*set);
+        if (auto set = item.find("set")) k.parameters = read_parameter_values(*set);
     } else {
         item.error("expected a kernel name, a plugin file or {\"kernel\": ..., \"set\": {...}}, got " +
                    json_type_name(item.value()));
     }
     k.spec = resolve_beside(k.spec, file, kernel_file_extensions);
     return k;
-}
-
-// A k given as a number, or "best" (empty): each kernel's best k of condition (22).
-std::optional<double> k_or_best(const JsonNode& node)
-{
-    if (!node.is_string()) return node.number_in(1e-3, 100);
-    if (node.string() != "best") node.error("expected a number or \"best\"");
-    return std::nullopt;
-}
-
-StudySweep read_sweep(const JsonNode& node, const fs::path& file)
-{
-    node.expect_keys({"kernel", "set", "parameter", "range", "samples"});
-    StudySweep sweep;
-    sweep.json_path = node.path();
-    sweep.kernel = resolve_beside(node.at("kernel").string(), file, kernel_file_extensions);
-    if (auto set = node.find("set")) sweep.parameters = parameter_values(*set);
-    sweep.parameter = node.at("parameter").string();
-    auto range = node.at("range");
-    range.expect_array(2, 2);
-    sweep.min = range[0].number();
-    sweep.max = range[1].number();
-    if (!(sweep.min < sweep.max)) range.error("expected [min, max] with min < max");
-    if (auto n = node.find("samples")) sweep.samples = static_cast<int>(n->integer_in(3, 1000));
-    return sweep;
-}
-
-// A volume coefficient: a name, or a number (given as a number or as text).
-StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item)
-{
-    StudyVolumeCoefficient ap;
-    if (item.is_number()) {
-        ap.name = item.value().dump();
-        ap.value = item.number();
-    } else {
-        ap.name = item.string();
-        char* end = nullptr;
-        const double v = std::strtod(ap.name.c_str(), &end);
-        if (*end == '\0') ap.value = v;
-    }
-    if (ap.value && !(*ap.value > 0 && *ap.value <= 1e6)) item.error("expected a positive volume coefficient up to 1e6");
-    return ap;
-}
-
-StudySurface read_surface(const JsonNode& node)
-{
-    node.expect_keys({"k", "layers", "forms", "volume_coefficient"});
-    StudySurface surface;
-    if (auto k = node.find("k")) surface.k = k_or_best(*k);
-    if (auto layers = node.find("layers")) surface.layers = static_cast<int>(layers->integer_in(1, 1000));
-    if (auto forms = node.find("forms")) {
-        const auto names = string_list(*forms);
-        surface.forms.clear();
-        for (std::size_t i = 0; i < names.size(); ++i) {
-            const auto item = (*forms)[i];
-            surface.forms.push_back(at_study_path(item.file(), item.path(), [&] { return parse_gradient_form(names[i]); }));
-        }
-    }
-    if (auto ap = node.find("volume_coefficient")) surface.volume_coefficient = read_volume_coefficient(*ap);
-    return surface;
-}
-
-StudyStability read_stability(const JsonNode& node)
-{
-    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points", "horizon", "h_model"});
-    StudyStability stability;
-    if (auto gamma = node.find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
-    if (auto k = node.find("k")) {
-        k->expect_keys({"min", "max", "steps"});
-        if (k->find("min") || k->find("max")) {
-            stability.k_min = k->at("min").number_in(1e-3, 100);
-            stability.k_max = k->at("max").number_in(1e-3, 100);
-            if (*stability.k_min >= *stability.k_max) k->at("max").error("expected max > min");
-        }
-        if (auto steps = k->find("steps")) stability.steps = static_cast<int>(steps->integer_in(1, 2000));
-    }
-    if (auto grid = node.find("grid")) stability.grid = static_cast<int>(grid->integer_in(2, 200));
-    if (auto k = node.find("dispersion_k")) stability.path_k = k_or_best(*k);
-    if (auto points = node.find("path_points")) stability.path_points = static_cast<int>(points->integer_in(10, 5000));
-    if (auto horizon = node.find("horizon")) stability.horizon = horizon->number_in(1e-6, 1e12);
-    if (auto model = node.find("h_model")) {
-        const std::string name = model->text();
-        if (name != "fixed" && name != "adaptive") model->error("expected \"fixed\" or \"adaptive\"");
-        stability.h_model = parse_h_model(name, "h_model");
-    }
-    return stability;
 }
 
 } // namespace
@@ -248,28 +181,8 @@ void check_study_budget(const Study& study, const JsonNode& root)
     if (cases * study.samples > max_study_curve_points)
         refuse("kernels x lattices x volume_coefficients x modes x k samples", cases * study.samples,
                max_study_curve_points);
-    double sweep_points = 0;
-    for (const auto& s : study.sweeps)
-        sweep_points += double(study.lattices.size()) * s.samples * std::min(study.samples, 201);
-    if (sweep_points > max_study_sweep_points)
-        refuse("lattices x sweep samples x k samples, over all sweeps", sweep_points, max_study_sweep_points);
-    if (study.surface) {
-        double layers = double(study.kernels.size()) * double(study.lattices.size()) *
-                        double(study.surface->forms.size()) * study.surface->layers;
-        if (layers > max_study_surface_layers)
-            refuse("kernels x lattices x surface forms x layers", layers, max_study_surface_layers);
-    }
-    if (study.stability) {
-        const double points = double(study.kernels.size()) * double(study.lattices.size()) *
-                              stability_wave_vectors(study.stability->steps, study.stability->grid, 0);
-        if (points > max_study_stability_points)
-            refuse("kernels x lattices x stability k samples x wave vectors", points, max_study_stability_points);
-    }
-    if (study.particles) {
-        const double evaluations = double(study.kernels.size()) * study_particle_evaluations(*study.particles);
-        if (evaluations > max_study_particle_evaluations)
-            refuse("kernels x particles x N_H values, over all particle sources", evaluations, max_study_particle_evaluations);
-    }
+    for (const auto& section : study.sections)
+        if (section) section->check_budget(study, root);
 }
 
 } // namespace
@@ -346,22 +259,28 @@ void read_cases(const JsonNode& root, const fs::path& file, Study& study)
     auto kernels = root.at("kernels");
     kernels.expect_array(1, 1000);
     for (std::size_t i = 0; i < kernels.size(); ++i) study.kernels.push_back(read_kernel(kernels[i], file));
-    study.lattices = string_list(root.at("lattices"));
+    study.lattices = read_string_list(root.at("lattices"));
     for (auto& l : study.lattices) l = resolve_beside(l, file, {".json"});
     if (auto ap = root.find("volume_coefficients")) study.volume_coefficients = read_volume_coefficients(*ap);
     else study.volume_coefficients = {{"voronoi", std::nullopt}};
 }
 
-// The optional sections, each read whole.
+// The optional sections, each read whole by its row of the table.
 void read_sections(const JsonNode& root, const fs::path& file, Study& study)
 {
-    if (auto sweeps = root.find("sweeps")) {
-        sweeps->expect_array(1, 20);
-        for (std::size_t i = 0; i < sweeps->size(); ++i) study.sweeps.push_back(read_sweep((*sweeps)[i], file));
+    for (const auto& kind : section_table()) {
+        const auto node = root.find(kind.key);
+        study.sections.push_back(node ? kind.read(*node, file) : nullptr);
     }
-    if (auto node = root.find("surface")) study.surface = read_surface(*node);
-    if (auto node = root.find("stability")) study.stability = read_stability(*node);
-    if (auto node = root.find("particles")) study.particles = read_study_particles(*node, file);
+}
+
+// The study file's keys: the spine's, then one per section.
+std::vector<std::string> study_keys()
+{
+    std::vector<std::string> keys = {"$schema", "name",  "title",        "kernels", "lattices", "volume_coefficients",
+                                     "k",       "epsilon", "modes",      "compare_with", "plots", "sites", "lateral"};
+    for (const auto& kind : section_table()) keys.push_back(kind.key);
+    return keys;
 }
 
 } // namespace
@@ -373,8 +292,7 @@ Study parse_study(nlohmann::json document, const fs::path& file, std::optional<S
     study.origin = origin ? *origin : StudyOrigin{study.file, ""};
     study.document = std::move(document);
     JsonNode root(study.document, study.origin.file, study.origin.pointer);
-    root.expect_keys({"$schema", "name", "title", "kernels", "lattices", "volume_coefficients", "k", "epsilon", "modes",
-                      "compare_with", "plots", "surface", "sweeps", "sites", "lateral", "stability", "particles"});
+    root.expect_keys(study_keys());
     study.name = read_name(root.at("name"));
     study.title = root.find("title") ? printable_text(root.at("title").string()) : study.name;
     read_cases(root, file, study);

@@ -5,16 +5,15 @@
 
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/resolution_axis.hpp"
-#include "analysis/surface_profile.hpp"
-#include "stability/h_model.hpp"
 #include "study/reference_table.hpp"
-#include "study/study_particles.hpp"
+#include "study/sections/study_section.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,44 +49,8 @@ struct StudyVolumeCoefficient {
     double on(const Lattice& lattice) const;
 };
 
-// The optional free-surface section: a profile per lattice, kernel and form.
-struct StudySurface {
-    std::optional<double> k;           // empty: each kernel's best k (condition 22, first mode)
-    int layers = 6;
-    std::vector<GradientForm> forms = {GradientForm::sum};
-    std::optional<StudyVolumeCoefficient> volume_coefficient; // empty: the study's first
-};
-
-// An optional parameter sweep: maps of both errors over (k, parameter) and the
-// (k, parameter) where both vanish.
-struct StudySweep {
-    std::string kernel; // name, plugin or expression file, or a blend A+B
-    std::map<std::string, double> parameters; // other parameter values
-    std::string parameter;
-    double min = 0, max = 1;
-    int samples = 41;
-    std::string json_path;
-};
-
-// The optional stability section: min omega^2 against k, the stable k intervals and the
-// dispersion curves of every kernel on every lattice.
-struct StudyStability {
-    double gamma = 5.0 / 3.0;
-    std::optional<double> k_min, k_max; // empty: the study's window in k, over its volume coefficients
-    int steps = 100;                    // k samples - 1
-    int grid = 0;                       // first zone grid per reciprocal axis; 0: 8 in 3D, 32 in 2D
-    std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
-    int path_points = 120;
-    double horizon = 100;               // growth time in d/c: slower instabilities are weak (default_horizon)
-    HModel h_model = HModel::fixed;     // fixed or adaptive h
-};
-
-// A study's total work, bounded before it starts (see check in parse_study).
+// The bulk cases' work, bounded before anything starts (each section bounds its own).
 inline constexpr double max_study_curve_points = 2e6;
-inline constexpr double max_study_sweep_points = 2e6;
-inline constexpr double max_study_surface_layers = 1e6;
-inline constexpr double max_study_stability_points = 1e8; // wave vectors over all k samples (as max_stability_points)
-inline constexpr double max_study_particle_evaluations = 1e8; // particles x N_H values, over all sources
 
 // Where a study's document was read, for its errors: the study file, or a results file
 // and the pointer of its "study" entry when `run --reproduce` reads the study back.
@@ -114,10 +77,7 @@ struct Study {
     std::vector<StudyMode> modes;
     std::optional<ReferenceTable> reference; // "compare_with": a reference table (share/reference), read and checked
     bool plots = true;
-    std::optional<StudySurface> surface;
-    std::vector<StudySweep> sweeps;
-    std::optional<StudyStability> stability;
-    std::optional<StudyParticles> particles;
+    std::vector<std::shared_ptr<const StudySection>> sections; // [section_table()]: null where the study has none
 };
 
 Study read_study(const std::filesystem::path& file);
@@ -132,5 +92,12 @@ ValueSource study_source(const Study& study, const std::string& pointer);
 
 // Parses a shell radius: a number or "sqrt(N)".
 std::optional<double> parse_radius(const nlohmann::json& value);
+
+// The readers the spine and the sections share.
+inline const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
+std::vector<std::string> read_string_list(const JsonNode& node);
+std::map<std::string, double> read_parameter_values(const JsonNode& set);   // "set": {"parameter": value, ...}
+StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item);       // a name, or a number (as number or text)
+std::optional<double> read_k_or_best(const JsonNode& node);                 // a number, or "best" (empty)
 
 } // namespace sphkern

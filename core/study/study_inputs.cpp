@@ -1,12 +1,7 @@
 #include "study/study_inputs.hpp"
 
-#include "requests/source_request.hpp"
-
-#include "analysis/design.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
-#include "particles/particles_memory.hpp"
-#include "particles/sources/particle_source.hpp"
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -57,7 +52,7 @@ void load_kernels_and_lattices(const Study& study, KernelRegistry& registry, Stu
                           [&] { inputs.kernels[i].require_dimension(l.dimension, l.name); });
 }
 
-// Each lattice's a_p (the study's and the surface section's) and the sites studied.
+// Each lattice's a_p and the sites studied.
 void resolve_lattice_values(const Study& study, StudyInputs& inputs)
 {
     for (const auto& lattice : inputs.lattices) {
@@ -65,12 +60,6 @@ void resolve_lattice_values(const Study& study, StudyInputs& inputs)
         for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i)
             aps.push_back(at_source(study_source(study, "/volume_coefficients/" + std::to_string(i)),
                                         [&] { return study.volume_coefficients[i].on(lattice); }));
-        if (study.surface)
-            inputs.surface_a_p.push_back(
-                study.surface->volume_coefficient
-                    ? at_source(study_source(study, "/surface/volume_coefficient"),
-                                    [&] { return study.surface->volume_coefficient->on(lattice); })
-                    : aps.front());
     }
     for (const auto& lattice : inputs.lattices) {
         const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
@@ -107,82 +96,6 @@ void check_continued_kernels(const Study& study, const StudyMode& mode, const st
     }
 }
 
-void resolve_sweeps(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
-{
-    for (const auto& sweep : study.sweeps)
-        at_source(study_source(study, sweep.json_path), [&] {
-            const Kernel& kernel = inputs.sweep_kernels.emplace_back(registry.find(sweep.kernel), sweep.parameters);
-            check_design_parameter(kernel, sweep.parameter, sweep.min, sweep.max);
-        });
-}
-
-// Each particle source read (a bad file is refused before any section runs); all of them
-// are held at once, so their count together is bounded by the memory budget (a source
-// that is relaxed counts twice: it is relaxed in a copy).
-void load_particle_sets(const Study& study, StudyInputs& inputs)
-{
-    std::size_t total = 0;
-    for (const auto& s : study.particles->sources) {
-        inputs.particle_sets.push_back(at_source(study_source(study, s.json_path), [&] {
-            return load_source(s.source, source_sources(FrontEnd::python), 0);
-        }));
-        total += inputs.particle_sets.back().size() * (s.relax ? 2 : 1);
-        if (total > max_particles())
-            study_source(study, s.json_path).fail("the particle sources up to this one hold " + std::to_string(total) +
-                                 " particles (a relaxed one counted twice), more than the " +
-                                 std::to_string(max_particles()) +
-                                 " the memory budget allows (three quarters of the available memory)");
-    }
-}
-
-// Each particle source's "relax": by the study kernel it names (its label or name).
-void resolve_particle_sources(const Study& study, StudyInputs& inputs)
-{
-    if (!study.particles) return;
-    load_particle_sets(study, inputs);
-    for (const auto& s : study.particles->sources) {
-        auto& index = inputs.relax_kernel.emplace_back();
-        if (!s.relax) continue;
-        const auto& k = inputs.kernels;
-        const auto it = std::find_if(k.begin(), k.end(), [&](const Kernel& kernel) {
-            return kernel.label() == s.relax->kernel || kernel.name() == s.relax->kernel;
-        });
-        if (it == k.end()) {
-            std::vector<std::string> labels;
-            for (const auto& kernel : k) labels.push_back(kernel.label());
-            study_source(study, s.relax->json_path).fail("kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
-                                 did_you_mean(s.relax->kernel, labels));
-        }
-        index = static_cast<std::size_t>(it - k.begin());
-    }
-}
-
-// Every window a section reads: the bulk cases' at their first site, the stability and
-// surface sections' and the sweeps' at site 0.
-void resolve_windows(const Study& study, StudyInputs& inputs)
-{
-    auto add = [&](std::size_t l, std::size_t k, int site, double a_p) {
-        const StudyInputs::WindowKey key{l, k, site, a_p};
-        if (inputs.windows.count(key)) return;
-        const Kernel& kernel = k < inputs.kernels.size() ? inputs.kernels[k] : inputs.sweep_kernels[k - inputs.kernels.size()];
-        inputs.windows[key] = at_source(study_source(study, "/k"), [&] {
-            return k_window(study.axis, study.k_min, study.k_max, kernel, inputs.lattices[l], site, a_p, "window");
-        });
-    };
-    for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
-        for (std::size_t k = 0; k < inputs.kernels.size(); ++k) {
-            for (double a_p : inputs.a_p[l]) {
-                add(l, k, inputs.sites[l].front(), a_p);
-                if (study.stability && !study.stability->k_min) add(l, k, 0, a_p);
-            }
-            if (study.surface && !study.surface->k) add(l, k, 0, inputs.surface_a_p[l]);
-        }
-        for (std::size_t s = 0; s < inputs.sweep_kernels.size(); ++s)
-            if (inputs.sweep_kernels[s].supports(inputs.lattices[l].dimension))
-                add(l, inputs.kernels.size() + s, 0, inputs.a_p[l].front());
-    }
-}
-
 void resolve_reference(const Study& study, StudyInputs& inputs)
 {
     if (!study.reference) return;
@@ -207,11 +120,26 @@ StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
         auto& per_kernel = inputs.evaluation.emplace_back();
         for (const auto& kernel : inputs.kernels) per_kernel.push_back(evaluation_mode(study, mode, kernel));
     }
-    resolve_sweeps(study, registry, inputs);
-    resolve_particle_sources(study, inputs);
-    resolve_windows(study, inputs);
+    for (std::size_t l = 0; l < inputs.lattices.size(); ++l) // the bulk cases' windows, at their first site
+        for (std::size_t k = 0; k < inputs.kernels.size(); ++k)
+            for (double a_p : inputs.a_p[l]) resolve_window(study, inputs, l, k, inputs.sites[l].front(), a_p);
+    for (const auto& section : study.sections)
+        inputs.sections.push_back(section ? section->resolve(study, registry, inputs) : SectionRun());
     resolve_reference(study, inputs);
     return inputs;
+}
+
+std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site, double a_p)
+{
+    return at_source(study_source(study, "/k"),
+                     [&] { return k_window(study.axis, study.k_min, study.k_max, kernel, lattice, site, a_p, "window"); });
+}
+
+void resolve_window(const Study& study, StudyInputs& inputs, std::size_t lattice, std::size_t kernel, int site, double a_p)
+{
+    const StudyInputs::WindowKey key{lattice, kernel, site, a_p};
+    if (!inputs.windows.count(key))
+        inputs.windows[key] = study_window(study, inputs.kernels[kernel], inputs.lattices[lattice], site, a_p);
 }
 
 std::pair<double, double> StudyInputs::window(std::size_t lattice, std::size_t kernel, int site, double a_p) const

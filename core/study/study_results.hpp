@@ -1,20 +1,15 @@
-// What a study computes, section by section: the bulk cases (curves, roots, condition
-// (22)), the comparison with a reference table, free-surface profiles, parameter sweeps
-// and linear stability.
+// What a study computes: the bulk cases (curves, roots, condition (22)), the comparison with
+// a reference table, and what each optional section computed (its folder's results).
 #pragma once
 
 #include "analysis/acceptance.hpp"
-#include "analysis/design.hpp"
 #include "analysis/roots.hpp"
 #include "analysis/site_roots.hpp"
-#include "analysis/surface_profile.hpp"
-#include "stability/dispersion_path.hpp"
-#include "stability/recommended_k.hpp"
-#include "stability/stability_over_k.hpp"
-#include "study/study_particles.hpp"
+#include "study/sections/study_section.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,55 +74,10 @@ struct ComparisonRow {
     std::string note;
 };
 
-struct SurfaceCase {
-    std::string lattice;
-    std::string kernel_label;
-    std::string form;
-    std::string ap_name;
-    double a_p = 0;
-    double k = 0;
-    SurfaceProfile profile;
-};
-
-struct SweepCase {
-    std::string lattice;
-    std::string kernel;
-    std::string parameter;
-    std::string ap_name;
-    double a_p = 0;
-    std::vector<double> ks, values;                 // the grid
-    std::vector<std::vector<double>> rho, gradp;    // [value index][k index]
-    DesignResult design;
-    std::vector<Acceptance> designed_acceptance;    // condition (22) of each designed kernel
-};
-
-// Where the accurate k (condition (22), one a_p, the first automatic mode) are stable too.
-struct StabilityOverlap {
-    std::string ap_name;
-    std::vector<KInterval> accurate, both;
-    RecommendedK recommended; // the centre of the widest of `both`
-    std::vector<double> in_conventions; // the recommended k in each of code_conventions(), when found
-};
-
-struct StabilityCase {
-    std::string lattice;
-    std::string kernel_label;
-    double gamma = 0;
-    std::string h_model = "fixed";
-    std::optional<std::string> refused; // why the lattice has no dispersion matrix; empty when it has one
-    StabilityOverK over_k;
-    double path_k = 0;        // where the dispersion curves are drawn
-    DispersionPath path;
-    std::vector<StabilityOverlap> overlap;
-};
-
 struct StudyResults {
     std::vector<StudyCase> cases;
     std::vector<ComparisonRow> comparison;
-    std::vector<SurfaceCase> surface;
-    std::vector<SweepCase> sweeps;
-    std::vector<StabilityCase> stability;
-    std::vector<ParticlesCase> particles;
+    std::vector<std::shared_ptr<const SectionResults>> sections; // [section_table()]: null where the study has none
     double tolerance = 1e-4;
     nlohmann::json reference; // the whole reference table, if any
     nlohmann::json inputs;    // the study file, lattices and kernels in full (study_provenance.hpp)
@@ -138,6 +88,15 @@ inline const StudyCase* find_case(const StudyResults& results, const CaseKey& ke
 {
     for (const auto& c : results.cases)
         if (c.key == key) return &c;
+    return nullptr;
+}
+
+// What the optional section of type T (a folder's results) computed, or nullptr.
+template <class T>
+const T* section_results(const StudyResults& results)
+{
+    for (const auto& s : results.sections)
+        if (const auto* r = dynamic_cast<const T*>(s.get())) return r;
     return nullptr;
 }
 

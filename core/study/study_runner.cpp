@@ -1,7 +1,7 @@
 #include "study/study_runner.hpp"
 
 #include "study/reference_comparison.hpp"
-#include "study/sections/sections.hpp"
+#include "study/bulk_section.hpp"
 #include "study/study_inputs.hpp"
 #include "study/study_provenance.hpp"
 
@@ -13,10 +13,7 @@ StudyResults run_study(const Study& study, KernelRegistry& registry)
     StudyResults results;
     results.inputs = study_inputs_json(study, inputs);
     run_bulk_section(study, inputs, results);
-    run_surface_section(study, inputs, results);
-    run_sweep_section(study, inputs, results);
-    run_stability_section(study, inputs, results);
-    run_particles_section(study, inputs, results);
+    for (const auto& section : inputs.sections) results.sections.push_back(section ? section(study, inputs, results) : nullptr);
     if (inputs.reference) compare_with_reference(*inputs.reference, results);
     return results;
 }

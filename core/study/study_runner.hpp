@@ -1,6 +1,5 @@
-// Runs a study: every input resolved and checked first (study_inputs.hpp), then each
-// section in turn (bulk cases, surface, sweeps, stability, particles) and the comparison
-// with a reference table.
+// Runs a study: every input resolved and checked first (study_inputs.hpp), then the bulk
+// cases, each optional section in the table's order, and the comparison with a reference table.
 #pragma once
 
 #include "kernels/kernel_registry.hpp"

@@ -3,6 +3,7 @@
 #include "helpers.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/stability_scan.hpp"
+#include "study/sections/stability/stability_section.hpp"
 #include "study/study.hpp"
 #include "study/study_runner.hpp"
 
@@ -20,9 +21,11 @@ TEST_CASE("a study's stable k intervals hold up under a finer scan, and the over
         "stability": {"k": {"steps": 25}, "dispersion_k": 1.1, "path_points": 40}})");
     const Study study = parse_study(document, "stability-check.json");
     const auto results = run_study(study, shipped_kernels());
-    REQUIRE(results.stability.size() == 4);
+    const auto* stability = section_results<StabilityResults>(results);
+    REQUIRE(stability);
+    REQUIRE(stability->cases.size() == 4);
     const double gamma = 5.0 / 3.0;
-    for (const auto& c : results.stability) {
+    for (const auto& c : stability->cases) {
         CAPTURE(c.lattice);
         CAPTURE(c.kernel_label);
         REQUIRE(!c.refused);

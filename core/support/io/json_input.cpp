@@ -204,8 +204,12 @@ JsonNode JsonNode::operator[](std::size_t index) const
 
 void JsonNode::expect_keys(std::initializer_list<std::string_view> known) const
 {
+    expect_keys(std::vector<std::string>(known.begin(), known.end()));
+}
+
+void JsonNode::expect_keys(const std::vector<std::string>& names) const
+{
     expect_object();
-    std::vector<std::string> names(known.begin(), known.end());
     for (const auto& [key, unused] : value_->items()) {
         if (std::find(names.begin(), names.end(), key) != names.end()) continue;
         std::string message = "unknown key \"" + key + "\"" + did_you_mean(key, names);

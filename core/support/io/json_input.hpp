@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sphkern {
 
@@ -49,6 +50,7 @@ public:
 
     // Refuses members not in `known`, suggesting the closest known key.
     void expect_keys(std::initializer_list<std::string_view> known) const;
+    void expect_keys(const std::vector<std::string>& known) const;
 
     void expect_object() const;
     std::size_t expect_array(std::size_t min_size, std::size_t max_size = 100000) const;

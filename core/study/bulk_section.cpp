@@ -1,5 +1,4 @@
-// The bulk cases: a particle on a lattice site, every kernel x lattice x a_p x mode.
-#include "study/sections/sections.hpp"
+#include "study/bulk_section.hpp"
 
 #include "analysis/site_errors.hpp"
 #include "support/process/interruption.hpp"

@@ -1,5 +1,6 @@
-#include "study/particles_outputs.hpp"
+#include "study/sections/particles/particles_section.hpp"
 
+#include "study/canvas.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -13,10 +14,10 @@ namespace sphkern {
 namespace {
 
 // The sources in the order of the study, each with its cases.
-std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source(const StudyResults& results)
+std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source(const std::vector<ParticlesCase>& cases)
 {
     std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> groups;
-    for (const auto& c : results.particles) {
+    for (const auto& c : cases) {
         if (groups.empty() || groups.back().first != c.source) groups.push_back({c.source, {}});
         groups.back().second.push_back(&c);
     }
@@ -37,19 +38,19 @@ std::string file_name(const std::string& label)
 
 } // namespace
 
-std::string particles_markdown(const StudyResults& results)
+std::string ParticlesResults::markdown(const Study&) const
 {
-    if (results.particles.empty()) return {};
+    if (cases.empty()) return {};
     std::string s =
         "## Particle sets\n\nThe consistency errors of each kernel on particles that are no lattice (method document, "
         "section 11): e0 = sum_j V_j W_ij - 1, eps_gradp = g.E.g (the difference form) and eps_gradp_sum, the paper's "
         "sum form one h below the surface, as RMS over the set, against the neighbour number "
         "N_H = c_D (R h)^D / V (Dehnen & Aly 2012).\n\n";
-    for (const auto& [source, cases] : by_source(results)) {
+    for (const auto& [source, group] : by_source(cases)) {
         s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n| kernel | N_H | eta | neighbours | mean e0 | RMS e0 | "
                          "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|---|\n",
-                         source, cases.front()->particles, cases.front()->dimension, volume_model_name(cases.front()->volume));
-        for (const auto* c : cases)
+                         source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume));
+        for (const auto* c : group)
             for (std::size_t j = 0; j < c->points.size(); ++j) {
                 const auto& p = c->points[j];
                 s += fmt::format("| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
@@ -62,28 +63,28 @@ std::string particles_markdown(const StudyResults& results)
     return s;
 }
 
-void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
+void ParticlesResults::draw(const Study&, Canvas& canvas) const
 {
     static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-    for (const auto& [source, cases] : by_source(results)) {
+    for (const auto& [source, group] : by_source(cases)) {
         std::string data, e0_plot, gradp_plot;
-        for (std::size_t i = 0; i < cases.size(); ++i) {
+        for (std::size_t i = 0; i < group.size(); ++i) {
             data += fmt::format("$c{} << EOD\n", i);
-            for (std::size_t j = 0; j < cases[i]->points.size(); ++j) {
-                const auto& p = cases[i]->points[j];
+            for (std::size_t j = 0; j < group[i]->points.size(); ++j) {
+                const auto& p = group[i]->points[j];
                 data += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", p.nh, p.statistic("e0").rms,
-                                    p.statistic("eps_gradp").rms, cases[i]->poisson_rms_e0[j]);
+                                    p.statistic("eps_gradp").rms, group[i]->poisson_rms_e0[j]);
             }
             data += "EOD\n";
             const char* colour = colours[i % 8];
             const std::string style = fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour,
-                                                  cases[i]->kernel_label);
+                                                  group[i]->kernel_label);
             e0_plot += fmt::format("{}$c{} using 1:2 {}, $c{} using 1:4 with lines dt 2 lw 1 lc rgb '{}' notitle", i ? ", " : "",
                                    i, style, i, colour);
             gradp_plot += fmt::format("{}$c{} using 1:3 {}", i ? ", " : "", i, style);
         }
         double lo = INFINITY, hi = 0;
-        for (const auto* c : cases)
+        for (const auto* c : group)
             for (const auto& p : c->points) lo = std::min(lo, p.nh), hi = std::max(hi, p.nh);
         const std::string body = fmt::format(
             "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
@@ -94,14 +95,14 @@ void draw_particles_figures(const StudyResults& results, const DrawFigure& draw)
             "set title 'hydrostatic pressure gradient'\nset ylabel 'RMS of eps_gradp (relative)' noenhanced\nplot {}\n"
             "unset multiplot\n",
             data, source, lo / 1.1, hi * 1.1, e0_plot, gradp_plot);
-        draw(file_name(source), 1400, 560, body);
+        canvas.draw(file_name(source), 1400, 560, body);
     }
 }
 
-nlohmann::json particles_results_json(const StudyResults& results)
+nlohmann::json ParticlesResults::json(const Study&) const
 {
     nlohmann::json list = nlohmann::json::array();
-    for (const auto& c : results.particles) {
+    for (const auto& c : cases) {
         nlohmann::json points = nlohmann::json::array();
         for (std::size_t j = 0; j < c.points.size(); ++j) {
             const auto& p = c.points[j];

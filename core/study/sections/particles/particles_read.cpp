@@ -1,4 +1,4 @@
-#include "study/study_particles.hpp"
+#include "study/sections/particles/particles_section.hpp"
 
 #include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"

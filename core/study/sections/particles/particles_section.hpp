@@ -1,10 +1,13 @@
-// The optional "particles" section of a study: every kernel on particle sets that are no
-// lattice (disturbed lattice blocks, Poisson sets, files), over a range of N_H or eta.
+// The "particles" section: every kernel of the study on particle sets that are no lattice
+// (disturbed lattice blocks, Poisson sets, files, any of them relaxed first), over a range
+// of N_H or eta; a report table and a figure per source (RMS e0 and eps_gradp against N_H,
+// log-log, a curve per kernel, the Poisson limit for reference).
 #pragma once
 
 #include "particles/particle_analysis.hpp"
 #include "particles/sources/particle_source.hpp"
 #include "relax/relax_settings.hpp"
+#include "study/sections/study_section.hpp"
 #include "support/io/json_input.hpp"
 
 #include <filesystem>
@@ -46,6 +49,14 @@ struct ParticlesCase {
     std::vector<double> poisson_rms_e0; // per point: a Poisson set of as many particles at that h
 };
 
+struct ParticlesResults : SectionResults {
+    std::vector<ParticlesCase> cases;
+
+    nlohmann::json json(const Study& study) const override;
+    std::string markdown(const Study& study) const override;
+    void draw(const Study& study, Canvas& canvas) const override;
+};
+
 // Reads the section: {"sources": [...], "nh" or "eta": {"min", "max", "steps"}, "volume"};
 // each source one of {"lattice", "size", "sigma", "seed"}, {"poisson": D, "count", "seed",
 // "box"} or {"file", "box", "array", "dim"}, relative files beside the study; any of them with
@@ -54,5 +65,8 @@ StudyParticles read_study_particles(const JsonNode& node, const std::filesystem:
 
 // An upper bound of the particles the section evaluates, over all sources and h (the budget).
 double study_particle_evaluations(const StudyParticles& particles);
+
+// The section, read (read_study_particles) for the table of sections.
+std::shared_ptr<const StudySection> read_particles_section(const JsonNode& node, const std::filesystem::path& study_file);
 
 } // namespace sphkern
