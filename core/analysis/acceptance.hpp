@@ -16,8 +16,10 @@ struct KInterval {
     double from, to;
 };
 
-// A best k, a root or an interval's end on the edge of the window may go on outside it.
-inline constexpr const char* window_edge_note = "at the window edge; widen --kmin/--kmax";
+// A best k, a root or an interval's end on the edge of the window may go on outside it. The
+// same words in every front end, whose documents agree (the window is --kmin/--kmax on the
+// command line, kmin/kmax in Python, "k" in a study).
+inline constexpr const char* window_edge_note = "at the window edge; widen the k window";
 // Whether k is at the edge of [window_min, window_max] (to 1e-9 of its width).
 bool at_window_edge(double k, double window_min, double window_max);
 

@@ -23,7 +23,7 @@ namespace sphkern {
 
 struct CodeProfile {
     std::string name;                 // "swift"
-    std::string parameter;            // "eta": the option --eta, the argument eta
+    std::string parameter;            // "eta": how the command line and Python name it
     bool from_sph_density = false;    // h solved from the SPH density (else from the rest spacing)
     std::vector<std::string> kernels; // sphkern's names of the kernels the code ships
     std::string source;               // where the code states its definition

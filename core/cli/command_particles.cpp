@@ -85,7 +85,7 @@ Action add_particles_command(Command app)
     add_options(command, *options);
     return [options, command] {
         const auto& o = *options;
-        set_memory_limit_gib(o.memory_limit);
+        set_memory_budget(o.memory_limit, value_named(FrontEnd::command_line, "memory_limit"));
         const auto outputs = given_outputs(command, {{"--csv", o.csv}, {"--vtk", o.vtk}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);

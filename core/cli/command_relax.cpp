@@ -95,7 +95,7 @@ Action add_relax_command(Command app)
     add_options(command, *options);
     return [options, command] {
         auto& o = *options;
-        set_memory_limit_gib(o.memory_limit);
+        set_memory_budget(o.memory_limit, value_named(FrontEnd::command_line, "memory_limit"));
         const auto sources = relax_sources(FrontEnd::command_line);
         o.settings.method = relax_method_of(o.method, sources.method);
         check_relax_settings(o.settings, sources);
@@ -103,7 +103,7 @@ Action add_relax_command(Command app)
         const SmoothingSpec spec = smoothing_spec({o.eta, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
-        if (!o.output.empty()) check_particle_output_name(o.output);
+        if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"));
         if (!o.tile.empty() && o.output.empty())
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
         auto registry = discover_kernels(o);

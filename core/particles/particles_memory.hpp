@@ -10,8 +10,9 @@ namespace sphkern {
 // its ghosts, every per-particle result).
 inline constexpr std::size_t bytes_per_particle = 400;
 
-// Sets the budget in bytes (0: the available memory less a quarter). Throws Error(usage)
-// for a negative or non-finite number of GiB.
+// Sets the budget (0: the available memory less a quarter) from a number of GiB in
+// [0, max_memory_limit_gib], checked by the caller (requests/source_request).
+inline constexpr double max_memory_limit_gib = 1e6;
 void set_memory_limit_gib(double gib);
 std::size_t memory_limit_bytes();
 std::size_t max_particles();

@@ -26,6 +26,7 @@
 #include "support/error.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/process/interruption.hpp"
+#include "support/text/setting_names.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
@@ -506,6 +507,7 @@ PYBIND11_MODULE(sphkern, m)
     const auto folder = module_folder();
     set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
     translate_errors();
+    name_settings_for(FrontEnd::python); // hints from below requests/ name Python's arguments
     // Every call runs with sphkern's signal handlers, Python's own before and after it.
     const Guard guard;
     bind_particles(m, &kernel_of, &to_python);

@@ -1,4 +1,5 @@
 #include "relax/pairing_motion.hpp"
+#include "support/text/setting_names.hpp"
 
 #include "particles/sources/lattice_particles.hpp"
 #include "relax/glass_quality.hpp"
@@ -206,8 +207,9 @@ std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& la
     for (int i = 0; i < request.samples; ++i) terms += pairing_pair_terms(kernel, lattice, k_of(i), request);
     if (terms > max_pairing_pair_terms)
         fail_input(fmt::format("pairing: the motion asks for {:.3g} pair evaluations over its {} sample(s) of k, over the "
-                               "limit of {:.3g}; expected a smaller k, a shorter --duration or fewer --samples",
-                               terms, request.samples, max_pairing_pair_terms));
+                               "limit of {:.3g}; expected a smaller k, a shorter {} or fewer {}",
+                               terms, request.samples, max_pairing_pair_terms, setting_named("duration"),
+                               setting_named("samples")));
     std::vector<PairingPoint> points;
     for (int i = 0; i < request.samples; ++i) points.push_back(run_one(kernel, lattice, k_of(i), request));
     return points;

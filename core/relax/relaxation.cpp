@@ -1,4 +1,5 @@
 #include "relax/relaxation.hpp"
+#include "support/text/setting_names.hpp"
 
 #include "support/process/parallel_for.hpp"
 #include "support/error.hpp"
@@ -88,9 +89,9 @@ bool finish_moves(RelaxState& s, RelaxStep& step, const Moves& moves)
                                  ? fmt::format("a particle moved {:.3g} h in one step", step.max_move)
                                  : std::string("a particle's move in one step overflowed a double");
     throw RelaxDiverged(fmt::format("{}: the integration diverged at step {} (t = {:.4g} d/c): {}; expected a smaller "
-                                    "--dt (now {:g}), more --damping (now {:g}) or a --gamma nearer 1 (now {:g})",
-                                    s.set.name, step.step, step.step * dt, move, settings.time_step, settings.damping,
-                                    settings.gamma),
+                                    "{} (now {:g}), more {} (now {:g}) or a {} nearer 1 (now {:g})",
+                                    s.set.name, step.step, step.step * dt, move, setting_named("dt"), settings.time_step,
+                                    setting_named("damping"), settings.damping, setting_named("gamma"), settings.gamma),
                         std::move(history));
 }
 

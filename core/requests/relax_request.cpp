@@ -74,6 +74,15 @@ ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet&
     return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
 }
 
+void check_relax_output(const std::string& file, const ValueSource& source)
+{
+    try {
+        check_particle_output_name(file);
+    } catch (const Error& e) { // "--output x.txt: expected ...", "output x.txt: expected ..."
+        throw Error(source.code, source.name + " " + e.what());
+    }
+}
+
 std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, const ValueSource& source)
 {
     std::array<int, 3> tiles{1, 1, 1};

@@ -47,6 +47,9 @@ ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet&
 // Copies of the relaxed set side by side along each edge of its box ("2,2,2"): whole numbers
 // 1 to 1000, as many as the set's dimensions and within the memory budget (else exit 3), and
 // one copy for an empty text.
+// A name the relaxed set can be written to (.h5, .hdf5 or .csv), named as the front end names it.
+void check_relax_output(const std::string& file, const ValueSource& source);
+
 std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, const ValueSource& source);
 
 // The one h of a relaxation (fixed-h SPH; a file's own h is not used): the set must have a

@@ -44,6 +44,13 @@ void check_particle_source(const ParticleSource& s, const SourceSources& sources
     }
 }
 
+void set_memory_budget(double gib, const ValueSource& source)
+{
+    if (!std::isfinite(gib) || gib < 0 || gib > max_memory_limit_gib)
+        throw Error(source.code, fmt::format("{}: expected GiB in [0, 1e6] (0: from the available memory)", source.about(gib)));
+    set_memory_limit_gib(gib);
+}
+
 ParticleSet load_source(const ParticleSource& s, const SourceSources& sources, int threads)
 {
     check_particle_source(s, sources);

@@ -22,6 +22,9 @@ void check_particle_source(const ParticleSource& source, const SourceSources& so
 
 // Checked, then made or read: a block takes as many cell counts as its lattice has dimensions,
 // and a block or a Poisson set over the memory budget is refused before it is made.
+// Checks a memory budget in GiB (0: from the available memory) and sets it for the process.
+void set_memory_budget(double gib, const ValueSource& source);
+
 ParticleSet load_source(const ParticleSource& source, const SourceSources& sources, int threads);
 
 } // namespace sphkern

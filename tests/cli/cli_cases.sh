@@ -600,9 +600,9 @@ assert not s['stable_intervals'] and all(not p['stable'] for p in s['samples'])"
 check "roots: a best k on the window's edge is flagged, in text and JSON" python3 -c "
 import json, subprocess
 out = subprocess.run(['$sphkern', 'roots', 'wendland_c2', 'hcp'], capture_output=True, check=True, text=True).stdout
-assert 'at the window edge; widen --kmin/--kmax' in out, out
+assert 'at the window edge; widen the k window' in out, out
 d = json.loads(subprocess.run(['$sphkern', 'roots', 'wendland_c2', 'hcp', '--json'], capture_output=True, check=True, text=True).stdout)[0]
-assert d['best_k_note'] == 'at the window edge; widen --kmin/--kmax', d.get('best_k_note')"
+assert d['best_k_note'] == 'at the window edge; widen the k window', d.get('best_k_note')"
 check "roots --convention swift: not defined for the 2D super-Gaussian, whose second moment is negative" bash -c \
     "'$sphkern' roots super_gaussian triangular --convention swift | grep -q 'second moment in 2D is not positive'"
 check "roots --convention gadget: N_ngb of the best k is 4 pi / 3 (R k)^3 / V" python3 -c "

@@ -124,7 +124,7 @@ def test_stability_verdicts_horizon_and_window_edge():
     close(sphkern.stability("morris_quintic", "fcc", kmin=0.88, kmax=0.9, steps=4, horizon=50),
           cli_json("stability", "morris_quintic", "fcc", "--kmin", "0.88", "--kmax", "0.9", "--steps", "4", "--horizon", "50"))
     # The best k of condition (22) on the window's edge is flagged.
-    assert sphkern.roots("wendland_c2", "hcp")["best_k_note"] == "at the window edge; widen --kmin/--kmax"
+    assert sphkern.roots("wendland_c2", "hcp")["best_k_note"] == "at the window edge; widen the k window"
 
 
 def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line():
@@ -138,7 +138,7 @@ def test_roots_with_stability_convention_and_adaptive_h_equal_the_command_line()
         assert document["best_k_at_window_edge"] is False
     # The recommended k on the window's edge is flagged, in Python too.
     edge = sphkern.roots("cubic_bspline", "fcc", kmin=0.99, kmax=1.0, stability=True, steps=4)["stability"]["recommended"]
-    assert edge["at_window_edge"] and edge["note"] == "at the window edge; widen --kmin/--kmax"
+    assert edge["at_window_edge"] and edge["note"] == "at the window edge; widen the k window"
     assert sphkern.roots("wendland_c2", "hcp")["best_k_at_window_edge"] is True
     close(sphkern.stability("cubic_bspline", "fcc", 1.1, h_model="adaptive"),
           cli_json("stability", "cubic_bspline", "fcc", "--k", "1.1", "--h-model", "adaptive"))

@@ -2,6 +2,7 @@
 // SWIFT and GADGET snapshots and initial conditions (/Header, /PartType0) and PySPH output
 // (/particles/<array>/arrays/<property>).
 #include "particles/formats/particle_files.hpp"
+#include "support/text/setting_names.hpp"
 #include "particles/formats/swift_kernels.hpp"
 
 #include "particles/particles_memory.hpp"
@@ -172,10 +173,10 @@ struct File {
         if (static_cast<double>(shape[0]) > static_cast<double>(max_particles()) ||
             total * sizeof(double) > static_cast<double>(particle_file_byte_limit()))
             fail_input(fmt::format("{}: dataset {} declares {} rows ({:.4g} bytes to read, {:.4g} bytes for the "
-                                   "particles); over the memory budget of {:.4g} bytes (--memory-limit)",
+                                   "particles); over the memory budget of {:.4g} bytes ({})",
                                    name, path, shape[0], total * sizeof(double),
                                    static_cast<double>(shape[0]) * bytes_per_particle,
-                                   static_cast<double>(memory_limit_bytes())));
+                                   static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         ParticleValues values(static_cast<std::size_t>(total));
         if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
             fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
@@ -328,7 +329,7 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
     if (array.empty()) {
         if (names.size() == 1) array = names[0];
         else if (std::find(names.begin(), names.end(), "fluid") != names.end()) array = "fluid";
-        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with --array NAME", f.name, listed()));
+        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with {} NAME", f.name, listed(), setting_named("array")));
     }
     if (std::find(names.begin(), names.end(), array) == names.end())
         fail_input(fmt::format("{}: no particle array \"{}\"; the file has {}", f.name, array, listed()));
@@ -453,8 +454,8 @@ ParticleSet read_snapshot_parts(const OpenFile& named, std::vector<std::string>&
                                f.name, parts));
     if (total > static_cast<double>(max_particles()))
         fail_input(fmt::format("{}: the snapshot declares {:.0f} particles in {} files (/Header NumPart_Total; {:.4g} bytes "
-                               "for the particles); over the memory budget of {:.4g} bytes (--memory-limit)",
-                               f.name, total, parts, total * bytes_per_particle, static_cast<double>(memory_limit_bytes())));
+                               "for the particles); over the memory budget of {:.4g} bytes ({})",
+                               f.name, total, parts, total * bytes_per_particle, static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
     ParticleSet set;
     for (std::size_t k = 0; k < parts; ++k) {
         const std::filesystem::path path = *part_name(f.name, k);

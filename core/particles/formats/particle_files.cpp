@@ -1,4 +1,5 @@
 #include "particles/formats/particle_files.hpp"
+#include "support/text/setting_names.hpp"
 
 #include "support/error.hpp"
 
@@ -37,8 +38,8 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
                                                            : read_vtk_particles(file, options);
     apply_dimension(set, options);
     if (options.max_particles && set.size() > options.max_particles)
-        fail_input(fmt::format("{}: {} particles, more than the memory limit of {} (--memory-limit)", file.string(),
-                               set.size(), options.max_particles));
+        fail_input(fmt::format("{}: {} particles, more than the memory limit of {} ({})", file.string(),
+                               set.size(), options.max_particles, setting_named("memory_limit")));
     return set;
 }
 
@@ -46,8 +47,8 @@ void apply_dimension(ParticleSet& set, const ParticleFileOptions& options)
 {
     if (!options.dimension || *options.dimension == set.dimension) return;
     if (*options.dimension != 2 || set.dimension != 3)
-        fail_input(fmt::format("{}: --dim {} for a set with {} coordinates; expected --dim 2 for a 3-column set",
-                               set.name, *options.dimension, set.dimension));
+        fail_input(fmt::format("{0}: {3} {1} for a set with {2} coordinates; expected {3} 2 for a 3-column set",
+                               set.name, *options.dimension, set.dimension, setting_named("dim")));
     auto constant = [](const ParticleValues& v) { return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; }); };
     if (constant(set.z)) {
     } else if (constant(set.y)) {
@@ -55,7 +56,7 @@ void apply_dimension(ParticleSet& set, const ParticleFileOptions& options)
     } else if (constant(set.x)) {
         set.x.swap(set.y), set.y.swap(set.z);
     } else {
-        fail_input(set.name + ": --dim 2, but no coordinate is the same for every particle");
+        fail_input(set.name + ": " + setting_named("dim") + " 2, but no coordinate is the same for every particle");
     }
     std::fill(set.z.begin(), set.z.end(), 0.0);
     set.dimension = 2;

@@ -167,7 +167,7 @@ void check_particle_output_name(const std::filesystem::path& file)
 {
     const std::string ext = file.extension().string();
     if (ext != ".h5" && ext != ".hdf5" && ext != ".csv")
-        throw Error(ExitCode::usage, "--output " + file.string() + ": expected a name ending in .h5, .hdf5 or .csv");
+        throw Error(ExitCode::usage, file.string() + ": expected a name ending in .h5, .hdf5 or .csv");
 }
 
 void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output)

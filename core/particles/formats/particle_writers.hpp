@@ -34,7 +34,7 @@ void write_swift_particles(const std::filesystem::path& file, const ParticleSet&
 // x,y[,z],h,m with 17 significant digits, after comment lines that state the box and R.
 void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);
 
-// Error(usage) for a name that does not end in .h5, .hdf5 or .csv.
+// Error(usage) for a name that does not end in .h5, .hdf5 or .csv ("x.txt: expected ...").
 void check_particle_output_name(const std::filesystem::path& file);
 // By extension: .h5/.hdf5 or .csv.
 void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);

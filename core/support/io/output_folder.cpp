@@ -1,4 +1,5 @@
 #include "support/io/output_folder.hpp"
+#include "support/text/setting_names.hpp"
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
@@ -74,7 +75,7 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
     if (ec || target_.filename().empty() || target_.filename() == "..")
         throw Error(ExitCode::output, target.string() + ": not a usable name for a results folder");
     if (lexists(target_)) {
-        if (!overwrite_) throw Error(ExitCode::output, target_.string() + ": already exists; use --force to replace it");
+        if (!overwrite_) throw Error(ExitCode::output, target_.string() + ": already exists; use " + setting_named("force") + " to replace it");
         if (!written_by_sphkern(target_))
             throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
                                               marker_name + " inside); refusing to replace it");
@@ -172,8 +173,8 @@ void OutputFolder::commit()
         return;
     }
     if (error == EEXIST && !overwrite_)
-        throw Error(ExitCode::output, target_.string() + ": already exists (it appeared while this run worked); "
-                                                         "use --force to replace it");
+        throw Error(ExitCode::output, target_.string() + ": already exists (it appeared while this run worked); use " +
+                                                         setting_named("force") + " to replace it");
     if (error != EEXIST && error != ENOTEMPTY)
         throw Error(ExitCode::output, target_.string() + ": cannot move the results into place: " + std::strerror(error));
     // --force: exchange with the existing folder if it is one sphkern wrote, then remove the

@@ -9,7 +9,7 @@
 namespace sphkern {
 
 struct OutputTarget {
-    std::string option; // "--csv"
+    std::string option; // as the front end names it
     std::string path;   // as given; empty is refused
 };
 
