@@ -1,9 +1,6 @@
 // `sphkern kernels`: the kernels sphkern can find, with their metadata.
 #include "cli/command.hpp"
-#include "kernels/kernel_json.hpp"
-#include "support/io/results_output.hpp"
-
-#include <fmt/format.h>
+#include "requests/kernels_request.hpp"
 
 #include <memory>
 
@@ -17,19 +14,8 @@ Action add_kernels_command(Command app)
     add_json_option(command, *options);
     return [options] {
         auto registry = discover_kernels(*options);
-        if (options->json) {
-            nlohmann::json list = nlohmann::json::array();
-            for (const auto& p : registry.plugins()) list.push_back(kernel_json(*p));
-            print_json(list);
-            return 0;
-        }
-        fmt::print(results_file(), "{:<20} {:>4} {:<6} {:<12} {}\n", "name", "R", "dims", "parameters", "reference / file");
-        for (const auto& p : registry.plugins()) {
-            std::string params;
-            for (const auto& q : p->parameters) params += (params.empty() ? "" : ",") + q.name;
-            fmt::print(results_file(), "{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
-                       params.empty() ? "-" : params, p->reference, "", p->source);
-        }
+        if (options->json) print_json(kernels_listing(registry));
+        else print_kernels(registry);
         return 0;
     };
 }

@@ -16,6 +16,8 @@
 #include "lattices/lattice.hpp"
 #include "lattices/numeric_inputs.hpp"
 #include "stability/stability_scan.hpp"
+#include "requests/kernels_request.hpp"
+#include "requests/lattices_request.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/assess_request.hpp"
@@ -339,14 +341,10 @@ void bind_catalogues(py::module_& m, const Guard& guard)
 {
     m.def("kernels", []() -> py::list {
         std::lock_guard lock(registry_mutex);
-        nlohmann::json list = nlohmann::json::array();
-        for (const auto& p : registry().plugins()) list.push_back(kernel_json(*p));
-        return to_python(list);
+        return to_python(kernels_listing(registry()));
     }, doc::kernels, guard);
     m.def("lattices", []() -> py::list {
-        nlohmann::json list = nlohmann::json::array();
-        for (const auto& name : shipped_lattice_names()) list.push_back(lattice_json(load_lattice(name)));
-        return to_python(list);
+        return to_python(lattices_listing());
     }, doc::lattices, guard);
     m.def("load_plugin", [](const std::string& path) -> py::dict {
         std::lock_guard lock(registry_mutex);

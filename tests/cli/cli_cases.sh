@@ -74,6 +74,8 @@ expect 3 'folder.json: is a folder' -- shells "$work/folder.json" --radius 2
 expect 3 'unknown lattice "fccc" \(did you mean "fcc"\?\)' -- shells fccc --radius 2
 expect 2 '--radius 0: expected a positive finite number' -- shells fcc --radius 0
 expect 2 '--radius -1: expected a positive finite number' -- shells fcc --radius -1
+# lattices describes with the same check as shells: out of range is exit 2, named as the option
+expect 2 '--radius -1: expected a positive finite number' -- lattices fcc --radius -1
 expect 3 '--site: site 3 does not exist; lattice fcc has sites 0 to 0' -- shells fcc --radius 2 --site 3
 expect 3 'more than the limit of 5000000' -- shells fcc --radius 1e5
 
