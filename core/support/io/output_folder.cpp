@@ -95,7 +95,7 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
     fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                   fs::perms::others_read | fs::perms::others_exec, ec);
     try {
-        write(marker_name, "This folder was written by sphkern; `sphkern run --force` may replace it.\n");
+        write(marker_name, "This folder was written by sphkern, which may replace it when told to.\n");
     } catch (...) { // the destructor does not run for a constructor that throws
         unregister_staging_path(staging_);
         fs::remove_all(staging_, ec);
