@@ -1,4 +1,4 @@
-// A code's own setting on the command line (`eps`, `assess`): --code NAME and that code's
+// A code's own setting on the command line (`eps`, `assess`, `surface`): --code NAME and that code's
 // parameter by its own name (--eta, --hfact, --nngb, --hdx, --coefh), or --k.
 #pragma once
 

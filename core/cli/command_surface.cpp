@@ -1,4 +1,5 @@
 // `sphkern surface`: the error profile below a free surface, layer by layer.
+#include "cli/code_options.hpp"
 #include "cli/command.hpp"
 #include "requests/surface_request.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 struct SurfaceOptions : CommonOptions {
     std::string kernel, lattice, form = "sum";
-    double k = 0;
+    SettingOptions setting;
     int layers = 4;
     std::optional<int> termination;
     std::vector<std::string> sets;
@@ -21,7 +22,8 @@ struct SurfaceOptions : CommonOptions {
 SurfaceRequest request_from(const SurfaceOptions& o)
 {
     SurfaceRequest r;
-    r.k = o.k;
+    r.code = code_setting(o.setting);
+    if (!r.code) r.k = *o.setting.k;
     r.layers = o.layers;
     r.form = parse_gradient_form(o.form);
     r.termination = o.termination;
@@ -31,7 +33,8 @@ SurfaceRequest request_from(const SurfaceOptions& o)
 
 SurfaceSources option_sources(const SurfaceOptions& o)
 {
-    return {ValueSource::option("--k"), evaluation_sources(o.evaluation), ValueSource::option("--layers")};
+    const auto [code, code_value] = code_sources(o.setting);
+    return {ValueSource::option("--k"), evaluation_sources(o.evaluation), ValueSource::option("--layers"), code, code_value};
 }
 
 } // namespace
@@ -42,7 +45,7 @@ Action add_surface_command(Command app)
     auto options = std::make_shared<SurfaceOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
     command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    command.add_option("--k", options->k, "Smoothing coefficient, h = k d").required();
+    add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's setting)");
     command.add_option("--layers", options->layers, "Report at least this many layers").capture_default_str();
     command.add_option("--form", options->form, "Gradient form: sum, difference or monaghan").capture_default_str();
     add_point_options(command, options->evaluation, "Gravity x,y[,z], normal to a lattice plane", "Motif site on the top layer");

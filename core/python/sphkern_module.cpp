@@ -173,8 +173,8 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
-    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(),
-                                 ValueSource::argument("layers")};
+    const SurfaceSources sources{ValueSource::argument("k"), argument_sources(), ValueSource::argument("layers"),
+                                 ValueSource::argument("code"), ValueSource::argument("value")};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);
     return to_python(surface_request_document(request, result, kernel, lattice));

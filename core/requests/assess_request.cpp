@@ -46,7 +46,7 @@ AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, doubl
 // "SWIFT eta 1.2348" or "k = 1.2".
 std::string setting_text(const AssessResult& a)
 {
-    if (a.at.code) return fmt::format("{} {} {:g}", a.at.code->code, a.at.code_parameter, a.at.code->value);
+    if (a.at.code) return fmt::format("{} {} {:g}", a.at.code->setting.code, a.at.code->parameter, a.at.code->setting.value);
     return fmt::format("k = {:g}", a.at.k);
 }
 

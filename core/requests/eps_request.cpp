@@ -1,6 +1,5 @@
 #include "requests/eps_request.hpp"
 
-#include "analysis/code_profiles.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
 
@@ -15,9 +14,7 @@ namespace sphkern {
 void check_eps_request(const EpsRequest& r, const EpsSources& sources)
 {
     if (r.code) {
-        const auto& profile = code_profile(r.code->code, sources.code);
-        if (profile.parameter == "nngb") check_positive(r.code->value, sources.code_value);
-        else check_number(r.code->value, 0, k_limit, LowEnd::open, sources.code_value);
+        check_code_setting(*r.code, {sources.code, sources.code_value});
         return check_evaluation(r.evaluation, sources.evaluation);
     }
     if (r.k.empty()) sources.k.fail("an empty array");
@@ -28,32 +25,6 @@ void check_eps_request(const EpsRequest& r, const EpsSources& sources)
                                sources.k.name));
     check_evaluation(r.evaluation, sources.evaluation);
 }
-
-namespace {
-
-// The k of a code's setting at the chosen site: from the lattice's own SPH density where the
-// code solves for h with it.
-double k_of_code(const CodeSetting& setting, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice,
-                 const Evaluation& evaluation, EpsAtK& result)
-{
-    const auto& profile = code_profile(setting.code, sources.code);
-    require_code_kernel(profile, kernel);
-    const int dim = lattice.dimension;
-    const double at_one = code_parameter(profile, kernel, dim, evaluation.a_p, 1, 0);
-    const double rest_k = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dim : 1.0);
-    const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
-    const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
-                                   evaluation.mode);
-    auto eps_rho = [&](double k) { return errors.at(k).eps_rho; };
-    const double k = k_of_code_parameter(profile, kernel, dim, evaluation.a_p, setting.value, k_max, eps_rho,
-                                         sources.code_value);
-    result.code = setting;
-    result.code_parameter = profile.parameter;
-    result.code_value_at_k = code_parameter(profile, kernel, dim, evaluation.a_p, k, eps_rho(k));
-    return k;
-}
-
-} // namespace
 
 EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
@@ -66,7 +37,8 @@ EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel
     result.a_p = evaluation.a_p;
     result.site = evaluation.site;
     if (r.code) {
-        result.k = k_of_code(*r.code, sources, kernel, lattice, evaluation, result);
+        result.code = k_of_code_setting(*r.code, {sources.code, sources.code_value}, kernel, lattice, evaluation);
+        result.k = result.code->k;
     } else {
         const double given = r.k.at(0);
         result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
@@ -105,8 +77,7 @@ nlohmann::json eps_document(const EpsAtK& r)
             {"neighbours", v.neighbours}, {"support_radius", r.support_radius}, {"sites", per_site},
             {"worst_site", r.sites[r.worst].site}};
     if (r.code)
-        document["code"] = {{"name", r.code->code}, {"parameter", r.code_parameter}, {"value", r.code->value},
-                            {"value_at_k", r.code_value_at_k}};
+        document["code"] = code_k_json(*r.code);
     return document;
 }
 
@@ -134,7 +105,7 @@ void print_every_site(const EpsAtK& r)
 void print_eps(const EpsAtK& r)
 {
     const auto& v = r.chosen();
-    const std::string given = r.code ? fmt::format(" ({} {} = {:.10g})", r.code->code, r.code_parameter, r.code->value)
+    const std::string given = r.code ? fmt::format(" ({} {} = {:.10g})", r.code->setting.code, r.code->parameter, r.code->setting.value)
                               : r.axis == Axis::eta ? fmt::format(" (eta = {:.10g})", r.eta)
                                                     : "";
     fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", r.kernel, r.lattice, r.k, r.a_p, given);

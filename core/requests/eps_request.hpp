@@ -7,6 +7,7 @@
 #include "analysis/site_errors.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
+#include "requests/code_setting.hpp"
 #include "requests/evaluation_inputs.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -17,12 +18,6 @@
 #include <vector>
 
 namespace sphkern {
-
-// A code's own setting instead of k (analysis/code_profiles): `swift` with its eta, ...
-struct CodeSetting {
-    std::string code;
-    double value = 0;
-};
 
 struct EpsRequest {
     std::vector<double> k; // on `axis`: the command line gives one, Python an array (flattened)
@@ -48,9 +43,7 @@ struct EpsAtK {
     Axis axis = Axis::k;
     double k = 0, a_p = 0, eta = 0, support_radius = 0; // support_radius: H/d = R k
     int site = 0;                  // the chosen site, checked against the lattice by run_eps_at_k
-    std::optional<CodeSetting> code; // the code's setting given, whose k this is
-    std::string code_parameter;      // its name ("eta")
-    double code_value_at_k = 0;      // the code's parameter recomputed at k (equal to the given to 1e-12)
+    std::optional<CodeK> code;     // the code's setting given, whose k this is
     std::vector<SiteReport> sites; // every site of the lattice, in order: sites[s].site == s
     std::size_t worst = 0;         // index into sites
     // Bounds-checked: an EpsAtK built by hand with a site it lacks throws, never reads past the end.

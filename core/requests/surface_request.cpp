@@ -10,7 +10,8 @@ namespace sphkern {
 
 void check_surface_request(const SurfaceRequest& r, const SurfaceSources& sources)
 {
-    check_k(r.k, sources.k);
+    if (r.code) check_code_setting(*r.code, {sources.code, sources.code_value});
+    else check_k(r.k, sources.k);
     check_range(r.layers, 1, max_surface_layers, sources.layers);
     check_evaluation(r.evaluation, sources.evaluation);
 }
@@ -19,14 +20,22 @@ SurfaceResult run_surface(const SurfaceRequest& r, const SurfaceSources& sources
                           const Lattice& lattice)
 {
     const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
-    return {evaluation.a_p, surface_profile(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, r.k,
-                                            r.layers, r.form, r.termination)};
+    SurfaceResult result{r.k, evaluation.a_p, {}, {}};
+    if (r.code) {
+        result.code = k_of_code_setting(*r.code, {sources.code, sources.code_value}, kernel, lattice, evaluation);
+        result.k = result.code->k;
+    }
+    result.profile = surface_profile(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, result.k,
+                                     r.layers, r.form, r.termination);
+    return result;
 }
 
 nlohmann::json surface_request_document(const SurfaceRequest& r, const SurfaceResult& result, const Kernel& kernel,
                                         const Lattice& lattice)
 {
-    return surface_document(kernel, lattice, r.k, result.a_p, r.form, result.profile);
+    auto document = surface_document(kernel, lattice, result.k, result.a_p, r.form, result.profile);
+    if (result.code) document["code"] = code_k_json(*result.code);
+    return document;
 }
 
 namespace {
@@ -36,16 +45,19 @@ void print_surface_heading(const SurfaceRequest& r, const SurfaceResult& result,
                            const Lattice& lattice)
 {
     const auto& profile = result.profile;
+    const std::string k = result.code ? fmt::format("{:.10g} ({} {} = {:.10g})", result.k, result.code->setting.code,
+                                                    result.code->parameter, result.code->setting.value)
+                                      : fmt::format("{}", result.k);
     if (lattice.sites() == 1)
         return fmt::print(results_file(), "{} on {}, k = {}, a_p = {:.10g}, form {}, layer spacing {:.6f} d\n",
-                          kernel.label(), lattice.name, r.k, result.a_p, gradient_form_name(r.form), profile.spacing);
+                          kernel.label(), lattice.name, k, result.a_p, gradient_form_name(r.form), profile.spacing);
     std::string names;
     for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
         names += fmt::format("{}{}: {}", t ? ", " : "", t, profile.planes.name(static_cast<int>(t)));
     fmt::print(results_file(),
                "{} on {}, k = {}, a_p = {:.10g}, form {}; the occupied planes repeat every {:.6f} d; "
                "terminations {}; on top: {}\n",
-               kernel.label(), lattice.name, r.k, result.a_p, gradient_form_name(r.form), profile.spacing, names,
+               kernel.label(), lattice.name, k, result.a_p, gradient_form_name(r.form), profile.spacing, names,
                profile.termination);
 }
 

@@ -6,6 +6,7 @@
 #include "analysis/surface_profile.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
+#include "requests/code_setting.hpp"
 #include "requests/evaluation_inputs.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -17,6 +18,7 @@ namespace sphkern {
 
 struct SurfaceRequest {
     double k = 0;
+    std::optional<CodeSetting> code; // instead of k: a code's own setting, its k from the bulk at the top site
     int layers = 4; // at least this many layers below the surface
     GradientForm form = GradientForm::sum;
     std::optional<int> termination; // which plane type is on top; none: the site's
@@ -28,13 +30,15 @@ struct SurfaceSources {
     ValueSource k;
     EvaluationSources evaluation;
     ValueSource layers;
+    ValueSource code, code_value; // "--code" and the code's parameter ("--eta")
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.
 void check_surface_request(const SurfaceRequest& request, const SurfaceSources& sources);
 
 struct SurfaceResult {
-    double a_p = 0;
+    double k = 0, a_p = 0;
+    std::optional<CodeK> code; // the code's setting given, whose k this is
     SurfaceProfile profile;
 };
 

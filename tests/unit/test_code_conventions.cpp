@@ -3,6 +3,7 @@
 #include "helpers.hpp"
 #include "analysis/code_conventions.hpp"
 #include "requests/eps_request.hpp"
+#include "requests/surface_request.hpp"
 #include "stability/recommended_k.hpp"
 #include "support/error.hpp"
 
@@ -134,4 +135,29 @@ TEST_CASE("a code's own setting gives the k at which that code's definition hold
                                             ValueSource::option("--nngb")},
                                    shipped_kernel("wendland_c2"), lattice),
                       "wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline");
+}
+
+TEST_CASE("surface --code: the profile at the k where the code's definition holds for the bulk's own SPH density")
+{
+    const auto lattice = load_lattice("fcc");
+    const double a_p = lattice.volume_coefficient("voronoi"), m = a_p;
+    const auto kernel = shipped_kernel("wendland_c2");
+    SurfaceRequest request;
+    request.code = CodeSetting{"swift", 1.2348};
+    request.layers = 12;
+    const SurfaceSources sources{ValueSource::option("--k"), {}, ValueSource::option("--layers"), ValueSource::option("--code"),
+                                 ValueSource::option("--eta")};
+    check_surface_request(request, sources);
+    const auto result = run_surface(request, sources, kernel, lattice);
+    REQUIRE(result.code);
+    // SWIFT's eta written out at that k: H = 2 k = gamma h_s with Wendland C2's gamma sqrt(15/4) in 3D.
+    const double k = result.k, rho = brute_density(kernel, lattice, a_p, k);
+    CHECK(2 * k / std::sqrt(15.0 / 4) / std::cbrt(m / rho) == doctest::Approx(1.2348).epsilon(1e-10));
+    // Deep below the surface, the bulk at that k.
+    const auto brute = brute_force_errors(kernel, lattice, k, a_p, lattice.gravity);
+    CHECK(result.profile.bulk.sites[0].eps_rho == doctest::Approx(brute.eps_rho).epsilon(1e-10));
+    // The code's parameter without --code, or a value it cannot take, is refused naming the option.
+    SurfaceRequest bad = request;
+    bad.code->value = -1;
+    CHECK_THROWS_WITH(check_surface_request(bad, sources), "--eta -1: expected a number in (0, 100]");
 }

@@ -228,28 +228,28 @@ TEST_CASE("surface request: k and the values that need the lattice are refused n
     const EvaluationSources evaluation{ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")};
     SurfaceRequest bad_k;
     bad_k.k = -1;
-    auto k = refusal([&] { check_surface_request(bad_k, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers")}); });
+    auto k = refusal([&] { check_surface_request(bad_k, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}); });
     CHECK(k.first == "k = -1 is not allowed, expected a number in (0, 100]");
     CHECK(k.second == ExitCode::input);
     SurfaceRequest gravity;
     gravity.k = 1.2;
     gravity.evaluation.gravity = std::vector<double>{0, 0, 0};
-    CHECK_NOTHROW(check_surface_request(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers")}));
-    CHECK(refusal([&] { run_surface(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers")}, kernel, lattice); }).first ==
+    CHECK_NOTHROW(check_surface_request(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}));
+    CHECK(refusal([&] { run_surface(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}, kernel, lattice); }).first ==
           "gravity: expected a direction: finite components, not all zero");
     // The request names the site, not the profile in its own words.
     SurfaceRequest site;
     site.k = 1.2;
     site.evaluation.site = 3;
-    auto missing = refusal([&] { run_surface(site, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers")}, kernel, lattice); });
+    auto missing = refusal([&] { run_surface(site, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}, kernel, lattice); });
     CHECK(missing.first == "site: site 3 does not exist; lattice fcc has sites 0 to 0");
     CHECK(missing.second == ExitCode::input);
-    auto option = refusal([&] { check_surface_request(bad_k, {ValueSource::option("--k"), evaluation, ValueSource::option("--layers")}); });
+    auto option = refusal([&] { check_surface_request(bad_k, {ValueSource::option("--k"), evaluation, ValueSource::option("--layers"), ValueSource::option("--code"), ValueSource::option("--eta")}); });
     CHECK(option.first == "--k -1 is not allowed, expected a number in (0, 100]");
     CHECK(option.second == ExitCode::usage);
     SurfaceRequest layers = gravity;
     layers.layers = 10001;
-    auto too_many = refusal([&] { check_surface_request(layers, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers")}); });
+    auto too_many = refusal([&] { check_surface_request(layers, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}); });
     CHECK(too_many.first == "layers = 10001, expected 1 to 10000");
     CHECK(too_many.second == ExitCode::input);
 }
@@ -265,7 +265,7 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
         request.layers = 16; // past 2 R k = 4.8 d on both lattices
         request.evaluation.a_p = 0.9;
         const SurfaceSources sources{ValueSource::argument("k"), {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")},
-                                     ValueSource::option("--layers")};
+                                     ValueSource::option("--layers"), ValueSource::option("--code"), ValueSource::option("--eta")};
         check_surface_request(request, sources);
         SurfaceRequest none = request;
         none.layers = 0;

@@ -5,7 +5,7 @@
 // file. The study's spine walks the table of sections (section_table.hpp) at each step.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <functional>
 #include <memory>

@@ -1,0 +1,44 @@
+#include "requests/code_setting.hpp"
+
+#include "analysis/code_profiles.hpp"
+#include "analysis/hydrostatic_errors.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphkern {
+
+void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources)
+{
+    const auto& profile = code_profile(setting.code, sources.code);
+    if (profile.parameter == "nngb") check_positive(setting.value, sources.value);
+    else check_number(setting.value, 0, k_limit, LowEnd::open, sources.value);
+}
+
+CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
+                        const Lattice& lattice, const Evaluation& evaluation)
+{
+    const auto& profile = code_profile(setting.code, sources.code);
+    require_code_kernel(profile, kernel);
+    const int dim = lattice.dimension;
+    const double at_one = code_parameter(profile, kernel, dim, evaluation.a_p, 1, 0);
+    const double rest_k = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dim : 1.0);
+    const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
+    const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
+                                   evaluation.mode);
+    auto eps_rho = [&](double k) { return errors.at(k).eps_rho; };
+    CodeK code{setting, profile.parameter, 0, 0};
+    code.k = k_of_code_parameter(profile, kernel, dim, evaluation.a_p, setting.value, k_max, eps_rho, sources.value);
+    code.value_at_k = code_parameter(profile, kernel, dim, evaluation.a_p, code.k, eps_rho(code.k));
+    return code;
+}
+
+nlohmann::json code_k_json(const CodeK& code)
+{
+    return {{"name", code.setting.code}, {"parameter", code.parameter}, {"value", code.setting.value},
+            {"value_at_k", code.value_at_k}};
+}
+
+} // namespace sphkern

@@ -1,0 +1,44 @@
+// A code's own setting of the resolution instead of k (analysis/code_profiles): `swift`
+// with its eta, `phantom` with its hfact, ...; what the requests that take one k (eps,
+// surface, assess) share to check it and to find its k on a lattice.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "lattices/lattice.hpp"
+#include "requests/evaluation_inputs.hpp"
+#include "support/text/value_checks.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+namespace sphkern {
+
+struct CodeSetting {
+    std::string code;
+    double value = 0;
+};
+
+// How the front end names the code and its parameter ("--code", "--eta"; "code", "value").
+struct CodeSettingSources {
+    ValueSource code, value;
+};
+
+// A known code, and a value its parameter can take; an Error naming the source.
+void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources);
+
+// The setting's k at the evaluated site: from the lattice's own SPH density where the code
+// solves for h with it, so that the code's parameter recomputed at k is the one given.
+struct CodeK {
+    CodeSetting setting;
+    std::string parameter;  // the code's name for it ("eta")
+    double k = 0;
+    double value_at_k = 0;  // the code's parameter recomputed at k (equal to the given to 1e-12)
+};
+CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
+                        const Lattice& lattice, const Evaluation& evaluation);
+
+// {"name", "parameter", "value", "value_at_k"}, as `--json` carries it under "code".
+nlohmann::json code_k_json(const CodeK& code);
+
+} // namespace sphkern
