@@ -1,6 +1,7 @@
 #include "cli/source_options.hpp"
 
 #include "cli/command.hpp"
+#include "particles/formats/particle_arrays.hpp"
 #include "support/error.hpp"
 #include "support/io/sha256.hpp"
 #include "support/text/value_checks.hpp"
@@ -23,7 +24,8 @@ void add_source_options(Command c, SourceOptions& o)
     c.add_option("--count", o.count, "Poisson: number of particles");
     c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate");
     c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
-    c.add_option("--array", o.array, "PySPH file: the particle array");
+    c.add_option("--array", o.array,
+                 "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours");
 }
 
 ParticleSource source_of(const SourceOptions& o)
@@ -68,6 +70,8 @@ ParticleSource source_of(const SourceOptions& o)
         }
     }
     if (source.kind == SourceKind::file) {
+        if (const std::string problem = particle_array_list_problem(o.array); !problem.empty())
+            throw Error(ExitCode::usage, "--array " + o.array + ": " + problem);
         source.file.array = o.array;
         if (o.dim) source.file.dimension = o.dim;
         if (!o.box.empty()) {

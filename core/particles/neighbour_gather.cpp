@@ -382,7 +382,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
     for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-        if (grid.is_ghost(p)) continue;
+        if (!grid.visited(p)) continue;
         const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
         for (int d = 0; d < 3; ++d) lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
         out.reach = std::max(out.reach, reach[p]);

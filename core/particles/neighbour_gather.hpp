@@ -58,7 +58,7 @@ struct PointValues {
 
 // The candidates of cluster c for particles whose support radius is reach[point], with a[j]
 // unless a is null and b[j] unless b is null per point (grid's point order). count = 0 for a
-// cluster of ghosts.
+// cluster with no visited point (ghosts and neighbours-only particles).
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach, const double* a, const double* b,
                     ClusterCandidates& out);
 

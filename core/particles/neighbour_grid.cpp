@@ -93,6 +93,7 @@ NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
     if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
         fail_input(fmt::format("{}: {} particles, more than this engine indexes", set.name, set.size()));
     particles_ = set.size();
+    measured_ = set.measured();
     Ghosts ghosts;
     if (set.box) {
         const double width = set.box->smallest_width(set.dimension);
@@ -191,7 +192,8 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
         for (std::size_t p = begin; p < end; ++p) {
             const std::uint32_t k = next[row[p]]++;
             x_[k] = points.at(0, p), y_[k] = points.at(1, p), z_[k] = points.at(2, p);
-            source_[k] = points.source(p) | (p >= particles_ ? ghost_bit : 0u);
+            // Ghosts follow the particles, and the neighbours-only particles end the particles.
+            source_[k] = points.source(p) | (p >= measured_ ? unvisited_bit : 0u);
         }
     });
     row = {};

@@ -39,7 +39,7 @@ public:
     std::size_t points() const { return x_.size(); }  // particles and ghosts
     std::size_t particles() const { return particles_; }
     // The particle a point (particle or ghost) stands for.
-    std::uint32_t source(std::size_t point) const { return source_[point] & ~ghost_bit; }
+    std::uint32_t source(std::size_t point) const { return source_[point] & ~unvisited_bit; }
     const double* x() const { return x_.data(); }
     const double* y() const { return y_.data(); }
     const double* z() const { return z_.data(); }
@@ -50,7 +50,9 @@ public:
     // Bins in sweep order; the points of bin b are [bin_begin(b), bin_begin(b + 1)).
     std::size_t bins() const { return start_.size() - 1; }
     std::size_t bin_begin(std::size_t b) const { return static_cast<std::size_t>(start_[b]); }
-    bool is_ghost(std::size_t point) const { return (source_[point] & ghost_bit) != 0; }
+    // A particle the passes visit: not a ghost, nor a particle that is a neighbour only
+    // (ParticleSet::neighbours_only), whose points are candidates of the others all the same.
+    bool visited(std::size_t point) const { return (source_[point] & unvisited_bit) == 0; }
 
     // Clusters in sweep order (bins_per_cluster bins of one row); the points of cluster c are
     // [cluster_begin(c), cluster_end(c)).
@@ -116,8 +118,10 @@ private:
     std::size_t particles_ = 0;
     // Allocated once and first touched by the threads that sort into them.
     FirstTouchVector<double> x_, y_, z_;
-    // The particle each point stands for, ghost_bit set for a ghost (particles number fewer than 2^31).
-    static constexpr std::uint32_t ghost_bit = std::uint32_t{1} << 31;
+    // The particle each point stands for, unvisited_bit set for a ghost or a particle that is a
+    // neighbour only (particles number fewer than 2^31).
+    static constexpr std::uint32_t unvisited_bit = std::uint32_t{1} << 31;
+    std::size_t measured_ = 0; // particles [0, measured_) are visited
     FirstTouchVector<std::uint32_t> source_;
     std::vector<std::uint32_t> start_; // first point of each bin, and one past the last (points number fewer than 2^32)
     std::size_t n_[3] = {1, 1, 1};

@@ -1,9 +1,9 @@
 // The particle engine's one pass over every particle and its neighbours, which the measures,
 // the block's sums, relax's densities and forces and g(r) all run: on `threads` threads, the
 // clusters of the grid in cell order, each cluster's candidates gathered once, then each of
-// its particles (ghosts skipped) given its neighbours within its own reach. A visitor writes
-// per particle or adds integers per thread, so which thread takes which cluster changes no
-// result. Progress is shown by the first thread, in the runs of clusters taken by all.
+// its particles (ghosts and neighbours-only particles skipped) given its neighbours within its
+// own reach. A visitor writes per particle or adds integers per thread, so which thread takes
+// which cluster changes no result. Progress is shown by the first thread, in the runs of clusters taken by all.
 #pragma once
 
 #include "particles/neighbour_gather.hpp"
@@ -50,7 +50,7 @@ void pair_pass(const NeighbourGrid& grid, const std::string& set_name, const Pai
             for (std::size_t c = begin; c < std::min(clusters, begin + run); ++c) {
                 gather_cluster(grid, c, in.reach, in.a, in.b, cluster);
                 for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-                    if (grid.is_ghost(p)) continue;
+                    if (!grid.visited(p)) continue;
                     const double reach = in.reach[p];
                     gather_from_cluster(grid, cluster, p, reach * reach, set_name, nb, in.with_r2);
                     visit(thread, p, nb);

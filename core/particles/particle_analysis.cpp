@@ -56,6 +56,30 @@ void require_finite(const ParticlePoint& point, const ParticleSet& set, const Pa
     }
 }
 
+// The volumes, their mean, the spacing and rho0 of the answer. The mean volume and rho0 are
+// the measured particles' (a PySPH file's first array).
+void answer_volumes(ParticleAnswer& answer, const ParticleSet& set, const ParticleRequest& request, int threads)
+{
+    answer.volume = request.volume.value_or(default_volume_model(set));
+    answer.volumes = request.given_volumes.empty()
+                         ? particle_volumes(set, answer.volume, threads)
+                         : PerParticle::of(ParticleValues(request.given_volumes.begin(), request.given_volumes.end()));
+    if (answer.volumes.size() != set.size())
+        fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
+    // Every pass over the particles on the request's threads, sums in fixed blocks (the same on any number).
+    const auto& volumes = answer.volumes;
+    if (const auto i = first_index_where(volumes.size(), threads, [&](std::size_t i) { return !std::isfinite(volumes[i]) || volumes[i] <= 0; }))
+        fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", *i, volumes[*i]));
+    const std::size_t measured = set.measured();
+    const double total_volume = parallel_sum(measured, threads, [&](std::size_t i) { return volumes[i]; });
+    answer.mean_volume = total_volume / static_cast<double>(measured);
+    answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
+    // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
+    answer.rho0 = request.rho0.value_or(1.0);
+    if (!request.rho0 && !set.mass.empty())
+        answer.rho0 = parallel_sum(measured, threads, [&](std::size_t i) { return set.mass[i]; }) / total_volume;
+}
+
 } // namespace
 
 const Summary& ParticlePoint::statistic(const std::string& name) const
@@ -70,27 +94,11 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
     PhaseTimes& phases = answer.phases;
-    answer.volume = request.volume.value_or(default_volume_model(set));
     const int threads = worker_threads(request.threads);
-    answer.volumes = request.given_volumes.empty()
-                         ? particle_volumes(set, answer.volume, threads)
-                         : PerParticle::of(ParticleValues(request.given_volumes.begin(), request.given_volumes.end()));
-    if (answer.volumes.size() != set.size())
-        fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
-    // Every pass over the particles on the request's threads, sums in fixed blocks (the same on any number).
-    const auto& volumes = answer.volumes;
-    if (const auto i = first_index_where(volumes.size(), threads, [&](std::size_t i) { return !std::isfinite(volumes[i]) || volumes[i] <= 0; }))
-        fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", *i, volumes[*i]));
-    const double n = static_cast<double>(set.size());
-    const double total_volume = parallel_sum(volumes.size(), threads, [&](std::size_t i) { return volumes[i]; });
-    answer.mean_volume = total_volume / n;
-    answer.spacing = set.spacing > 0 ? set.spacing : std::pow(answer.mean_volume, 1.0 / set.dimension);
+    answer_volumes(answer, set, request, threads);
     phases.lap("volumes");
     answer.gravity = request.gravity ? request.gravity->normalized() : set.gravity;
-    // The reference density: given, else the set's mean mass density, else 1 (m = rho0 V).
-    answer.rho0 = request.rho0.value_or(1.0);
-    if (!request.rho0 && !set.mass.empty())
-        answer.rho0 = parallel_sum(set.size(), threads, [&](std::size_t i) { return set.mass[i]; }) / total_volume;
+    const std::size_t measured = set.measured();
 
     std::vector<SmoothingSpec> specs;
     if (const auto& s = request.sweep)
@@ -115,7 +123,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
                                    set.name, *i, h[*i]));
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         require_finite(point, set, answer);
-        const Summary h_range = statistics_detail::moments(h.size(), threads, [&](std::size_t i) { return h[i]; });
+        const Summary h_range = statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; });
         point.eta = h_range.mean / unit;
         point.nh = neighbour_number(point.eta, R, dim);
         point.h_min = h_range.min, point.h_max = h_range.max;

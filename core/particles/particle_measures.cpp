@@ -226,13 +226,15 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
                       inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass)};
 
     phases.lap("grid");
-    const std::size_t n = set.size();
+    // The measured particles only: the neighbours-only ones end the set and are not visited.
+    const std::size_t n = set.measured();
     // Written in the particles' own order, random in memory on a disordered set.
     for (auto* v : {&out.e0, &out.eps_gradp, &out.eps_gradp_sum, &out.e1_norm, &out.m1_norm, &out.E_norm}) v->resize(n);
     out.neighbours.resize(n);
     if (!inputs.mass.empty()) out.eps_rho.resize(n);
     if (inputs.vectors) out.e1.resize(n), out.m1.resize(n), out.E.resize(n);
-    spdlog::debug("{}: {} particles and {} ghosts on {} threads", set.name, n, grid.points() - n, out.threads);
+    spdlog::debug("{}: {} particles and {} ghosts on {} threads ({} of the particles neighbours only)", set.name,
+                  set.size(), grid.points() - set.size(), out.threads, set.neighbours_only);
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
     std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread

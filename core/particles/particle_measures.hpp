@@ -30,7 +30,8 @@ struct MeasureInputs {
     bool vectors = true;        // keep e1, m1 and E per particle (else only their magnitudes)
 };
 
-// Every array is written by the threads of the sums (first touch), one value per particle.
+// Every array is written by the threads of the sums (first touch), one value per measured
+// particle (ParticleSet::measured: the neighbours-only particles have none).
 // The statistics need only the scalars (52 bytes a particle without masses); the vectors and
 // the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {

@@ -40,7 +40,12 @@ struct ParticleSet {
     double spacing = 0;         // a lattice's nearest-neighbour distance d, 0 for other sets
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -1); // the lattice's, else -y (2D) or -z (3D)
 
+    // The last this many particles are neighbours only (a PySPH file's other arrays: walls and
+    // solids): they enter the others' sums but are not measured; the statistics are over the rest.
+    std::size_t neighbours_only = 0;
+
     std::size_t size() const { return x.size(); }
+    std::size_t measured() const { return x.size() - neighbours_only; }
     Eigen::Vector3d position(std::size_t i) const { return {x[i], y[i], z[i]}; }
 };
 

@@ -54,8 +54,9 @@ nlohmann::json point_json(const ParticlePoint& p)
 
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer)
 {
-    nlohmann::json source = {{"name", set.name}, {"particles", set.size()}, {"dimension", set.dimension},
+    nlohmann::json source = {{"name", set.name}, {"particles", set.measured()}, {"dimension", set.dimension},
                              {"periodic", set.box.has_value()}};
+    if (set.neighbours_only) source["neighbours_only"] = set.neighbours_only;
     if (set.box) {
         nlohmann::json edges = nlohmann::json::array();
         for (int a = 0; a < set.dimension; ++a) edges.push_back(vector_json(set.box->edges.col(a), set.dimension));
@@ -81,8 +82,10 @@ nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set
 
 void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer)
 {
-    fmt::print(out, "{} on {}: {} particles in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
-               kernel.label(), set.name, set.size(), set.dimension, set.box ? "periodic box" : "free (no box)",
+    fmt::print(out, "{} on {}: {} particles{} in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
+               kernel.label(), set.name, set.measured(),
+               set.neighbours_only ? fmt::format(" (and {} neighbours only)", set.neighbours_only) : "", set.dimension,
+               set.box ? "periodic box" : "free (no box)",
                volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
                set.dimension == 3 ? fmt::format(", {:.4g}", answer.gravity.z()) : "");
     if (answer.points.size() > 1) {
@@ -115,7 +118,7 @@ void write_particle_csv(std::ostream& stream, const ParticleSet& set, const Part
     ChunkedWriter out(stream);
     out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
               three ? "e1_z," : "", three ? ",m1_z" : "");
-    out.rows(set.size(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
+    out.rows(set.measured(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
         auto to = std::back_inserter(row);
         fmt::format_to(to, "{},{},{},", i, set.x[i], set.y[i]);
         if (three) fmt::format_to(to, "{},", set.z[i]);
@@ -131,7 +134,7 @@ void write_particle_csv(std::ostream& stream, const ParticleSet& set, const Part
 void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
-    const std::size_t n = set.size();
+    const std::size_t n = set.measured(); // the neighbours-only particles have no measures
     const int threads = answer.threads;
     ChunkedWriter out(stream);
     write_vtk_points(out, "sphkern particles: consistency errors per particle", n, set.x.data(), set.y.data(),

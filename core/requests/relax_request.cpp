@@ -108,6 +108,11 @@ double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& 
     if (!set.box)
         fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box",
                                set.name));
+    // Walls and solids read as neighbours only would move with the fluid.
+    if (set.neighbours_only)
+        fail_input(fmt::format("{}: relaxation moves every particle; expected one particle array, not a list (a list "
+                               "of arrays is for `particles`)",
+                               set.name));
     check_smoothing_fits(spec, set, sources);
     return smoothing_lengths(set, kernel, spec, mean_volume(set))[0];
 }

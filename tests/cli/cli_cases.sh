@@ -1035,6 +1035,20 @@ with h5py.File(sys.argv[2], 'w') as f:
 " "$work/noarrays.h5" "$work/longname.h5"
 expect 3 'noarrays.h5: /particles holds no particle array' -- particles cubic_bspline "$work/noarrays.h5" --nh 40
 expect 0 '^$' -- particles cubic_bspline "$work/longname.h5" --nh 40 --box 1,1,1
+# Several PySPH arrays: names that exist, each once, and no relaxation of walls.
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+rng = numpy.random.default_rng(3)
+with h5py.File(sys.argv[1], 'w') as f:
+    for name in ('fluid', 'solid'):
+        for axis in 'xyz':
+            f.create_dataset('particles/' + name + '/arrays/' + axis, data=rng.random(300))
+" "$work/arrays.h5"
+expect 0 '^$' -- particles cubic_bspline "$work/arrays.h5" --array fluid,solid --nh 40 --box 1,1,1
+expect 3 'arrays.h5: no particle array "wall"; the file has fluid, solid' -- particles cubic_bspline "$work/arrays.h5" --array fluid,wall --nh 40
+expect 2 '--array fluid,,solid: an empty array name' -- particles cubic_bspline "$work/arrays.h5" --array fluid,,solid --nh 40
+expect 2 '--array fluid,fluid: array "fluid" named twice' -- particles cubic_bspline "$work/arrays.h5" --array fluid,fluid --nh 40
+expect 3 'arrays.h5: relaxation moves every particle; expected one particle array' -- relax cubic_bspline "$work/arrays.h5" --array fluid,solid --box 1,1,1 --nh 40 --steps 1
 
 # Files reached through an HDF5 file's links are inputs too: an output may not replace them
 # (it did, exit 0), and a link is followed only to a regular file (a FIFO blocked the open).

@@ -380,3 +380,113 @@ def test_a_broken_snapshot_in_parts_names_the_part(tmp_path):
     # The declared total is checked against the budget before any part is read.
     line = refused(str(tmp_path / "box.1.hdf5"), "--memory-limit", "0.0000001")
     assert "declares 1500 particles in 3 files" in line
+
+
+def pysph_dump(path, arrays):
+    """`arrays`: {name: {property: values}}. Written by PySPH's own dump where PySPH is
+    installed, else in the layout its HDFOutput writes (pysph/solver/output.py): /solver_data
+    attributes, /particles/<name>/constants and /particles/<name>/arrays/<property> with the
+    attributes stored, name, type, default and stride; a property not output is an empty
+    dataset with stored false."""
+    try:
+        from pysph.base.utils import get_particle_array
+        from pysph.solver.utils import dump
+    except ImportError:
+        with h5py.File(path, "w") as f:
+            f.create_group("solver_data").attrs.update({"dt": 1e-4, "t": 0.0, "count": 0})
+            for name, props in arrays.items():
+                f.create_group(f"particles/{name}/constants")
+                group = f.create_group(f"particles/{name}/arrays")
+                for prop, values in {**props, "p": None, "au": None}.items():
+                    stored = values is not None
+                    data = group.create_dataset(prop, data=values) if stored else group.create_dataset(prop, (0,))
+                    data.attrs.update({"stored": stored, "name": prop, "type": "double", "default": 0.0, "stride": 1})
+        return
+    dump(str(path), [get_particle_array(name=name, **props) for name, props in arrays.items()],
+         {"dt": 1e-4, "t": 0.0, "count": 0})
+
+
+def wendland_c2_2d(q, h):
+    """PySPH's WendlandQuintic in 2D: 7 / (4 pi h^2) (1 - q/2)^4 (2q + 1), support 2h; and dW/dr."""
+    t = np.clip(1 - q / 2, 0, None)
+    sigma = 7 / (4 * np.pi * h**2)
+    return sigma * t**4 * (2 * q + 1), sigma / h * (-5 * q) * t**3
+
+
+def brute_force_sums(fluid, others):
+    """For each fluid particle i: sum_j V_j W(r_ij, h_i) - 1 (itself included), the neighbour
+    count, and h_i sum_j V_j grad_i W_ij, over the fluid and `others` particles."""
+    xs = np.concatenate([fluid["x"]] + [o["x"] for o in others])
+    ys = np.concatenate([fluid["y"]] + [o["y"] for o in others])
+    vol = np.concatenate([fluid["m"] / fluid["rho"]] + [o["m"] / o["rho"] for o in others])
+    e0, count, e1 = [], [], []
+    for i in range(len(fluid["x"])):
+        dx, dy = fluid["x"][i] - xs, fluid["y"][i] - ys
+        r = np.hypot(dx, dy)
+        h = fluid["h"][i]
+        w, dw = wendland_c2_2d(r / h, h)
+        e0.append(np.sum(vol * w) - 1)
+        count.append(int(np.sum((r > 0) & (r < 2 * h))))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            g = np.where(r > 0, dw / r, 0.0)
+        e1.append([h * np.sum(vol * g * dx), h * np.sum(vol * g * dy)])
+    return np.array(e0), np.array(count), np.array(e1)
+
+
+def wall_and_fluid():
+    """A 2D fluid block (jittered, variable h and density) above three layers of wall particles."""
+    rng = np.random.default_rng(34)
+    dx = 0.05
+    gx, gy = np.meshgrid(np.arange(20) * dx + dx / 2, np.arange(20) * dx + dx / 2)
+    n = gx.size
+    rho = 1000 * rng.uniform(0.98, 1.02, n)
+    fluid = {"x": gx.ravel() + rng.uniform(-0.1, 0.1, n) * dx, "y": gy.ravel() + rng.uniform(-0.1, 0.1, n) * dx,
+             "z": np.zeros(n), "h": 1.2 * dx * rng.uniform(0.95, 1.05, n), "rho": rho, "m": rho * dx**2}
+    wx, wy = np.meshgrid(np.arange(-3, 23) * dx + dx / 2, -np.arange(3) * dx - dx / 2)
+    k = wx.size
+    solid = {"x": wx.ravel(), "y": wy.ravel(), "z": np.zeros(k), "h": np.full(k, 1.2 * dx),
+             "rho": np.full(k, 1000.0), "m": np.full(k, 1000 * dx**2)}
+    return fluid, solid
+
+
+def per_particle(path, *args):
+    out = path.parent / (path.stem + "-out.csv")
+    done = subprocess.run([CLI, "particles", "wendland_c2", str(path), "--support-per-h", "2", "--csv", str(out),
+                           "--json", *args], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    rows = np.genfromtxt(out, delimiter=",", names=True)
+    return json.loads(done.stdout), rows
+
+
+def test_pysph_several_arrays_measure_the_first_with_all_as_neighbours(tmp_path):
+    fluid, solid = wall_and_fluid()
+    pysph_dump(tmp_path / "tank.hdf5", {"fluid": fluid, "solid": solid})
+    doc, rows = per_particle(tmp_path / "tank.hdf5", "--array", "fluid,solid")
+    n = len(fluid["x"])
+    # Measured on the fluid only, in its order; the wall's particles are neighbours.
+    assert len(rows) == n and doc["source"]["particles"] == n and doc["source"]["neighbours_only"] == len(solid["x"])
+    assert np.array_equal(rows["x"], fluid["x"]) and np.array_equal(rows["h"], fluid["h"])
+    e0, count, e1 = brute_force_sums(fluid, [solid])
+    assert np.max(np.abs(rows["e0"] - e0)) < 1e-12
+    assert np.array_equal(rows["neighbours"], count)
+    assert np.max(np.abs(rows["e1_x"] - e1[:, 0])) < 1e-12 and np.max(np.abs(rows["e1_y"] - e1[:, 1])) < 1e-12
+    # The statistics are the fluid's: the mean of e0 over its particles.
+    assert abs(doc["statistics"]["e0"]["mean"] - np.mean(e0)) < 1e-12
+    # The fluid alone: its own sums, which the wall changes near it.
+    alone_doc, alone = per_particle(tmp_path / "tank.hdf5", "--array", "fluid")
+    e0_alone, count_alone, _ = brute_force_sums(fluid, [])
+    assert alone_doc["source"].get("neighbours_only") is None
+    assert np.max(np.abs(alone["e0"] - e0_alone)) < 1e-12 and np.array_equal(alone["neighbours"], count_alone)
+    assert np.max(np.abs(alone["e0"] - rows["e0"])) > 0.1
+
+
+def test_pysph_array_lists_are_checked(tmp_path):
+    fluid, solid = wall_and_fluid()
+    pysph_dump(tmp_path / "tank.hdf5", {"fluid": fluid, "solid": solid})
+    line = refused(str(tmp_path / "tank.hdf5"), "--array", "fluid,wall", "--support-per-h", "2")
+    assert 'tank.hdf5: no particle array "wall"; the file has fluid, solid' in line
+    pysph_dump(tmp_path / "no-h.hdf5", {"fluid": fluid, "solid": solid})
+    with h5py.File(tmp_path / "no-h.hdf5", "a") as f:
+        del f["particles/solid/arrays/h"]
+    assert 'particle array "solid" has no h, which "fluid" has' in refused(
+        str(tmp_path / "no-h.hdf5"), "--array", "fluid,solid", "--support-per-h", "2")

@@ -399,7 +399,7 @@ TEST_CASE("sources, validation and the neighbour grid are the same on 1, 2 and 7
     // The grid holds each particle once and each bin's points inside it, sorted by bin.
     std::vector<int> seen(one.size(), 0);
     for (std::size_t p = 0; p < grid.points(); ++p)
-        if (!grid.is_ghost(p)) ++seen[grid.source(p)];
+        if (grid.visited(p)) ++seen[grid.source(p)];
     CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
     // Two bad particles in different blocks: the lowest id is named on any thread count.
     auto bad = one;
@@ -660,7 +660,7 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
                     std::vector<int> seen(grid.points(), 0);
                     for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
                     for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
-                        if (grid.is_ghost(p)) continue;
+                        if (!grid.visited(p)) continue;
                         const double r = reaches[grid.source(p)];
                         gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
                         std::vector<int> kept(grid.points(), 0);

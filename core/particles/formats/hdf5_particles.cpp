@@ -1,13 +1,14 @@
 // HDF5 particle files through libhdf5's C API, with its own error printing switched off:
 // SWIFT and GADGET snapshots and initial conditions (/Header, /PartType0) and PySPH output
 // (/particles/<array>/arrays/<property>).
+#include "particles/formats/particle_arrays.hpp"
 #include "particles/formats/particle_files.hpp"
-#include "support/text/setting_names.hpp"
 #include "particles/formats/swift_kernels.hpp"
 
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/text/printable_text.hpp"
+#include "support/text/setting_names.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -303,7 +304,8 @@ ParticleSet read_snapshot(const File& f)
     return set;
 }
 
-ParticleSet read_pysph(const File& f, const std::string& requested)
+// The names of the particle arrays under /particles, in the file's name order.
+std::vector<std::string> pysph_array_names(const File& f)
 {
     std::vector<std::string> names;
     Handle group(H5Gopen2(f.id, "/particles", f.group_access), H5Gclose);
@@ -320,19 +322,32 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
         names.push_back(std::move(name));
     }
     if (names.empty()) fail_input(fmt::format("{}: /particles holds no particle array; expected /particles/<array>/arrays/x, y[, z]", f.name));
-    auto listed = [&] {
-        std::string text;
-        for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
-        return text;
-    };
-    std::string array = requested;
-    if (array.empty()) {
-        if (names.size() == 1) array = names[0];
-        else if (std::find(names.begin(), names.end(), "fluid") != names.end()) array = "fluid";
-        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with {} NAME", f.name, listed(), setting_named("array")));
+    return names;
+}
+
+// The arrays asked for (default: the only one, or "fluid"), each one the file has.
+std::vector<std::string> chosen_pysph_arrays(const File& f, const std::string& requested)
+{
+    const auto names = pysph_array_names(f);
+    std::string listed;
+    for (const auto& n : names) listed += (listed.empty() ? "" : ", ") + n;
+    if (const std::string problem = particle_array_list_problem(requested); !problem.empty())
+        fail_input(fmt::format("{}: the array list \"{}\": {}", f.name, requested, problem));
+    auto chosen = particle_array_names(requested);
+    if (chosen.empty()) {
+        if (names.size() == 1) chosen = names;
+        else if (std::find(names.begin(), names.end(), "fluid") != names.end()) chosen = {"fluid"};
+        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with {} NAME", f.name, listed, setting_named("array")));
     }
-    if (std::find(names.begin(), names.end(), array) == names.end())
-        fail_input(fmt::format("{}: no particle array \"{}\"; the file has {}", f.name, array, listed()));
+    for (const auto& array : chosen)
+        if (std::find(names.begin(), names.end(), array) == names.end())
+            fail_input(fmt::format("{}: no particle array \"{}\"; the file has {}", f.name, array, listed));
+    return chosen;
+}
+
+// One array's x, y, z, h, m and rho (each of the last four empty where the file has none).
+ParticleSet read_pysph_array(const File& f, const std::string& array)
+{
     const std::string base = "/particles/" + array + "/arrays/";
     if (!f.exists(base + "x") || !f.exists(base + "y"))
         fail_input(fmt::format("{}: {}x and {}y are missing; expected PySPH arrays x, y[, z][, h][, m][, rho]", f.name,
@@ -351,13 +366,39 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
         return f.column(path, n);
     };
     set.z = optional_column("z");
+    if (set.z.empty()) set.z.assign(n, 0.0);
     set.h = optional_column("h");
     set.mass = optional_column("m");
     set.density = optional_column("rho");
+    return set;
+}
+
+// The neighbours-only arrays' particles after the measured ones. A property the first array
+// has must be in every array (each particle needs it); one it lacks is left out of all.
+void append_pysph_array(ParticleSet& set, ParticleSet&& more, const std::string& first, const std::string& array)
+{
+    const std::pair<ParticleValues*, ParticleValues*> columns[] = {{&set.h, &more.h}, {&set.mass, &more.mass}, {&set.density, &more.density}};
+    const char* names[] = {"h", "m", "rho"};
+    for (std::size_t c = 0; c < 3; ++c)
+        if (!columns[c].first->empty() && columns[c].second->empty())
+            fail_input(fmt::format("{}: particle array \"{}\" has no {}, which \"{}\" has; expected it in every array read",
+                                   set.name, array, names[c], first));
+    for (const auto& [whole, piece] : columns)
+        if (!whole->empty()) whole->insert(whole->end(), piece->begin(), piece->end());
+    for (const auto& [whole, piece] : {std::pair{&set.x, &more.x}, std::pair{&set.y, &more.y}, std::pair{&set.z, &more.z}})
+        whole->insert(whole->end(), piece->begin(), piece->end());
+    set.neighbours_only += more.size();
+}
+
+ParticleSet read_pysph(const File& f, const std::string& requested)
+{
+    const auto arrays = chosen_pysph_arrays(f, requested);
+    ParticleSet set = read_pysph_array(f, arrays.front());
+    for (std::size_t a = 1; a < arrays.size(); ++a) append_pysph_array(set, read_pysph_array(f, arrays[a]), arrays.front(), arrays[a]);
     // PySPH keeps z (zero) for 2D runs.
-    const bool flat = set.z.empty() || std::all_of(set.z.begin(), set.z.end(), [](double z) { return z == 0; });
+    const bool flat = std::all_of(set.z.begin(), set.z.end(), [](double z) { return z == 0; });
     set.dimension = flat ? 2 : 3;
-    if (flat) set.z.assign(n, 0.0), set.gravity = Eigen::Vector3d(0, -1, 0);
+    if (flat) set.gravity = Eigen::Vector3d(0, -1, 0);
     return set;
 }
 

@@ -14,7 +14,9 @@ namespace sphkern {
 enum class ParticleFileFormat { hdf5, csv, vtk };
 
 struct ParticleFileOptions {
-    std::string array;           // PySPH: the particle array (default: the only one, or "fluid")
+    // PySPH: the particle array (default: the only one, or "fluid"), or a comma-separated list:
+    // measured on the first, the others' particles neighbours only (ParticleSet::neighbours_only).
+    std::string array;
     std::optional<int> dimension; // 2: read a 3-column file whose one coordinate is constant as 2D
     std::size_t max_particles = 0;
 };

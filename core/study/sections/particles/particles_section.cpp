@@ -62,13 +62,13 @@ void analyse_source(const StudyParticles& p, const Study& study, const StudyInpu
         c.source = s.label;
         c.kernel_label = kernel.label();
         c.dimension = set.dimension;
-        c.particles = set.size();
+        c.particles = set.measured(); // a PySPH file's first array: its others are neighbours only
         at_source(study_source(study, s.json_path), [&] {
             auto answer = analyse_particles(kernel, set, particle_request_of(p, study, kernel, set));
             c.volume = answer.volume;
             c.points = std::move(answer.points);
             for (const auto& p : c.points)
-                c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.size()));
+                c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.measured()));
         });
         results.cases.push_back(std::move(c));
     }
