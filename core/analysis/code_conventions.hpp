@@ -4,7 +4,7 @@
 //   DualSPHysics  coefh = H / (2 sqrt(D) dp)   (h = coefh sqrt(D) dp, support 2h)
 //   SWIFT         eta = H / (gamma V^(1/D))    (h = eta (m/rho)^(1/D), support gamma h)
 //   GADGET        N_ngb = omega_D H^D / V      (its h is the support radius; omega_D the unit ball)
-//   SPlisHSPlasH  H / r_p = 2 H / dp           (it stores H; the particle radius is dp / 2)
+//   SPlisHSPlasH  H / r_p = 2 H / dp           (it stores no h; its support is 4 r_p, r_p = dp / 2)
 // SWIFT's gamma = H / (2 sigma), sigma^2 the kernel's variance per dimension (Dehnen & Aly
 // 2012): computed from the kernel, so it exists for every kernel.
 #pragma once

@@ -6,6 +6,7 @@
 #include "support/io/sha256.hpp"
 #include "support/text/value_checks.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -24,9 +25,31 @@ void add_source_options(Command c, SourceOptions& o)
     c.add_option("--count", o.count, "Poisson: number of particles");
     c.add_option("--dim", o.dim, "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate");
     c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
+    c.add_option("--particle-radius", o.particle_radius,
+                 "SPlisHSPlasH VTK file: the scene's particle radius r (the file holds none); h = r, support 4 r");
     c.add_option("--array", o.array,
                  "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours");
 }
+
+namespace {
+
+// The options of a file source: its arrays, dimension, box and particle radius.
+void file_source(const SourceOptions& o, ParticleSource& source)
+{
+    if (const std::string problem = particle_array_list_problem(o.array); !problem.empty())
+        throw Error(ExitCode::usage, "--array " + o.array + ": " + problem);
+    source.file.array = o.array;
+    if (o.particle_radius && !(*o.particle_radius > 0 && std::isfinite(*o.particle_radius)))
+        throw Error(ExitCode::usage, fmt::format("--particle-radius {}: expected a positive finite length", *o.particle_radius));
+    source.file.particle_radius = o.particle_radius;
+    if (o.dim) source.file.dimension = o.dim;
+    if (!o.box.empty()) {
+        const auto sides = parse_number_list(o.box, ValueSource::option("--box"), 2, 3);
+        source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
+    }
+}
+
+} // namespace
 
 ParticleSource source_of(const SourceOptions& o)
 {
@@ -69,18 +92,11 @@ ParticleSource source_of(const SourceOptions& o)
                 throw Error(ExitCode::usage, "--box " + o.box + ": give one side or one per dimension");
         }
     }
-    if (source.kind == SourceKind::file) {
-        if (const std::string problem = particle_array_list_problem(o.array); !problem.empty())
-            throw Error(ExitCode::usage, "--array " + o.array + ": " + problem);
-        source.file.array = o.array;
-        if (o.dim) source.file.dimension = o.dim;
-        if (!o.box.empty()) {
-            const auto sides = parse_number_list(o.box, ValueSource::option("--box"), 2, 3);
-            source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
-        }
-    } else if (!o.array.empty()) {
+    if (source.kind == SourceKind::file) file_source(o, source);
+    else if (!o.array.empty())
         throw Error(ExitCode::usage, "--array chooses a PySPH particle array; " + o.source + " is not a file");
-    }
+    else if (o.particle_radius)
+        throw Error(ExitCode::usage, "--particle-radius gives the h of a SPlisHSPlasH file; " + o.source + " is not a file");
     return source;
 }
 
@@ -93,6 +109,7 @@ nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel)
     nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
                              {"count", o.count}, {"box", o.box}, {"array", o.array}};
     if (!o.cell.empty()) source["cell"] = o.cell;
+    if (o.particle_radius) source["particle_radius"] = *o.particle_radius;
     if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
     inputs["particles"] = source;
     return inputs;

@@ -8,6 +8,7 @@
 #include "cli/options.hpp"
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 
 namespace sphkern::cli {
@@ -17,6 +18,7 @@ struct SourceOptions {
     double sigma = 0;
     unsigned long long seed = 1, count = 0;
     int dim = 0;
+    std::optional<double> particle_radius;
 };
 
 void add_source_options(Command command, SourceOptions& options);

@@ -523,7 +523,8 @@ h : float or array_like, optional
     is support_per_h times h.
 support_per_h : float, optional
     The support radius over the stored h, as the command line's --support-per-h
-    (GADGET and SPlisHSPlasH 1, SWIFT its kernel gamma, DualSPHysics 2). Default: the
+    (GADGET 1, SWIFT its kernel gamma, DualSPHysics 2, SPlisHSPlasH 4 with its particle
+    radii as h). Default: the
     kernel's support R, that is h is sphkern's own.
 eta : float, optional
     h = eta V^(1/D) with V the mean volume, in (0, 100]. Default, without h and nh: 1.2.

@@ -36,7 +36,7 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
     if (!(x > 0) || !std::isfinite(x))
         fail_input(fmt::format("{}: the file's smoothing lengths need a convention: {} X, the support radius over the "
-                               "stored h (GADGET and SPlisHSPlasH 1, SWIFT its kernel gamma, PySPH the kernel's R, "
+                               "stored h (GADGET 1, SWIFT its kernel gamma, PySPH the kernel's R, "
                                "DualSPHysics 2), or {}",
                                set.name, sources.support_per_h.name, others));
 }
@@ -60,6 +60,11 @@ SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& s
     const bool rule_given = given.eta || given.nh || given.k;
     SmoothingSpec spec = smoothing_spec(given, sources);
     if (!rule_given && !set.h.empty() && file_h_allowed) spec = {SmoothingRule::file, 0, given.support_per_h.value_or(0)};
+    // A code whose support is a number of particle radii the file does not hold (SPlisHSPlasH).
+    if (!rule_given && set.h.empty() && set.support_per_radius > 0)
+        fail_input(fmt::format("{}: the file holds no h and no particle radius (its support is {} radii); give "
+                               "--particle-radius R, the scene's particle radius, or {} E or {} N",
+                               set.name, set.support_per_radius, sources.eta.name, sources.nh.name));
     const auto x = given.support_per_h;
     if (x && (spec.rule != SmoothingRule::file || !(*x > 0) || !std::isfinite(*x)))
         sources.support_per_h.fail(fmt::format("maps a file's h (a positive finite number); it does not go with {}, "

@@ -1049,6 +1049,22 @@ expect 3 'arrays.h5: no particle array "wall"; the file has fluid, solid' -- par
 expect 2 '--array fluid,,solid: an empty array name' -- particles cubic_bspline "$work/arrays.h5" --array fluid,,solid --nh 40
 expect 2 '--array fluid,fluid: array "fluid" named twice' -- particles cubic_bspline "$work/arrays.h5" --array fluid,fluid --nh 40
 expect 3 'arrays.h5: relaxation moves every particle; expected one particle array' -- relax cubic_bspline "$work/arrays.h5" --array fluid,solid --box 1,1,1 --nh 40 --steps 1
+# SPlisHSPlasH's VTK files hold no h and no particle radius: the radius is asked for, and given
+# only for its files.
+/usr/bin/python3 -c "
+import numpy, sys
+rng = numpy.random.default_rng(4)
+for path, title in ((sys.argv[1], 'SPlisHSPlasH particle data'), (sys.argv[2], 'other particles')):
+    with open(path, 'w') as f:
+        f.write('# vtk DataFile Version 4.1\\n' + title + '\\nASCII\\nDATASET UNSTRUCTURED_GRID\\nPOINTS 300 float\\n')
+        f.write('\\n'.join(' '.join(repr(c) for c in p) for p in rng.random((300, 3))) + '\\n')
+" "$work/splish.vtk" "$work/notsplish.vtk"
+expect 0 '^$' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --box 1,1,1
+expect 3 'splish.vtk: the file holds no h and no particle radius \(its support is 4 radii\); give --particle-radius R' -- particles cubic_bspline "$work/splish.vtk" --box 1,1,1
+expect 2 '--particle-radius: .*notsplish.vtk is not SPlisHSPlasH' -- particles cubic_bspline "$work/notsplish.vtk" --particle-radius 0.05 --box 1,1,1
+expect 2 '--particle-radius: .*arrays.h5 is not a VTK file' -- particles cubic_bspline "$work/arrays.h5" --particle-radius 0.05 --nh 40
+expect 2 '--particle-radius gives the h of a SPlisHSPlasH file; poisson is not a file' -- particles cubic_bspline poisson --count 100 --particle-radius 0.05
+expect 2 '--particle-radius -1: expected a positive finite length' -- particles cubic_bspline "$work/splish.vtk" --particle-radius -1 --box 1,1,1
 
 # Files reached through an HDF5 file's links are inputs too: an output may not replace them
 # (it did, exit 0), and a link is followed only to a regular file (a FIFO blocked the open).

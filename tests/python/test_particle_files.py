@@ -490,3 +490,64 @@ def test_pysph_array_lists_are_checked(tmp_path):
         del f["particles/solid/arrays/h"]
     assert 'particle array "solid" has no h, which "fluid" has' in refused(
         str(tmp_path / "no-h.hdf5"), "--array", "fluid,solid", "--support-per-h", "2")
+
+
+def test_dualsphysics_csv_as_its_writer_writes_it(tmp_path):
+    # JOutputCsv::SaveCsv: free-text head lines, then each array's name and unit, every field
+    # (and every value) followed by the separator; Rho and Mass as DualSPHysics 5.2 names them.
+    x, h, m, rho = particles()
+    args = ["--eta", "1.2", "--box", f"{L},{L},{L}"]
+    with open(tmp_path / "plain.csv", "w") as f:
+        f.write("x,y,z,m,rho\n")
+        for p, mm, r in zip(x, m, rho):
+            f.write(f"{p[0]!r},{p[1]!r},{p[2]!r},{mm!r},{r!r}\n")
+    with open(tmp_path / "dsph.csv", "w") as f:
+        f.write("Particles of a DualSPHysics case\nPart 0042 at 1.25 s\n")
+        f.write("Pos.x [m];Pos.y [m];Pos.z [m];Idp;Vel.x [m/s];Vel.y [m/s];Vel.z [m/s];Rho [kg/m^3];Mass [kg];Type;\n")
+        for i, (p, mm, r) in enumerate(zip(x, m, rho)):
+            f.write(f"{p[0]!r};{p[1]!r};{p[2]!r};{i};0;0;0;{r!r};{mm!r};3;\n")
+    doc = run(str(tmp_path / "dsph.csv"), *args)
+    assert doc["volume"] == "file" and doc["source"]["particles"] == N
+    assert doc["statistics"] == run(str(tmp_path / "plain.csv"), *args)["statistics"]
+
+
+def write_splishsplash_vtk(path, x, rho, title="SPlisHSPlasH particle data"):
+    """As SPlisHSPlasH's ParticleExporter_VTK writes it: big-endian float points, each particle
+    a cell, ids as SCALARS, the exported attributes (velocity, density) as FIELD arrays; no h."""
+    n = len(x)
+    with open(path, "wb") as f:
+        f.write(f"# vtk DataFile Version 4.1\n{title}\nBINARY\nDATASET UNSTRUCTURED_GRID\n".encode())
+        f.write(f"POINTS {n} float\n".encode() + x.astype(">f4").tobytes() + b"\n")
+        cells = np.column_stack([np.ones(n), np.arange(n)]).astype(">u4")
+        f.write(f"CELLS {n} {2 * n}\n".encode() + cells.tobytes() + b"\n")
+        f.write(f"CELL_TYPES {n}\n".encode() + np.ones(n).astype(">i4").tobytes() + b"\n")
+        f.write(f"POINT_DATA {n}\n".encode())
+        f.write(b"SCALARS id unsigned_int 1\nLOOKUP_TABLE id_table\n" + np.arange(n).astype(">u4").tobytes() + b"\n")
+        f.write(b"FIELD FieldData 2\n")
+        f.write(f"velocity 3 {n} float\n".encode() + np.zeros((n, 3)).astype(">f4").tobytes() + b"\n")
+        f.write(f"density 1 {n} float\n".encode() + rho.astype(">f4").tobytes() + b"\n")
+
+
+def test_a_splishsplash_vtk_file_has_the_support_of_4_particle_radii(tmp_path):
+    x, h, m, rho = particles()
+    radius = 0.045
+    write_splishsplash_vtk(tmp_path / "ParticleData_Fluid_42.vtk", x, rho)
+    # The same float positions with the support 4 r as the stored h.
+    x32 = x.astype(np.float32).astype(np.float64)
+    with open(tmp_path / "same.csv", "w") as f:
+        f.write("x,y,z,h\n")
+        for p in x32:
+            f.write(f"{p[0]!r},{p[1]!r},{p[2]!r},{4 * radius!r}\n")
+    box = ["--box", f"{L},{L},{L}"]
+    doc = run(str(tmp_path / "ParticleData_Fluid_42.vtk"), "--particle-radius", str(radius), *box)
+    close(doc, run(str(tmp_path / "same.csv"), "--support-per-h", "1", *box), 1e-13)
+    # The file holds no radius: without one (or --eta, --nh) it is asked for.
+    line = refused(str(tmp_path / "ParticleData_Fluid_42.vtk"), *box)
+    assert "ParticleData_Fluid_42.vtk: the file holds no h and no particle radius (its support is 4 radii); " \
+           "give --particle-radius R" in line, line
+    assert run(str(tmp_path / "ParticleData_Fluid_42.vtk"), "--eta", "1.2", *box)["source"]["particles"] == N
+    # Another title: not SPlisHSPlasH's, and no radius gives its h.
+    write_splishsplash_vtk(tmp_path / "other.vtk", x, rho, title="particles")
+    done = subprocess.run([CLI, "particles", "wendland_c2", str(tmp_path / "other.vtk"), "--particle-radius", "0.045",
+                           *box], capture_output=True, text=True)
+    assert done.returncode == 2 and "--particle-radius: " in done.stderr and "other.vtk" in done.stderr, done.stderr

@@ -1,6 +1,6 @@
 // CSV with a header line: columns named x, y[, z][, h][, m][, rho] (or the names of
-// column_names.cpp), separated by ',' or ';'; lines starting with '#' before the header and
-// blank lines are skipped; other columns are ignored.
+// column_names.cpp), separated by ',' or ';'; lines before the header (comments, blank lines,
+// the head lines DualSPHysics writes) and blank lines are skipped; other columns are ignored.
 #include "particles/formats/column_names.hpp"
 #include "particles/formats/particle_files.hpp"
 
@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <optional>
 #include <string_view>
 
 namespace sphkern {
@@ -43,6 +44,50 @@ double parse_number(std::string_view text, const std::string& where)
     return value;
 }
 
+// A line's separator: ';' where it has one (DualSPHysics' default), else ','.
+char separator_of(std::string_view line) { return line.find(';') != std::string_view::npos ? ';' : ','; }
+
+bool names_x_and_y(std::string_view line)
+{
+    bool x = false, y = false;
+    for (const auto name : split(line, separator_of(line))) {
+        const auto field = particle_field(name);
+        x = x || field == ParticleField::x, y = y || field == ParticleField::y;
+    }
+    return x && y;
+}
+
+// The header: the first line naming columns x and y. The lines before it are skipped: blank
+// lines, comments ('#') and the free-text head lines DualSPHysics' CSV writer (JOutputCsv) may
+// put before its header (a few: the search stops after 64 lines that are no comment). Without
+// such a line, the first line that is no comment (refused by the caller for the column it
+// lacks). `rest` and `line_number` are left after the header; "" where there is no line.
+std::string_view csv_header(std::string_view& rest, std::size_t& line_number)
+{
+    struct Line {
+        std::string_view text, after;
+        std::size_t number = 0;
+    };
+    std::optional<Line> first;
+    std::size_t looked = 0;
+    for (std::size_t number = 1; !rest.empty() && looked < 64; ++number) {
+        const std::size_t end = rest.find('\n');
+        std::string_view line = rest.substr(0, end);
+        rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (line.find_first_not_of(" \t") == std::string_view::npos || line.front() == '#') continue;
+        if (!first) first = Line{line, rest, number};
+        ++looked;
+        if (names_x_and_y(line)) {
+            line_number = number;
+            return line;
+        }
+    }
+    if (!first) return {};
+    rest = first->after, line_number = first->number;
+    return first->text;
+}
+
 } // namespace
 
 ParticleSet read_csv_particles(const std::filesystem::path& file, const ParticleFileOptions&)
@@ -60,10 +105,9 @@ ParticleSet read_csv_particles(const std::filesystem::path& file, const Particle
         ++line_number;
         return true;
     };
-    std::string_view header;
-    while (next_line(header) && (header.empty() || header.front() == '#')) {}
-    if (header.empty() || header.front() == '#') fail_input(name + ": no header line; expected column names x, y[, z][, h][, m][, rho]");
-    const char separator = header.find(';') != std::string_view::npos ? ';' : ',';
+    const std::string_view header = csv_header(rest, line_number);
+    if (header.empty()) fail_input(name + ": no header line; expected column names x, y[, z][, h][, m][, rho]");
+    const char separator = separator_of(header);
     const auto names = split(header, separator);
     std::vector<int> column_of(6, -1);
     for (std::size_t c = 0; c < names.size(); ++c)

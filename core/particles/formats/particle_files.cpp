@@ -33,6 +33,10 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
     const auto format = particle_file_format(file);
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv or .vtk");
+    if (options.particle_radius && *format != ParticleFileFormat::vtk)
+        throw Error(ExitCode::usage, fmt::format("--particle-radius: {} is not a VTK file; the radius gives the h of "
+                                                 "SPlisHSPlasH's VTK files only",
+                                                 file.string()));
     ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
                       : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
                                                            : read_vtk_particles(file, options);

@@ -18,6 +18,8 @@ struct ParticleFileOptions {
     // measured on the first, the others' particles neighbours only (ParticleSet::neighbours_only).
     std::string array;
     std::optional<int> dimension; // 2: read a 3-column file whose one coordinate is constant as 2D
+    // SPlisHSPlasH VTK: the scene's particle radius r, which its files do not hold (h = r, support 4 r).
+    std::optional<double> particle_radius;
     std::size_t max_particles = 0;
 };
 

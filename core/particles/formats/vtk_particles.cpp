@@ -141,11 +141,11 @@ private:
     std::size_t pos_ = 0, line_ = 0;
 };
 
-// "# vtk DataFile Version", the title, the encoding and an ASCII or BINARY point dataset.
-void read_vtk_header(VtkCursor& in)
+// "# vtk DataFile Version", the title (returned), the encoding and an ASCII or BINARY point dataset.
+std::string read_vtk_header(VtkCursor& in)
 {
     if (in.line().rfind("# vtk DataFile", 0) != 0) in.fail("not a legacy VTK file; expected \"# vtk DataFile Version\"");
-    in.line(); // the title
+    std::string title(in.line());
     const auto encoding = in.token();
     if (encoding != "ASCII" && encoding != "BINARY") in.fail(fmt::format("\"{}\": expected ASCII or BINARY", encoding));
     in.binary = encoding == "BINARY";
@@ -153,6 +153,7 @@ void read_vtk_header(VtkCursor& in)
     const auto dataset = in.token();
     if (dataset != "POLYDATA" && dataset != "UNSTRUCTURED_GRID")
         in.fail(fmt::format("DATASET {}: expected POLYDATA or UNSTRUCTURED_GRID (particles as points)", dataset));
+    return title;
 }
 
 // The sections after the header: the points and the point arrays with a particle field's
@@ -264,18 +265,39 @@ ParticleSet vtk_particle_set(const std::string& name, VtkSections& sections)
     return set;
 }
 
+// SPlisHSPlasH's exporter (ParticleExporter_VTK) gives its files this title. It writes no h:
+// its support is 4 particle radii (Simulation::setParticleRadius), the radius a scene
+// parameter the file does not hold, so it comes from the options or not at all.
+void apply_particle_radius(ParticleSet& set, const std::string& title, const ParticleFileOptions& options)
+{
+    const bool splishsplash = title == "SPlisHSPlasH particle data";
+    if (options.particle_radius && !splishsplash)
+        throw Error(ExitCode::usage, fmt::format("--particle-radius: {} is not SPlisHSPlasH's (its title is not "
+                                                 "\"SPlisHSPlasH particle data\"); the radius gives the h of its files only",
+                                                 set.name));
+    if (!splishsplash || !set.h.empty()) return;
+    if (!options.particle_radius) {
+        set.support_per_radius = 4;
+        return;
+    }
+    set.h.assign(set.size(), *options.particle_radius);
+    set.support_per_h = 4;
+}
+
 } // namespace
 
-ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions&)
+ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions& options)
 {
     const std::string name = file.string();
     const std::string text = read_input_file(file, particle_file_byte_limit(), "a VTK particle file");
     VtkCursor in(text, name);
-    read_vtk_header(in);
+    const std::string title = read_vtk_header(in);
     VtkSections sections(in);
     sections.read_all();
     if (sections.points.empty()) in.fail("no POINTS");
-    return vtk_particle_set(name, sections);
+    ParticleSet set = vtk_particle_set(name, sections);
+    apply_particle_radius(set, title, options);
+    return set;
 }
 
 } // namespace sphkern
