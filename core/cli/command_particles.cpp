@@ -62,6 +62,9 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
     c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
     c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
+    // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
+    c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k")
+        .excludes("--eta-range").excludes("--nh-range");
     c.add_option("--volume", o.volume, "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();

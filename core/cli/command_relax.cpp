@@ -39,6 +39,8 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
+    // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
+    c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k");
     c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
         .capture_default_str();
     auto& s = o.settings;

@@ -1062,9 +1062,13 @@ for path, title in ((sys.argv[1], 'SPlisHSPlasH particle data'), (sys.argv[2], '
 expect 0 '^$' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --box 1,1,1
 expect 3 'splish.vtk: the file holds no h and no particle radius \(its support is 4 radii\); give --particle-radius R' -- particles cubic_bspline "$work/splish.vtk" --box 1,1,1
 expect 2 '--particle-radius: .*notsplish.vtk is not SPlisHSPlasH' -- particles cubic_bspline "$work/notsplish.vtk" --particle-radius 0.05 --box 1,1,1
-expect 2 '--particle-radius: .*arrays.h5 is not a VTK file' -- particles cubic_bspline "$work/arrays.h5" --particle-radius 0.05 --nh 40
+expect 2 '--particle-radius: .*arrays.h5 is not a VTK file' -- particles cubic_bspline "$work/arrays.h5" --particle-radius 0.05 --box 1,1,1
 expect 2 '--particle-radius gives the h of a SPlisHSPlasH file; poisson is not a file' -- particles cubic_bspline poisson --count 100 --particle-radius 0.05
 expect 2 '--particle-radius -1: expected a positive finite length' -- particles cubic_bspline "$work/splish.vtk" --particle-radius -1 --box 1,1,1
+# The radius gives the file's h: a rule for h would leave it unused.
+expect 2 '--particle-radius excludes --eta ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --eta 1.2 --box 1,1,1
+expect 2 '--particle-radius excludes --nh-range ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --nh-range 30 40 --box 1,1,1
+expect 2 '--particle-radius excludes --k ' -- relax cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --k 1.2 --box 1,1,1 --steps 1
 
 # Files reached through an HDF5 file's links are inputs too: an output may not replace them
 # (it did, exit 0), and a link is followed only to a regular file (a FIFO blocked the open).
