@@ -36,11 +36,7 @@ namespace {
 // The options of a file source: its arrays, dimension, box and particle radius.
 void file_source(const SourceOptions& o, ParticleSource& source)
 {
-    if (const std::string problem = particle_array_list_problem(o.array); !problem.empty())
-        throw Error(ExitCode::usage, "--array " + o.array + ": " + problem);
     source.file.array = o.array;
-    if (o.particle_radius && !(*o.particle_radius > 0 && std::isfinite(*o.particle_radius)))
-        throw Error(ExitCode::usage, fmt::format("--particle-radius {}: expected a positive finite length", *o.particle_radius));
     source.file.particle_radius = o.particle_radius;
     if (o.dim) source.file.dimension = o.dim;
     if (!o.box.empty()) {

@@ -1,5 +1,6 @@
 #include "requests/source_request.hpp"
 
+#include "particles/formats/particle_arrays.hpp"
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 
@@ -12,7 +13,8 @@ namespace sphkern {
 SourceSources source_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {n("size"), n("sigma"), n("count"), n("dim"), n("box"), f == FrontEnd::command_line ? "--memory-limit" : ""};
+    return {n("size"), n("sigma"), n("count"), n("dim"), n("box"), n("array"), n("particle_radius"),
+            f == FrontEnd::command_line ? "--memory-limit" : ""};
 }
 
 namespace {
@@ -41,6 +43,11 @@ void check_particle_source(const ParticleSource& s, const SourceSources& sources
         if (s.file.dimension && *s.file.dimension != 2 && *s.file.dimension != 3)
             sources.dim.fail(fmt::format("{}: expected 2 or 3", *s.file.dimension));
         if (s.box) check_box(*s.box, 3, sources.box);
+        if (const std::string problem = particle_array_list_problem(s.file.array); !problem.empty())
+            throw Error(sources.array.code, sources.array.name + " " + s.file.array + ": " + problem);
+        if (s.file.particle_radius && !(*s.file.particle_radius > 0 && std::isfinite(*s.file.particle_radius)))
+            throw Error(sources.particle_radius.code,
+                        fmt::format("{}: expected a positive finite length", sources.particle_radius.about(*s.file.particle_radius)));
     }
 }
 

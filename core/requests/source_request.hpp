@@ -11,20 +11,21 @@
 namespace sphkern {
 
 struct SourceSources {
-    ValueSource size, sigma, count, dim, box;
+    ValueSource size, sigma, count, dim, box, array, particle_radius;
     std::string budget; // how the front end sets the memory budget, if it can: "--memory-limit"
 };
 SourceSources source_sources(FrontEnd front_end);
 
 // What needs no lattice or file: cells 1 to 1e6, sigma [0, 10] (units of d); a Poisson
-// dimension of 2 or 3, count 2 to 2^40; box sides positive and finite.
+// dimension of 2 or 3, count 2 to 2^40; box sides positive and finite; a file's list of
+// arrays well formed and its particle radius positive and finite.
 void check_particle_source(const ParticleSource& source, const SourceSources& sources);
 
-// Checked, then made or read: a block takes as many cell counts as its lattice has dimensions,
-// and a block or a Poisson set over the memory budget is refused before it is made.
 // Checks a memory budget in GiB (0: from the available memory) and sets it for the process.
 void set_memory_budget(double gib, const ValueSource& source);
 
+// Checked, then made or read: a block takes as many cell counts as its lattice has dimensions,
+// and a block or a Poisson set over the memory budget is refused before it is made.
 ParticleSet load_source(const ParticleSource& source, const SourceSources& sources, int threads);
 
 } // namespace sphkern

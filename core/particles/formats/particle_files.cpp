@@ -1,7 +1,7 @@
 #include "particles/formats/particle_files.hpp"
-#include "support/text/setting_names.hpp"
 
 #include "support/error.hpp"
+#include "support/text/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -34,9 +34,9 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv or .vtk");
     if (options.particle_radius && *format != ParticleFileFormat::vtk)
-        throw Error(ExitCode::usage, fmt::format("--particle-radius: {} is not a VTK file; the radius gives the h of "
+        throw Error(ExitCode::usage, fmt::format("{}: {} is not a VTK file; the radius gives the h of "
                                                  "SPlisHSPlasH's VTK files only",
-                                                 file.string()));
+                                                 setting_named("particle_radius"), file.string()));
     ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
                       : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
                                                            : read_vtk_particles(file, options);

@@ -7,6 +7,7 @@
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/io/json_input.hpp"
+#include "support/text/setting_names.hpp"
 
 #include <fmt/format.h>
 
@@ -272,9 +273,9 @@ void apply_particle_radius(ParticleSet& set, const std::string& title, const Par
 {
     const bool splishsplash = title == "SPlisHSPlasH particle data";
     if (options.particle_radius && !splishsplash)
-        throw Error(ExitCode::usage, fmt::format("--particle-radius: {} is not SPlisHSPlasH's (its title is not "
+        throw Error(ExitCode::usage, fmt::format("{}: {} is not SPlisHSPlasH's (its title is not "
                                                  "\"SPlisHSPlasH particle data\"); the radius gives the h of its files only",
-                                                 set.name));
+                                                 setting_named("particle_radius"), set.name));
     if (!splishsplash || !set.h.empty()) return;
     if (!options.particle_radius) {
         set.support_per_radius = 4;

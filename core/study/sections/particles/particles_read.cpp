@@ -45,7 +45,7 @@ StudyRelax read_relax(const JsonNode& node)
 SourceSources sources_at(const JsonNode& node, const std::string& dim)
 {
     auto at = [&](const std::string& key) { return ValueSource::json(node.file(), node.path() + key); };
-    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), ""};
+    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), at("/array"), at("/particle_radius"), ""};
 }
 
 StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)
