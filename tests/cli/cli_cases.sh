@@ -134,10 +134,10 @@ expect 2 'error: --threads -1, expected 0 to 1024$' -- block cubic_bspline fcc -
 expect 2 'error: --timeout 0, expected 0.1 to 3600$' -- check cubic_bspline --timeout 0
 # Each value is checked once, by its request, naming the option.
 expect 2 'error: --k -1 is not allowed, expected a number in \(0, 100\]$' -- surface cubic_bspline fcc --k -1
-# surface takes a code's setting as eps does: the k of --code swift --eta at the bulk's SPH density
-expect 2 '^sphkern: error: --k is required \(or --code and the code's setting\)$' -- surface cubic_bspline fcc
+# surface takes a code's setting as eps does (the k itself: a check case below)
+expect 2 "^sphkern: error: --k is required \\(or --code and the code's setting\\)$" -- surface cubic_bspline fcc
 expect 2 'give one of --k and --eta' -- surface wendland_c2 fcc --k 1 --code swift --eta 1.2
-expect 2 '--eta is a code's setting; expected --code too' -- surface wendland_c2 fcc --eta 1.2
+expect 2 "--eta is a code's setting; expected --code too" -- surface wendland_c2 fcc --eta 1.2
 expect 2 'error: --k -1 is not allowed, expected a number in \(0, 100\]$' -- block cubic_bspline fcc --k -1 --size 4,4,4
 expect 2 'error: --dim 4, expected 1 to 3$' -- spectrum cubic_bspline --dim 4
 expect 2 'error: --k 0, expected 0.001 to 100$' -- spectrum cubic_bspline --dim 3 --k 0
