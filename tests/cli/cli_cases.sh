@@ -257,6 +257,16 @@ d = json.load(open(sys.argv[1])); d['study']['epsilon'] = -7
 json.dump(d, open(sys.argv[2], 'w'))
 " "$work/out10/results.json" "$work/tampered.json"
 expect 3 'tampered.json: /study/epsilon: expected a tolerance in \(0, 1\)' -- run --reproduce "$work/tampered.json"
+# --reproduce compares the particles section too: a relaxed source reproduces, a number changed there does not.
+study s_part '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 400, "relax": {"kernel": "wendland_c2", "nh": 60, "steps": 3}}], "nh": {"min": 40, "max": 60, "steps": 1}}}'
+expect 0 '^$' -- --log-level warn run "$work/s_part.json" -o "$work/out_part"
+expect 0 '^$' -- --log-level warn run --reproduce "$work/out_part/results.json"
+python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); d['particles'][0]['points'][0]['statistics']['e0']['rms'] *= 1.5
+json.dump(d, open(sys.argv[2], 'w'))
+" "$work/out_part/results.json" "$work/part_changed.json"
+expect 1 '^$' -- --log-level warn run --reproduce "$work/part_changed.json"
 expect 2 '--format svg,gif: "gif" is not a figure format, expected svg, png or pdf' -- run "$work/s_ok.json" --format svg,gif -o "$work/out15"
 expect 0 'cases in' -- run "$work/s_ok.json" -o "$work/out10" --force
 # A failed run leaves no output folder behind, partial or not.
