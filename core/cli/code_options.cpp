@@ -19,6 +19,11 @@ void add_setting_options(Command c, SettingOptions& o, const std::string& k_help
     c.add_option("--coefh", o.coefh, "With --code dualsphysics: DualSPHysics' coefh, h = coefh sqrt(D) dp");
 }
 
+bool setting_given(const SettingOptions& o)
+{
+    return o.k || !o.code.empty() || o.eta || o.hfact || o.nngb || o.hdx || o.coefh;
+}
+
 std::optional<CodeSetting> code_setting(const SettingOptions& o)
 {
     const std::pair<const char*, const std::optional<double>*> given[] = {

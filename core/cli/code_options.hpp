@@ -1,4 +1,4 @@
-// A code's own setting on the command line (`eps`, `assess`, `surface`): --code NAME and that code's
+// A code's own setting on the command line (`eps`, `assess`, `surface`, `pairing`): --code NAME and that code's
 // parameter by its own name (--eta, --hfact, --nngb, --hdx, --coefh), or --k.
 #pragma once
 
@@ -18,6 +18,9 @@ struct SettingOptions {
 
 // --k (with `k_help`), --code and the codes' parameters.
 void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
+
+// Whether any of --k, --code and the codes' parameters is given.
+bool setting_given(const SettingOptions& options);
 
 // The code's setting: its parameter given only with --code and alone, or none for --k.
 std::optional<CodeSetting> code_setting(const SettingOptions& options);

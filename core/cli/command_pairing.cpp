@@ -1,5 +1,6 @@
 // `sphkern pairing`: the linear stability verdict of a lattice beside the motion of its
 // particles under the SPH pressure force, k by k.
+#include "cli/code_options.hpp"
 #include "cli/command.hpp"
 
 #include "requests/relax_report.hpp"
@@ -16,7 +17,7 @@ namespace {
 struct PairingOptions : CommonOptions {
     std::string kernel, lattice;
     std::vector<std::string> sets;
-    std::optional<double> k;
+    SettingOptions setting;
     PairingRequest request;
 };
 
@@ -25,7 +26,7 @@ void add_options(Command c, PairingOptions& o)
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     c.add_option("lattice", o.lattice, "Lattice name or JSON file").required();
     auto& r = o.request;
-    c.add_option("--k", o.k, "One k (h = k d)");
+    add_setting_options(c, o.setting, "One k (h = k d)");
     c.add_option("--kmin", r.k_min, "Smallest k of the range");
     c.add_option("--kmax", r.k_max, "Largest k of the range");
     c.add_option("--samples", r.samples, "Evenly spaced k over [kmin, kmax]").capture_default_str();
@@ -52,15 +53,23 @@ Action add_pairing_command(Command app)
     return [options, command] {
         auto& o = *options;
         const bool range = command.count("--kmin") + command.count("--kmax") > 0;
-        if (o.k.has_value() == range) throw Error(ExitCode::usage, "give --k, or --kmin and --kmax");
-        if (o.k) o.request.k_min = o.request.k_max = *o.k, o.request.samples = 1;
-        else if (command.count("--kmin") != 1 || command.count("--kmax") != 1)
+        if (setting_given(o.setting) == range) throw Error(ExitCode::usage, "give --k, or --kmin and --kmax");
+        std::optional<CodeSetting> code;
+        if (!range) {
+            code = code_setting(o.setting);
+            // A code's k is known once the kernel and lattice are: checked then, as one k.
+            o.request.k_min = o.request.k_max = code ? 1 : *o.setting.k, o.request.samples = 1;
+        } else if (command.count("--kmin") != 1 || command.count("--kmax") != 1) {
             throw Error(ExitCode::usage, "a range needs both --kmin and --kmax");
+        }
+        const auto [code_source, value_source] = code_sources(o.setting);
+        if (code) check_code_setting(*code, {code_source, value_source});
         check_pairing_request(o.request, pairing_sources(FrontEnd::command_line));
         const auto [lattice, kernel] = kernel_on_lattice(o, o.kernel, o.lattice, o.sets);
+        const auto code_k = pairing_code_k(o.request, code, {code_source, value_source}, kernel, lattice);
         const auto points = pairing_motion(kernel, lattice, o.request);
-        if (o.json) print_json(pairing_json(kernel, lattice, o.request, points), command_inputs(&kernel, &lattice));
-        else print_pairing(results_file(), kernel, lattice, o.request, points);
+        if (o.json) print_json(pairing_json(kernel, lattice, o.request, points, code_k), command_inputs(&kernel, &lattice));
+        else print_pairing(results_file(), kernel, lattice, o.request, points, code_k);
         return 0;
     };
 }

@@ -27,4 +27,16 @@ void check_pairing_request(const PairingRequest& r, const PairingSources& source
     check_threads(r.threads, sources.threads);
 }
 
+std::optional<CodeK> pairing_code_k(PairingRequest& request, const std::optional<CodeSetting>& setting,
+                                    const CodeSettingSources& sources, const Kernel& kernel, const Lattice& lattice)
+{
+    if (!setting) return std::nullopt;
+    const EvaluationSources unnamed{}; // the default a_p, site and gravity, which every lattice has
+    const auto code = k_of_code_setting(*setting, sources, kernel, lattice, resolve_evaluation({}, unnamed, lattice));
+    request.k_min = request.k_max = code.k;
+    request.samples = 1;
+    check_k(code.k, sources.value);
+    return code;
+}
+
 } // namespace sphkern

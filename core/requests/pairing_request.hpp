@@ -3,6 +3,7 @@
 #pragma once
 
 #include "relax/pairing_motion.hpp"
+#include "requests/code_setting.hpp"
 #include "support/text/value_checks.hpp"
 
 namespace sphkern {
@@ -13,5 +14,10 @@ struct PairingSources {
 PairingSources pairing_sources(FrontEnd front_end);
 
 void check_pairing_request(const PairingRequest& request, const PairingSources& sources);
+
+// With a code's setting (checked): its k on the lattice (from the bulk's SPH density at site 0
+// with the Voronoi a_p), made the request's one k and checked as --k would be.
+std::optional<CodeK> pairing_code_k(PairingRequest& request, const std::optional<CodeSetting>& setting,
+                                    const CodeSettingSources& sources, const Kernel& kernel, const Lattice& lattice);
 
 } // namespace sphkern

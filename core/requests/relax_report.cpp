@@ -98,7 +98,7 @@ void write_relax_history_csv(std::ostream& out, const std::vector<RelaxStep>& hi
 }
 
 nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request,
-                            const std::vector<PairingPoint>& points)
+                            const std::vector<PairingPoint>& points, const std::optional<CodeK>& code)
 {
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& p : points)
@@ -120,7 +120,7 @@ nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const 
                         {"expected", p.expected},
                         {"outcome", p.outcome},
                         {"agrees", p.agrees}});
-    return {{"kernel", kernel.label()},
+    nlohmann::json document = {{"kernel", kernel.label()},
             {"lattice", lattice.name},
             {"noise", request.noise},
             {"duration", request.duration},
@@ -130,13 +130,18 @@ nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const 
             {"horizon", request.horizon},
             {"seed", request.seed},
             {"points", rows}};
+    if (code) document["code"] = code_k_json(*code);
+    return document;
 }
 
 void print_pairing(std::FILE* out, const Kernel& kernel, const Lattice& lattice, const PairingRequest& request,
-                   const std::vector<PairingPoint>& points)
+                   const std::vector<PairingPoint>& points, const std::optional<CodeK>& code)
 {
-    fmt::print(out, "{} on {}: noise {:g} d, {:g} d/c of motion, damping {:g} c/h, gamma {:.4g}\n", kernel.label(),
-               lattice.name, request.noise, request.duration, request.damping, request.gamma);
+    const std::string setting = code ? fmt::format(" ({} {} = {:.10g}: k = {:.10g})", code->setting.code, code->parameter,
+                                                   code->setting.value, code->k)
+                                     : "";
+    fmt::print(out, "{} on {}{}: noise {:g} d, {:g} d/c of motion, damping {:g} c/h, gamma {:.4g}\n", kernel.label(),
+               lattice.name, setting, request.noise, request.duration, request.damping, request.gamma);
     fmt::print(out, "{:>8} {:>9} {:>10} {:>12} {:>12} {:>10} {:>10} {:>11} {:>10} {:>8} {:>9} {:>9} {:>6}\n", "k",
                "verdict", "tau [d/c]", "kind", "block omega2", "rate lin.", "measured", "rms/0 lin.", "measured",
                "paired", "expected", "outcome", "agree");

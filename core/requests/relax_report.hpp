@@ -2,6 +2,7 @@
 // quality of the set it made, as text, JSON and a history CSV.
 #pragma once
 
+#include "requests/code_setting.hpp"
 #include "particles/particle_analysis.hpp"
 #include "relax/glass_quality.hpp"
 #include "relax/pairing_motion.hpp"
@@ -31,9 +32,10 @@ void print_relax(std::FILE* out, const Kernel& kernel, const RelaxSettings& sett
 // step,time,rms_move,max_move,rms_e0,rms_e1,kinetic
 void write_relax_history_csv(std::ostream& out, const std::vector<RelaxStep>& history);
 
+// With the code's setting whose k the run took, if one was given ("code" in the JSON, named in the text).
 nlohmann::json pairing_json(const Kernel& kernel, const Lattice& lattice, const PairingRequest& request,
-                            const std::vector<PairingPoint>& points);
+                            const std::vector<PairingPoint>& points, const std::optional<CodeK>& code = std::nullopt);
 void print_pairing(std::FILE* out, const Kernel& kernel, const Lattice& lattice, const PairingRequest& request,
-                   const std::vector<PairingPoint>& points);
+                   const std::vector<PairingPoint>& points, const std::optional<CodeK>& code = std::nullopt);
 
 } // namespace sphkern

@@ -291,6 +291,12 @@ setting = ['wendland_c2', 'fcc', '--code', 'swift', '--eta', '1.2348']
 eps, surface = json.loads(run('eps', *setting, '--json')), json.loads(run('surface', *setting, '--json'))
 assert surface['k'] == eps['k'] and surface['code'] == eps['code'], (surface['k'], eps['k'])
 assert '(swift eta = 1.2348)' in run('surface', *setting).splitlines()[0]"
+check "pairing --code swift --eta runs at eps --code's k" /usr/bin/python3 -c "
+import json, subprocess
+run = lambda *a: subprocess.run(['$sphkern', *a], capture_output=True, text=True, check=True).stdout
+setting = ['wendland_c2', 'fcc', '--code', 'swift', '--eta', '1.2348']
+eps, pairing = json.loads(run('eps', *setting, '--json')), json.loads(run('pairing', *setting, '--duration', '5', '--json'))
+assert [p['k'] for p in pairing['points']] == [eps['k']] and pairing['code'] == eps['code'], pairing['code']"
 
 # Starts sphkern in the background with debug logs, waits (up to 20 s) for a line of its
 # log matching READY, then sends the signals. Sets $status and $err.
@@ -925,6 +931,8 @@ check "relax in 2D: a CSV particles reads back with its box" bash -c "'$sphkern'
 check "particles reads the glass relax wrote, with its h (support per h from the file)" bash -c "'$sphkern' particles wendland_c2 '$work/glass.h5' | grep -q '3000 particles'"
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 --kmin 1
+expect 2 'give --k, or --kmin and --kmax' -- pairing wendland_c2 fcc --code swift --eta 1.2 --kmin 1 --kmax 2
+expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- pairing wendland_c2 fcc --code swift --eta -1
 expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
 expect 2 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
 expect 2 '--samples 0, expected 1 to 1000' -- pairing cubic_bspline fcc --kmin 1 --kmax 2 --samples 0
