@@ -3,6 +3,7 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
+#include "analysis/code_profiles.hpp"
 #include "requests/particles_report.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/source_request.hpp"
@@ -27,6 +28,8 @@ struct ParticlesOptions : CommonOptions, SourceOptions {
     std::vector<double> eta_range, nh_range;
     double depth = 1, memory_limit = 0;
     std::optional<double> eta, nh, k, support_per_h, rho0;
+    std::string code;
+    std::optional<double> hfact, nngb, hdx, coefh; // the codes' settings beside --eta
     int steps = 10, threads = 0;
     std::size_t histogram = 0;
 };
@@ -37,14 +40,37 @@ std::optional<std::array<double, 2>> range_of(const std::vector<double>& values)
     return std::array<double, 2>{values[0], values[1]};
 }
 
-ParticleArguments arguments_of(const ParticlesOptions& o, const ValueSource& gravity)
+// --code NAME with its parameter (with swift, --eta is SWIFT's); the parameter's option named in `sources`.
+std::optional<CodeSetting> code_of(const ParticlesOptions& o, ParticleSources& sources)
+{
+    const std::pair<const char*, const std::optional<double>*> settings[] = {
+        {"eta", &o.eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
+    if (o.code.empty()) {
+        for (const auto& [name, value] : settings)
+            if (value->has_value() && std::string(name) != "eta")
+                throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+        return std::nullopt;
+    }
+    const std::string parameter = code_profile(o.code, sources.code.code).parameter;
+    sources.code.value = ValueSource::option("--" + parameter);
+    for (const auto& [name, value] : settings) {
+        if (!value->has_value()) continue;
+        if (name != parameter)
+            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, parameter));
+        return CodeSetting{o.code, **value};
+    }
+    throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code, parameter));
+}
+
+ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sources)
 {
     ParticleArguments a;
-    a.smoothing = {o.eta, o.nh, o.k, o.support_per_h};
+    a.code = code_of(o, sources);
+    a.smoothing = {a.code ? std::nullopt : o.eta, o.nh, o.k, o.support_per_h};
     a.eta_range = range_of(o.eta_range), a.nh_range = range_of(o.nh_range);
     a.steps = o.steps;
     if (!o.volume.empty()) a.volume = o.volume;
-    if (!o.gravity.empty()) a.gravity = parse_number_list(o.gravity, gravity);
+    if (!o.gravity.empty()) a.gravity = parse_number_list(o.gravity, sources.gravity);
     a.depth = o.depth, a.rho0 = o.rho0, a.threads = o.threads;
     a.histogram = static_cast<long long>(o.histogram);
     a.per_particle_files = !o.csv.empty() || !o.vtk.empty(); // they write e1 and m1
@@ -55,9 +81,17 @@ void add_options(Command c, ParticlesOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
-    c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2 without a file h)");
+    c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2 without a file h); "
+                                 "with --code swift, SWIFT's eta");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
+    c.add_option("--code", o.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
+                                   "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
+                                   "dualsphysics (--coefh)");
+    c.add_option("--hfact", o.hfact, "With --code phantom: Phantom's hfact, h = hfact (m / rho)^(1/D)");
+    c.add_option("--nngb", o.nngb, "With --code gadget2 or gadget4: the weighted neighbour number");
+    c.add_option("--hdx", o.hdx, "With --code pysph: PySPH's hdx, h = hdx dx");
+    c.add_option("--coefh", o.coefh, "With --code dualsphysics: DualSPHysics' coefh, h = coefh sqrt(D) dp");
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
     c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
@@ -94,20 +128,21 @@ Action add_particles_command(Command app)
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         PhaseTimes phases;
-        const auto sources = particle_sources(FrontEnd::command_line);
+        auto sources = particle_sources(FrontEnd::command_line);
         check_threads(o.threads, sources.threads); // the set is read on them
         const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments_of(o, sources.gravity), kernel, set, sources));
+        const auto arguments = arguments_of(o, sources);
+        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, sources));
         phases.merge(answer.phases);
         phases.restart();
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
         if (!outputs.empty()) phases.lap("write");
         answer.phases = phases;
-        if (o.json) print_json(particle_answer_json(kernel, set, answer), source_inputs(o, kernel));
-        else print_particle_answer(results_file(), kernel, set, answer);
+        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments.code), source_inputs(o, kernel));
+        else print_particle_answer(results_file(), kernel, set, answer, arguments.code);
         return 0;
     };
 }

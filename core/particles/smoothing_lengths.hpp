@@ -10,11 +10,12 @@
 
 namespace sphkern {
 
-enum class SmoothingRule { eta, nh, k, file };
+// density: h_i = value (m_i / rho_i)^(1/D) with rho_i the SPH density at h_i (density_smoothing.hpp).
+enum class SmoothingRule { eta, nh, k, file, density };
 
 struct SmoothingSpec {
     SmoothingRule rule = SmoothingRule::eta;
-    double value = 1.2;        // eta, N_H or k; unused for `file`
+    double value = 1.2;        // eta, N_H, k or the density rule's coefficient; unused for `file`
     double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
 };
 

@@ -3,6 +3,7 @@
 #include "analysis/code_profiles.hpp"
 #include "analysis/hydrostatic_errors.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -35,10 +36,36 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     return code;
 }
 
+SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
+                             int dimension)
+{
+    const auto& profile = code_profile(setting.code, sources.code);
+    require_code_kernel(profile, kernel);
+    // The parameter at h = 1 for a volume m / rho = 1: linear in h, or in h^D for a neighbour number.
+    const double at_one = code_parameter(profile, kernel, dimension, 1, 1, 0);
+    const double c = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dimension : 1.0);
+    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0};
+}
+
 nlohmann::json code_k_json(const CodeK& code)
 {
     return {{"name", code.setting.code}, {"parameter", code.parameter}, {"value", code.setting.value},
             {"value_at_k", code.value_at_k}};
+}
+
+nlohmann::json code_answer_json(const CodeSetting& setting)
+{
+    const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
+    return {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
+            {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
+}
+
+std::string code_answer_text(const CodeSetting& setting)
+{
+    const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
+    return fmt::format("{} {} = {:.10g}: h from {}", setting.code, profile.parameter, setting.value,
+                       profile.from_sph_density ? "each particle's SPH density (solved for every particle)"
+                                                : "the mean spacing");
 }
 
 } // namespace sphkern

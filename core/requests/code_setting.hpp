@@ -5,6 +5,7 @@
 
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
+#include "particles/smoothing_lengths.hpp"
 #include "requests/evaluation_inputs.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -38,7 +39,19 @@ struct CodeK {
 CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
                         const Lattice& lattice, const Evaluation& evaluation);
 
+// The h of a code's setting on a particle set: h_i = c (m_i / rho_i)^(1/D) solved with each
+// particle's SPH density where the code solves for h with it (SWIFT, Phantom, GADGET), else
+// h = c V̄^(1/D) from the mean spacing (PySPH, DualSPHysics); c follows from the code's
+// definition for `kernel` in `dimension`.
+SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
+                             int dimension);
+
 // {"name", "parameter", "value", "value_at_k"}, as `--json` carries it under "code".
 nlohmann::json code_k_json(const CodeK& code);
+
+// On a particle set: {"name", "parameter", "value", "h_from": "sph_density" or "mean_spacing"},
+// and the line "swift eta = 1.2348: h from each particle's SPH density".
+nlohmann::json code_answer_json(const CodeSetting& setting);
+std::string code_answer_text(const CodeSetting& setting);
 
 } // namespace sphkern

@@ -12,7 +12,8 @@ ParticleSources particle_sources(FrontEnd f)
     auto n = [f](const char* key) { return value_named(f, key); };
     return {smoothing_sources(f), n("eta_range"), n("nh_range"), n("steps"),     n("volume"),
             n("gravity"),         n("depth"),     n("rho0"),     n("threads"),   n("histogram"),
-            f == FrontEnd::command_line ? ValueSource::option("--csv and --vtk") : n("arrays")};
+            f == FrontEnd::command_line ? ValueSource::option("--csv and --vtk") : n("arrays"),
+            {n("code"), n("value")}}; // the command line names the code's parameter itself
 }
 
 void check_threads(int threads, const ValueSource& source) { check_range(threads, 0, 1024, source); }
@@ -52,7 +53,15 @@ ParticleRequest particle_request(const ParticleArguments& given, const Kernel& k
                          {given.nh_range.has_value(), &sources.nh_range}});
     ParticleRequest request;
     request.sweep = sweep_of(given, sources);
-    request.smoothing = smoothing_of(given.smoothing, set, s, !request.sweep);
+    if (given.code) {
+        if (given.smoothing.eta || given.smoothing.nh || given.smoothing.k || request.sweep)
+            sources.code.code.fail("gives h for one setting; expected no " + s.eta.name + ", " + s.nh.name + ", " + s.k.name +
+                                   " or sweep beside it");
+        check_code_setting(*given.code, sources.code);
+        request.smoothing = code_smoothing(*given.code, sources.code, kernel, set.dimension);
+    } else {
+        request.smoothing = smoothing_of(given.smoothing, set, s, !request.sweep);
+    }
     check_file_kernel(request.smoothing, set, kernel.name(), s);
     if (given.volume) request.volume = at_source(sources.volume, [&] { return parse_volume_model(*given.volume); });
     request.given_volumes = given.volumes;

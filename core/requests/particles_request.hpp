@@ -4,6 +4,7 @@
 #pragma once
 
 #include "particles/particle_analysis.hpp"
+#include "requests/code_setting.hpp"
 #include "requests/smoothing_request.hpp"
 
 #include <array>
@@ -16,6 +17,7 @@ namespace sphkern {
 // What was not given is empty.
 struct ParticleArguments {
     SmoothingArguments smoothing;
+    std::optional<CodeSetting> code; // instead of eta, N_H or k: a code's own setting (one h, no sweep)
     std::optional<std::array<double, 2>> eta_range, nh_range; // a sweep over [A, B]
     int steps = 10;                                          // of a sweep
     std::optional<std::string> volume;                       // uniform, file or voronoi
@@ -31,6 +33,7 @@ struct ParticleArguments {
 struct ParticleSources {
     SmoothingSources smoothing;
     ValueSource eta_range, nh_range, steps, volume, gravity, depth, rho0, threads, histogram, per_particle_files;
+    CodeSettingSources code; // "--code" and the code's parameter ("--eta"), "code" and "value"
 };
 // `per_particle_files` names the outputs ("--csv and --vtk") on the command line.
 ParticleSources particle_sources(FrontEnd front_end);

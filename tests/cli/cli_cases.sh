@@ -291,6 +291,13 @@ setting = ['wendland_c2', 'fcc', '--code', 'swift', '--eta', '1.2348']
 eps, surface = json.loads(run('eps', *setting, '--json')), json.loads(run('surface', *setting, '--json'))
 assert surface['k'] == eps['k'] and surface['code'] == eps['code'], (surface['k'], eps['k'])
 assert '(swift eta = 1.2348)' in run('surface', *setting).splitlines()[0]"
+check "particles --code swift --eta on an fcc block: every h is eps --code's k" /usr/bin/python3 -c "
+import json, subprocess
+run = lambda *a: subprocess.run(['$sphkern', *a], capture_output=True, text=True, check=True).stdout
+eps = json.loads(run('eps', 'wendland_c2', 'fcc', '--code', 'swift', '--eta', '1.2348', '--json'))
+p = json.loads(run('particles', 'wendland_c2', 'fcc', '--size', '6,6,6', '--code', 'swift', '--eta', '1.2348', '--json'))
+assert abs(p['h_min'] / eps['k'] - 1) < 1e-9 and abs(p['h_max'] / eps['k'] - 1) < 1e-9, (p['h_min'], p['h_max'], eps['k'])
+assert p['code']['h_from'] == 'sph_density', p['code']"
 check "pairing --code swift --eta runs at eps --code's k" /usr/bin/python3 -c "
 import json, subprocess
 run = lambda *a: subprocess.run(['$sphkern', *a], capture_output=True, text=True, check=True).stdout
@@ -932,6 +939,11 @@ check "particles reads the glass relax wrote, with its h (support per h from the
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc
 expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 --kmin 1
 expect 2 'give --k, or --kmin and --kmax' -- pairing wendland_c2 fcc --code swift --eta 1.2 --kmin 1 --kmax 2
+expect 2 '^sphkern: error: --hfact: swift sets its resolution with --eta$' -- particles wendland_c2 poisson --count 500 --code swift --hfact 1.2
+expect 2 "^sphkern: error: --hfact is a code's setting; expected --code too$" -- particles wendland_c2 poisson --count 500 --hfact 1.2
+expect 2 '^sphkern: error: --code swift: expected its setting, --eta$' -- particles wendland_c2 poisson --count 500 --code swift
+expect 2 '^sphkern: error: --code: gives h for one setting; expected no --eta, --nh, --k or sweep beside it$' -- particles wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 40
+expect 3 'desbrun_spiky: phantom does not ship it; its kernels are' -- particles desbrun_spiky poisson --count 500 --code phantom --hfact 1.2
 expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- pairing wendland_c2 fcc --code swift --eta -1
 expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
 expect 2 '--noise 0.5: expected a number in \(0, 0.01\]' -- pairing cubic_bspline fcc --k 1.2 --noise 0.5
