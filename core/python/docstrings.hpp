@@ -530,6 +530,13 @@ eta : float, optional
     h = eta V^(1/D) with V the mean volume, in (0, 100]. Default, without h and nh: 1.2.
 nh : float, optional
     h from the neighbour number N_H, in [1, 100000].
+code : str, optional
+    h as an SPH code sets it, with value its parameter: "swift" (eta), "phantom" (hfact),
+    "gadget2" or "gadget4" (nngb) solve every particle's h with its own SPH density,
+    h_i = c (m_i / rho_i)^(1/D); "pysph" (hdx) and "dualsphysics" (coefh) take it from the
+    mean spacing. Not with h, eta or nh. The document carries it under "code".
+value : float, optional
+    The code's parameter, with code.
 masses : float or array_like, optional
     The masses m_j, one number or one per particle: eps_rho is computed with them.
 densities : float or array_like, optional
@@ -575,6 +582,13 @@ Masses and densities, and h stored as the support radius (GADGET's convention):
 ...                       masses=m, densities=rho)
 >>> bool(np.array_equal(s["h"], r["h"])), s["rho0"], s["volume_model"]
 (True, 1.0, 'file')
+
+SWIFT's eta, each particle's h solved with its own SPH density:
+
+>>> y = np.random.default_rng(2).uniform(0, 1, (2000, 3))
+>>> w = sphkern.particles("wendland_c2", y, box=[1, 1, 1], code="swift", value=1.2348)
+>>> w["code"]["h_from"], bool(w["h"].min() < w["h"].max())
+('sph_density', True)
 )doc";
 
 } // namespace sphkern::doc

@@ -121,6 +121,17 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Giv
     return a;
 }
 
+// code and value together, or neither.
+std::optional<CodeSetting> code_of(const std::optional<std::string>& code, const OptionalFloat& value)
+{
+    const auto number = number_of(value, "value");
+    if (code.has_value() != number.has_value())
+        throw Error(ExitCode::input, code ? "code = " + *code + ": expected value, the code's parameter, too"
+                                          : std::string("value: is a code's parameter; expected code too"));
+    if (!code) return std::nullopt;
+    return CodeSetting{*code, *number};
+}
+
 py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
 py::array_t<double> column(const PerParticle& values)
 {
@@ -159,7 +170,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         "particles",
         [kernel_of, to_python](const std::string& kernel_spec, const ArrayLike& positions, const OptionalSequence& box,
                                const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& eta,
-                               const OptionalFloat& nh, const OptionalArrayLike& masses,
+                               const OptionalFloat& nh, const std::optional<std::string>& code,
+                               const OptionalFloat& value, const OptionalArrayLike& masses,
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
                                const OptionalParams& params) {
@@ -167,6 +179,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             ParticleSet set = set_of(positions, box);
             ParticleArguments arguments =
                 arguments_of(set, kernel, {h, support_per_h, masses, densities}, eta, nh, volume, gravity);
+            arguments.code = code_of(code, value);
             arguments.rho0 = number_of(rho0, "rho0");
             arguments.depth = depth;
             arguments.threads = threads;
@@ -178,7 +191,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             }
             const auto& m = *answer.measures;
             const std::size_t d = static_cast<std::size_t>(set.dimension);
-            py::dict out = to_python(particle_answer_json(kernel, set, answer));
+            py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments.code));
             out["h"] = column(answer.h);
             out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
             out["volume"] = column(answer.volumes);
@@ -193,7 +206,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("eta") = py::none(), py::arg("nh") = py::none(),
-        py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
+        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
         py::arg("params") = py::none(), doc::particles,
         py::call_guard<InterruptScope>());

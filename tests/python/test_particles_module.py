@@ -176,11 +176,32 @@ def test_masses_densities_and_a_stored_h_equal_the_command_line(tmp_path):
      "support_per_h: maps a file's h (a positive finite number); it does not go with eta, nh or k"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1, "support_per_h": "two"},
      "support_per_h: expected a number"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "code": "swift"},
+     "code = swift: expected value, the code's parameter, too"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "value": 1.2},
+     "value: is a code's parameter; expected code too"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "code": "swift", "value": 1.2,
+      "eta": 1.1}, "code: gives h for one setting; expected no eta, nh, k or sweep beside it"),
+    ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "code": "swift", "value": -1},
+     "value = -1: expected a number in (0, 100]"),
 ])
 def test_bad_input_raises_value_error(kwargs, message):
     assert "--" not in message  # Python's errors name its arguments, never an option
     with pytest.raises(ValueError, match=re.escape(message)):
         sphkern.particles("cubic_bspline", **kwargs)
+
+
+def test_a_code_setting_equals_the_command_line(tmp_path):
+    """code="swift" with its eta: the same h, particle by particle, as particles --code swift --eta on that file."""
+    x = np.random.default_rng(3).uniform(0, 1, (1500, 3))
+    path = tmp_path / "set.csv"
+    np.savetxt(path, x, delimiter=",", header="x,y,z", comments="")
+    r = sphkern.particles("wendland_c2", x, box=[1, 1, 1], code="swift", value=1.2348)
+    run = subprocess.run([CLI, "particles", "wendland_c2", str(path), "--box", "1,1,1",
+                          "--code", "swift", "--eta", "1.2348", "--json"], capture_output=True, text=True, check=True)
+    cli = json.loads(run.stdout)
+    assert r["code"] == cli["code"]
+    assert abs(r["h_min"] - cli["h_min"]) <= 1e-15 * cli["h_min"] and abs(r["h_max"] - cli["h_max"]) <= 1e-15 * cli["h_max"]
 
 
 def test_complex_k_is_refused():
