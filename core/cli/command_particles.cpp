@@ -53,13 +53,15 @@ std::optional<CodeSetting> code_of(const ParticlesOptions& o, ParticleSources& s
     }
     const std::string parameter = code_profile(o.code, sources.code.code).parameter;
     sources.code.value = ValueSource::option("--" + parameter);
+    std::optional<CodeSetting> setting;
     for (const auto& [name, value] : settings) {
         if (!value->has_value()) continue;
         if (name != parameter)
             throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, parameter));
-        return CodeSetting{o.code, **value};
+        setting = CodeSetting{o.code, **value};
     }
-    throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code, parameter));
+    if (!setting) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code, parameter));
+    return setting;
 }
 
 ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sources)
@@ -98,7 +100,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
     c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k")
-        .excludes("--eta-range").excludes("--nh-range");
+        .excludes("--eta-range").excludes("--nh-range").excludes("--code");
     c.add_option("--volume", o.volume, "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();

@@ -11,6 +11,18 @@
 
 namespace sphkern {
 
+namespace {
+
+// The h (in d) that gives the code's parameter `value` at rest where m / rho = a_p d^D: the
+// parameter is linear in h, or in h^D for a neighbour number.
+double rest_h(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double value)
+{
+    const double at_one = code_parameter(profile, kernel, dimension, a_p, 1, 0);
+    return std::pow(value / at_one, profile.parameter == "nngb" ? 1.0 / dimension : 1.0);
+}
+
+} // namespace
+
 void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources)
 {
     const auto& profile = code_profile(setting.code, sources.code);
@@ -24,8 +36,7 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     const auto& profile = code_profile(setting.code, sources.code);
     require_code_kernel(profile, kernel);
     const int dim = lattice.dimension;
-    const double at_one = code_parameter(profile, kernel, dim, evaluation.a_p, 1, 0);
-    const double rest_k = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dim : 1.0);
+    const double rest_k = rest_h(profile, kernel, dim, evaluation.a_p, setting.value);
     const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
     const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
                                    evaluation.mode);
@@ -41,9 +52,8 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
 {
     const auto& profile = code_profile(setting.code, sources.code);
     require_code_kernel(profile, kernel);
-    // The parameter at h = 1 for a volume m / rho = 1: linear in h, or in h^D for a neighbour number.
-    const double at_one = code_parameter(profile, kernel, dimension, 1, 1, 0);
-    const double c = std::pow(setting.value / at_one, profile.parameter == "nngb" ? 1.0 / dimension : 1.0);
+    // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
+    const double c = rest_h(profile, kernel, dimension, 1, setting.value);
     return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0};
 }
 
