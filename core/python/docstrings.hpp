@@ -249,8 +249,14 @@ kernel : str
     A kernel name, a plugin or expression file, or a blend "A+B".
 lattice : str
     A lattice name or a lattice file.
-k : float
-    k = h / d, in (0, 100].
+k : float, optional
+    k = h / d, in (0, 100]. Or code and value.
+code : str, optional
+    A code's own setting instead of k, with value its parameter: "swift" (eta), "phantom"
+    (hfact), "gadget2" or "gadget4" (nngb), "pysph" (hdx), "dualsphysics" (coefh); its k is
+    found from the bulk's SPH density at site, and the document carries it under "code".
+value : float, optional
+    The code's parameter, with code.
 form : str, default "sum"
     The gradient form: "sum", "difference" or "monaghan".
 layers : int, default 4
@@ -275,6 +281,12 @@ Examples
 >>> s = sphkern.surface("cubic_bspline", "fcc", 1.2)
 >>> len(s["layers"]) >= 4, s["form"]
 (True, 'sum')
+
+SWIFT's eta, at the k of `sphkern.code_k`:
+
+>>> c = sphkern.surface("wendland_c2", "fcc", code="swift", value=1.2348)
+>>> c["k"] == sphkern.code_k("wendland_c2", "fcc", "swift", 1.2348), c["code"]["parameter"]
+(True, 'eta')
 )doc";
 
 inline constexpr const char* roots = R"doc(The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k.

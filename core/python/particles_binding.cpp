@@ -121,17 +121,6 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Giv
     return a;
 }
 
-// code and value together, or neither.
-std::optional<CodeSetting> code_of(const std::optional<std::string>& code, const OptionalFloat& value)
-{
-    const auto number = number_of(value, "value");
-    if (code.has_value() != number.has_value())
-        throw Error(ExitCode::input, code ? "code = " + *code + ": expected value, the code's parameter, too"
-                                          : std::string("value: is a code's parameter; expected code too"));
-    if (!code) return std::nullopt;
-    return CodeSetting{*code, *number};
-}
-
 py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
 py::array_t<double> column(const PerParticle& values)
 {
@@ -179,7 +168,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             ParticleSet set = set_of(positions, box);
             ParticleArguments arguments =
                 arguments_of(set, kernel, {h, support_per_h, masses, densities}, eta, nh, volume, gravity);
-            arguments.code = code_of(code, value);
+            arguments.code = code_setting_of(code, number_of(value, "value"), particle_sources(FrontEnd::python).code);
             arguments.rho0 = number_of(rho0, "rho0");
             arguments.depth = depth;
             arguments.threads = threads;

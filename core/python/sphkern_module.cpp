@@ -162,19 +162,24 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
     return out;
 }
 
-py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec, double k, const std::string& form,
+py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
+                 const std::optional<std::string>& code, std::optional<double> value, const std::string& form,
                  int layers, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
                  const OptionalParams& params)
 {
+    const CodeSettingSources code_sources{ValueSource::argument("code"), ValueSource::argument("value")};
+    SurfaceRequest request;
+    request.code = code_setting_of(code, value, code_sources);
+    if (k.has_value() == request.code.has_value())
+        throw Error(ExitCode::input, k ? "give one of k and code" : "k: expected a number, or code and value");
+    if (k) request.k = *k;
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
-    SurfaceRequest request;
-    request.k = k;
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
     const SurfaceSources sources{ValueSource::argument("k"), argument_sources(), ValueSource::argument("layers"),
-                                 ValueSource::argument("code"), ValueSource::argument("value")};
+                                 code_sources.code, code_sources.value};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);
     return to_python(surface_request_document(request, result, kernel, lattice));
@@ -386,7 +391,8 @@ void bind_accuracy(py::module_& m, const Guard& guard)
           py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
           guard);
     m.def("surface", &surface,
-          py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("form") = "sum",
+          py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(), py::arg("code") = py::none(),
+          py::arg("value") = py::none(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), doc::surface, guard);
 }

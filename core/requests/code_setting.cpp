@@ -2,6 +2,7 @@
 
 #include "analysis/code_profiles.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "support/error.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,19 @@ double rest_h(const CodeProfile& profile, const Kernel& kernel, int dimension, d
 }
 
 } // namespace
+
+std::optional<CodeSetting> code_setting_of(const std::optional<std::string>& code, std::optional<double> value,
+                                           const CodeSettingSources& sources)
+{
+    if (code && !value)
+        throw Error(sources.code.code, fmt::format("{} = {}: expected {}, the code's parameter, too", sources.code.name,
+                                                   *code, sources.value.name));
+    if (value && !code)
+        throw Error(sources.value.code, fmt::format("{}: is a code's parameter; expected {} too", sources.value.name,
+                                                    sources.code.name));
+    if (!code) return std::nullopt;
+    return CodeSetting{*code, *value};
+}
 
 void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources)
 {

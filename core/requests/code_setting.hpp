@@ -11,6 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 
 namespace sphkern {
@@ -24,6 +25,10 @@ struct CodeSetting {
 struct CodeSettingSources {
     ValueSource code, value;
 };
+
+// A code and its parameter's value given apart (Python's code= and value=): both or neither.
+std::optional<CodeSetting> code_setting_of(const std::optional<std::string>& code, std::optional<double> value,
+                                           const CodeSettingSources& sources);
 
 // A known code, and a value its parameter can take; an Error naming the source.
 void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources);

@@ -3,6 +3,7 @@ errors (as ValueError or RuntimeError with the command line's one-line message),
 arrays of any shape. Run by ctest with PYTHONPATH=<build>/python and SPHKERN_CLI set."""
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -89,8 +90,22 @@ def test_documents_equal_the_command_lines():
     close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
     close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
           cli_json("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "monaghan", "--layers", "6"))
+    close(sphkern.surface("wendland_c2", "fcc", code="swift", value=1.2348),
+          cli_json("surface", "wendland_c2", "fcc", "--code", "swift", "--eta", "1.2348"))
     close(sphkern.design("cubic_bspline+desbrun_spiky", "triangular", "alpha"),
           cli_json("design", "cubic_bspline+desbrun_spiky", "triangular", "--param", "alpha"))
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({}, "k: expected a number, or code and value"),
+    ({"k": 1.2, "code": "swift", "value": 1.2}, "give one of k and code"),
+    ({"code": "swift"}, "code = swift: expected value, the code's parameter, too"),
+    ({"value": 1.2}, "value: is a code's parameter; expected code too"),
+    ({"code": "swift", "value": -1}, "value = -1: expected a number in (0, 100]"),
+])
+def test_surface_takes_k_or_a_code_setting(kwargs, message):
+    with pytest.raises(ValueError, match=re.escape(message)):
+        sphkern.surface("wendland_c2", "fcc", **kwargs)
 
 
 def test_stability_documents_equal_the_command_lines():
