@@ -13,6 +13,11 @@ void add_setting_options(Command c, SettingOptions& o, const std::string& k_help
     c.add_option("--code", o.code, "Give the resolution as an SPH code sets it: swift, phantom, gadget2, gadget4, "
                                    "pysph or dualsphysics, with its parameter below");
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
+    add_code_parameters(c, o);
+}
+
+void add_code_parameters(Command c, SettingOptions& o)
+{
     c.add_option("--hfact", o.hfact, "With --code phantom: Phantom's hfact, h = hfact (m / rho)^(1/D)");
     c.add_option("--nngb", o.nngb, "With --code gadget2 or gadget4: the weighted neighbour number");
     c.add_option("--hdx", o.hdx, "With --code pysph: PySPH's hdx, h = hdx dx");

@@ -1,5 +1,6 @@
 // `sphkern particles`: the consistency errors of a kernel on any particle set (a lattice
 // block, a Poisson set or a file), per particle and as statistics.
+#include "cli/code_options.hpp"
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
@@ -28,8 +29,7 @@ struct ParticlesOptions : CommonOptions, SourceOptions {
     std::vector<double> eta_range, nh_range;
     double depth = 1, memory_limit = 0;
     std::optional<double> eta, nh, k, support_per_h, rho0;
-    std::string code;
-    std::optional<double> hfact, nngb, hdx, coefh; // the codes' settings beside --eta
+    SettingOptions codes; // --code and the codes' parameters but --eta (this command's own, SWIFT's with --code swift)
     int steps = 10, threads = 0;
     std::size_t histogram = 0;
 };
@@ -43,24 +43,25 @@ std::optional<std::array<double, 2>> range_of(const std::vector<double>& values)
 // --code NAME with its parameter (with swift, --eta is SWIFT's); the parameter's option named in `sources`.
 std::optional<CodeSetting> code_of(const ParticlesOptions& o, ParticleSources& sources)
 {
+    const auto& code = o.codes.code;
     const std::pair<const char*, const std::optional<double>*> settings[] = {
-        {"eta", &o.eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
-    if (o.code.empty()) {
+        {"eta", &o.eta}, {"hfact", &o.codes.hfact}, {"nngb", &o.codes.nngb}, {"hdx", &o.codes.hdx}, {"coefh", &o.codes.coefh}};
+    if (code.empty()) {
         for (const auto& [name, value] : settings)
             if (value->has_value() && std::string(name) != "eta")
                 throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
         return std::nullopt;
     }
-    const std::string parameter = code_profile(o.code, sources.code.code).parameter;
+    const std::string parameter = code_profile(code, sources.code.code).parameter;
     sources.code.value = ValueSource::option("--" + parameter);
     std::optional<CodeSetting> setting;
     for (const auto& [name, value] : settings) {
         if (!value->has_value()) continue;
         if (name != parameter)
-            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, parameter));
-        setting = CodeSetting{o.code, **value};
+            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, code, parameter));
+        setting = CodeSetting{code, **value};
     }
-    if (!setting) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code, parameter));
+    if (!setting) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", code, parameter));
     return setting;
 }
 
@@ -87,13 +88,10 @@ void add_options(Command c, ParticlesOptions& o)
                                  "with --code swift, SWIFT's eta");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
+    c.add_option("--code", o.codes.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
                                    "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
                                    "dualsphysics (--coefh)");
-    c.add_option("--hfact", o.hfact, "With --code phantom: Phantom's hfact, h = hfact (m / rho)^(1/D)");
-    c.add_option("--nngb", o.nngb, "With --code gadget2 or gadget4: the weighted neighbour number");
-    c.add_option("--hdx", o.hdx, "With --code pysph: PySPH's hdx, h = hdx dx");
-    c.add_option("--coefh", o.coefh, "With --code dualsphysics: DualSPHysics' coefh, h = coefh sqrt(D) dp");
+    add_code_parameters(c, o.codes);
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
     c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);

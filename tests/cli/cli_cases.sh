@@ -1078,6 +1078,11 @@ expect 0 '^$' -- particles cubic_bspline "$work/arrays.h5" --array fluid,solid -
 expect 3 'arrays.h5: no particle array "wall"; the file has fluid, solid' -- particles cubic_bspline "$work/arrays.h5" --array fluid,wall --nh 40
 expect 2 '--array fluid,,solid: an empty array name' -- particles cubic_bspline "$work/arrays.h5" --array fluid,,solid --nh 40
 expect 2 '--array fluid,fluid: array "fluid" named twice' -- particles cubic_bspline "$work/arrays.h5" --array fluid,fluid --nh 40
+# h from the SPH density is solved for every particle: a set with neighbours-only particles is refused.
+expect 3 'arrays.h5: h from the SPH density is solved for every particle; the set has .* neighbours-only particles' -- particles cubic_bspline "$work/arrays.h5" --array fluid,solid --box 1,1,1 --code swift --eta 1.2
+# A study source's array list is checked where the command line's is, named by its pointer.
+study s_arrays '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "particles": {"sources": [{"file": "arrays.h5", "array": "fluid,,solid"}]}}'
+expect 3 's_arrays.json: /particles/sources/0/array fluid,,solid: an empty array name' -- run "$work/s_arrays.json" -o "$work/out_arrays"
 expect 3 'arrays.h5: relaxation moves every particle; expected one particle array' -- relax cubic_bspline "$work/arrays.h5" --array fluid,solid --box 1,1,1 --nh 40 --steps 1
 # SPlisHSPlasH's VTK files hold no h and no particle radius: the radius is asked for, and given
 # only for its files.

@@ -102,7 +102,7 @@ StabilityCase stability_case(const StabilitySpec& spec, const Study& study, cons
     return c;
 }
 
-// The cases in turn, on every thread.
+// Every lattice x kernel case, on every thread.
 std::shared_ptr<const SectionResults> run_stability(const StabilitySpec& spec, const Study& study, const StudyInputs& inputs,
                                                     const StudyResults& results)
 {
