@@ -26,7 +26,9 @@ const std::vector<CodeProfile>& code_profiles()
         {"gadget4", "nngb", true, {"cubic_bspline", "wendland_c2", "wendland_c4", "wendland_c6"},
          "Springel et al. 2021 (GADGET-4, MNRAS 506, 2871): DesNumNgb, the weighted neighbour number (4 pi / 3) H^3 rho / m"},
         {"pysph", "hdx", false, {"cubic_bspline", "wendland_c2", "wendland_c4", "wendland_c6", "morris_quintic", "super_gaussian"},
-         "PySPH's examples: h = hdx dx with dx the particle spacing, support radius_scale h"},
+         "PySPH's examples: h = hdx dx with dx the particle spacing, support radius_scale h; its equations take "
+         "W and its gradient at HIJ = (h_i + h_j) / 2 (pysph/sph/equation.py, precomputed_symbols)",
+         true},
         {"dualsphysics", "coefh", false, {"cubic_bspline", "wendland_c2"},
          "DualSPHysics' user guide: h = coefh sqrt(3 dp^2) (sqrt(2 dp^2) in 2D), support 2h"}};
     return all;
@@ -47,6 +49,14 @@ void require_code_kernel(const CodeProfile& profile, const Kernel& kernel)
     if (std::find(profile.kernels.begin(), profile.kernels.end(), kernel.name()) == profile.kernels.end())
         fail_input(fmt::format("{}: {} does not ship it; its kernels are {}", kernel.name(), profile.name,
                                fmt::join(profile.kernels, ", ")));
+}
+
+double code_support_per_h(const CodeProfile& p, const Kernel& kernel, int dim)
+{
+    if (p.name == "swift") return swift_gamma(kernel, dim);
+    if (p.name == "gadget2" || p.name == "gadget4") return 1;
+    if (p.name == "dualsphysics") return 2;
+    return kernel.support(); // phantom's radkern, pysph's radius_scale
 }
 
 double code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, double a_p, double k, double eps_rho)

@@ -6,7 +6,7 @@
 //   swift         eta   = h_s / (m / rho)^(1/D),  H = gamma h_s, gamma = R / (2 sigma)
 //   phantom       hfact = h_p / (m / rho)^(1/D),  H = R h_p (its radkern is the kernel's R)
 //   gadget2/4     nngb  = omega_D H^D rho / m,    the weighted neighbour number
-//   pysph         hdx   = h_y / dx,               dx = V^(1/D), H = R h_y
+//   pysph         hdx   = h_y / dx,               dx = V^(1/D), H = R h_y, a pair's h the mean
 //   dualsphysics  coefh = h_d / (sqrt(D) dp),     dp = V^(1/D), H = 2 h_d
 // SPlisHSPlasH is left out: it fixes the support at four particle radii and the mass at
 // 0.8 (2 r)^3 rho0, so its one setting, the radius, also sets the volume.
@@ -27,6 +27,7 @@ struct CodeProfile {
     bool from_sph_density = false;    // h solved from the SPH density (else from the rest spacing)
     std::vector<std::string> kernels; // sphkern's names of the kernels the code ships
     std::string source;               // where the code states its definition
+    bool pair_mean = false;           // a pair's h in its sums is (h_i + h_j) / 2 (else h_i)
 };
 const std::vector<CodeProfile>& code_profiles();
 
@@ -34,6 +35,10 @@ const std::vector<CodeProfile>& code_profiles();
 const CodeProfile& code_profile(const std::string& name, const ValueSource& source);
 // Refuses (exit 3) a kernel the code does not ship, listing those it does.
 void require_code_kernel(const CodeProfile& profile, const Kernel& kernel);
+
+// The support radius over the h the code stores in its files: SWIFT gamma, Phantom and PySPH
+// the kernel's R, GADGET 1 (its h is the support), DualSPHysics 2.
+double code_support_per_h(const CodeProfile& profile, const Kernel& kernel, int dimension);
 
 // The code's parameter at k, the lattice's SPH density at rest being rho0 (1 + eps_rho).
 double code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double k,

@@ -50,6 +50,27 @@ std::optional<CodeSetting> code_setting(const SettingOptions& o)
     return setting;
 }
 
+std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std::optional<double>& eta)
+{
+    const std::pair<const char*, const std::optional<double>*> settings[] = {
+        {"eta", &eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
+    if (o.code.empty()) {
+        for (const auto& [name, value] : settings)
+            if (value->has_value() && std::string(name) != "eta")
+                throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+        return std::nullopt;
+    }
+    const std::string parameter = code_profile(o.code, ValueSource::option("--code")).parameter;
+    CodeChoice choice{o.code, std::nullopt};
+    for (const auto& [name, value] : settings) {
+        if (!value->has_value()) continue;
+        if (name != parameter)
+            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, parameter));
+        choice.value = **value;
+    }
+    return choice;
+}
+
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
 {
     const std::string parameter = o.code.empty() ? "" : code_profile(o.code, ValueSource::option("--code")).parameter;

@@ -29,6 +29,15 @@ bool setting_given(const SettingOptions& options);
 // The code's setting: its parameter given only with --code and alone, or none for --k.
 std::optional<CodeSetting> code_setting(const SettingOptions& options);
 
+// --code NAME where sphkern's own --eta is an option too (`particles`, `relax`): with --code
+// swift, `eta` is SWIFT's. The code with its parameter's value, or none (alone); nullopt
+// without --code. A parameter without --code, or another code's, is refused.
+struct CodeChoice {
+    std::string code;
+    std::optional<double> value;
+};
+std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& codes, const std::optional<double>& eta);
+
 // "--code" and the code's parameter ("--eta"), for the request's errors.
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& options);
 

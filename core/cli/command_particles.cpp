@@ -40,36 +40,15 @@ std::optional<std::array<double, 2>> range_of(const std::vector<double>& values)
     return std::array<double, 2>{values[0], values[1]};
 }
 
-// --code NAME with its parameter (with swift, --eta is SWIFT's); the parameter's option named in `sources`.
-std::optional<CodeSetting> code_of(const ParticlesOptions& o, ParticleSources& sources)
-{
-    const auto& code = o.codes.code;
-    const std::pair<const char*, const std::optional<double>*> settings[] = {
-        {"eta", &o.eta}, {"hfact", &o.codes.hfact}, {"nngb", &o.codes.nngb}, {"hdx", &o.codes.hdx}, {"coefh", &o.codes.coefh}};
-    if (code.empty()) {
-        for (const auto& [name, value] : settings)
-            if (value->has_value() && std::string(name) != "eta")
-                throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
-        return std::nullopt;
-    }
-    const std::string parameter = code_profile(code, sources.code.code).parameter;
-    sources.code.value = ValueSource::option("--" + parameter);
-    std::optional<CodeSetting> setting;
-    for (const auto& [name, value] : settings) {
-        if (!value->has_value()) continue;
-        if (name != parameter)
-            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, code, parameter));
-        setting = CodeSetting{code, **value};
-    }
-    if (!setting) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", code, parameter));
-    return setting;
-}
-
 ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sources)
 {
     ParticleArguments a;
-    a.code = code_of(o, sources);
-    a.smoothing = {a.code ? std::nullopt : o.eta, o.nh, o.k, o.support_per_h};
+    if (const auto code = code_beside_own_eta(o.codes, o.eta)) {
+        sources.code.value = code_sources(o.codes).second;
+        if (code->value) a.code = CodeSetting{code->code, *code->value};
+        else a.stored_h_code = code->code;
+    }
+    a.smoothing = {o.codes.code.empty() ? o.eta : std::nullopt, o.nh, o.k, o.support_per_h};
     a.eta_range = range_of(o.eta_range), a.nh_range = range_of(o.nh_range);
     a.steps = o.steps;
     if (!o.volume.empty()) a.volume = o.volume;
@@ -90,7 +69,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--k", o.k, "Lattice: h = k d");
     c.add_option("--code", o.codes.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
                                    "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
-                                   "dualsphysics (--coefh)");
+                                   "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
     add_code_parameters(c, o.codes);
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
@@ -141,8 +120,8 @@ Action add_particles_command(Command app)
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
         if (!outputs.empty()) phases.lap("write");
         answer.phases = phases;
-        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments.code), source_inputs(o, kernel));
-        else print_particle_answer(results_file(), kernel, set, answer, arguments.code);
+        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel));
+        else print_particle_answer(results_file(), kernel, set, answer, arguments);
         return 0;
     };
 }

@@ -1,5 +1,6 @@
 // `sphkern relax`: a particle set relaxed in its periodic box (SPH pressure with damping, or
 // particle shifting), the glass it makes judged and written for `sphkern particles`.
+#include "cli/code_options.hpp"
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
@@ -27,6 +28,7 @@ struct RelaxOptions : CommonOptions, SourceOptions {
     std::string kernel, method = "pressure", output, history, tile;
     std::vector<std::string> sets;
     std::optional<double> eta, nh, k;
+    SettingOptions codes; // --code and the codes' parameters but --eta (this command's own, SWIFT's with --code swift)
     RelaxSettings settings;
     double memory_limit = 0, rdf_max = 3;
     std::size_t rdf_bins = 60;
@@ -39,6 +41,10 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
+    c.add_option("--code", o.codes.code, "The code --output is for: swift, gadget2, gadget4 or pysph, its layout and h; "
+                                         "with its parameter (--eta is then SWIFT's), the run's h and each written h as the "
+                                         "code sets it");
+    add_code_parameters(c, o.codes);
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
     c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k");
     c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
@@ -55,7 +61,7 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
     c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
-    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout) or .csv");
+    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's) or .csv");
     c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
     c.add_option("--history", o.history, "Write the history of the run as CSV");
     add_set_option(c, o.sets);
@@ -65,10 +71,10 @@ void add_options(Command c, RelaxOptions& o)
 
 // --output holds a rectangular box; a lattice block cut from its primitive cell is told how
 // to cut it from a rectangular one.
-void require_box_for_output(const ParticleSet& set, const RelaxOptions& o)
+void require_box_for_output(const ParticleSet& set, const RelaxOptions& o, ParticleLayout layout)
 {
     try {
-        require_rectangular_box(set, "--output " + o.output);
+        require_layout_box(set, layout, "--output " + o.output);
     } catch (const Error& e) {
         if (source_kind(o.source) != SourceKind::lattice || o.cell == "rectangular") throw;
         throw Error(e.code(), std::string(e.what()) + "; --cell rectangular cuts the block from the lattice's rectangular cell");
@@ -102,7 +108,13 @@ Action add_relax_command(Command app)
         o.settings.method = relax_method_of(o.method, sources.method);
         check_relax_settings(o.settings, sources);
         check_rdf(o.rdf_max, o.rdf_bins, sources); // before the run: g(r) is drawn after it
-        const SmoothingSpec spec = smoothing_spec({o.eta, o.nh, o.k, std::nullopt}, sources.smoothing);
+        std::optional<RelaxCode> code;
+        if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
+        const auto [code_source, value_source] = code_sources(o.codes);
+        if (code && code->value && (o.nh || o.k))
+            throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --nh or --k beside it", code->name,
+                                                     value_source.name));
+        SmoothingSpec spec = smoothing_spec({code ? std::nullopt : o.eta, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"));
@@ -110,22 +122,32 @@ Action add_relax_command(Command app)
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
+        if (code) check_relax_code(*code, o.output, kernel, {code_source, value_source});
         ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
+        if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, {code_source, value_source});
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(spec, set, kernel, sources.smoothing);
-        if (!o.output.empty()) require_box_for_output(set, o);
+        // A CSV file holds any rectangular box; an HDF5 file the box of the code's layout.
+        if (!o.output.empty())
+            require_box_for_output(set, o, o.output.ends_with(".csv") ? ParticleLayout::swift : relax_layout(code));
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
         if (!o.output.empty()) {
             const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
             const ParticleSet& out = o.tile.empty() ? run.state.set : written;
-            write_particle_file(o.output, out, swift_initial_conditions(kernel, out, run, o.settings.gamma));
+            write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads));
         }
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
-        if (o.json) print_json(relax_json(kernel, o.settings, run, judged), source_inputs(o, kernel));
-        else print_relax(results_file(), kernel, o.settings, run, judged);
+        if (o.json) {
+            auto document = relax_json(kernel, o.settings, run, judged);
+            if (code) document["code"] = relax_code_json(*code);
+            print_json(document, source_inputs(o, kernel));
+        } else {
+            print_relax(results_file(), kernel, o.settings, run, judged);
+            if (code) fmt::print(results_file(), "{}\n", relax_code_text(*code));
+        }
         return 0;
     };
 }

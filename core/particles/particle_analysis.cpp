@@ -112,7 +112,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume, threads);
         phases.lap("h");
         MeasureInputs inputs{h.view(), answer.volumes.view(), set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
-                             request.threads, request.vectors};
+                             request.threads, request.vectors, specs[p].pair};
         auto measures = measure_particles(kernel, set, inputs);
         phases.merge(measures.phases);
         phases.restart();

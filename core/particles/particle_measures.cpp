@@ -112,6 +112,9 @@ struct Sweep {
     // on every lattice and Poisson set).
     PointInputs volume, h, reach;
     std::vector<double> mass; // in point order; empty: m_j = rho0 V_j
+    // The mean pair h (h per point): each neighbour's point comes in nb.b (a double holds it
+    // exactly), its mass is read from `mass` by it.
+    bool pair_mean = false;
     // One fused pass per particle over its neighbours (kept by the pair pass from its
     // cluster's shared candidates): r, q and 1 / r, W and W' in one kernel call, and every
     // sum, over arrays that stay in L1.
@@ -120,9 +123,12 @@ struct Sweep {
         const std::size_t i = grid.source(p);
         const int dim = set.dimension;
         const double h = this->h.view()[p], k = h / in.spacing;
-        const std::size_t n = nb.count, padded = padded_count(n);
+        const std::size_t n = pair_mean ? keep_pair_supports(h, nb) : nb.count, padded = padded_count(n);
         distances(nb, padded, 1 / h);
+        if (pair_mean)
+            for (std::size_t j = 0; j < n; ++j) nb.q[j] *= nb.r[j];
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
+        if (pair_mean) pair_kernel_in_units_of(nb, n);
         double t[neighbour_sum_count];
         neighbour_sums(nb, padded, volume.view().per_point ? 0.0 : volume.all, !mass.empty(), set.dimension == 3, t);
         const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume.view()[p] * w0;
@@ -134,6 +140,37 @@ struct Sweep {
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
         if (!std::isfinite(r.e0) || !std::isfinite(r.eps_gradp) || !std::isfinite(r.eps_rho)) fail_non_finite(r, nb, h);
+    }
+
+    // The neighbours inside the support R h_ij of their pair, h_ij = (h_i + h_j) / 2, moved to
+    // the front in their order, with m_j in nb.b and h_i / h_ij in nb.r; then the padding.
+    std::size_t keep_pair_supports(double h_i, Neighbours& nb) const
+    {
+        const bool volumes = volume.view().per_point != nullptr;
+        std::size_t kept = 0;
+        for (std::size_t j = 0; j < nb.count; ++j) {
+            const auto point = static_cast<std::size_t>(nb.b[j]);
+            const double h_ij = 0.5 * (h_i + h.per_point[point]), edge = search_reach(kernel.support() * h_ij);
+            if (nb.dx[j] * nb.dx[j] + nb.dy[j] * nb.dy[j] + nb.dz[j] * nb.dz[j] > edge * edge) continue;
+            nb.dx[kept] = nb.dx[j], nb.dy[kept] = nb.dy[j], nb.dz[kept] = nb.dz[j];
+            if (volumes) nb.a[kept] = nb.a[j];
+            nb.b[kept] = mass.empty() ? 0.0 : mass[point];
+            nb.r[kept] = h_i / h_ij;
+            ++kept;
+        }
+        for (std::size_t j = kept; j < padded_count(kept); ++j) nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r[j] = 1;
+        nb.count = kept;
+        return kept;
+    }
+
+    // W(r, h_ij) and W'(r, h_ij) in the units of h_i that the sums and `store` use: times
+    // (h_i / h_ij)^D and (h_i / h_ij)^(D+1).
+    void pair_kernel_in_units_of(Neighbours& nb, std::size_t n) const
+    {
+        for (std::size_t j = 0; j < n; ++j) {
+            const double s = nb.r[j], sd = set.dimension == 3 ? s * s * s : s * s;
+            nb.w[j] *= sd, nb.dw[j] *= sd * s;
+        }
     }
 
     // Names the cause of a result that is not finite: the reference density, or the kernel at
@@ -175,16 +212,26 @@ struct Sweep {
 };
 
 
-// The search reach of every particle's support radius R h, from h in point order (one for all for one h).
-PointInputs reaches(const NeighbourGrid& grid, const PointInputs& h, double support)
+// The search reach of every particle's support radius R h, from h in point order (one for all
+// for one h); with the mean pair h, of R (h + h_max) / 2, the widest of its pairs.
+PointInputs reaches(const NeighbourGrid& grid, const PointInputs& h, double support, bool pair_mean, double h_max)
 {
     PointInputs r = h;
-    r.all = search_reach(support * r.all);
+    auto reach = [&](double h_i) { return search_reach(support * (pair_mean ? 0.5 * (h_i + h_max) : h_i)); };
+    r.all = reach(r.all);
     ParallelFor pass;
     pass.run(r.per_point.size(), grid.threads(), [&](int, std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) r.per_point[p] = search_reach(support * r.per_point[p]);
+        for (std::size_t p = begin; p < end; ++p) r.per_point[p] = reach(r.per_point[p]);
     });
     return r;
+}
+
+// 0, 1, 2, ... for every point of the grid: what the mean pair h gathers to find a neighbour's h and mass.
+std::vector<double> point_numbers(const NeighbourGrid& grid)
+{
+    std::vector<double> numbers(grid.points());
+    for (std::size_t p = 0; p < numbers.size(); ++p) numbers[p] = static_cast<double>(p);
+    return numbers;
 }
 
 void check_inputs(const ParticleSet& set, const MeasureInputs& in)
@@ -215,7 +262,9 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     out.threads = worker_threads(inputs.threads);
     const NeighbourGrid grid(set, kernel.support() * h_max, out.threads);
     PointInputs h_points = PointInputs::of(grid, inputs.h);
-    PointInputs reach_points = reaches(grid, h_points, kernel.support());
+    // One h for every particle makes every pair's h that h.
+    const bool pair_mean = inputs.pair == PairSmoothing::mean && !h_points.per_point.empty();
+    PointInputs reach_points = reaches(grid, h_points, kernel.support(), pair_mean, h_max);
     const Sweep sweep{kernel,
                       set,
                       inputs,
@@ -223,7 +272,9 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
                       PointInputs::of(grid, inputs.volume),
                       std::move(h_points),
                       std::move(reach_points),
-                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass)};
+                      inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
+                      pair_mean};
+    const std::vector<double> neighbour_points = pair_mean ? point_numbers(grid) : std::vector<double>();
 
     phases.lap("grid");
     // The measured particles only: the neighbours-only ones end the set and are not visited.
@@ -238,8 +289,8 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
     std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread
-    const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point,
-                              sweep.mass.empty() ? nullptr : sweep.mass.data(), false, set.name + ": the sums"};
+    const double* b = pair_mean ? neighbour_points.data() : sweep.mass.empty() ? nullptr : sweep.mass.data();
+    const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point, b, false, set.name + ": the sums"};
     pair_pass(
         grid, set.name, pass, out.threads,
         [&](int thread, std::size_t p, Neighbours& nb) {

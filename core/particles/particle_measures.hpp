@@ -7,6 +7,7 @@
 #include "kernels/kernel.hpp"
 #include "particles/per_particle.hpp"
 #include "particles/particle_set.hpp"
+#include "particles/smoothing_lengths.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/phase_times.hpp"
 
@@ -28,6 +29,7 @@ struct MeasureInputs {
     std::optional<Eigen::Vector3d> gravity; // the unit g of eps_gradp; none: the set's
     int threads = 0;            // 0: every core
     bool vectors = true;        // keep e1, m1 and E per particle (else only their magnitudes)
+    PairSmoothing pair = PairSmoothing::own; // the mean: W(r_ij, (h_i + h_j) / 2) and its gradient
 };
 
 // Every array is written by the threads of the sums (first touch), one value per measured
@@ -51,7 +53,8 @@ struct ParticleMeasures {
 };
 
 // Every particle's measures by direct sums over its neighbours (periodic images by the
-// minimum image). Independent of the thread count. Throws Error(input) for two particles at
+// minimum image). With the mean pair h, j is a neighbour of i where r_ij is inside the pair's
+// support R (h_i + h_j) / 2, and the sums stay in units of h_i (the results' scale). Independent of the thread count. Throws Error(input) for two particles at
 // one position (naming both ids) and a non-finite kernel value (the kernel's fault code).
 ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs);
 

@@ -13,10 +13,15 @@ namespace sphkern {
 // density: h_i = value (m_i / rho_i)^(1/D) with rho_i the SPH density at h_i (density_smoothing.hpp).
 enum class SmoothingRule { eta, nh, k, file, density };
 
+// The h of a pair in the sums: the particle's own h_i (the gather form of SWIFT, Phantom and
+// GADGET), or the mean (h_i + h_j) / 2 (PySPH's HIJ).
+enum class PairSmoothing { own, mean };
+
 struct SmoothingSpec {
     SmoothingRule rule = SmoothingRule::eta;
     double value = 1.2;        // eta, N_H, k or the density rule's coefficient; unused for `file`
     double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
+    PairSmoothing pair = PairSmoothing::own;
 };
 
 // N_H = c_D (R eta)^D, the mean number of neighbours inside the support at uniform density

@@ -546,7 +546,9 @@ code : str, optional
     h as an SPH code sets it, with value its parameter: "swift" (eta), "phantom" (hfact),
     "gadget2" or "gadget4" (nngb) solve every particle's h with its own SPH density,
     h_i = c (m_i / rho_i)^(1/D); "pysph" (hdx) and "dualsphysics" (coefh) take it from the
-    mean spacing. Not with h, eta or nh. The document carries it under "code".
+    mean spacing. Not with h, eta or nh. Without value, with h: that h as the code stores
+    it (its support over h, and PySPH's pair h (h_i + h_j) / 2 in the sums), not with
+    support_per_h. The document carries it under "code".
 value : float, optional
     The code's parameter, with code.
 masses : float or array_like, optional

@@ -168,7 +168,13 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             ParticleSet set = set_of(positions, box);
             ParticleArguments arguments =
                 arguments_of(set, kernel, {h, support_per_h, masses, densities}, eta, nh, volume, gravity);
-            arguments.code = code_setting_of(code, number_of(value, "value"), particle_sources(FrontEnd::python).code);
+            // A code alone: the h given, as that code stores it.
+            const auto code_value = number_of(value, "value");
+            if (code && !code_value) {
+                arguments.stored_h_code = code;
+                // The code's support over h, not the default of a given h (sphkern's own).
+                if (support_per_h.is_none()) arguments.smoothing.support_per_h.reset();
+            } else arguments.code = code_setting_of(code, code_value, particle_sources(FrontEnd::python).code);
             arguments.rho0 = number_of(rho0, "rho0");
             arguments.depth = depth;
             arguments.threads = threads;
@@ -180,7 +186,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             }
             const auto& m = *answer.measures;
             const std::size_t d = static_cast<std::size_t>(set.dimension);
-            py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments.code));
+            py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
             out["h"] = column(answer.h);
             out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
             out["volume"] = column(answer.volumes);

@@ -14,8 +14,11 @@ namespace sphkern {
 
 namespace {
 
+PairSmoothing pair_smoothing(const CodeProfile& profile) { return profile.pair_mean ? PairSmoothing::mean : PairSmoothing::own; }
+
 // The h (in d) that gives the code's parameter `value` at rest where m / rho = a_p d^D: the
 // parameter is linear in h, or in h^D for a neighbour number.
+
 double rest_h(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double value)
 {
     const double at_one = code_parameter(profile, kernel, dimension, a_p, 1, 0);
@@ -68,7 +71,22 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
     require_code_kernel(profile, kernel);
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
-    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0};
+    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile)};
+}
+
+SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSources& sources, const Kernel& kernel,
+                                    const ParticleSet& set)
+{
+    const auto& profile = code_profile(code, sources.code);
+    require_code_kernel(profile, kernel);
+    if (set.h.empty())
+        fail_input(fmt::format("{}: the set stores no h; with {} {}, expected {} too (the code's parameter)", set.name,
+                               sources.code.name, code, sources.value.name));
+    if (!set.file_kernel.empty() && set.file_kernel_name != kernel.name())
+        fail_input(fmt::format("{}: the file's h is for its kernel \"{}\"{}, not {}; expected that kernel", set.name,
+                               set.file_kernel, set.file_kernel_name.empty() ? "" : " (sphkern's " + set.file_kernel_name + ")",
+                               kernel.name()));
+    return {SmoothingRule::file, 0, code_support_per_h(profile, kernel, set.dimension), pair_smoothing(profile)};
 }
 
 nlohmann::json code_k_json(const CodeK& code)
@@ -90,6 +108,21 @@ std::string code_answer_text(const CodeSetting& setting)
     return fmt::format("{} {} = {:.10g}: h from {}", setting.code, profile.parameter, setting.value,
                        profile.from_sph_density ? "each particle's SPH density (solved for every particle)"
                                                 : "the mean spacing");
+}
+
+nlohmann::json stored_code_json(const std::string& code, const Kernel& kernel, int dimension)
+{
+    const auto& profile = code_profile(code, ValueSource::argument("code"));
+    return {{"name", code}, {"parameter", profile.parameter}, {"h_from", "file"},
+            {"support_per_h", code_support_per_h(profile, kernel, dimension)}, {"pair_h", profile.pair_mean ? "mean" : "own"}};
+}
+
+std::string stored_code_text(const std::string& code, const Kernel& kernel, int dimension)
+{
+    const auto& profile = code_profile(code, ValueSource::argument("code"));
+    return fmt::format("{}: the file's h as {} stores it, support {:.10g} h, a pair's h {}", code, code,
+                       code_support_per_h(profile, kernel, dimension),
+                       profile.pair_mean ? "the mean of its two" : "the particle's own");
 }
 
 } // namespace sphkern

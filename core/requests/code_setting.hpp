@@ -51,6 +51,13 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
 SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
                              int dimension);
 
+// A code named alone on a set that stores h: that h as the code stores it, its support radius
+// code_support_per_h times it and a pair's h the code's; the kernel one the code ships and, where
+// the file names its kernel, that one. Error(input) for a set without h, naming `source`'s
+// parameter (`value`) as the other way.
+SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSources& sources, const Kernel& kernel,
+                                    const ParticleSet& set);
+
 // {"name", "parameter", "value", "value_at_k"}, as `--json` carries it under "code".
 nlohmann::json code_k_json(const CodeK& code);
 
@@ -58,5 +65,9 @@ nlohmann::json code_k_json(const CodeK& code);
 // and the line "swift eta = 1.2348: h from each particle's SPH density".
 nlohmann::json code_answer_json(const CodeSetting& setting);
 std::string code_answer_text(const CodeSetting& setting);
+// A code's stored h: {"name", "parameter", "h_from": "file", "support_per_h", "pair_h": "own" or "mean"}
+// and its line.
+nlohmann::json stored_code_json(const std::string& code, const Kernel& kernel, int dimension);
+std::string stored_code_text(const std::string& code, const Kernel& kernel, int dimension);
 
 } // namespace sphkern

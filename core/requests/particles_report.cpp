@@ -53,7 +53,7 @@ nlohmann::json point_json(const ParticlePoint& p)
 }
 
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
-                                    const std::optional<CodeSetting>& code)
+                                    const ParticleArguments& asked)
 {
     nlohmann::json source = {{"name", set.name}, {"particles", set.measured()}, {"dimension", set.dimension},
                              {"periodic", set.box.has_value()}};
@@ -78,12 +78,13 @@ nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set
     document["phases"] = phases;
     if (answer.points.size() == 1) document.update(point_json(answer.points[0]));
     else document["sweep"] = points;
-    if (code) document["code"] = code_answer_json(*code);
+    if (asked.code) document["code"] = code_answer_json(*asked.code);
+    if (asked.stored_h_code) document["code"] = stored_code_json(*asked.stored_h_code, kernel, set.dimension);
     return document;
 }
 
 void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
-                           const std::optional<CodeSetting>& code)
+                           const ParticleArguments& asked)
 {
     fmt::print(out, "{} on {}: {} particles{} in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
                kernel.label(), set.name, set.measured(),
@@ -91,7 +92,8 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
                set.box ? "periodic box" : "free (no box)",
                volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
                set.dimension == 3 ? fmt::format(", {:.4g}", answer.gravity.z()) : "");
-    if (code) fmt::print(out, "{}\n", code_answer_text(*code));
+    if (asked.code) fmt::print(out, "{}\n", code_answer_text(*asked.code));
+    if (asked.stored_h_code) fmt::print(out, "{}\n", stored_code_text(*asked.stored_h_code, kernel, set.dimension));
     if (answer.points.size() > 1) {
         print_sweep_table(out, answer);
         return;

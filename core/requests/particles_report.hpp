@@ -2,7 +2,7 @@
 // per-particle values as CSV or legacy VTK (point data, for ParaView).
 #pragma once
 
-#include "requests/code_setting.hpp"
+#include "requests/particles_request.hpp"
 #include "particles/particle_analysis.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -13,11 +13,11 @@ namespace sphkern {
 
 nlohmann::json summary_json(const Summary& summary);
 nlohmann::json point_json(const ParticlePoint& point); // eta, N_H, neighbours and the statistics of one h
-// With the code's setting the h came from, if one was given ("code" in the JSON, a line in the text).
+// With the code the h came from, where `asked` names one ("code" in the JSON, a line in the text).
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
-                                    const std::optional<CodeSetting>& code = std::nullopt);
+                                    const ParticleArguments& asked);
 void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
-                           const std::optional<CodeSetting>& code = std::nullopt);
+                           const ParticleArguments& asked);
 
 // One row per particle in id order: id, x, y, [z,] h, volume, neighbours, e0, eps_rho,
 // eps_gradp, e1_x, e1_y[, e1_z], m1_x, m1_y[, m1_z]. Needs a single h (answer.measures).

@@ -53,12 +53,18 @@ ParticleRequest particle_request(const ParticleArguments& given, const Kernel& k
                          {given.nh_range.has_value(), &sources.nh_range}});
     ParticleRequest request;
     request.sweep = sweep_of(given, sources);
-    if (given.code) {
+    if (given.code || given.stored_h_code) {
         if (given.smoothing.eta || given.smoothing.nh || given.smoothing.k || request.sweep)
             sources.code.code.fail("gives h for one setting; expected no " + s.eta.name + ", " + s.nh.name + ", " + s.k.name +
                                    " or sweep beside it");
-        check_code_setting(*given.code, sources.code);
-        request.smoothing = code_smoothing(*given.code, sources.code, kernel, set.dimension);
+        if (given.smoothing.support_per_h)
+            sources.code.code.fail(fmt::format("gives the support over h; expected no {} beside it", s.support_per_h.name));
+        if (given.stored_h_code) {
+            request.smoothing = stored_code_smoothing(*given.stored_h_code, sources.code, kernel, set);
+        } else {
+            check_code_setting(*given.code, sources.code);
+            request.smoothing = code_smoothing(*given.code, sources.code, kernel, set.dimension);
+        }
     } else {
         request.smoothing = smoothing_of(given.smoothing, set, s, !request.sweep);
     }

@@ -18,6 +18,7 @@ namespace sphkern {
 struct ParticleArguments {
     SmoothingArguments smoothing;
     std::optional<CodeSetting> code; // instead of eta, N_H or k: a code's own setting (one h, no sweep)
+    std::optional<std::string> stored_h_code; // a code alone: the set's stored h as that code stores it
     std::optional<std::array<double, 2>> eta_range, nh_range; // a sweep over [A, B]
     int steps = 10;                                          // of a sweep
     std::optional<std::string> volume;                       // uniform, file or voronoi

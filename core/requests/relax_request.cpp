@@ -1,6 +1,8 @@
 #include "requests/relax_request.hpp"
 
 #include "analysis/code_conventions.hpp"
+#include "analysis/code_profiles.hpp"
+#include "particles/density_smoothing.hpp"
 #include "particles/formats/swift_kernels.hpp"
 #include "particles/particle_volumes.hpp"
 #include "particles/particles_memory.hpp"
@@ -11,6 +13,7 @@
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -65,13 +68,90 @@ RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threa
     return judged;
 }
 
-ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run,
-                                        double eos_gamma)
+namespace {
+
+// Whether the written h is each particle's own, solved as the code solves it.
+bool solved_h(const RelaxCode& code)
+{
+    return code.value && code_profile(code.name, ValueSource::argument("code")).from_sph_density;
+}
+
+} // namespace
+
+ParticleLayout relax_layout(const std::optional<RelaxCode>& code)
+{
+    if (!code || code->name == "swift") return ParticleLayout::swift;
+    if (code->name == "gadget2" || code->name == "gadget4") return ParticleLayout::gadget;
+    return ParticleLayout::pysph;
+}
+
+void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel,
+                      const CodeSettingSources& sources)
+{
+    const auto& profile = code_profile(code.name, sources.code);
+    const bool hdf5 = !output.empty() && !output.ends_with(".csv");
+    if (hdf5 && (code.name == "phantom" || code.name == "dualsphysics"))
+        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph; "
+                                      "{} starts from files of its own (a .csv output holds its h)",
+                                      code.name, code.name == "phantom" ? "Phantom" : "DualSPHysics"));
+    if (code.name == "pysph" && output.ends_with(".h5"))
+        sources.code.fail(fmt::format("pysph: PySPH's load reads a name ending in .hdf5; expected one, not {}", output));
+    if (!code.value && output.empty())
+        sources.code.fail(fmt::format("{}: names the code the written set is for, or with {} sets h; expected an output "
+                                      "or {}",
+                                      code.name, sources.value.name, sources.value.name));
+    if (code.value) check_code_setting({code.name, *code.value}, sources);
+    require_code_kernel(profile, kernel);
+}
+
+SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension, const CodeSettingSources& sources)
+{
+    const SmoothingSpec spec = code_smoothing({code.name, *code.value}, sources, kernel, dimension);
+    return {SmoothingRule::eta, spec.value, 0};
+}
+
+ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run, double eos_gamma,
+                                  const std::optional<RelaxCode>& code, int threads)
 {
     const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0, mass = run.state.model.mass;
-    const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * run.h;
-    if (!(gamma > 0)) return {std::vector<double>(set.size(), run.h), kernel.support(), mass, "", u};
-    return {std::vector<double>(set.size(), support / gamma), gamma, mass, swift_kernel_label(kernel.name()), u};
+    const double volume = mean_volume(set), density = mass / volume;
+    const std::size_t n = set.size();
+    if (!code) {
+        const double gamma = swift_gamma(kernel, set.dimension), support = kernel.support() * run.h;
+        if (!(gamma > 0)) return {std::vector<double>(n, run.h), kernel.support(), mass, density, "", u};
+        return {std::vector<double>(n, support / gamma), gamma, mass, density, swift_kernel_label(kernel.name()), u};
+    }
+    const auto& profile = code_profile(code->name, ValueSource::argument("code"));
+    const double per_h = code_support_per_h(profile, kernel, set.dimension), to_stored = kernel.support() / per_h;
+    ParticleOutput out{std::vector<double>(n, run.h * to_stored), per_h, mass, density,
+                       code->name == "swift" ? swift_kernel_label(kernel.name()) : "", u, relax_layout(code)};
+    if (solved_h(*code)) {
+        const double c = code_smoothing({code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")},
+                                        kernel, set.dimension).value;
+        const PerParticle h = density_smoothing_lengths(kernel, set, c, volume, threads);
+        for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i] * to_stored;
+    }
+    return out;
+}
+
+nlohmann::json relax_code_json(const RelaxCode& code)
+{
+    const auto& profile = code_profile(code.name, ValueSource::argument("code"));
+    const char* layouts[] = {"swift", "gadget", "pysph"};
+    nlohmann::json out = {{"name", code.name}, {"parameter", profile.parameter},
+                          {"layout", layouts[static_cast<int>(relax_layout(code))]},
+                          {"written_h", solved_h(code) ? "sph_density" : "run_h"}};
+    if (code.value) out["value"] = *code.value;
+    return out;
+}
+
+std::string relax_code_text(const RelaxCode& code)
+{
+    const auto& profile = code_profile(code.name, ValueSource::argument("code"));
+    const std::string setting = code.value ? fmt::format(" {} = {:.10g}", profile.parameter, *code.value) : "";
+    return fmt::format("for {}{}: {}", code.name, setting,
+                       solved_h(code) ? "the run's h at the rest density; each written h solved with the particle's SPH density"
+                                      : "written with the run's h in the code's convention");
 }
 
 void check_relax_output(const std::string& file, const ValueSource& source)

@@ -6,11 +6,15 @@
 #include "particles/particle_set.hpp"
 #include "particles/formats/particle_writers.hpp"
 #include "relax/relax_settings.hpp"
+#include "requests/code_setting.hpp"
 #include "requests/relax_report.hpp"
 #include "requests/smoothing_request.hpp"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace sphkern {
@@ -35,14 +39,42 @@ void check_rdf(double r_max, std::size_t bins, const RelaxSources& sources);
 // only), g(r) up to r_max mean spacings in `bins`, and a Poisson set's RMS e0 at the same h.
 RelaxedSet judge_relaxed(const Kernel& kernel, const RelaxResult& run, int threads, double r_max, std::size_t bins);
 
-// The relaxed set as SWIFT's initial conditions of its own kernels: h = H / gamma with SWIFT's
-// gamma (the support over twice the kernel's standard deviation), the kernel's name, and the
-// internal energy of an ideal gas whose sound speed is the relaxation's c = 1,
-// u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal gas has that sound speed).
-// A kernel without SWIFT's gamma is written with sphkern's h and R.
+// The code a relaxed set is written for (`relax --code`): named alone, the file is in its
+// layout with its stored h at the run's one h; with its parameter, the run's h is the code's
+// at the set's rest density (m / rho = V), and each written h is the particle's own as the
+// code solves it (with its SPH density for SWIFT, Phantom and GADGET).
+struct RelaxCode {
+    std::string name;
+    std::optional<double> value;
+};
+
+// A code, a value its parameter can take, a kernel it ships; named alone only beside an
+// output (empty: none); an HDF5 output only for the codes whose initial conditions sphkern
+// writes (swift, gadget2, gadget4, pysph), and for PySPH one its load reads (.hdf5 or .csv).
+void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel,
+                      const CodeSettingSources& sources);
+
+// The layout an .h5/.hdf5 output is written in: SWIFT's without a code.
+ParticleLayout relax_layout(const std::optional<RelaxCode>& code);
+
+// The run's h of a code's parameter: h = c V^(1/D), sphkern's eta = c.
+SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension,
+                                   const CodeSettingSources& sources);
+
+// The relaxed set as initial conditions, with the internal energy of an ideal gas whose sound
+// speed is the relaxation's c = 1, u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal
+// gas has that sound speed). Without a code: SWIFT's layout for its own kernels, h = H / gamma
+// with SWIFT's gamma and the kernel's name, and sphkern's h and R for a kernel SWIFT lacks.
+// With a code: its layout and its stored h (code_support_per_h), solved per particle on
+// `written` where the code's parameter is given and the code solves h with its density.
 // `written`: the run's set, or copies of it side by side (tiled_set).
-ParticleOutput swift_initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
-                                        double eos_gamma);
+ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
+                                  double eos_gamma, const std::optional<RelaxCode>& code, int threads);
+
+// {"name", "parameter", "value" (if given), "layout", "written_h": "sph_density" or "run_h"}
+// and its line.
+nlohmann::json relax_code_json(const RelaxCode& code);
+std::string relax_code_text(const RelaxCode& code);
 
 // Copies of the relaxed set side by side along each edge of its box ("2,2,2"): whole numbers
 // 1 to 1000, as many as the set's dimensions and within the memory budget (else exit 3), and

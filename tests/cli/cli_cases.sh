@@ -913,6 +913,20 @@ expect 0 '^$' -- relax wendland_c2 fcc --size 6,4,3 --cell rectangular --k 1.2 -
 check "--cell rectangular: fcc's block of 6 x 4 x 3 rectangular cells holds 432 particles in a rectangular box" bash -c "[[ \$(grep -vc '^#' '$work/fcc_r.csv') == 433 ]]"
 expect 2 '^sphkern: error: --cell: "cubic" is unknown, expected primitive or rectangular' -- particles cubic_bspline fcc --size 6,6,6 --k 1.2 --cell cubic
 expect 2 '^sphkern: error: --cell is the cell of a lattice block; poisson is not a lattice' -- particles cubic_bspline poisson --count 500 --cell rectangular
+# relax --code: the code the written set is for, and with its parameter the run's h.
+expect 2 '^sphkern: error: --hfact is a code.s setting; expected --code too$' -- relax wendland_c2 poisson --count 500 --hfact 1.2
+expect 2 '^sphkern: error: --nngb: swift sets its resolution with --eta$' -- relax wendland_c2 poisson --count 500 --code swift --nngb 50
+expect 2 '^sphkern: error: --code swift sets h with --eta; expected no --nh or --k beside it$' -- relax wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 50
+expect 2 '^sphkern: error: --code: swift: names the code the written set is for, or with --eta sets h; expected an output or --eta$' -- relax wendland_c2 poisson --count 500 --code swift
+expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- relax wendland_c2 poisson --count 500 --code swift --eta -1
+expect 2 '^sphkern: error: --code: "gadget" is unknown' -- relax cubic_bspline poisson --count 500 --code gadget --output "$work/c1.hdf5"
+expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline$' -- relax wendland_c2 poisson --count 500 --code gadget2 --output "$work/c2.hdf5"
+expect 0 '^$' -- relax cubic_bspline poisson --count 1000 --steps 5 --code gadget2 --nngb 50 --output "$work/gadget_ic.hdf5"
+check "relax --code gadget2: each written h the support of 50 weighted neighbours, as particles --code solves it" bash -c "
+  '$sphkern' particles cubic_bspline '$work/gadget_ic.hdf5' --code gadget2 --json > '$work/g_alone.json' &&
+  '$sphkern' particles cubic_bspline '$work/gadget_ic.hdf5' --code gadget2 --nngb 50 --json > '$work/g_solved.json' &&
+  python3 -c \"import json; a, b = (json.load(open('$work/' + n)) for n in ('g_alone.json', 'g_solved.json')); assert abs(a['h_min'] - b['h_min']) < 1e-12 and abs(a['h_max'] - b['h_max']) < 1e-12 and a['h_min'] < a['h_max']\""
+
 # Copies of the relaxed set side by side: the count and the box read back; bad counts refused.
 expect 0 '^$' -- relax wendland_c2 poisson --count 500 --nh 60 --steps 5 --output "$work/tiled.csv" --tile 2,3,1
 check "--tile 2,3,1 writes six copies in a box 2 x 3 x 1 times the unit box" bash -c "[[ \$(grep -vc '^#' '$work/tiled.csv') == 3001 ]] && grep -q '^# periodic box 2 3 1;' '$work/tiled.csv'"
@@ -941,7 +955,7 @@ expect 2 'give --k, or --kmin and --kmax' -- pairing cubic_bspline fcc --k 1.2 -
 expect 2 'give --k, or --kmin and --kmax' -- pairing wendland_c2 fcc --code swift --eta 1.2 --kmin 1 --kmax 2
 expect 2 '^sphkern: error: --hfact: swift sets its resolution with --eta$' -- particles wendland_c2 poisson --count 500 --code swift --hfact 1.2
 expect 2 "^sphkern: error: --hfact is a code's setting; expected --code too$" -- particles wendland_c2 poisson --count 500 --hfact 1.2
-expect 2 '^sphkern: error: --code swift: expected its setting, --eta$' -- particles wendland_c2 poisson --count 500 --code swift
+expect 3 "^sphkern: error: poisson: the set stores no h; with --code swift, expected --eta too \\(the code's parameter\\)$" -- particles wendland_c2 poisson --count 500 --code swift
 expect 2 '^sphkern: error: --code: gives h for one setting; expected no --eta, --nh, --k or sweep beside it$' -- particles wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 40
 expect 3 'desbrun_spiky: phantom does not ship it; its kernels are' -- particles desbrun_spiky poisson --count 500 --code phantom --hfact 1.2
 expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- pairing wendland_c2 fcc --code swift --eta -1

@@ -229,6 +229,36 @@ def test_a_swift_snapshot_of_another_kernel_is_refused_unless_its_h_is_mapped(tm
     assert run(str(tmp_path / "same.hdf5"))["source"]["particles"] == N
 
 
+def test_a_code_named_alone_reads_the_stored_h_as_that_code_stores_it(tmp_path):
+    x, h, m, rho = particles()
+    box = ["--box", f"{L},{L},{L}"]
+    write_csv(tmp_path / "set.csv", x, h, m, rho)
+    # SWIFT's gamma of Wendland C2 in 3D from its definition, H / (2 sigma) with sigma^2 the
+    # kernel's second moment over D (Dehnen & Aly 2012): W = 21 / (2 pi) (1 - q)^4 (1 + 4 q), q = r / H.
+    q = np.linspace(0, 1, 200001)
+    w = 21 / (2 * np.pi) * (1 - q) ** 4 * (1 + 4 * q)
+    second_moment = np.trapz(4 * np.pi * q**4 * w, q) / 3
+    swift_gamma = 1 / (2 * np.sqrt(second_moment))
+    write_swift(tmp_path / "swift.hdf5", x, h, m, rho, kernel="Wendland C2")
+    doc = run(str(tmp_path / "swift.hdf5"), "--code", "swift")
+    assert doc["code"]["h_from"] == "file" and doc["code"]["pair_h"] == "own"
+    assert abs(doc["code"]["support_per_h"] - swift_gamma) < 1e-9
+    close(doc, run(str(tmp_path / "set.csv"), "--support-per-h", repr(doc["code"]["support_per_h"]), *box), 1e-15)
+    # GADGET stores the support itself.
+    write_csv(tmp_path / "support.csv", x, 2 * h, m, rho)
+    close(run(str(tmp_path / "support.csv"), "--code", "gadget4", *box),
+          run(str(tmp_path / "set.csv"), "--support-per-h", "2", *box), 1e-15)
+    # The file's kernel is the one asked; a code is not mapped onto another's h.
+    write_swift(tmp_path / "cubic.hdf5", x, h, m, rho, kernel="Cubic spline (M4)", kernel_gamma=np.sqrt(10 / 3))
+    assert 'h is for its kernel "Cubic spline (M4)" (sphkern\'s cubic_bspline), not wendland_c2' in refused(
+        str(tmp_path / "cubic.hdf5"), "--code", "swift")
+    assert "gadget2 does not ship it; its kernels are cubic_bspline" in refused(
+        str(tmp_path / "set.csv"), "--code", "gadget2", *box)
+    done = subprocess.run([CLI, "particles", "wendland_c2", str(tmp_path / "swift.hdf5"), "--code", "swift",
+                           "--support-per-h", "2"], capture_output=True, text=True)
+    assert done.returncode == 2 and "--code: gives the support over h; expected no --support-per-h" in done.stderr
+
+
 def test_a_relaxed_glass_is_written_as_swift_initial_conditions_of_its_kernel(tmp_path):
     out = tmp_path / "glass.hdf5"
     subprocess.run([CLI, "relax", "wendland_c2", "poisson", "--count", "400", "--steps", "3", "--output", str(out)],
@@ -252,6 +282,95 @@ def test_a_relaxed_glass_is_written_as_swift_initial_conditions_of_its_kernel(tm
     assert run(str(out))["source"]["particles"] == 400  # read back with its own kernel
     other = subprocess.run([CLI, "particles", "cubic_bspline", str(out)], capture_output=True, text=True)
     assert other.returncode == 3 and 'are for its kernel "Wendland C2"' in other.stderr, other.stderr
+
+
+def relax_for(tmp_path, kernel, name, *code):
+    out = tmp_path / name
+    done = subprocess.run([CLI, "relax", kernel, "poisson", "--count", "600", "--steps", "20", "--output", str(out),
+                           "--json", *code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return out, json.loads(done.stdout)
+
+
+def periodic_density(x, support, w):
+    """rho_i / m = sum_j W(r_ij, H_i) over the minimum images in the unit box, i itself included."""
+    d = x[:, None, :] - x[None, :, :]
+    d -= np.round(d)
+    q = np.sqrt((d**2).sum(axis=2)) / support[:, None]
+    return (w(np.minimum(q, 1)) / support[:, None] ** 3).sum(axis=1)
+
+
+def test_initial_conditions_for_gadget_and_swift_hold_the_codes_own_h(tmp_path):
+    # GADGET-2: the weighted neighbour number (4 pi / 3) H^3 rho / m = N_ngb with its cubic
+    # spline on the support H, W = 8 / (pi H^3) (1 - 6 u^2 + 6 u^3 | 2 (1 - u)^3).
+    out, doc = relax_for(tmp_path, "cubic_bspline", "gadget.hdf5", "--code", "gadget2", "--nngb", "58")
+    assert doc["code"] == {"name": "gadget2", "parameter": "nngb", "value": 58.0, "layout": "gadget",
+                           "written_h": "sph_density"}
+    cubic = lambda u: 8 / np.pi * np.where(u < 0.5, 1 - 6 * u**2 + 6 * u**3, 2 * (1 - u) ** 3)
+    with h5py.File(out, "r") as f:
+        header = f["Header"].attrs
+        # What GADGET-2's read_header_attributes_in_hdf5 reads, Flag_Entropy_ICs into one int.
+        for key in ("NumPart_ThisFile", "NumPart_Total", "NumPart_Total_HighWord", "MassTable"):
+            assert header[key].shape == (6,), key
+        assert header["NumPart_ThisFile"][0] == 600 and header["NumPart_Total"][0] == 600
+        assert np.shape(header["Flag_Entropy_ICs"]) == () and header["NumFilesPerSnapshot"] == 1
+        assert header["BoxSize"] == 1.0
+        part = f["PartType0"]
+        x, support = part["Coordinates"][:], part["SmoothingLength"][:]
+        assert sorted(part["ParticleIDs"][:]) == list(range(1, 601)) and not part["Velocities"][:].any()
+        assert len(set(support)) > 1  # each particle's own
+    nngb = 4 * np.pi / 3 * support**3 * periodic_density(x, support, cubic)
+    assert np.max(np.abs(nngb - 58)) < 1e-9
+    # SWIFT: eta = h (rho / m)^(1/3), H = gamma h, Wendland C2: W = 21 / (2 pi H^3) (1 - q)^4 (1 + 4 q).
+    out, _ = relax_for(tmp_path, "wendland_c2", "swift.hdf5", "--code", "swift", "--eta", "1.2348")
+    wendland = lambda q: 21 / (2 * np.pi) * (1 - q) ** 4 * (1 + 4 * q)
+    with h5py.File(out, "r") as f:
+        gamma = f["HydroScheme"].attrs["Kernel gamma"]
+        x, h = f["PartType0/Coordinates"][:], f["PartType0/SmoothingLength"][:]
+    assert abs(gamma - np.sqrt(15 / 4)) < 1e-12
+    eta = h * periodic_density(x, gamma * h, wendland) ** (1 / 3)
+    assert np.max(np.abs(eta - 1.2348)) < 1e-9
+    # Read back with the code alone: the same h as solving the code's setting on the file.
+    alone = run(str(out), "--code", "swift")
+    solved = run(str(out), "--code", "swift", "--eta", "1.2348")
+    assert abs(alone["h_min"] - solved["h_min"]) < 1e-12 and abs(alone["h_max"] - solved["h_max"]) < 1e-12
+
+
+def test_initial_conditions_for_pysph_are_what_its_load_reads(tmp_path):
+    from pysph.solver.utils import load
+    out, doc = relax_for(tmp_path, "wendland_c2", "pysph.hdf5", "--code", "pysph", "--hdx", "1.3")
+    assert doc["code"]["written_h"] == "run_h"
+    fluid = load(str(out))["arrays"]["fluid"]
+    with h5py.File(out, "r") as f:
+        assert "Header" not in f
+    # h = hdx dx with dx = V^(1/3) of the unit box's 600 particles; rho = m / V.
+    dx = (1 / 600) ** (1 / 3)
+    assert fluid.get_number_of_particles() == 600
+    assert np.allclose(fluid.h, 1.3 * dx, rtol=1e-14, atol=0)
+    assert np.allclose(fluid.m / fluid.rho, 1 / 600, rtol=1e-14, atol=0)
+    assert not fluid.u.any() and sorted(fluid.gid) == list(range(600))
+    # sphkern reads it back as PySPH's, h as stored (support 2 h).
+    back = run(str(out), "--code", "pysph", "--box", "1,1,1")
+    assert abs(back["h_min"] - 1.3 * dx) < 1e-14
+
+
+def test_initial_conditions_a_code_cannot_hold_are_refused(tmp_path):
+    def refused_relax(code, *args, name="ic.hdf5"):
+        done = subprocess.run([CLI, "relax", "wendland_c2", *args, "--steps", "2", "--output", str(tmp_path / name),
+                               "--code", code], capture_output=True, text=True)
+        lines = done.stderr.strip().splitlines()
+        assert len(lines) == 1, done.stderr
+        assert not (tmp_path / name).exists()
+        return done.returncode, lines[0]
+
+    code, line = refused_relax("phantom", "poisson", "--count", "100")
+    assert code == 2 and "phantom: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph" in line
+    code, line = refused_relax("gadget4", "poisson", "--count", "800", "--box", "1,1,2")
+    assert code == 3 and "GADGET's periodic box is a cube of side BoxSize; this box is 1 x 1 x 2" in line
+    code, line = refused_relax("pysph", "poisson", "--count", "100", name="ic.h5")
+    assert code == 2 and "PySPH's load reads a name ending in .hdf5" in line
+    code, line = refused_relax("gadget2", "poisson", "--count", "100")
+    assert code == 3 and "wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline" in line
 
 
 def test_pysph_properties_it_did_not_output_are_absent(tmp_path):
@@ -383,25 +502,10 @@ def test_a_broken_snapshot_in_parts_names_the_part(tmp_path):
 
 
 def pysph_dump(path, arrays):
-    """`arrays`: {name: {property: values}}. Written by PySPH's own dump where PySPH is
-    installed, else in the layout its HDFOutput writes (pysph/solver/output.py): /solver_data
-    attributes, /particles/<name>/constants and /particles/<name>/arrays/<property> with the
-    attributes stored, name, type, default and stride; a property not output is an empty
-    dataset with stored false."""
-    try:
-        from pysph.base.utils import get_particle_array
-        from pysph.solver.utils import dump
-    except ImportError:
-        with h5py.File(path, "w") as f:
-            f.create_group("solver_data").attrs.update({"dt": 1e-4, "t": 0.0, "count": 0})
-            for name, props in arrays.items():
-                f.create_group(f"particles/{name}/constants")
-                group = f.create_group(f"particles/{name}/arrays")
-                for prop, values in {**props, "p": None, "au": None}.items():
-                    stored = values is not None
-                    data = group.create_dataset(prop, data=values) if stored else group.create_dataset(prop, (0,))
-                    data.attrs.update({"stored": stored, "name": prop, "type": "double", "default": 0.0, "stride": 1})
-        return
+    """`arrays`: {name: {property: values}}, written by PySPH's own dump (pysph.solver.utils):
+    a property it does not output is an empty dataset with stored false."""
+    from pysph.base.utils import get_particle_array
+    from pysph.solver.utils import dump
     dump(str(path), [get_particle_array(name=name, **props) for name, props in arrays.items()],
          {"dt": 1e-4, "t": 0.0, "count": 0})
 

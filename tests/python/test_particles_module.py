@@ -177,7 +177,7 @@ def test_masses_densities_and_a_stored_h_equal_the_command_line(tmp_path):
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1, "support_per_h": "two"},
      "support_per_h: expected a number"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "code": "swift"},
-     "code = swift: expected value, the code's parameter, too"),
+     "the set stores no h; with code swift, expected value too (the code's parameter)"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "value": 1.2},
      "value: is a code's parameter; expected code too"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "code": "swift", "value": 1.2,
@@ -202,6 +202,23 @@ def test_a_code_setting_equals_the_command_line(tmp_path):
     cli = json.loads(run.stdout)
     assert r["code"] == cli["code"]
     assert abs(r["h_min"] - cli["h_min"]) <= 1e-15 * cli["h_min"] and abs(r["h_max"] - cli["h_max"]) <= 1e-15 * cli["h_max"]
+
+
+def test_a_code_alone_takes_the_h_given_as_that_code_stores_it(tmp_path):
+    """code="pysph" with h: PySPH's h (support R h) and its pair h, as particles --code pysph on that file."""
+    rng = np.random.default_rng(4)
+    x, h = rng.uniform(0, 1, (800, 2)), 0.06 * rng.uniform(0.8, 1.2, 800)
+    path = tmp_path / "set.csv"
+    np.savetxt(path, np.column_stack([x, h]), delimiter=",", header="x,y,h", comments="")
+    r = sphkern.particles("wendland_c2", x, box=[1, 1], h=h, code="pysph")
+    run = subprocess.run([CLI, "particles", "wendland_c2", str(path), "--box", "1,1", "--code", "pysph", "--json"],
+                         capture_output=True, text=True, check=True)
+    cli = json.loads(run.stdout)
+    assert r["code"] == cli["code"] and cli["code"]["pair_h"] == "mean"
+    assert r["e0"].mean() == pytest.approx(cli["statistics"]["e0"]["mean"], rel=1e-14, abs=1e-15)
+    # The particle's own h in every pair is another answer.
+    own = sphkern.particles("wendland_c2", x, box=[1, 1], h=h, support_per_h=2)
+    assert np.max(np.abs(own["e0"] - r["e0"])) > 1e-3
 
 
 def test_complex_k_is_refused():

@@ -242,7 +242,7 @@ TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
     const ParticleSet set = poisson_set(500, 3, 2.0, 3);
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / "sphkern-relax-files";
     std::filesystem::create_directories(folder);
-    ParticleOutput output{std::vector<double>(set.size(), 0.31), 1.936492, 0.016, "Wendland C2", 0.9};
+    ParticleOutput output{std::vector<double>(set.size(), 0.31), 1.936492, 0.016, 1.0, "Wendland C2", 0.9};
     for (const char* name : {"glass.h5", "glass.csv"}) {
         CAPTURE(name);
         write_particle_file(folder / name, set, output);
