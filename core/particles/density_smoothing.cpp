@@ -1,16 +1,102 @@
 #include "particles/density_smoothing.hpp"
 
-#include "particles/particle_measures.hpp"
+#include "kernels/kernel_validity.hpp"
+#include "particles/neighbour_gather.hpp"
+#include "particles/neighbour_grid.hpp"
+#include "particles/pair_pass.hpp"
 #include "support/error.hpp"
+#include "support/vector_clones.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace sphkern {
+
+namespace {
+
+// sum_j m_j w(q_j) and sum_j m_j q_j w'(q_j).
+SPHKERN_ENGINE_CLONES void weighted_sums(const double* __restrict w, const double* __restrict dw, const double* __restrict q,
+                                         const double* __restrict m, std::size_t n, double& mw, double& mqdw)
+{
+    double a = 0, b = 0;
+    for (std::size_t j = 0; j < n; ++j) a += m[j] * w[j], b += m[j] * q[j] * dw[j];
+    mw = a, mqdw = b;
+}
+
+// The SPH density at its own h, rho_i = sum_j m_j W(r_ij, h_i) with itself, and its derivative
+// in h_i, in one pass of the engine that sums nothing else. Only the particles still being
+// solved are visited: in the gather form a particle's density depends on its own h alone.
+class DensityPass {
+public:
+    DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing, int threads)
+        : kernel_(kernel), set_(set), mass_(mass), spacing_(spacing), threads_(threads)
+    {
+    }
+
+    // rho and drho / dh of the particles whose `solving` is set.
+    void operator()(std::span<const double> h, const std::vector<std::uint8_t>& solving, std::vector<double>& rho,
+                    std::vector<double>& drho)
+    {
+        const double h_max = *std::max_element(h.begin(), h.end());
+        require_usable_kernel(kernel_, set_.dimension, h_max / spacing_);
+        // The grid is kept while every support fits it: the solve moves h by little after its first passes.
+        if (!grid_ || kernel_.support() * h_max > grid_reach_) {
+            grid_reach_ = 1.1 * kernel_.support() * h_max;
+            grid_.emplace(set_, grid_reach_, threads_);
+            mass_points_ = grid_->gather(mass_);
+        }
+        const NeighbourGrid& grid = *grid_;
+        const std::vector<double> h_points = grid.gather(h);
+        std::vector<double> reach(h_points.size());
+        std::vector<std::uint8_t> only(h_points.size());
+        for (std::size_t p = 0; p < reach.size(); ++p) {
+            reach[p] = search_reach(kernel_.support() * h_points[p]);
+            only[p] = grid.visited(p) && solving[grid.source(p)];
+        }
+        const int dim = set_.dimension;
+        rho.resize(set_.size()), drho.resize(set_.size());
+        const PairPassInputs in{{reach.data(), 0}, mass_points_.data(), nullptr, true, "", only.data()};
+        pair_pass(
+            grid, set_.name, in, threads_,
+            [&](int, std::size_t p, Neighbours& nb) {
+                const double h_p = h_points[p], k = h_p / spacing_;
+                fill_distances(nb);
+                scale_distances(nb.r.data(), nb.count, 1 / h_p, nb.q.data());
+                kernel_.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, k);
+                kernel_.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, k);
+                const std::size_t i = grid.source(p);
+                double mw = 0, mqdw = 0;
+                weighted_sums(nb.w.data(), nb.dw.data(), nb.q.data(), nb.a.data(), nb.count, mw, mqdw);
+                mw += mass_[i] * kernel_.w(0, dim, k);
+                const double hd = dim == 3 ? h_p * h_p * h_p : h_p * h_p;
+                // W = w(q) / h^D: dW / dh = -(D w + q w') / h^(D+1).
+                rho[i] = mw / hd, drho[i] = -(dim * mw + mqdw) / (hd * h_p);
+                if (!std::isfinite(rho[i]) || !std::isfinite(drho[i]))
+                    fail_non_finite_sum(kernel_, dim, k, fmt::format("particle {} of {}", i, set_.name),
+                                        fmt::format("h = {:.6g}", h_p), {nb.q.data(), nb.count});
+            },
+            [](int) {});
+    }
+
+private:
+    const Kernel& kernel_;
+    const ParticleSet& set_;
+    std::span<const double> mass_;
+    double spacing_;
+    int threads_;
+    std::optional<NeighbourGrid> grid_;
+    double grid_reach_ = 0;
+    std::vector<double> mass_points_;
+};
+
+} // namespace
 
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
                                       double mean_volume, int threads)
@@ -21,45 +107,41 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
                                set.name, set.neighbours_only));
     const int dim = set.dimension;
     const std::size_t n = set.size();
-    const bool masses = set.mass.size() == n;
-    auto mass = [&](std::size_t i) { return masses ? set.mass[i] : mean_volume; };
+    // Without masses every particle has the mean volume's (rho0 = 1).
+    const std::vector<double> own_masses = set.mass.size() == n ? std::vector<double>() : std::vector<double>(n, mean_volume);
+    const std::span<const double> masses = own_masses.empty() ? std::span<const double>(set.mass) : own_masses;
+    auto mass = [&](std::size_t i) { return masses[i]; };
     auto h_of = [&](std::size_t i, double rho) { return coefficient * std::pow(mass(i) / rho, 1.0 / dim); };
-    // Each particle's residual g(h) = h - c (m / rho(h))^(1/D) vanishes at its h. The first
-    // step is the fixed point's, the next ones secant steps on g (superlinear; the fixed point
-    // alone gains only a factor of about 0.7 a pass on a Poisson set), a step that leaves
-    // [h / 2, 2 h] or divides by nothing falling back to the fixed point's.
+    // Each particle's residual g(h) = h - c (m / rho(h))^(1/D) vanishes at its h, found by
+    // Newton steps on g (g' from drho / dh, as SWIFT and GADGET step), a step that leaves
+    // [h / 2, 2 h] or a g' that is not positive falling back to the fixed point's step. A
+    // particle is done once its own residual is below the tolerance, at the h it was measured at.
     PerParticle h = PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(i, 1.0); }));
-    std::vector<double> previous_h(n), previous_g(n);
-    const PerParticle volume = PerParticle::same(n, mean_volume);
+    std::vector<double> rho, drho;
+    std::vector<std::uint8_t> solving(n, 1);
+    DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), threads);
     constexpr int max_passes = 100;
     constexpr double tolerance = 1e-12;
     double residual = INFINITY;
     for (int pass = 1; pass <= max_passes; ++pass) {
-        MeasureInputs inputs;
-        inputs.h = h.view();
-        inputs.volume = volume.view();
-        if (masses) inputs.mass = set.mass;
-        inputs.threads = threads;
-        inputs.vectors = false;
-        const auto measures = measure_particles(kernel, set, inputs);
-        const auto& eps_rho = measures.eps_rho_values(); // rho_i / rho0 - 1, rho0 = 1
+        densities(h.values, solving, rho, drho);
         residual = 0;
+        std::size_t left = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            const double now = h.values[i], fixed = h_of(i, 1 + eps_rho[i]), g = now - fixed;
+            if (!solving[i]) continue;
+            const double now = h.values[i], fixed = h_of(i, rho[i]), g = now - fixed;
             residual = std::max(residual, std::abs(g) / now);
-            double next = fixed;
-            if (pass > 1 && g != previous_g[i]) {
-                const double secant = now - g * (now - previous_h[i]) / (g - previous_g[i]);
-                if (secant > 0.5 * now && secant < 2 * now) next = secant;
+            if (std::abs(g) <= tolerance * now) {
+                solving[i] = 0;
+                continue;
             }
-            previous_h[i] = now, previous_g[i] = g;
-            h.values[i] = next;
+            const double slope = 1 + fixed / dim * drho[i] / rho[i], newton = now - g / slope;
+            h.values[i] = slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed;
+            ++left;
         }
-        spdlog::debug("h from the SPH density: pass {}, largest relative residual {:.3g}", pass, residual);
-        if (residual <= tolerance) {
-            for (std::size_t i = 0; i < n; ++i) h.values[i] = previous_h[i]; // the h whose residual was measured
-            return h;
-        }
+        spdlog::debug("h from the SPH density: pass {}, largest relative residual {:.3g}, {} particles left", pass,
+                      residual, left);
+        if (left == 0) return h;
     }
     fail_input(fmt::format("{}: h from the SPH density did not settle in {} passes (the largest relative residual is still "
                            "{:.3g}); expected a set whose density the kernel resolves",

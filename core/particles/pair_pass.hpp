@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,7 @@ struct PairPassInputs {
     const double* b = nullptr; // likewise into nb.b
     bool with_r2 = true;       // nb.r2 written (else the visitor takes distances from dx, dy, dz)
     std::string progress;      // the progress line's label; empty: none
+    const std::uint8_t* only = nullptr; // per point: visit where nonzero (null: every particle)
 };
 
 // visit(thread, p, nb) for every particle point p of the grid, with nb holding its neighbours
@@ -48,9 +50,12 @@ void pair_pass(const NeighbourGrid& grid, const std::string& set_name, const Pai
         for (std::size_t begin; pass.keep_going() && (begin = next.fetch_add(run)) < clusters;) {
             if (progress) progress->reach(begin / run, "cluster " + std::to_string(begin));
             for (std::size_t c = begin; c < std::min(clusters, begin + run); ++c) {
+                if (in.only && std::none_of(in.only + grid.cluster_begin(c), in.only + grid.cluster_end(c),
+                                            [](std::uint8_t v) { return v != 0; }))
+                    continue;
                 gather_cluster(grid, c, in.reach, in.a, in.b, cluster);
                 for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-                    if (!grid.visited(p)) continue;
+                    if (!grid.visited(p) || (in.only && !in.only[p])) continue;
                     const double reach = in.reach[p];
                     gather_from_cluster(grid, cluster, p, reach * reach, set_name, nb, in.with_r2);
                     visit(thread, p, nb);
