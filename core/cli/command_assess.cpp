@@ -1,7 +1,12 @@
-// `sphkern assess`: one verdict on a setting, k or an SPH code's own, on a lattice.
+// `sphkern assess`: one verdict on a setting, k or an SPH code's own, on a lattice, or a
+// code's setting on a particle file.
 #include "cli/code_options.hpp"
 #include "cli/command.hpp"
+#include "cli/source_options.hpp"
+#include "requests/assess_particles.hpp"
 #include "requests/assess_request.hpp"
+#include "requests/source_request.hpp"
+#include "support/error.hpp"
 
 #include <memory>
 
@@ -10,7 +15,7 @@ namespace sphkern::cli {
 namespace {
 
 struct AssessOptions : CommonOptions {
-    std::string kernel, lattice;
+    std::string kernel, lattice, box, array;
     SettingOptions setting;
     double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
     std::vector<std::string> sets;
@@ -38,6 +43,31 @@ AssessSources option_sources(const AssessOptions& o)
             ValueSource::option("--horizon")};
 }
 
+// A code's setting on a particle file: h as `particles --code` sets it, judged on the set.
+int assess_file(const AssessOptions& o)
+{
+    if (o.setting.k) throw Error(ExitCode::usage, "--k needs a lattice; on a particle file give --code and its setting");
+    if (o.setting.code.empty())
+        throw Error(ExitCode::usage, "on a particle file a code's setting is assessed; expected --code (and its setting, or "
+                                     "none for the file's own h)");
+    check_epsilon(o.epsilon, ValueSource::option("--epsilon"));
+    auto registry = discover_kernels(o);
+    auto kernel = make_kernel(registry, o.kernel, o.sets);
+    SourceOptions source;
+    source.source = o.lattice, source.box = o.box, source.array = o.array;
+    const ParticleSet set = load_source(source_of(source), source_sources(FrontEnd::command_line), 0);
+    ParticleSources sources = particle_sources(FrontEnd::command_line);
+    std::tie(sources.code.code, sources.code.value) = code_sources(o.setting);
+    ParticleArguments given;
+    const auto choice = code_beside_own_eta(o.setting, o.setting.eta);
+    if (choice->value) given.code = CodeSetting{choice->code, *choice->value};
+    else given.stored_h_code = choice->code;
+    const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
+    if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel));
+    else print_particle_assess(results_file(), kernel, set, given, result);
+    return 0;
+}
+
 } // namespace
 
 Action add_assess_command(Command app)
@@ -46,7 +76,8 @@ Action add_assess_command(Command app)
                                                    "accuracy, stability and the recommended setting");
     auto options = std::make_shared<AssessOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_option("lattice", options->lattice, "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk)")
+        .required();
     add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
     command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k").capture_default_str();
     command.add_option("--kmax", options->k_max, "Largest k of the window").capture_default_str();
@@ -55,10 +86,15 @@ Action add_assess_command(Command app)
     command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
         .capture_default_str();
     add_evaluation_options(command, options->evaluation);
+    command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
+    command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
     return [options] {
+        if (source_kind(options->lattice) == SourceKind::file) return assess_file(*options);
+        if (!options->box.empty() || !options->array.empty())
+            throw Error(ExitCode::usage, "--box and --array are for a particle file; expected one, not a lattice");
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);
         check_assess_request(request, sources);

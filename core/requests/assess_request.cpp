@@ -86,12 +86,16 @@ std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
 
 } // namespace
 
+void check_epsilon(double epsilon, const ValueSource& source)
+{
+    if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) source.fail(fmt::format("{}: expected a number in (0, 1)", epsilon));
+}
+
 void check_assess_request(const AssessRequest& r, const AssessSources& sources)
 {
     check_eps_request(r.setting, sources.setting);
     check_k_interval(r.window_min, r.window_max, sources.window);
-    if (!std::isfinite(r.epsilon) || r.epsilon <= 0 || r.epsilon >= 1)
-        sources.epsilon.fail(fmt::format("{}: expected a number in (0, 1)", r.epsilon));
+    check_epsilon(r.epsilon, sources.epsilon);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
 }

@@ -47,6 +47,8 @@ struct AssessResult {
 };
 
 void check_assess_request(const AssessRequest& request, const AssessSources& sources);
+// Condition (22)'s tolerance: in (0, 1).
+void check_epsilon(double epsilon, const ValueSource& source);
 AssessResult run_assess(const AssessRequest& request, const AssessSources& sources, const Kernel& kernel,
                         const Lattice& lattice);
 nlohmann::json assess_document(const AssessRequest& request, const AssessResult& result);

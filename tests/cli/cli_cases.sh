@@ -1265,6 +1265,11 @@ check "assess ends with one line a person can act on" bash -c "'$sphkern' assess
 expect 2 '^sphkern: error: --k is required \(or --code and the code.s setting\)' -- assess wendland_c2 fcc
 expect 2 '^sphkern: error: --epsilon: 2: expected a number in \(0, 1\)' -- assess wendland_c2 fcc --k 1.2 --epsilon 2
 expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it' -- assess wendland_c2 fcc --code gadget2 --nngb 48
+# assess on a particle file: a code's setting, checked as particles checks it.
+expect 2 '^sphkern: error: --epsilon: 2: expected a number in \(0, 1\)' -- assess wendland_c2 "$work/free.csv" --code swift --eta 1.2 --epsilon 2
+expect 3 'free.csv: the set stores no h; with --code swift, expected --eta too' -- assess wendland_c2 "$work/free.csv" --code swift
+expect 2 '^sphkern: error: --nngb: swift sets its resolution with --eta$' -- assess wendland_c2 "$work/free.csv" --code swift --nngb 40
+expect 3 '^sphkern: error: .*missing.csv' -- assess wendland_c2 "$work/missing.csv" --code swift --eta 1.2
 expect 2 '^sphkern: error: --code gives the stable intervals over k in a code.s setting; expected --kmin and --kmax' -- stability wendland_c2 fcc --k 1.2 --code swift
 check "stability --code swift: the intervals in SWIFT's eta" bash -c "'$sphkern' stability wendland_c2 fcc --kmin 0.9 --kmax 2.0 --steps 3 --code swift | grep -qF 'for eta in [1.18311, 1.26521] [1.68359, 1.71112]'"
 # roots --code: the recommended setting, given back to eps --code, is the recommended k.

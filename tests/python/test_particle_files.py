@@ -373,6 +373,39 @@ def test_initial_conditions_a_code_cannot_hold_are_refused(tmp_path):
     assert code == 3 and "wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline" in line
 
 
+def test_assess_on_a_file_of_an_fcc_block_gives_the_lattice_verdict(tmp_path):
+    # fcc from its cubic cell of side sqrt(2): nearest neighbours 1 apart, as sphkern's fcc.
+    a, cells = np.sqrt(2), 5
+    motif = np.array([[0, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5], [0, 0.5, 0.5]])
+    corners = np.stack(np.meshgrid(*[np.arange(cells)] * 3, indexing="ij"), axis=-1).reshape(-1, 3)
+    x = ((corners[:, None, :] + motif[None, :, :]) * a).reshape(-1, 3)
+    np.savetxt(tmp_path / "fcc.csv", x, delimiter=",", header="x,y,z", comments="")
+    side = f"{cells * a!r},{cells * a!r},{cells * a!r}"
+    done = subprocess.run([CLI, "assess", "wendland_c2", str(tmp_path / "fcc.csv"), "--box", side, "--code", "swift",
+                           "--eta", "1.2348", "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    doc = json.loads(done.stdout)
+    # The lattice's own route: shells summed at the k where SWIFT's eta holds (eps --code).
+    lattice = json.loads(subprocess.run([CLI, "eps", "wendland_c2", "fcc", "--code", "swift", "--eta", "1.2348", "--json"],
+                                        capture_output=True, text=True, check=True).stdout)
+    particles = doc["particles"]
+    assert abs(particles["h_min"] - lattice["k"]) < 1e-9 and abs(particles["h_max"] - lattice["k"]) < 1e-9
+    for name in ("eps_rho", "eps_gradp"):
+        for stat in ("p1", "p99"):
+            assert abs(particles["statistics"][name][stat] - lattice[name]) < 1e-9, (name, stat)
+    assert not doc["condition_22"]["holds"]
+    assert abs(doc["condition_22"]["margin"] - (0.01 - abs(lattice["eps_gradp"]))) < 1e-9
+    assert doc["verdict"].startswith("swift eta 1.2348 with wendland_c2 on ") and "inaccurate (98% of |eps_gradP|" in doc["verdict"]
+    assert doc["stability"] is None
+    # A lattice's options on a file, and a file without a code's setting, are refused.
+    for args, message in ((["--k", "1.2"], "--k needs a lattice"), ([], "a code's setting is assessed; expected --code")):
+        done = subprocess.run([CLI, "assess", "wendland_c2", str(tmp_path / "fcc.csv"), "--box", side, *args],
+                              capture_output=True, text=True)
+        assert done.returncode == 2 and message in done.stderr, done.stderr
+    done = subprocess.run([CLI, "assess", "wendland_c2", "fcc", "--k", "1.2", "--box", "1,1,1"], capture_output=True, text=True)
+    assert done.returncode == 2 and "--box and --array are for a particle file" in done.stderr
+
+
 def test_pysph_properties_it_did_not_output_are_absent(tmp_path):
     # PySPH's dump writes a property outside its output arrays as an empty dataset, stored=False.
     x, h, m, rho = particles()
