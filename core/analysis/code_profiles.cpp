@@ -44,9 +44,14 @@ const CodeProfile& code_profile(const std::string& name, const ValueSource& sour
     source.fail(fmt::format("\"{}\" is unknown, expected one of {}{}", name, fmt::join(names, ", "), did_you_mean(name, names)));
 }
 
+bool code_ships(const CodeProfile& profile, const Kernel& kernel)
+{
+    return std::find(profile.kernels.begin(), profile.kernels.end(), kernel.name()) != profile.kernels.end();
+}
+
 void require_code_kernel(const CodeProfile& profile, const Kernel& kernel)
 {
-    if (std::find(profile.kernels.begin(), profile.kernels.end(), kernel.name()) == profile.kernels.end())
+    if (!code_ships(profile, kernel))
         fail_input(fmt::format("{}: {} does not ship it; its kernels are {}", kernel.name(), profile.name,
                                fmt::join(profile.kernels, ", ")));
 }

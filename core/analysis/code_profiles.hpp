@@ -33,7 +33,9 @@ const std::vector<CodeProfile>& code_profiles();
 
 // The profile of `name`; an unknown name is refused naming the source and listing the codes.
 const CodeProfile& code_profile(const std::string& name, const ValueSource& source);
-// Refuses (exit 3) a kernel the code does not ship, listing those it does.
+// Whether the code ships the kernel; require_code_kernel refuses (exit 3) one it does not,
+// listing those it does.
+bool code_ships(const CodeProfile& profile, const Kernel& kernel);
 void require_code_kernel(const CodeProfile& profile, const Kernel& kernel);
 
 // The support radius over the h the code stores in its files: SWIFT gamma, Phantom and PySPH

@@ -283,6 +283,19 @@ check() { # check DESCRIPTION CONDITION...: one catalogue case decided by a shel
         failed=$((failed + 1))
     fi
 }
+# A code's setting in place of the particles section's sweep: the numbers of particles --code; a kernel the code lacks is left out.
+study s_code '{"name": "s", "kernels": ["cubic_bspline", "wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 2000, "seed": 3}], "code": {"name": "gadget2", "nngb": 58}}}'
+expect 0 '^sphkern: warning: particles: gadget2 does not ship wendland_c2; it is left out of poisson, 3D, 2000 particles$' -- --log-level warn run "$work/s_code.json" -o "$work/out_code"
+check "a study's code setting gives the statistics of particles --code" bash -c "
+  '$sphkern' --log-level warn particles cubic_bspline poisson --count 2000 --seed 3 --code gadget2 --nngb 58 --json > '$work/code_cli.json' &&
+  python3 -c \"import json; s = json.load(open('$work/out_code/results.json'))['particles']; c = json.load(open('$work/code_cli.json')); assert len(s) == 1 and s[0]['code'].startswith('gadget2 nngb = 58') and s[0]['points'][0]['statistics']['eps_rho'] == c['statistics']['eps_rho']\""
+study s_code2 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "nngb": 58}, "nh": {"min": 40, "max": 60}}}'
+expect 3 's_code2.json: /particles: expected one of "nh", "eta" and "code"' -- run "$work/s_code2.json" -o "$work/out_code2"
+study s_code3 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "eta": 1.2}}}'
+expect 3 's_code3.json: /particles/code: unknown key "eta"' -- run "$work/s_code3.json" -o "$work/out_code3"
+study s_code4 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "nngb": -1}}}'
+expect 3 's_code4.json: /particles/code/nngb' -- run "$work/s_code4.json" -o "$work/out_code4"
+
 # surface --code: the k eps --code finds for the same setting, named with the code in the text
 check "surface --code swift --eta gives eps --code's k" /usr/bin/python3 -c "
 import json, subprocess

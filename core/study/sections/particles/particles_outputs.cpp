@@ -47,9 +47,10 @@ std::string ParticlesResults::markdown(const Study&) const
         "sum form one h below the surface, as RMS over the set, against the neighbour number "
         "N_H = c_D (R h)^D / V (Dehnen & Aly 2012).\n\n";
     for (const auto& [source, group] : by_source(cases)) {
-        s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n| kernel | N_H | eta | neighbours | mean e0 | RMS e0 | "
+        s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n{}| kernel | N_H | eta | neighbours | mean e0 | RMS e0 | "
                          "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|---|\n",
-                         source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume));
+                         source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume),
+                         group.front()->code.empty() ? "" : "At " + group.front()->code + ".\n\n");
         for (const auto* c : group)
             for (std::size_t j = 0; j < c->points.size(); ++j) {
                 const auto& p = c->points[j];
@@ -115,6 +116,7 @@ nlohmann::json ParticlesResults::json(const Study&) const
         }
         list.push_back({{"source", c.source}, {"kernel", c.kernel_label}, {"dimension", c.dimension},
                         {"particles", c.particles}, {"volume", volume_model_name(c.volume)}, {"points", points}});
+        if (!c.code.empty()) list.back()["code"] = c.code;
     }
     return list;
 }

@@ -1,5 +1,6 @@
 #include "study/sections/particles/particles_section.hpp"
 
+#include "analysis/code_profiles.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"
@@ -118,17 +119,35 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
     return s;
 }
 
+// {"name": "swift", "eta": 1.2348}: the code's parameter under its own name, or none.
+StudyCode read_code(const JsonNode& node)
+{
+    node.expect_object();
+    const auto& name = node.at("name");
+    const auto& profile = code_profile(name.string(), ValueSource::json(name.file(), name.path()));
+    node.expect_keys({"name", profile.parameter});
+    StudyCode code{profile.name, std::nullopt, node.path()};
+    if (auto value = node.find(profile.parameter)) {
+        code.value = value->number();
+        check_code_setting({code.name, *code.value}, {ValueSource::json(name.file(), name.path()),
+                                                      ValueSource::json(value->file(), value->path())});
+    }
+    return code;
+}
+
 } // namespace
 
 StudyParticles read_study_particles(const JsonNode& node, const std::filesystem::path& study_file)
 {
-    node.expect_keys({"sources", "nh", "eta", "volume"});
+    node.expect_keys({"sources", "nh", "eta", "code", "volume"});
     StudyParticles particles;
     particles.json_path = node.path();
     const auto sources = node.at("sources");
     const std::size_t n = sources.expect_array(1, 100);
     for (std::size_t i = 0; i < n; ++i) particles.sources.push_back(read_source(sources[i], study_file));
-    if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
+    if (!!node.find("nh") + !!node.find("eta") + !!node.find("code") > 1)
+        node.error("expected one of \"nh\", \"eta\" and \"code\"");
+    if (auto code = node.find("code")) particles.code = read_code(*code);
     if (auto range = node.find("nh") ? node.find("nh") : node.find("eta")) {
         range->expect_keys({"min", "max", "steps"});
         const auto steps = range->find("steps");
@@ -155,7 +174,8 @@ double study_particle_evaluations(const StudyParticles& particles)
         if (s.source.kind == SourceKind::poisson) count = static_cast<double>(s.source.poisson.count);
         if (s.source.kind == SourceKind::lattice)
             count = double(s.source.block.cells[0]) * double(s.source.block.cells[1]) * double(s.source.block.cells[2]);
-        total += count * (particles.sweep.steps + 1);
+        // A code that solves h with the density takes a few passes of it (about 7 on a Poisson set).
+        total += count * (particles.code ? 8 : particles.sweep.steps + 1);
     }
     return total;
 }

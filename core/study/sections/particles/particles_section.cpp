@@ -1,5 +1,6 @@
 #include "study/sections/particles/particles_section.hpp"
 
+#include "analysis/code_profiles.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
@@ -33,20 +34,33 @@ ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticl
     });
 }
 
+// The section's sweep, or its code's setting, and its volumes as a request's arguments.
+ParticleArguments arguments_of(const StudyParticles& p)
+{
+    ParticleArguments given;
+    if (p.code && p.code->value) given.code = CodeSetting{p.code->name, *p.code->value};
+    else if (p.code) given.stored_h_code = p.code->name;
+    else {
+        const bool nh = p.sweep.rule == SmoothingRule::nh;
+        (nh ? given.nh_range : given.eta_range) = std::array<double, 2>{p.sweep.from, p.sweep.to};
+        given.steps = p.sweep.steps;
+    }
+    if (p.volume) given.volume = volume_model_name(*p.volume);
+    return given;
+}
+
 // The section's sweep and volumes as the particle request takes them (statistics only), each
 // named by its JSON Pointer.
 ParticleRequest particle_request_of(const StudyParticles& p, const Study& study, const Kernel& kernel,
                                     const ParticleSet& set)
 {
-    ParticleArguments given;
-    const bool nh = p.sweep.rule == SmoothingRule::nh;
-    (nh ? given.nh_range : given.eta_range) = std::array<double, 2>{p.sweep.from, p.sweep.to};
-    given.steps = p.sweep.steps;
-    if (p.volume) given.volume = volume_model_name(*p.volume);
+    ParticleArguments given = arguments_of(p);
     ParticleSources sources = particle_sources(FrontEnd::python);
     auto at = [&](const std::string& key) { return study_source(study, p.json_path + key); };
     sources.nh_range = at("/nh"), sources.eta_range = at("/eta"), sources.volume = at("/volume");
-    sources.steps = at(nh ? "/nh/steps" : "/eta/steps");
+    sources.steps = at(p.sweep.rule == SmoothingRule::nh ? "/nh/steps" : "/eta/steps");
+    if (p.code)
+        sources.code = {at("/code/name"), at("/code/" + code_profile(p.code->name, sources.code.code).parameter)};
     return particle_request(given, kernel, set, sources);
 }
 
@@ -56,6 +70,10 @@ void analyse_source(const StudyParticles& p, const Study& study, const StudyInpu
 {
     for (const auto& kernel : inputs.kernels) {
         if (!kernel.supports(set.dimension)) continue;
+        if (p.code && !code_ships(code_profile(p.code->name, ValueSource::argument("code")), kernel)) {
+            spdlog::warn("particles: {} does not ship {}; it is left out of {}", p.code->name, kernel.label(), s.label);
+            continue;
+        }
         throw_if_interrupted();
         spdlog::info("particles: {} on {}", kernel.label(), s.label);
         ParticlesCase c;
@@ -66,6 +84,11 @@ void analyse_source(const StudyParticles& p, const Study& study, const StudyInpu
         at_source(study_source(study, s.json_path), [&] {
             auto answer = analyse_particles(kernel, set, particle_request_of(p, study, kernel, set));
             c.volume = answer.volume;
+            if (p.code) {
+                const auto given = arguments_of(p);
+                c.code = given.code ? code_answer_text(*given.code)
+                                    : stored_code_text(*given.stored_h_code, kernel, set.dimension);
+            }
             c.points = std::move(answer.points);
             for (const auto& p : c.points)
                 c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.measured()));

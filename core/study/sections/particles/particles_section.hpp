@@ -33,9 +33,18 @@ struct StudyParticleSource {
     std::optional<StudyRelax> relax;
 };
 
+// A code's setting in place of the sweep: its parameter's value (h as the code sets it), or
+// none (a file's stored h as the code stores it).
+struct StudyCode {
+    std::string name;
+    std::optional<double> value;
+    std::string json_path; // of "code"
+};
+
 struct StudyParticles {
     std::vector<StudyParticleSource> sources;
     SmoothingSweep sweep{SmoothingRule::nh, 20, 200, 9};
+    std::optional<StudyCode> code; // instead of the sweep
     std::optional<VolumeModel> volume;
     std::string json_path;
 };
@@ -47,6 +56,7 @@ struct ParticlesCase {
     VolumeModel volume = VolumeModel::uniform;
     std::vector<ParticlePoint> points;
     std::vector<double> poisson_rms_e0; // per point: a Poisson set of as many particles at that h
+    std::string code;                   // the code's setting the one point is at ("swift eta = 1.2348: ..."); empty: a sweep
 };
 
 struct ParticlesResults : SectionResults {
@@ -57,7 +67,8 @@ struct ParticlesResults : SectionResults {
     void draw(const Study& study, Canvas& canvas) const override;
 };
 
-// Reads the section: {"sources": [...], "nh" or "eta": {"min", "max", "steps"}, "volume"};
+// Reads the section: {"sources": [...], "nh" or "eta": {"min", "max", "steps"}, or "code":
+// {"name", and the code's parameter by its name ("eta", "hfact", "nngb", "hdx", "coefh")}, "volume"};
 // each source one of {"lattice", "size", "sigma", "seed"}, {"poisson": D, "count", "seed",
 // "box"} or {"file", "box", "array", "dim"}, relative files beside the study; any of them with
 // "relax": {"kernel", "nh" or "eta", "steps", "method"}.
