@@ -5,6 +5,7 @@
 #include "particles/neighbour_grid.hpp"
 #include "particles/pair_pass.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/vector_clones.hpp"
 
 #include <fmt/format.h>
@@ -125,20 +126,30 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
     double residual = INFINITY;
     for (int pass = 1; pass <= max_passes; ++pass) {
         densities(h.values, solving, rho, drho);
-        residual = 0;
-        std::size_t left = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!solving[i]) continue;
-            const double now = h.values[i], fixed = h_of(i, rho[i]), g = now - fixed;
-            residual = std::max(residual, std::abs(g) / now);
-            if (std::abs(g) <= tolerance * now) {
-                solving[i] = 0;
-                continue;
-            }
-            const double slope = 1 + fixed / dim * drho[i] / rho[i], newton = now - g / slope;
-            h.values[i] = slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed;
-            ++left;
-        }
+        // Each particle's step, on every thread: the largest residual and the particles left.
+        struct Progress {
+            double residual = 0;
+            std::size_t left = 0;
+        };
+        const Progress step = parallel_reduce(
+            n, threads, Progress{},
+            [&](std::size_t i, Progress& p) {
+                if (!solving[i]) return;
+                const double now = h.values[i], fixed = h_of(i, rho[i]), g = now - fixed;
+                p.residual = std::max(p.residual, std::abs(g) / now);
+                if (std::abs(g) <= tolerance * now) {
+                    solving[i] = 0;
+                    return;
+                }
+                const double slope = 1 + fixed / dim * drho[i] / rho[i], newton = now - g / slope;
+                h.values[i] = slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed;
+                ++p.left;
+            },
+            [](Progress& total, const Progress& block) {
+                total.residual = std::max(total.residual, block.residual), total.left += block.left;
+            });
+        residual = step.residual;
+        const std::size_t left = step.left;
         spdlog::debug("h from the SPH density: pass {}, largest relative residual {:.3g}, {} particles left", pass,
                       residual, left);
         if (left == 0) return h;
