@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace sphkern {
 
@@ -30,7 +31,11 @@ const std::vector<CodeProfile>& code_profiles()
          "W and its gradient at HIJ = (h_i + h_j) / 2 (pysph/sph/equation.py, precomputed_symbols)",
          true},
         {"dualsphysics", "coefh", false, {"cubic_bspline", "wendland_c2"},
-         "DualSPHysics' user guide: h = coefh sqrt(3 dp^2) (sqrt(2 dp^2) in 2D), support 2h"}};
+         "DualSPHysics' user guide: h = coefh sqrt(3 dp^2) (sqrt(2 dp^2) in 2D), support 2h"},
+        {"splishsplash", "particle_radius", false, {"cubic_bspline", "wendland_c2", "muller_poly6", "desbrun_spiky"},
+         "SPlisHSPlasH's FluidModel: support radius 4 r for the particle radius r, particle volume 0.8 (2 r)^D "
+         "(its kernels: cubic spline, Wendland quintic C2, poly6, spiky)",
+         false, true}};
     return all;
 }
 
@@ -56,9 +61,24 @@ void require_code_kernel(const CodeProfile& profile, const Kernel& kernel)
                                fmt::join(profile.kernels, ", ")));
 }
 
+double code_volume(const CodeProfile& p, int dim, double value)
+{
+    if (!p.sets_volume) throw std::logic_error(p.name + " does not fix the volume");
+    return 0.8 * std::pow(2 * value, dim);
+}
+
+void require_lattice_volume(const CodeProfile& p, const std::string& what)
+{
+    if (p.sets_volume)
+        fail_input(fmt::format("{}: its particle radius fixes the particle volume too (0.8 (2 r)^D), which {} cannot "
+                               "take: expected eps or surface, which take the code's volume",
+                               p.name, what));
+}
+
 double code_support_per_h(const CodeProfile& p, const Kernel& kernel, int dim)
 {
     if (p.name == "swift") return swift_gamma(kernel, dim);
+    if (p.name == "splishsplash") return 4; // its particle radius as h
     if (p.name == "gadget2" || p.name == "gadget4") return 1;
     if (p.name == "dualsphysics") return 2;
     return kernel.support(); // phantom's radkern, pysph's radius_scale
@@ -77,6 +97,7 @@ double code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, doubl
         return ball * std::pow(support, dim) / std::pow(spacing, dim);
     }
     if (p.name == "pysph") return k / spacing;
+    if (p.name == "splishsplash") return support / 4;
     return support / (2 * std::sqrt(double(dim)) * spacing); // dualsphysics
 }
 

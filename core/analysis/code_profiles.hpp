@@ -8,8 +8,8 @@
 //   gadget2/4     nngb  = omega_D H^D rho / m,    the weighted neighbour number
 //   pysph         hdx   = h_y / dx,               dx = V^(1/D), H = R h_y, a pair's h the mean
 //   dualsphysics  coefh = h_d / (sqrt(D) dp),     dp = V^(1/D), H = 2 h_d
-// SPlisHSPlasH is left out: it fixes the support at four particle radii and the mass at
-// 0.8 (2 r)^3 rho0, so its one setting, the radius, also sets the volume.
+//   splishsplash  particle_radius = r / d,        H = 4 r, and the volume m / rho0 = 0.8 (2 r)^D:
+//                 its one setting also sets the particle volume, whatever the lattice's is.
 #pragma once
 
 #include "kernels/kernel.hpp"
@@ -28,6 +28,7 @@ struct CodeProfile {
     std::vector<std::string> kernels; // sphkern's names of the kernels the code ships
     std::string source;               // where the code states its definition
     bool pair_mean = false;           // a pair's h in its sums is (h_i + h_j) / 2 (else h_i)
+    bool sets_volume = false;         // the setting fixes the particle volume too (SPlisHSPlasH)
 };
 const std::vector<CodeProfile>& code_profiles();
 
@@ -41,6 +42,14 @@ void require_code_kernel(const CodeProfile& profile, const Kernel& kernel);
 // The support radius over the h the code stores in its files: SWIFT gamma, Phantom and PySPH
 // the kernel's R, GADGET 1 (its h is the support), DualSPHysics 2.
 double code_support_per_h(const CodeProfile& profile, const Kernel& kernel, int dimension);
+
+// The particle volume, in d^D, a code's setting fixes (sets_volume): SPlisHSPlasH's
+// 0.8 (2 r)^D for the particle radius r (in d).
+double code_volume(const CodeProfile& profile, int dimension, double value);
+
+// Refuses (Error(input)) a code whose setting fixes the volume where `what` holds the
+// lattice's own volume (a window of k, a particle set, a relaxation).
+void require_lattice_volume(const CodeProfile& profile, const std::string& what);
 
 // The code's parameter at k, the lattice's SPH density at rest being rho0 (1 + eps_rho).
 double code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double k,

@@ -5,15 +5,19 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace sphkern::cli {
 
 void add_setting_options(Command c, SettingOptions& o, const std::string& k_help)
 {
     c.add_option("--k", o.k, k_help);
     c.add_option("--code", o.code, "Give the resolution as an SPH code sets it: swift, phantom, gadget2, gadget4, "
-                                   "pysph or dualsphysics, with its parameter below");
+                                   "pysph, dualsphysics or splishsplash, with its parameter below");
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     add_code_parameters(c, o);
+    c.add_option("--particle-radius", o.particle_radius,
+                 "With --code splishsplash: its particle radius r in d, support 4 r and volume 0.8 (2 r)^D");
 }
 
 void add_code_parameters(Command c, SettingOptions& o)
@@ -29,23 +33,37 @@ bool setting_given(const SettingOptions& o)
     return o.k || !o.code.empty() || o.eta || o.hfact || o.nngb || o.hdx || o.coefh;
 }
 
+namespace {
+
+// A code's parameter as an option: "particle_radius" is --particle-radius.
+std::string option_of(std::string parameter)
+{
+    std::replace(parameter.begin(), parameter.end(), '_', '-');
+    return "--" + parameter;
+}
+
+} // namespace
+
 std::optional<CodeSetting> code_setting(const SettingOptions& o)
 {
     const std::pair<const char*, const std::optional<double>*> given[] = {
-        {"eta", &o.eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
+        {"eta", &o.eta},     {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh},
+        {"particle_radius", &o.particle_radius}};
     std::optional<CodeSetting> setting;
     for (const auto& [name, value] : given) {
         if (!value->has_value()) continue;
-        if (o.code.empty()) throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+        if (o.code.empty())
+            throw Error(ExitCode::usage, fmt::format("{} is a code's setting; expected --code too", option_of(name)));
         const auto& profile = code_profile(o.code, ValueSource::option("--code"));
         if (profile.parameter != name)
-            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, profile.parameter));
-        if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and --{}", name));
+            throw Error(ExitCode::usage, fmt::format("{}: {} sets its resolution with {}", option_of(name), o.code,
+                                                     option_of(profile.parameter)));
+        if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and {}", option_of(name)));
         setting = CodeSetting{o.code, **value};
     }
     if (!o.code.empty() && !setting)
-        throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, --{}", o.code,
-                                                 code_profile(o.code, ValueSource::option("--code")).parameter));
+        throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, {}", o.code,
+                                                 option_of(code_profile(o.code, ValueSource::option("--code")).parameter)));
     if (!setting && !o.k) throw Error(ExitCode::usage, "--k is required (or --code and the code's setting)");
     return setting;
 }
@@ -65,7 +83,7 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std
     for (const auto& [name, value] : settings) {
         if (!value->has_value()) continue;
         if (name != parameter)
-            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with --{}", name, o.code, parameter));
+            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with {}", name, o.code, option_of(parameter)));
         choice.value = **value;
     }
     return choice;
@@ -74,7 +92,7 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
 {
     const std::string parameter = o.code.empty() ? "" : code_profile(o.code, ValueSource::option("--code")).parameter;
-    return {ValueSource::option("--code"), ValueSource::option("--" + parameter)};
+    return {ValueSource::option("--code"), ValueSource::option(option_of(parameter))};
 }
 
 } // namespace sphkern::cli

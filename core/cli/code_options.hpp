@@ -13,10 +13,11 @@ namespace sphkern::cli {
 struct SettingOptions {
     std::optional<double> k;
     std::string code;
-    std::optional<double> eta, hfact, nngb, hdx, coefh;
+    std::optional<double> eta, hfact, nngb, hdx, coefh, particle_radius;
 };
 
-// --k (with `k_help`), --code and the codes' parameters.
+// --k (with `k_help`), --code and the codes' parameters (SPlisHSPlasH's --particle-radius
+// too: `particles` and `relax` have their own, a file's radius).
 void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
 
 // --hfact, --nngb, --hdx and --coefh: the codes' parameters but SWIFT's --eta, for a command

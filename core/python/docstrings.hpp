@@ -195,7 +195,8 @@ lattice : str
     A lattice's name or file.
 code : str
     "swift" (eta), "phantom" (hfact), "gadget2" or "gadget4" (the weighted neighbour
-    number), "pysph" (hdx) or "dualsphysics" (coefh).
+    number), "pysph" (hdx), "dualsphysics" (coefh) or "splishsplash" (the particle radius
+    in d; its a_p, 0.8 (2 r)^D, is under "a_p").
 value : float
     The code's setting.
 a_p : str or float, default "voronoi"
@@ -253,7 +254,8 @@ k : float, optional
     k = h / d, in (0, 100]. Or code and value.
 code : str, optional
     A code's own setting instead of k, with value its parameter: "swift" (eta), "phantom"
-    (hfact), "gadget2" or "gadget4" (nngb), "pysph" (hdx), "dualsphysics" (coefh); its k is
+    (hfact), "gadget2" or "gadget4" (nngb), "pysph" (hdx), "dualsphysics" (coefh),
+    "splishsplash" (the particle radius in d, which also fixes a_p = 0.8 (2 r)^D); its k is
     found from the bulk's SPH density at site, and the document carries it under "code".
 value : float, optional
     The code's parameter, with code.

@@ -104,6 +104,7 @@ AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, co
 {
     AssessResult a;
     if (r.setting.code) a.code = &code_profile(r.setting.code->code, sources.setting.code);
+    if (a.code) require_lattice_volume(*a.code, "the window of the recommended setting (at the lattice's a_p)");
     a.at = run_eps_at_k(r.setting, sources.setting, kernel, lattice);
     for (const auto& s : a.at.sites)
         a.worst = std::max({a.worst, std::abs(s.values.eps_rho), std::abs(s.values.eps_gradp)});

@@ -58,9 +58,10 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
                                    evaluation.mode);
     auto eps_rho = [&](double k) { return errors.at(k).eps_rho; };
-    CodeK code{setting, profile.parameter, 0, 0};
+    CodeK code{setting, profile.parameter, 0, 0, std::nullopt};
     code.k = k_of_code_parameter(profile, kernel, dim, evaluation.a_p, setting.value, k_max, eps_rho, sources.value);
     code.value_at_k = code_parameter(profile, kernel, dim, evaluation.a_p, code.k, eps_rho(code.k));
+    if (profile.sets_volume) code.a_p = code_volume(profile, dim, setting.value);
     return code;
 }
 
@@ -69,6 +70,7 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
 {
     const auto& profile = code_profile(setting.code, sources.code);
     require_code_kernel(profile, kernel);
+    require_lattice_volume(profile, "a particle set");
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
     return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile)};
@@ -79,6 +81,7 @@ SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSo
 {
     const auto& profile = code_profile(code, sources.code);
     require_code_kernel(profile, kernel);
+    require_lattice_volume(profile, "a particle set");
     if (set.h.empty())
         fail_input(fmt::format("{}: the set stores no h; with {} {}, expected {} too (the code's parameter)", set.name,
                                sources.code.name, code, sources.value.name));
@@ -91,8 +94,10 @@ SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSo
 
 nlohmann::json code_k_json(const CodeK& code)
 {
-    return {{"name", code.setting.code}, {"parameter", code.parameter}, {"value", code.setting.value},
-            {"value_at_k", code.value_at_k}};
+    nlohmann::json out = {{"name", code.setting.code}, {"parameter", code.parameter}, {"value", code.setting.value},
+                          {"value_at_k", code.value_at_k}};
+    if (code.a_p) out["a_p"] = *code.a_p;
+    return out;
 }
 
 nlohmann::json code_answer_json(const CodeSetting& setting)

@@ -40,6 +40,7 @@ struct CodeK {
     std::string parameter;  // the code's name for it ("eta")
     double k = 0;
     double value_at_k = 0;  // the code's parameter recomputed at k (equal to the given to 1e-12)
+    std::optional<double> a_p; // the volume the code fixes (SPlisHSPlasH), in place of the lattice's
 };
 CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
                         const Lattice& lattice, const Evaluation& evaluation);

@@ -28,7 +28,7 @@ void check_eps_request(const EpsRequest& r, const EpsSources& sources)
 
 EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
-    const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
+    auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
     EpsAtK result;
     result.kernel = kernel.label();
     result.lattice = lattice.name;
@@ -39,6 +39,7 @@ EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel
     if (r.code) {
         result.code = k_of_code_setting(*r.code, {sources.code, sources.code_value}, kernel, lattice, evaluation);
         result.k = result.code->k;
+        if (result.code->a_p) evaluation.a_p = result.a_p = *result.code->a_p; // the code's volume, not the lattice's
     } else {
         const double given = r.k.at(0);
         result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;

@@ -1,5 +1,7 @@
 #include "requests/pairing_request.hpp"
 
+#include "analysis/code_profiles.hpp"
+
 #include "requests/particles_request.hpp"
 #include "stability/dispersion.hpp"
 
@@ -31,6 +33,7 @@ std::optional<CodeK> pairing_code_k(PairingRequest& request, const std::optional
                                     const CodeSettingSources& sources, const Kernel& kernel, const Lattice& lattice)
 {
     if (!setting) return std::nullopt;
+    require_lattice_volume(code_profile(setting->code, sources.code), "the motion of a lattice block");
     const EvaluationSources unnamed{}; // the default a_p, site and gravity, which every lattice has
     const auto code = k_of_code_setting(*setting, sources, kernel, lattice, resolve_evaluation({}, unnamed, lattice));
     request.k_min = request.k_max = code.k;

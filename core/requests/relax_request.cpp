@@ -89,6 +89,7 @@ void check_relax_code(const RelaxCode& code, const std::string& output, const Ke
                       const CodeSettingSources& sources)
 {
     const auto& profile = code_profile(code.name, sources.code);
+    require_lattice_volume(profile, "a relaxation");
     const bool hdf5 = !output.empty() && !output.ends_with(".csv");
     if (hdf5 && (code.name == "phantom" || code.name == "dualsphysics"))
         sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph; "

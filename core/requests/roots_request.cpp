@@ -34,6 +34,7 @@ RootsInCode in_code(const CodeProfile& profile, const RootsResult& result, const
                     const HydrostaticErrors& site)
 {
     require_code_kernel(profile, kernel);
+    require_lattice_volume(profile, "a window of k at the lattice's a_p");
     auto value = [&](double k) { return code_parameter(profile, kernel, dimension, result.a_p, k, site.at(k).eps_rho); };
     RootsInCode c;
     c.best = value(result.analysis.all_along.best_k);

@@ -52,6 +52,7 @@ nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, 
                                  const nlohmann::json& document)
 {
     require_code_kernel(code, kernel);
+    require_lattice_volume(code, "a window of k at the lattice's a_p");
     const double a_p = lattice.volume_coefficient("voronoi");
     const HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max);
     auto value = [&](double k) { return code_parameter(code, kernel, lattice.dimension, a_p, k, errors.at(k).eps_rho); };

@@ -19,11 +19,12 @@ void check_surface_request(const SurfaceRequest& r, const SurfaceSources& source
 SurfaceResult run_surface(const SurfaceRequest& r, const SurfaceSources& sources, const Kernel& kernel,
                           const Lattice& lattice)
 {
-    const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
+    auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
     SurfaceResult result{r.k, evaluation.a_p, {}, {}};
     if (r.code) {
         result.code = k_of_code_setting(*r.code, {sources.code, sources.code_value}, kernel, lattice, evaluation);
         result.k = result.code->k;
+        if (result.code->a_p) evaluation.a_p = result.a_p = *result.code->a_p; // the code's volume, not the lattice's
     }
     result.profile = surface_profile(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, result.k,
                                      r.layers, r.form, r.termination);

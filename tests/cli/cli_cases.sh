@@ -1266,13 +1266,28 @@ check "a stale cached name: the cache names the file by its descriptor again" re
 expect 2 '^sphkern: error: --eta is a code.s setting; expected --code too' -- eps wendland_c2 fcc --eta 1.2
 expect 2 '^sphkern: error: --hdx: swift sets its resolution with --eta' -- eps wendland_c2 fcc --code swift --hdx 1.2
 expect 2 '^sphkern: error: give one of --k and --eta' -- eps wendland_c2 fcc --code swift --eta 1.2 --k 1
-expect 2 '^sphkern: error: --code: "swfit" is unknown, expected one of swift, phantom, gadget2, gadget4, pysph, dualsphysics \(did you mean "swift"\?\)' -- eps wendland_c2 fcc --code swfit --eta 1.2
+expect 2 '^sphkern: error: --code: "swfit" is unknown, expected one of swift, phantom, gadget2, gadget4, pysph, dualsphysics, splishsplash \(did you mean "swift"\?\)' -- eps wendland_c2 fcc --code swfit --eta 1.2
 expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline' -- eps wendland_c2 fcc --code gadget2 --nngb 48
 expect 2 '^sphkern: error: --eta 0: expected a number in \(0, 100\]' -- eps wendland_c2 fcc --code swift --eta 0
 expect 2 '^sphkern: error: --code swift: expected its setting, --eta' -- eps wendland_c2 fcc --code swift
 expect 2 '^sphkern: error: --eta: 0.3: expected more than 0.772083, the eta of a particle with no neighbour inside its support' -- eps wendland_c2 fcc --code swift --eta 0.3
 expect 2 '^sphkern: error: --axis is the scale of --k; --code gives the code.s own setting' -- eps wendland_c2 fcc --code swift --eta 1.2 --axis eta
 expect 0 '^$' -- eps wendland_c2 fcc --code swift --eta 1.2348
+# SPlisHSPlasH: its particle radius sets the support 4 r and the volume 0.8 (2 r)^D, so on sc at r = d / 2 (its own
+# sampling) eps --code is eps at k = 4 r / R with a_p = 0.8; the commands that keep the lattice's volume refuse it.
+check "eps --code splishsplash is eps at k = 4 r / R and a_p = 0.8 (2 r)^D" bash -c "
+  '$sphkern' eps wendland_c2 sc --code splishsplash --particle-radius 0.5 --json > '$work/ss_code.json' &&
+  '$sphkern' eps wendland_c2 sc --k 1 --ap 0.8 --json > '$work/ss_k.json' &&
+  python3 -c \"import json; a, b = (json.load(open('$work/' + n)) for n in ('ss_code.json', 'ss_k.json')); assert a['k'] == 1 and a['a_p'] == 0.8 and a['code']['a_p'] == 0.8 and a['eps_rho'] == b['eps_rho'] and a['eps_gradp'] == b['eps_gradp']\""
+check "surface --code splishsplash names its volume" bash -c "'$sphkern' surface wendland_c2 sc --code splishsplash --particle-radius 0.5 | head -1 | grep -q 'a_p = 0.8,'"
+expect 3 '^sphkern: error: splishsplash: its particle radius fixes the particle volume too \(0.8 \(2 r\)\^D\), which a window of k' -- roots wendland_c2 fcc --code splishsplash
+expect 3 '^sphkern: error: splishsplash: .*which the window of the recommended setting' -- assess wendland_c2 fcc --code splishsplash --particle-radius 0.5
+expect 3 '^sphkern: error: splishsplash: .*which the motion of a lattice block cannot take' -- pairing wendland_c2 fcc --code splishsplash --particle-radius 0.5
+expect 3 '^sphkern: error: splishsplash: .*which a particle set cannot take' -- particles wendland_c2 poisson --count 500 --code splishsplash
+expect 2 '^sphkern: error: --particle-radius is a code.s setting; expected --code too$' -- eps wendland_c2 fcc --particle-radius 0.5
+expect 3 '^sphkern: error: morris_quintic: splishsplash does not ship it; its kernels are cubic_bspline, wendland_c2, muller_poly6, desbrun_spiky$' -- eps morris_quintic fcc --code splishsplash --particle-radius 0.5
+expect 2 '^sphkern: error: --particle-radius -1: expected a number in \(0, 100\]$' -- eps wendland_c2 fcc --code splishsplash --particle-radius -1
+
 # assess: one verdict; its setting refused as eps refuses it.
 check "assess ends with one line a person can act on" bash -c "'$sphkern' assess wendland_c2 fcc --code swift --eta 1.2348 | tail -1 | grep -qx 'swift eta 1.2348 with wendland_c2 on fcc: stable, inaccurate (|eps_gradP| 0.0205 > 0.01); recommended eta 1.7 (1.68 to 1.71)'"
 expect 2 '^sphkern: error: --k is required \(or --code and the code.s setting\)' -- assess wendland_c2 fcc
