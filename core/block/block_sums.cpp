@@ -1,56 +1,16 @@
 #include "block/block_sums.hpp"
 
-#include "analysis/gradient_form.hpp"
+#include "block/block_pair_sums.hpp"
 #include "particles/neighbour_gather.hpp"
 #include "particles/pair_pass.hpp"
 #include "support/process/parallel_for.hpp"
-#include "support/vector_clones.hpp"
 
 #include <cmath>
-#include <type_traits>
 #include <vector>
 
 namespace sphkern {
 
 namespace {
-
-constexpr std::size_t lanes = neighbour_lanes;
-
-// The sum of W over the `live` neighbours, in eight lanes added in a fixed order.
-SPHKERN_ENGINE_CLONES double density_sum(const double* __restrict w, std::size_t n, std::size_t live)
-{
-    double acc[lanes] = {};
-    for (std::size_t base = 0; base < n; base += lanes)
-        for (std::size_t l = 0; l < lanes; ++l) acc[l] += base + l < live ? w[base + l] : 0.0;
-    double t = 0;
-    for (double a : acc) t += a;
-    return t;
-}
-
-// The sum of weight_ij W'(r) (x_i - x_j) . e / r over the `padded` neighbours, with
-// (x_i - x_j) . e = -height, height = e . (x_j - x_i), and the weight of each form for
-// P = rho0 g depth (inv_r = 0 past the live neighbours). Gravity is normal to the lateral
-// sides, so a neighbour's depth is depth_i + height, through a periodic side too: it is not
-// gathered.
-template <GradientForm form>
-SPHKERN_ENGINE_CLONES double gradient_sum(double depth_i, double rho_i, const Neighbours& nb, const double* e,
-                                          std::size_t n)
-{
-    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
-    const double *__restrict rho_j = nb.b.data(), *__restrict dw = nb.dw.data(), *__restrict inv_r = nb.inv_r.data();
-    double acc[lanes] = {};
-    for (std::size_t base = 0; base < n; base += lanes)
-        for (std::size_t l = 0; l < lanes; ++l) {
-            const std::size_t j = base + l;
-            const double height = e[0] * dx[j] + e[1] * dy[j] + e[2] * dz[j];
-            const double rj = form == GradientForm::monaghan ? rho_j[j] : 1.0;
-            const double weight = gradient_form_weight<form>(depth_i, depth_i + height, rho_i, rj);
-            acc[l] += weight * dw[j] * -height * inv_r[j];
-        }
-    double t = 0;
-    for (double a : acc) t += a;
-    return t;
-}
 
 struct BlockSweep {
     const Kernel& kernel;
@@ -74,7 +34,7 @@ struct BlockSweep {
         const std::size_t i = grid.source(p);
         if (with_density && !with_gradient) kernel.w_batch(nb.q.data(), nb.w.data(), padded, dim, k);
         else kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
-        if (with_density) result.eps_rho[i] = parameters.a_p * (self + density_sum(nb.w.data(), padded, n)) / kd - 1;
+        if (with_density) result.eps_rho[i] = parameters.a_p * (self + block_density_sum(nb.w.data(), padded, n)) / kd - 1;
         if (with_gradient) result.eps_gradp[i] = parameters.a_p * gradient(i, nb, padded, result.gravity) / kd1 - 1;
         return n;
     }
@@ -83,13 +43,7 @@ struct BlockSweep {
     double gradient(std::size_t i, const Neighbours& nb, std::size_t padded, const Eigen::Vector3d& gravity) const
     {
         const double rho_i = rho ? rho[i] : 1.0, e[3] = {gravity.x(), gravity.y(), gravity.z()};
-        auto call = [&](auto form) { return gradient_sum<decltype(form)::value>(depth[i], rho_i, nb, e, padded); };
-        switch (parameters.form) {
-        case GradientForm::sum: return call(std::integral_constant<GradientForm, GradientForm::sum>{});
-        case GradientForm::difference: return call(std::integral_constant<GradientForm, GradientForm::difference>{});
-        case GradientForm::monaghan: break;
-        }
-        return call(std::integral_constant<GradientForm, GradientForm::monaghan>{});
+        return block_gradient_sum(parameters.form, depth[i], rho_i, nb, e, padded);
     }
 };
 

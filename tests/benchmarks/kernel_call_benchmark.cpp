@@ -1,7 +1,8 @@
 // The cost of calling a kernel through the plugin interface: the shipped cubic_bspline
 // plugin's batch and scalar functions against the same source compiled into this
-// program, where the compiler can inline it. And the ceiling of the block engine's
-// fused sweep: its per-pair arithmetic on a run of pairs that stays in L1.
+// program, where the compiler can inline it. And the floors of the engine's sweeps: their
+// per-pair arithmetic on neighbours that stay in L1 (the measures', the block's two sums).
+#include "block/block_pair_sums.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "particles/neighbour_gather.hpp"
@@ -133,27 +134,36 @@ void pair_ceiling(benchmark::State& state)
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * run_length));
 }
 
-// The particle engine's own arithmetic per particle, on one particle's 78 neighbours (as many
-// as fcc has at k = 1.2, here at random inside the support) in L1: r, q and 1 / r, the
-// plugin's fused W and W', and the sums of the measures (sphkern particles; thirteen, as the
-// set has no masses), with no neighbour search, no gather and no stores of results.
-// The engine cannot do better than this per pair; BENCHMARKS.md divides its rate by it too.
-void measures_pair_floor(benchmark::State& state)
+// One particle's 78 neighbours (as many as fcc has at k = 1.2), at random inside the support
+// of h = 1.2 and none at its centre; the padding after them is zero.
+sphkern::Neighbours neighbours_of_fcc_count()
 {
-    const auto& kernel = plugin_kernel();
     constexpr std::size_t count = 78;
-    constexpr double h = 1.2, reach = 2 * h;
+    constexpr double reach = 2 * 1.2;
     sphkern::Neighbours nb;
     nb.reserve(count + sphkern::neighbour_lanes);
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> coordinate(-reach, reach);
-    for (std::size_t j = 0; j < count;) { // points inside the support, none at its centre
+    for (std::size_t j = 0; j < count;) {
         const double x = coordinate(random), y = coordinate(random), z = coordinate(random);
         const double r2 = x * x + y * y + z * z;
         if (r2 > reach * reach || r2 < 1e-6) continue;
         nb.dx[j] = x, nb.dy[j] = y, nb.dz[j] = z, ++j;
     }
     nb.count = count;
+    return nb;
+}
+
+// The particle engine's own arithmetic per particle, on those neighbours in L1: r, q and
+// 1 / r, the plugin's fused W and W', and the sums of the measures (sphkern particles;
+// thirteen, as the set has no masses), with no neighbour search, no gather and no stores of
+// results. The engine cannot do better than this per pair; BENCHMARKS.md divides its rate by it too.
+void measures_pair_floor(benchmark::State& state)
+{
+    const auto& kernel = plugin_kernel();
+    sphkern::Neighbours nb = neighbours_of_fcc_count();
+    const std::size_t count = nb.count;
+    constexpr double h = 1.2;
     const std::size_t padded = sphkern::padded_count(count);
     double total[sphkern::neighbour_sum_count];
     for (auto _ : state) {
@@ -161,6 +171,28 @@ void measures_pair_floor(benchmark::State& state)
         kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, 3, h);
         sphkern::neighbour_sums(nb, padded, 0.7, false, true, total);
         benchmark::DoNotOptimize(total);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * count));
+}
+
+// The block's own arithmetic per particle on the same 78 neighbours in L1: r, q and 1 / r, the
+// plugin's fused W and W', and its two sums (density, and the sum form's pressure gradient):
+// the floor of `sphkern block`, with no neighbour search, no gather and no stores of results.
+void block_pair_floor(benchmark::State& state)
+{
+    const auto& kernel = plugin_kernel();
+    sphkern::Neighbours nb = neighbours_of_fcc_count();
+    const std::size_t count = nb.count, padded = sphkern::padded_count(count);
+    const double h = 1.2, e[3] = {0, 0, -1};
+    double rho = 0, grad = 0;
+    for (auto _ : state) {
+        sphkern::distances(nb, padded, 1 / h);
+        kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, 3, h);
+        rho = sphkern::block_density_sum(nb.w.data(), padded, count);
+        grad = sphkern::block_gradient_sum(sphkern::GradientForm::sum, 10.0, 1.0, nb, e, padded);
+        benchmark::DoNotOptimize(rho);
+        benchmark::DoNotOptimize(grad);
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * count));
@@ -174,6 +206,7 @@ void fused_pair_ceiling_one_call(benchmark::State& state) { pair_ceiling<true>(s
 BENCHMARK(fused_pair_ceiling);
 BENCHMARK(fused_pair_ceiling_one_call);
 BENCHMARK(measures_pair_floor);
+BENCHMARK(block_pair_floor);
 BENCHMARK(inline_batch);
 BENCHMARK(plugin_batch);
 BENCHMARK(plugin_scalar);
