@@ -12,12 +12,15 @@ namespace sphkern {
 Axis parse_axis(const std::string& text, const std::string& what)
 {
     if (text == "k") return Axis::k;
-    if (text == "eta") return Axis::eta;
+    if (text == "h_over_l") return Axis::eta;
+    if (text == "eta")
+        fail_input(what + " \"eta\" is the old name of sphkern's own h / V^(1/D); expected h_over_l (SWIFT's eta is a code's "
+                          "setting: --code swift --eta)");
     if (text == "nh") return Axis::nh;
-    fail_input(what + " \"" + text + "\" is unknown, expected k, eta or nh");
+    fail_input(what + " \"" + text + "\" is unknown, expected k, h_over_l or nh");
 }
 
-const char* axis_name(Axis axis) { return axis == Axis::k ? "k" : axis == Axis::eta ? "eta" : "nh"; }
+const char* axis_name(Axis axis) { return axis == Axis::k ? "k" : axis == Axis::eta ? "h_over_l" : "nh"; }
 
 double eta_of_k(double k, double a_p, int dimension) { return k / std::pow(a_p, 1.0 / dimension); }
 double k_of_eta(double eta, double a_p, int dimension) { return eta * std::pow(a_p, 1.0 / dimension); }

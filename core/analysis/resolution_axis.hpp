@@ -14,7 +14,7 @@ namespace sphkern {
 
 enum class Axis { k, eta, nh };
 
-Axis parse_axis(const std::string& text, const std::string& what); // "k", "eta" or "nh"; Error(input) otherwise
+Axis parse_axis(const std::string& text, const std::string& what); // "k", "h_over_l" or "nh"; Error(input) otherwise
 const char* axis_name(Axis axis);
 
 // eta = k / a_p^(1/D), and back.

@@ -39,7 +39,7 @@ nlohmann::json roots_document(const Kernel& kernel, const Lattice& lattice, doub
     document["lateral_in_verdict"] = lateral;
     document["axis"] = axis_name(axis);
     document["window"] = {window_min, window_max};
-    document["eta_range"] = {eta_of_k(k_min, a_p, lattice.dimension), eta_of_k(k_max, a_p, lattice.dimension)};
+    document["h_over_l_range"] = {eta_of_k(k_min, a_p, lattice.dimension), eta_of_k(k_max, a_p, lattice.dimension)};
     nlohmann::json list = nlohmann::json::array();
     for (const auto& s : a.sites) list.push_back(site_roots_json(s, epsilon));
     document["sites"] = list;

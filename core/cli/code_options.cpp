@@ -73,9 +73,9 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std
     const std::pair<const char*, const std::optional<double>*> settings[] = {
         {"eta", &eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
     if (o.code.empty()) {
+        refuse_eta_without_code(o, eta);
         for (const auto& [name, value] : settings)
-            if (value->has_value() && std::string(name) != "eta")
-                throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+            if (value->has_value()) throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
         return std::nullopt;
     }
     const std::string parameter = code_profile(o.code, ValueSource::option("--code")).parameter;
@@ -87,6 +87,13 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std
         choice.value = **value;
     }
     return choice;
+}
+
+void refuse_eta_without_code(const SettingOptions& o, const std::optional<double>& eta)
+{
+    if (eta && o.code.empty())
+        throw Error(ExitCode::usage, "--eta is SWIFT's eta, a code's setting (--code swift --eta); sphkern's own h over the "
+                                     "mean spacing is --h-over-l");
 }
 
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)

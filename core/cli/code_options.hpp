@@ -30,14 +30,17 @@ bool setting_given(const SettingOptions& options);
 // The code's setting: its parameter given only with --code and alone, or none for --k.
 std::optional<CodeSetting> code_setting(const SettingOptions& options);
 
-// --code NAME where sphkern's own --eta is an option too (`particles`, `relax`): with --code
-// swift, `eta` is SWIFT's. The code with its parameter's value, or none (alone); nullopt
-// without --code. A parameter without --code, or another code's, is refused.
+// --code NAME with --eta among the codes' parameters (`particles`, `relax`, whose own ratio is
+// --h-over-l): with --code swift, `eta` is SWIFT's. The code with its parameter's value, or
+// none (alone); nullopt without --code. A parameter without --code, or another code's, is refused.
 struct CodeChoice {
     std::string code;
     std::optional<double> value;
 };
 std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& codes, const std::optional<double>& eta);
+
+// --eta without --code: refused, naming sphkern's own --h-over-l (SWIFT's eta is a code's setting).
+void refuse_eta_without_code(const SettingOptions& codes, const std::optional<double>& eta);
 
 // "--code" and the code's parameter ("--eta"), for the request's errors.
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& options);

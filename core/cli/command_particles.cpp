@@ -26,10 +26,10 @@ namespace {
 struct ParticlesOptions : CommonOptions, SourceOptions {
     std::string kernel, gravity, volume, csv, vtk;
     std::vector<std::string> sets;
-    std::vector<double> eta_range, nh_range;
+    std::vector<double> h_over_l_range, nh_range, eta_range;
     double depth = 1, memory_limit = 0;
-    std::optional<double> eta, nh, k, support_per_h, rho0;
-    SettingOptions codes; // --code and the codes' parameters but --eta (this command's own, SWIFT's with --code swift)
+    std::optional<double> h_over_l, eta, nh, k, support_per_h, rho0;
+    SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
     int steps = 10, threads = 0;
     std::size_t histogram = 0;
 };
@@ -48,8 +48,10 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
         if (code->value) a.code = CodeSetting{code->code, *code->value};
         else a.stored_h_code = code->code;
     }
-    a.smoothing = {o.codes.code.empty() ? o.eta : std::nullopt, o.nh, o.k, o.support_per_h};
-    a.eta_range = range_of(o.eta_range), a.nh_range = range_of(o.nh_range);
+    if (!o.eta_range.empty())
+        throw Error(ExitCode::usage, "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");
+    a.smoothing = {o.h_over_l, o.nh, o.k, o.support_per_h};
+    a.eta_range = range_of(o.h_over_l_range), a.nh_range = range_of(o.nh_range);
     a.steps = o.steps;
     if (!o.volume.empty()) a.volume = o.volume;
     if (!o.gravity.empty()) a.gravity = parse_number_list(o.gravity, sources.gravity);
@@ -63,8 +65,9 @@ void add_options(Command c, ParticlesOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
-    c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2 without a file h); "
-                                 "with --code swift, SWIFT's eta");
+    c.add_option("--h-over-l", o.h_over_l, "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a "
+                                           "file h)");
+    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
     c.add_option("--code", o.codes.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
@@ -72,12 +75,13 @@ void add_options(Command c, ParticlesOptions& o)
                                    "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
     add_code_parameters(c, o.codes);
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
-    c.add_option("--eta-range", o.eta_range, "Sweep eta over [A, B]").expected(2);
+    c.add_option("--h-over-l-range", o.h_over_l_range, "Sweep h / l over [A, B]").expected(2);
+    c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)").expected(2).hidden();
     c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
     c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
-    c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k")
-        .excludes("--eta-range").excludes("--nh-range").excludes("--code");
+    c.get_option("--particle-radius").excludes("--h-over-l").excludes("--nh").excludes("--k")
+        .excludes("--h-over-l-range").excludes("--nh-range").excludes("--code");
     c.add_option("--volume", o.volume, "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();

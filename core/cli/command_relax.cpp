@@ -27,8 +27,8 @@ namespace {
 struct RelaxOptions : CommonOptions, SourceOptions {
     std::string kernel, method = "pressure", output, history, tile;
     std::vector<std::string> sets;
-    std::optional<double> eta, nh, k;
-    SettingOptions codes; // --code and the codes' parameters but --eta (this command's own, SWIFT's with --code swift)
+    std::optional<double> h_over_l, eta, nh, k;
+    SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
     RelaxSettings settings;
     double memory_limit = 0, rdf_max = 3;
     std::size_t rdf_bins = 60;
@@ -38,15 +38,16 @@ void add_options(Command c, RelaxOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
-    c.add_option("--eta", o.eta, "h = eta times the mean spacing V^(1/D) (default 1.2)");
+    c.add_option("--h-over-l", o.h_over_l, "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)");
+    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
     c.add_option("--code", o.codes.code, "The code --output is for: swift, gadget2, gadget4 or pysph, its layout and h; "
-                                         "with its parameter (--eta is then SWIFT's), the run's h and each written h as the "
+                                         "with its parameter (--eta for swift), the run's h and each written h as the "
                                          "code sets it");
     add_code_parameters(c, o.codes);
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
-    c.get_option("--particle-radius").excludes("--eta").excludes("--nh").excludes("--k");
+    c.get_option("--particle-radius").excludes("--h-over-l").excludes("--nh").excludes("--k");
     c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
         .capture_default_str();
     auto& s = o.settings;
@@ -111,10 +112,10 @@ Action add_relax_command(Command app)
         std::optional<RelaxCode> code;
         if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
         const auto [code_source, value_source] = code_sources(o.codes);
-        if (code && code->value && (o.nh || o.k))
-            throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --nh or --k beside it", code->name,
-                                                     value_source.name));
-        SmoothingSpec spec = smoothing_spec({code ? std::nullopt : o.eta, o.nh, o.k, std::nullopt}, sources.smoothing);
+        if (code && code->value && (o.h_over_l || o.nh || o.k))
+            throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it",
+                                                     code->name, value_source.name));
+        SmoothingSpec spec = smoothing_spec({o.h_over_l, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"));

@@ -27,6 +27,12 @@ Option Option::expected(int values)
     return *this;
 }
 
+Option Option::hidden()
+{
+    option_->group("");
+    return *this;
+}
+
 Option Option::excludes(Option other)
 {
     option_->excludes(other.option_);

@@ -21,6 +21,7 @@ public:
     Option required();
     Option capture_default_str();    // show the default in --help
     Option expected(int values);     // a list of exactly this many values
+    Option hidden();                 // left out of --help (an old name kept to say the new one)
     Option excludes(Option other);
     Option excludes(const std::string& name);
     Option needs(Option other);

@@ -129,7 +129,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         point.h_min = h_range.min, point.h_max = h_range.max;
         answer.threads = measures.threads;
         phases.lap("statistics");
-        if (specs.size() > 1) spdlog::debug("{}: {} of {} (eta = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
+        if (specs.size() > 1) spdlog::debug("{}: {} of {} (h/l = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
         answer.points.push_back(std::move(point));
         if (specs.size() == 1) answer.h = std::move(h), answer.measures = std::move(measures);
     }

@@ -317,7 +317,7 @@ epsilon : float, default 0.01
 lateral : bool, default False
     Count the lateral error in condition (22) too.
 axis : str, default "k"
-    The scale of the window: "k" (h / d), "eta" (h / V^(1/D)) or "nh" (neighbours).
+    The scale of the window: "k" (h / d), "h_over_l" (h / V^(1/D)) or "nh" (neighbours).
 stability : bool, default False
     Add "stability": the stable k of the window, their overlap with condition (22) and
     the recommended k, as `roots --stability`.
@@ -329,7 +329,7 @@ horizon : float, default 100
     With stability: the growth time, in d/c, that separates weak instabilities from
     unstable ones.
 h_model : str, default "fixed"
-    With stability: "fixed" or "adaptive" (h = eta (m / rho)^(1/D) with the grad-h terms).
+    With stability: "fixed" or "adaptive" (h = (h/l) (m / rho)^(1/D) with the grad-h terms).
 convention : str, optional
     Add "convention": the answer in a code's convention ("pysph", "dualsphysics",
     "swift", "gadget" or "splishsplash"), as `roots --convention`.
@@ -345,7 +345,7 @@ dict
     neighbours, support_radius), jumps, acceptance and acceptance_every_direction
     (condition (22) along gravity and for every direction: verdict, intervals, best_k,
     best_max_error, epsilon), sites and all_sites (the same per site and over all sites),
-    best_k_at_window_edge (and best_k_note when it is), window, k_range, eta_range, axis,
+    best_k_at_window_edge (and best_k_note when it is), window, k_range, h_over_l_range, axis,
     a_p, site, lateral_in_verdict, kernel and lattice; "stability" with stability=True,
     "convention" with a convention and "code" with a code.
 
@@ -391,7 +391,7 @@ horizon : float, default 100
 params : dict of str to float, optional
     The kernel's parameters.
 h_model : str, default "fixed"
-    "fixed" or "adaptive" (h = eta (m / rho)^(1/D) with the grad-h terms; k is the
+    "fixed" or "adaptive" (h = (h/l) (m / rho)^(1/D) with the grad-h terms; k is the
     equilibrium h = k d in both).
 code : str, optional
     With kmin and kmax: add "code", the stable intervals in a code's own setting with its
@@ -540,15 +540,16 @@ support_per_h : float, optional
     (GADGET 1, SWIFT its kernel gamma, DualSPHysics 2, SPlisHSPlasH 4 with its particle
     radii as h). Default: the
     kernel's support R, that is h is sphkern's own.
-eta : float, optional
-    h = eta V^(1/D) with V the mean volume, in (0, 100]. Default, without h and nh: 1.2.
+h_over_l : float, optional
+    sphkern's own h over the mean spacing l = V^(1/D), V the mean volume, in (0, 100].
+    Default, without h and nh: 1.2. (SWIFT's eta is code="swift" with value.)
 nh : float, optional
     h from the neighbour number N_H, in [1, 100000].
 code : str, optional
     h as an SPH code sets it, with value its parameter: "swift" (eta), "phantom" (hfact),
     "gadget2" or "gadget4" (nngb) solve every particle's h with its own SPH density,
     h_i = c (m_i / rho_i)^(1/D); "pysph" (hdx) and "dualsphysics" (coefh) take it from the
-    mean spacing. Not with h, eta or nh. Without value, with h: that h as the code stores
+    mean spacing. Not with h, h_over_l or nh. Without value, with h: that h as the code stores
     it (its support over h, and PySPH's pair h (h_i + h_j) / 2 in the sums), not with
     support_per_h. The document carries it under "code".
 value : float, optional
@@ -577,7 +578,7 @@ params : dict of str to float, optional
 Returns
 -------
 dict
-    The document of `particles --json` (statistics of every measure, rho0, eta, nh,
+    The document of `particles --json` (statistics of every measure, rho0, h_over_l, nh,
     mean_neighbours, source, ...) with per-particle numpy arrays in its place: e0, eps_rho,
     eps_gradp, eps_gradp_sum (N), e1 and m1 (N, D), E (N, D, D), neighbours (N, int),
     h (N, sphkern's own h: the support is R h) and volume (N); the volume model the
@@ -587,7 +588,7 @@ Examples
 --------
 >>> import numpy as np
 >>> x = np.random.default_rng(1).uniform(0, 1, (400, 2))
->>> r = sphkern.particles("cubic_bspline", x, box=[1, 1], eta=1.3)
+>>> r = sphkern.particles("cubic_bspline", x, box=[1, 1], h_over_l=1.3)
 >>> r["eps_rho"].shape, r["E"].shape
 ((400,), (400, 2, 2))
 

@@ -89,10 +89,10 @@ struct GivenPerParticle {
 };
 
 // The arguments as the request takes them.
-ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const GivenPerParticle& given, const py::object& eta,
+ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const GivenPerParticle& given, const py::object& h_over_l,
                                const py::object& nh, const py::object& volume, const py::object& gravity)
 {
-    if (!given.h.is_none() + !eta.is_none() + !nh.is_none() > 1) fail_input("give one of h, eta and nh");
+    if (!given.h.is_none() + !h_over_l.is_none() + !nh.is_none() > 1) fail_input("give one of h, h_over_l and nh");
     if (!given.densities.is_none() && given.masses.is_none())
         fail_input("densities: they give the volumes m / rho; expected masses too");
     if (!given.densities.is_none() && !volume.is_none()) fail_input("give one of volume and densities");
@@ -104,7 +104,7 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Giv
     if (!given.masses.is_none()) set.mass = positive_per_particle(given.masses, set.size(), "masses", "mass");
     if (!given.densities.is_none())
         set.density = positive_per_particle(given.densities, set.size(), "densities", "density");
-    a.smoothing.eta = number_of(eta, "eta"), a.smoothing.nh = number_of(nh, "nh");
+    a.smoothing.eta = number_of(h_over_l, "h_over_l"), a.smoothing.nh = number_of(nh, "nh");
     if (py::isinstance<py::str>(volume)) {
         const auto name = volume.cast<std::string>();
         if (name != "uniform" && name != "voronoi") fail_input("volume: expected \"uniform\", \"voronoi\" or an array");
@@ -158,7 +158,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
     m.def(
         "particles",
         [kernel_of, to_python](const std::string& kernel_spec, const ArrayLike& positions, const OptionalSequence& box,
-                               const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& eta,
+                               const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
                                const OptionalFloat& nh, const std::optional<std::string>& code,
                                const OptionalFloat& value, const OptionalArrayLike& masses,
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
@@ -167,7 +167,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             auto kernel = kernel_of(kernel_spec, params);
             ParticleSet set = set_of(positions, box);
             ParticleArguments arguments =
-                arguments_of(set, kernel, {h, support_per_h, masses, densities}, eta, nh, volume, gravity);
+                arguments_of(set, kernel, {h, support_per_h, masses, densities}, h_over_l, nh, volume, gravity);
             // A code alone: the h given, as that code stores it.
             const auto code_value = number_of(value, "value");
             if (code && !code_value) {
@@ -200,7 +200,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             return out;
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
-        py::arg("support_per_h") = py::none(), py::arg("eta") = py::none(), py::arg("nh") = py::none(),
+        py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
         py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
         py::arg("params") = py::none(), doc::particles,

@@ -20,7 +20,7 @@ nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
 // A sweep as the curves of the literature: one row per eta (N_H), the RMS of each error.
 void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
 {
-    fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "eta", "N_H", "neighbours",
+    fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "h/l", "N_H", "neighbours",
                "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
     for (const auto& p : answer.points)
         fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
@@ -40,7 +40,7 @@ nlohmann::json point_json(const ParticlePoint& p)
 {
     nlohmann::json statistics = nlohmann::json::object();
     for (const auto& [name, s] : p.statistics) statistics[name] = summary_json(s);
-    nlohmann::json point = {{"eta", p.eta},         {"nh", p.nh},       {"h_min", p.h_min}, {"h_max", p.h_max},
+    nlohmann::json point = {{"h_over_l", p.eta},         {"nh", p.nh},       {"h_min", p.h_min}, {"h_max", p.h_max},
                             {"mean_neighbours", p.mean_neighbours}, {"pairs", p.pairs}, {"seconds", p.seconds},
                             {"cpu_seconds", p.cpu_seconds},
                             {"statistics", statistics}};
@@ -99,7 +99,7 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
         return;
     }
     for (const auto& p : answer.points) {
-        fmt::print(out, "\neta = {:.6g} (h / mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
+        fmt::print(out, "\nh/l = {:.6g} (h over the mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
                         "average, {} pairs in {:.3f} s\n",
                    p.eta, p.nh, p.h_min, p.h_max, p.mean_neighbours, p.pairs, p.seconds);
         fmt::print(out, "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "measure", "mean", "std", "rms",

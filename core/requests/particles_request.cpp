@@ -10,7 +10,7 @@ namespace sphkern {
 ParticleSources particle_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {smoothing_sources(f), n("eta_range"), n("nh_range"), n("steps"),     n("volume"),
+    return {smoothing_sources(f), n("h_over_l_range"), n("nh_range"), n("steps"),     n("volume"),
             n("gravity"),         n("depth"),     n("rho0"),     n("threads"),   n("histogram"),
             f == FrontEnd::command_line ? ValueSource::option("--csv and --vtk") : n("arrays"),
             {n("code"), n("value")}}; // the command line names the code's parameter itself

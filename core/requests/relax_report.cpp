@@ -51,7 +51,7 @@ nlohmann::json relax_json(const Kernel& kernel, const RelaxSettings& settings, c
             {"settings", settings_json(settings, run)},
             {"spacing", run.spacing},
             {"h", run.h},
-            {"eta", judged.eta},
+            {"h_over_l", judged.eta},
             {"nh", judged.nh},
             {"steps_taken", run.history.size() - 1},
             {"stop", run.stop},
@@ -66,7 +66,7 @@ void print_relax(std::FILE* out, const Kernel& kernel, const RelaxSettings& sett
                  const RelaxedSet& judged)
 {
     const auto& set = run.state.set;
-    fmt::print(out, "{} on {}: {} particles in {}D, h = {:.6g} (eta = {:.4f}, N_H = {:.2f}), method {}", kernel.label(),
+    fmt::print(out, "{} on {}: {} particles in {}D, h = {:.6g} (h/l = {:.4f}, N_H = {:.2f}), method {}", kernel.label(),
                set.name, set.size(), set.dimension, run.h, judged.eta, judged.nh, relax_method_name(settings.method));
     if (settings.method == RelaxMethod::pressure)
         fmt::print(out, " (gamma {:.4g}, dt {:.4g} d/c, damping {:.4g} c/h)\n", settings.gamma, run.dt, settings.damping);

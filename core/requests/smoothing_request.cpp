@@ -10,7 +10,7 @@ namespace sphkern {
 
 SmoothingSources smoothing_sources(FrontEnd f)
 {
-    return {value_named(f, "eta"), value_named(f, "nh"), value_named(f, "k"), value_named(f, "support_per_h")};
+    return {value_named(f, "h_over_l"), value_named(f, "nh"), value_named(f, "k"), value_named(f, "support_per_h")};
 }
 
 SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSources& sources, SmoothingSpec fallback)

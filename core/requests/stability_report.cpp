@@ -30,11 +30,11 @@ std::string verdict_text(const nlohmann::json& d)
                            vector_text(d["mode"]["unfolded_wavevector"]));
 }
 
-// "fixed", or "adaptive (eta 1.23, Omega 1.001)": the equilibrium h is k d in both.
+// "fixed", or "adaptive (h/l 1.23, Omega 1.001)": the equilibrium h is k d in both.
 std::string h_model_text(const nlohmann::json& d)
 {
-    if (!d.contains("eta")) return d["h_model"].get<std::string>();
-    return fmt::format("adaptive (eta {:.6g}, grad-h factor {:.6g})", d["eta"].get<double>(),
+    if (!d.contains("h_over_l")) return d["h_model"].get<std::string>();
+    return fmt::format("adaptive (h/l {:.6g}, grad-h factor {:.6g})", d["h_over_l"].get<double>(),
                        d["grad_h_factor"].get<double>());
 }
 

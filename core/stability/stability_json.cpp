@@ -36,7 +36,7 @@ nlohmann::json header(const Kernel& kernel, const Lattice& lattice, const Disper
 {
     auto document = header(kernel, lattice, dispersion.k(), dispersion.gamma(), dispersion.h_model());
     if (dispersion.h_model() == HModel::adaptive) {
-        document["eta"] = dispersion.eta();
+        document["h_over_l"] = dispersion.eta();
         document["grad_h_factor"] = dispersion.grad_h_factor();
     }
     return document;

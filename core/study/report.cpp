@@ -39,7 +39,7 @@ std::string fixed(double v, int decimals = 5)
 std::string on_axis(const Study& study, double k, const StudyCase& c)
 {
     if (study.axis != Axis::eta) return "";
-    return fmt::format(" (eta {:.4f})", eta_of_k(k, c.a_p, c.dimension));
+    return fmt::format(" (h/l {:.4f})", eta_of_k(k, c.a_p, c.dimension));
 }
 
 std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& intervals, const StudyCase& c)
@@ -49,7 +49,7 @@ std::string intervals_on_axis(const Study& study, const std::vector<KInterval>& 
     for (const auto& i : intervals)
         s += fmt::format("{}[{:.4f}, {:.4f}]", s.empty() ? "" : " ", eta_of_k(i.from, c.a_p, c.dimension),
                          eta_of_k(i.to, c.a_p, c.dimension));
-    return " = eta " + s;
+    return " = h/l " + s;
 }
 
 std::string eps_name(ErrorFunction function) { return function == ErrorFunction::rho ? "eps_rho" : "eps_gradP"; }
@@ -132,7 +132,7 @@ std::string verdicts_intro(const Study& study)
     if (study.axis != Axis::k)
         s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
                          "its kernel, lattice and a_p.\n\n",
-                         axis_name(study.axis), study.axis == Axis::eta ? "eta = h / V^(1/D), V = a_p d^D the particle volume"
+                         axis_name(study.axis), study.axis == Axis::eta ? "h_over_l = h / l, l = V^(1/D), V = a_p d^D the particle volume"
                                                          : "nh = the number of neighbours inside the support");
     s += fmt::format("The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
                      "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
@@ -355,7 +355,8 @@ std::string glossary_markdown()
            "| R, H | the kernel's support in units of h, and the support radius H = R h; H/d = R k |\n"
            "| a_p | the volume coefficient: a particle's volume is V = a_p d^D (voronoi: the volume per site; ball: "
            "the inscribed ball; cube: d^D; or a number) |\n"
-           "| eta | h / V^(1/D): the resolution on a scale common to every lattice and a_p |\n"
+           "| h/l (h_over_l) | h / V^(1/D), sphkern's own: the resolution on a scale common to every lattice and a_p "
+           "(SWIFT's eta divides SWIFT's h, H / gamma, not H / R) |\n"
            "| N_H (nh) | the number of neighbours inside the support radius H, the particle itself excluded |\n"
            "| eps_rho, eps_gradP | the relative errors of the SPH density and of the hydrostatic pressure gradient "
            "along gravity for a particle at rest on a lattice site (method.md section 2) |\n"

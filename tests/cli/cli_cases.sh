@@ -145,8 +145,9 @@ expect 2 'error: --max 0, expected 0.1 to 1000$' -- spectrum cubic_bspline --dim
 expect 2 'error: --points 0, expected 1 to 100000$' -- spectrum cubic_bspline --dim 3 --points 0
 expect 3 'error: --site: site 3 does not exist; lattice triangular has sites 0 to 0$' -- \
     design cubic_bspline+desbrun_spiky triangular --param alpha --site 3
-expect 3 'error: k = 120 is not allowed, expected a number in \(0, 100\] \(--k 60 on the eta axis\)$' -- \
-    eps cubic_bspline fcc --axis eta --k 60 --ap 8
+expect 3 'error: k = 120 is not allowed, expected a number in \(0, 100\] \(--k 60 on the h_over_l axis\)$' -- \
+    eps cubic_bspline fcc --axis h_over_l --k 60 --ap 8
+expect 3 '^sphkern: error: --axis "eta" is the old name of sphkern.s own h / V\^\(1/D\); expected h_over_l \(SWIFT.s eta is a code.s setting: --code swift --eta\)$' -- eps cubic_bspline fcc --axis eta --k 1.2
 expect 2 'error: --steps 0, expected 1 to 2000$' -- stability cubic_bspline fcc --kmin 1 --kmax 1.2 --steps 0
 expect 2 'error: --grid 1, expected 2 to 400$' -- stability cubic_bspline fcc --k 1.2 --grid 1
 expect 2 'error: --grid 0, expected 2 to 400$' -- stability cubic_bspline fcc --k 1.2 --grid 0
@@ -290,7 +291,7 @@ check "a study's code setting gives the statistics of particles --code" bash -c 
   '$sphkern' --log-level warn particles cubic_bspline poisson --count 2000 --seed 3 --code gadget2 --nngb 58 --json > '$work/code_cli.json' &&
   python3 -c \"import json; s = json.load(open('$work/out_code/results.json'))['particles']; c = json.load(open('$work/code_cli.json')); assert len(s) == 1 and s[0]['code'].startswith('gadget2 nngb = 58') and s[0]['points'][0]['statistics']['eps_rho'] == c['statistics']['eps_rho']\""
 study s_code2 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "nngb": 58}, "nh": {"min": 40, "max": 60}}}'
-expect 3 's_code2.json: /particles: expected one of "nh", "eta" and "code"' -- run "$work/s_code2.json" -o "$work/out_code2"
+expect 3 's_code2.json: /particles: expected one of "nh", "h_over_l" and "code"' -- run "$work/s_code2.json" -o "$work/out_code2"
 study s_code3 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "eta": 1.2}}}'
 expect 3 's_code3.json: /particles/code: unknown key "eta"' -- run "$work/s_code3.json" -o "$work/out_code3"
 study s_code4 '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "code": {"name": "gadget2", "nngb": -1}}}'
@@ -524,22 +525,24 @@ study s_allsites '{"name": "s", "kernels": ["cubic_bspline", "morris_quintic"], 
 expect 0 'cases in' -- run "$work/s_allsites.json" -o "$work/out_allsites"
 check "a study reports every site and both verdicts" grep -q 'Each site on its own (along gravity / every direction)' "$work/out_allsites/report.md"
 
-# Resolution axes: eta = k / a_p^(1/D) (sc, a_p = 1: eta = k; fcc: a_p = 1/sqrt(2)); nh windows
+# Resolution axes: h_over_l = k / a_p^(1/D) (sc, a_p = 1: eta = k; fcc: a_p = 1/sqrt(2)); nh windows
 # from fcc's coordination shells 12, 6, 24, 12, 24, 8, 48 at 1, sqrt 2, sqrt 3, 2, sqrt 5, sqrt 6, sqrt 7.
 window() { "$sphkern" roots "$@" --json | python3 -c 'import json,sys; d=json.load(sys.stdin)[0]; print("%.12f %.12f" % tuple(d["k_range"]))'; }
-check "eta on sc is k" test "$(window cubic_bspline sc --axis eta --kmin 0.8 --kmax 1.2)" = "0.800000000000 1.200000000000"
-check "eta on fcc" test "$(window cubic_bspline fcc --axis eta --kmin 1 --kmax 1.4)" = \
+check "h_over_l on sc is k" test "$(window cubic_bspline sc --axis h_over_l --kmin 0.8 --kmax 1.2)" = "0.800000000000 1.200000000000"
+check "h_over_l on fcc" test "$(window cubic_bspline fcc --axis h_over_l --kmin 1 --kmax 1.4)" = \
     "$(python3 -c 'print("%.12f %.12f" % (2 ** (-1 / 6), 1.4 * 2 ** (-1 / 6)))')"
 check "nh on fcc: 42 to 78 neighbours" test "$(window cubic_bspline fcc --axis nh --kmin 30 --kmax 100 | cut -c1-14)" = \
     "$(python3 -c 'print("%.12f" % (3 ** 0.5 / 2))')"
-expect 3 '--axis "time" is unknown, expected k, eta or nh' -- roots cubic_bspline fcc --axis time
+expect 3 '--axis "time" is unknown, expected k, h_over_l or nh' -- roots cubic_bspline fcc --axis time
 expect 3 'no k has between 13 and 17 neighbours inside the support on fcc' -- roots cubic_bspline fcc --axis nh --kmin 13 --kmax 17
 expect 3 '--axis nh names a window, not one value' -- eps cubic_bspline fcc --k 30 --axis nh
 study s_axis '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "k": {"axis": "tau"}, "plots": false}'
-expect 3 's_axis.json: /k/axis: axis "tau" is unknown, expected k, eta or nh' -- run "$work/s_axis.json" -o "$work/out_axis"
-study s_eta '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc", "sc"], "k": {"axis": "eta", "min": 0.9, "max": 1.5, "samples": 51}, "plots": false}'
+expect 3 's_axis.json: /k/axis: axis "tau" is unknown, expected k, h_over_l or nh' -- run "$work/s_axis.json" -o "$work/out_axis"
+study s_eta '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc", "sc"], "k": {"axis": "h_over_l", "min": 0.9, "max": 1.5, "samples": 51}, "plots": false}'
 expect 0 'cases in' -- run "$work/s_eta.json" -o "$work/out_eta"
-check "a study on the eta axis says so" grep -q 'for some eta in \[0.9, 1.5\]' "$work/out_eta/report.md"
+check "a study on the h_over_l axis says so" grep -q 'for some h_over_l in \[0.9, 1.5\]' "$work/out_eta/report.md"
+study s_oldeta '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "k": {"axis": "eta"}, "plots": false}'
+expect 3 's_oldeta.json: /k/axis: axis "eta" is the old name of sphkern.s own' -- run "$work/s_oldeta.json" -o "$work/out_oldeta"
 expect 0 '^$' -- lattices "$honeycomb"
 "$sphkern" lattices "$honeycomb" --json >"$work/honeycomb.json.out"
 check "a user lattice described: two sites with three nearest neighbours each" python3 -c "
@@ -637,8 +640,8 @@ expect 2 '--h-model "grad-h" is not a smoothing-length model, expected fixed or 
 expect 2 '--h-model "Adaptive" is not a smoothing-length model' -- roots cubic_bspline fcc --stability --h-model Adaptive
 study s_hmodel '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"], "stability": {"h_model": "variable"}}'
 expect 3 's_hmodel.json: /stability/h_model: expected "fixed" or "adaptive"' -- run "$work/s_hmodel.json" -o "$work/out_hmodel"
-check "stability --h-model adaptive gives eta and the grad-h factor in the JSON" \
-    test "$("$sphkern" stability cubic_bspline fcc --k 1.2 --h-model adaptive --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print(d["h_model"], d["eta"] > 0, d["grad_h_factor"] > 0)')" = "adaptive True True"
+check "stability --h-model adaptive gives h_over_l and the grad-h factor in the JSON" \
+    test "$("$sphkern" stability cubic_bspline fcc --k 1.2 --h-model adaptive --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print(d["h_model"], d["h_over_l"] > 0, d["grad_h_factor"] > 0)')" = "adaptive True True"
 check "stability --k gives every sampled k of --kmin/--kmax the same verdict and minimum" python3 -c "
 import json, subprocess
 run = lambda *a: json.loads(subprocess.run(['$sphkern', *a, '--json'], capture_output=True, check=True, text=True).stdout)
@@ -871,12 +874,14 @@ expect 3 's_pdim.json: /particles/sources/0/poisson: 4: expected 2 or 3$' -- run
 expect 3 'more than the memory limit of [0-9]+ particles \(--memory-limit\)' -- particles cubic_bspline poisson --count 100000000 --memory-limit 1
 expect 2 '--memory-limit -1: expected GiB' -- particles cubic_bspline poisson --count 100 --memory-limit -1
 expect 3 '--k needs a lattice' -- particles cubic_bspline poisson --count 1000 --k 1.2
-expect 2 '--eta 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --eta 0
+expect 2 '--h-over-l 0: expected a number in \(0, 100\]' -- particles cubic_bspline fcc --size 8,8,8 --h-over-l 0
+expect 2 "^sphkern: error: --eta is SWIFT's eta, a code's setting \\(--code swift --eta\\); sphkern's own h over the mean spacing is --h-over-l$" -- particles cubic_bspline fcc --size 8,8,8 --eta 1.2
+expect 2 '^sphkern: error: --eta-range is the old name of --h-over-l-range' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2
 expect 2 '--nh 0.5: expected a number in \[1, 100000\]' -- particles cubic_bspline fcc --size 8,8,8 --nh 0.5
-expect 2 'give one of --eta, --nh, --k' -- particles cubic_bspline fcc --size 8,8,8 --eta 1.2 --nh 50
+expect 2 'give one of --h-over-l, --nh, --k' -- particles cubic_bspline fcc --size 8,8,8 --h-over-l 1.2 --nh 50
 expect 2 '--volume: "cells" is unknown, expected uniform, file or voronoi' -- particles cubic_bspline fcc --size 8,8,8 --volume cells
-expect 2 '--eta-range: \[2, 1\]: expected min < max' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 2 1
-expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --eta-range 1 2 --csv "$work/p.csv"
+expect 2 '--h-over-l-range: \[2, 1\]: expected min < max' -- particles cubic_bspline fcc --size 8,8,8 --h-over-l-range 2 1
+expect 2 'they do not go with a sweep' -- particles cubic_bspline fcc --size 8,8,8 --h-over-l-range 1 2 --csv "$work/p.csv"
 expect 2 '--csv: an empty value' -- particles cubic_bspline fcc --size 8,8,8 --csv ''
 expect 2 '--gravity: expected a direction' -- particles cubic_bspline fcc --size 8,8,8 --gravity 0,0,0
 expect 2 '--depth -1: expected a number' -- particles cubic_bspline fcc --size 8,8,8 --depth -1
@@ -885,10 +890,10 @@ expect 3 'free.csv: uniform volumes need a periodic box' -- particles cubic_bspl
 expect 3 'free.csv: Voronoi volumes need a periodic box' -- particles cubic_bspline "$work/free.csv" --volume voronoi
 expect 3 'free.csv: the file.s volumes \(m / rho\) need masses and densities' -- particles cubic_bspline "$work/free.csv" --volume file
 printf 'x,y,m,rho\n0.1,0.2,1,1\n0.5,0.7,1,1\n0.9,0.1,1,1\n' >"$work/lonely.csv"
-expect 3 'lonely.csv: particle 0 has no neighbour inside its support' -- particles cubic_bspline "$work/lonely.csv" --eta 0.1
+expect 3 'lonely.csv: particle 0 has no neighbour inside its support' -- particles cubic_bspline "$work/lonely.csv" --h-over-l 0.1
 printf 'x,y,h\n0.1,0.2,0.1\n0.5,0.7,0.1\n' >"$work/withh.csv"
 expect 3 'the file.s smoothing lengths need a convention: --support-per-h X' -- particles cubic_bspline "$work/withh.csv" --box 1,1
-expect 2 '--support-per-h: maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --eta 1
+expect 2 '--support-per-h: maps a file.s h' -- particles cubic_bspline "$work/free.csv" --support-per-h 2 --h-over-l 1
 expect 5 'is a file this run reads' -- particles cubic_bspline "$work/withh.csv" --box 1,1 --support-per-h 2 --csv "$work/withh.csv"
 check "particles: the input survives an output aimed at it" grep -q '0.5,0.7,0.1' "$work/withh.csv"
 expect 5 'names the same file' -- particles cubic_bspline fcc --size 8,8,8 --csv "$work/same" --vtk "$work/same"
@@ -913,7 +918,8 @@ expect 2 '--alpha 0: expected a number in \(0, 10\]' -- relax wendland_c2 poisso
 expect 2 '--max-move 1: expected a number in \(0, 0.5\]' -- relax wendland_c2 poisson --count 500 --method shift --max-move 1
 expect 2 '--gamma 0: expected a number in \(0, 1000\]' -- relax wendland_c2 poisson --count 500 --gamma 0
 expect 2 '--method: "jiggle" is unknown, expected pressure or shift' -- relax wendland_c2 poisson --count 500 --method jiggle
-expect 2 'give one of --eta, --nh and --k' -- relax wendland_c2 poisson --count 500 --eta 1.2 --nh 50
+expect 2 'give one of --h-over-l, --nh and --k' -- relax wendland_c2 poisson --count 500 --h-over-l 1.2 --nh 50
+expect 2 "^sphkern: error: --eta is SWIFT's eta" -- relax wendland_c2 poisson --count 500 --eta 1.2
 expect 3 'free.csv: relaxation needs a periodic box' -- relax wendland_c2 "$work/free.csv"
 expect 3 'less than twice the support radius' -- relax wendland_c2 sc --size 4,4,4 --k 1.5
 expect 2 'expected a name ending in .h5, .hdf5 or .csv' -- relax wendland_c2 poisson --count 500 --output "$work/glass.txt"
@@ -929,7 +935,7 @@ expect 2 '^sphkern: error: --cell is the cell of a lattice block; poisson is not
 # relax --code: the code the written set is for, and with its parameter the run's h.
 expect 2 '^sphkern: error: --hfact is a code.s setting; expected --code too$' -- relax wendland_c2 poisson --count 500 --hfact 1.2
 expect 2 '^sphkern: error: --nngb: swift sets its resolution with --eta$' -- relax wendland_c2 poisson --count 500 --code swift --nngb 50
-expect 2 '^sphkern: error: --code swift sets h with --eta; expected no --nh or --k beside it$' -- relax wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 50
+expect 2 '^sphkern: error: --code swift sets h with --eta; expected no --h-over-l, --nh or --k beside it$' -- relax wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 50
 expect 2 '^sphkern: error: --code: swift: names the code the written set is for, or with --eta sets h; expected an output or --eta$' -- relax wendland_c2 poisson --count 500 --code swift
 expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- relax wendland_c2 poisson --count 500 --code swift --eta -1
 expect 2 '^sphkern: error: --code: "gadget" is unknown' -- relax cubic_bspline poisson --count 500 --code gadget --output "$work/c1.hdf5"
@@ -969,7 +975,7 @@ expect 2 'give --k, or --kmin and --kmax' -- pairing wendland_c2 fcc --code swif
 expect 2 '^sphkern: error: --hfact: swift sets its resolution with --eta$' -- particles wendland_c2 poisson --count 500 --code swift --hfact 1.2
 expect 2 "^sphkern: error: --hfact is a code's setting; expected --code too$" -- particles wendland_c2 poisson --count 500 --hfact 1.2
 expect 3 "^sphkern: error: poisson: the set stores no h; with --code swift, expected --eta too \\(the code's parameter\\)$" -- particles wendland_c2 poisson --count 500 --code swift
-expect 2 '^sphkern: error: --code: gives h for one setting; expected no --eta, --nh, --k or sweep beside it$' -- particles wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 40
+expect 2 '^sphkern: error: --code: gives h for one setting; expected no --h-over-l, --nh, --k or sweep beside it$' -- particles wendland_c2 poisson --count 500 --code swift --eta 1.2 --nh 40
 expect 3 'desbrun_spiky: phantom does not ship it; its kernels are' -- particles desbrun_spiky poisson --count 500 --code phantom --hfact 1.2
 expect 2 '^sphkern: error: --eta -1: expected a number in \(0, 100\]$' -- pairing wendland_c2 fcc --code swift --eta -1
 expect 2 'a range needs both --kmin and --kmax' -- pairing cubic_bspline fcc --kmin 1
@@ -984,12 +990,12 @@ relax_study s_rk '{"kernel": "quintic"}'
 expect 3 's_rk.json: /particles/sources/0/relax: kernel: "quintic" is not one of the study.s kernels' -- run "$work/s_rk.json" -o "$work/out_rk"
 relax_study s_rm '{"kernel": "wendland_c2", "method": "jiggle"}'
 expect 3 's_rm.json: /particles/sources/0/relax/method: "jiggle" is unknown, expected pressure or shift' -- run "$work/s_rm.json" -o "$work/out_rm"
-relax_study s_rh '{"kernel": "wendland_c2", "nh": 100, "eta": 1.2}'
-expect 3 's_rh.json: /particles/sources/0/relax: expected one of "nh" and "eta"' -- run "$work/s_rh.json" -o "$work/out_rh"
+relax_study s_rh '{"kernel": "wendland_c2", "nh": 100, "h_over_l": 1.2}'
+expect 3 's_rh.json: /particles/sources/0/relax: expected one of "nh" and "h_over_l"' -- run "$work/s_rh.json" -o "$work/out_rh"
 relax_study s_rs '{"kernel": "wendland_c2", "steps": 0}'
 expect 3 's_rs.json: /particles/sources/0/relax/steps = 0, expected 1 to 10000000' -- run "$work/s_rs.json" -o "$work/out_rs"
-relax_study s_re '{"kernel": "wendland_c2", "eta": 0}'
-expect 3 's_re.json: /particles/sources/0/relax/eta = 0: expected a number in \(0, 100\]' -- run "$work/s_re.json" -o "$work/out_re"
+relax_study s_re '{"kernel": "wendland_c2", "h_over_l": 0}'
+expect 3 's_re.json: /particles/sources/0/relax/h_over_l = 0: expected a number in \(0, 100\]' -- run "$work/s_re.json" -o "$work/out_re"
 study s_sweep_order '{"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": false, "particles": {"sources": [{"poisson": 3, "count": 500}], "nh": {"min": 60, "max": 30}}}'
 expect 3 's_sweep_order.json: /particles/nh: \[60, 30\]: expected min < max' -- run "$work/s_sweep_order.json" -o "$work/out_so"
 relax_study s_ru '{"kernel": "wendland_c2", "colour": 1}'
@@ -1128,7 +1134,7 @@ expect 2 '--particle-radius: .*arrays.h5 is not a VTK file' -- particles cubic_b
 expect 2 '--particle-radius gives the h of a SPlisHSPlasH file; poisson is not a file' -- particles cubic_bspline poisson --count 100 --particle-radius 0.05
 expect 2 '--particle-radius -1: expected a positive finite length' -- particles cubic_bspline "$work/splish.vtk" --particle-radius -1 --box 1,1,1
 # The radius gives the file's h: a rule for h would leave it unused.
-expect 2 '--particle-radius excludes --eta ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --eta 1.2 --box 1,1,1
+expect 2 '--particle-radius excludes --h-over-l ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --h-over-l 1.2 --box 1,1,1
 expect 2 '--particle-radius excludes --nh-range ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --nh-range 30 40 --box 1,1,1
 expect 2 '--particle-radius excludes --k ' -- relax cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --k 1.2 --box 1,1,1 --steps 1
 
@@ -1317,7 +1323,7 @@ expect 3 '^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels ar
 expect 2 '^sphkern: error: --k -1' -- eps cubic_bspline fcc --k -1
 expect 2 '^sphkern: error: --kmin' -- roots cubic_bspline fcc --kmin 2 --kmax 1
 expect 2 '^sphkern: error: --steps 0' -- stability cubic_bspline fcc --kmin 1 --kmax 2 --steps 0
-expect 2 '^sphkern: error: --eta 0' -- particles cubic_bspline poisson --count 1000 --eta 0
+expect 2 '^sphkern: error: --h-over-l 0' -- particles cubic_bspline poisson --count 1000 --h-over-l 0
 expect 2 '^sphkern: error: --rho0 -1' -- particles cubic_bspline poisson --count 1000 --rho0 -1
 expect 2 '^sphkern: error: --histogram 100001' -- particles cubic_bspline poisson --count 1000 --histogram 100001
 expect 2 '^sphkern: error: --dt 0.6' -- relax wendland_c2 poisson --count 500 --dt 0.6
@@ -1327,8 +1333,10 @@ expect 2 '^sphkern: error: --rdf-max 0: expected a finite number above 0.5' -- r
 expect 2 '^sphkern: error: --rdf-max nan: expected a finite number above 0.5' -- relax wendland_c2 poisson --count 500 --steps 1 --rdf-max nan
 expect 2 '^sphkern: error: --noise 0' -- pairing cubic_bspline fcc --k 1.2 --noise 0
 # A study's value out of range stays an input error (exit 3), named by its JSON path.
-relax_study s_reta '{"kernel": "wendland_c2", "eta": 0}'
+relax_study s_reta '{"kernel": "wendland_c2", "h_over_l": 0}'
 expect 3 's_reta.json: /particles/sources/0/relax.*expected' -- run "$work/s_reta.json" -o "$work/out_reta"
+relax_study s_reold '{"kernel": "wendland_c2", "eta": 1.2}'
+expect 3 's_reold.json: /particles/sources/0/relax/eta: "eta" is the old name of sphkern.s own h over the mean spacing; expected "h_over_l"' -- run "$work/s_reold.json" -o "$work/out_reold"
 
 # No result is a non-finite number: eps_rho against a reference density 10^300 below the
 # masses' overflows its statistics, and is refused naming the quantity (it printed inf).

@@ -134,7 +134,7 @@ cases = {(c["source"], c["kernel"]): c for c in r["particles"]}
 assert len(cases) == 6, list(cases)
 for kernel in ("cubic_bspline", "wendland_c2"):
     for p in cases[("fcc, 10x10x10 cells, sigma = 0 d", kernel)]["points"]:
-        k = p["eta"] * (2 ** -0.5) ** (1 / 3)
+        k = p["h_over_l"] * (2 ** -0.5) ** (1 / 3)
         e = json.loads(subprocess.run([sys.argv[2], "eps", kernel, "fcc", "--k", repr(k), "--json"],
                                       check=True, capture_output=True, text=True).stdout)
         s = p["statistics"]["e0"]

@@ -55,7 +55,7 @@ bad = [
     dict(good, particles={"sources": [{"poisson": 3, "count": 100, "lattice": "fcc"}]}),
     dict(good, particles={"sources": [{"poisson": 4, "count": 100}]}),
     dict(good, particles={"sources": [{"file": "x.csv"}], "nh": {"min": 0, "max": 10}}),
-    dict(good, particles={"sources": [{"file": "x.csv"}], "nh": {"min": 1, "max": 10}, "eta": {"min": 1, "max": 2}}),
+    dict(good, particles={"sources": [{"file": "x.csv"}], "nh": {"min": 1, "max": 10}, "h_over_l": {"min": 1, "max": 2}}),
     dict(good, particles={"sources": [{"file": "x.csv"}], "volume": "cells"}),
 ]
 verdict(study_validator.is_valid(good), "the schema rejects a minimal good study")

@@ -85,8 +85,8 @@ def test_documents_equal_the_command_lines():
     close(sphkern.roots("cubic_bspline", "triangular"), cli_json("roots", "cubic_bspline", "triangular")[0])
     close(sphkern.roots("morris_quintic", "fcc", kmin=0.8, kmax=1.3),
           cli_json("roots", "morris_quintic", "fcc", "--kmin", "0.8", "--kmax", "1.3")[0])
-    close(sphkern.roots("wendland_c4", "hcp", axis="eta", kmin=1.0, kmax=1.6, lateral=True),
-          cli_json("roots", "wendland_c4", "hcp", "--axis", "eta", "--kmin", "1.0", "--kmax", "1.6", "--lateral")[0])
+    close(sphkern.roots("wendland_c4", "hcp", axis="h_over_l", kmin=1.0, kmax=1.6, lateral=True),
+          cli_json("roots", "wendland_c4", "hcp", "--axis", "h_over_l", "--kmin", "1.0", "--kmax", "1.6", "--lateral")[0])
     close(sphkern.shells("bcc", 3, site=1), cli_json("shells", "bcc", "--radius", "3", "--site", "1"))
     close(sphkern.surface("cubic_bspline", "fcc", 1.2, form="monaghan", layers=6),
           cli_json("surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "monaghan", "--layers", "6"))
@@ -171,7 +171,7 @@ def test_roots_returns_one_dict_whatever_the_options():
     assert {"roots", "jumps", "acceptance", "acceptance_every_direction", "sites", "all_sites",
             "best_k_at_window_edge", "window"} <= plain.keys()
     close(plain["roots"], cli_json("roots", "cubic_bspline", "fcc")[0]["roots"])
-    for options, added in [({"lateral": True}, set()), ({"axis": "eta", "kmin": 1.0, "kmax": 1.6}, set()),
+    for options, added in [({"lateral": True}, set()), ({"axis": "h_over_l", "kmin": 1.0, "kmax": 1.6}, set()),
                            ({"stability": True, "steps": 10}, {"stability"}), ({"convention": "swift"}, {"convention"}),
                            ({"stability": True, "steps": 10, "convention": "gadget"}, {"stability", "convention"})]:
         document = sphkern.roots("cubic_bspline", "fcc", **options)

@@ -199,9 +199,9 @@ def test_pysph_arrays_and_conventions_are_asked_for(tmp_path):
     write_swift(tmp_path / "nogamma.hdf5", x, h, m, rho, gamma=False)
     assert "SWIFT its kernel gamma" in refused(str(tmp_path / "nogamma.hdf5"))
     assert "no particle array \"gas\"; the file has fluid, solid" in refused(
-        str(tmp_path / "pysph.h5"), "--array", "gas", "--eta", "1.2", "--box", "1,1,1")
+        str(tmp_path / "pysph.h5"), "--array", "gas", "--h-over-l", "1.2", "--box", "1,1,1")
     # Without --array, PySPH's "fluid" is the default.
-    doc = run(str(tmp_path / "pysph.h5"), "--eta", "1.2", "--box", "1,1,1")
+    doc = run(str(tmp_path / "pysph.h5"), "--h-over-l", "1.2", "--box", "1,1,1")
     assert doc["source"]["particles"] == N
 
 
@@ -633,7 +633,7 @@ def test_dualsphysics_csv_as_its_writer_writes_it(tmp_path):
     # JOutputCsv::SaveCsv: free-text head lines, then each array's name and unit, every field
     # (and every value) followed by the separator; Rho and Mass as DualSPHysics 5.2 names them.
     x, h, m, rho = particles()
-    args = ["--eta", "1.2", "--box", f"{L},{L},{L}"]
+    args = ["--h-over-l", "1.2", "--box", f"{L},{L},{L}"]
     with open(tmp_path / "plain.csv", "w") as f:
         f.write("x,y,z,m,rho\n")
         for p, mm, r in zip(x, m, rho):
@@ -678,11 +678,11 @@ def test_a_splishsplash_vtk_file_has_the_support_of_4_particle_radii(tmp_path):
     box = ["--box", f"{L},{L},{L}"]
     doc = run(str(tmp_path / "ParticleData_Fluid_42.vtk"), "--particle-radius", str(radius), *box)
     close(doc, run(str(tmp_path / "same.csv"), "--support-per-h", "1", *box), 1e-13)
-    # The file holds no radius: without one (or --eta, --nh) it is asked for.
+    # The file holds no radius: without one (or --h-over-l, --nh) it is asked for.
     line = refused(str(tmp_path / "ParticleData_Fluid_42.vtk"), *box)
     assert "ParticleData_Fluid_42.vtk: the file holds no h and no particle radius (its support is 4 radii); " \
            "give --particle-radius R" in line, line
-    assert run(str(tmp_path / "ParticleData_Fluid_42.vtk"), "--eta", "1.2", *box)["source"]["particles"] == N
+    assert run(str(tmp_path / "ParticleData_Fluid_42.vtk"), "--h-over-l", "1.2", *box)["source"]["particles"] == N
     # Another title: not SPlisHSPlasH's, and no radius gives its h.
     write_splishsplash_vtk(tmp_path / "other.vtk", x, rho, title="particles")
     done = subprocess.run([CLI, "particles", "wendland_c2", str(tmp_path / "other.vtk"), "--particle-radius", "0.045",

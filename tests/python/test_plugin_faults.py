@@ -57,11 +57,11 @@ def test_a_crash_on_the_engines_threads_raises_once_and_the_next_call_works():
 import numpy as np
 x = np.random.default_rng(1).uniform(0, 1, (20000, 3))
 try:
-    sphkern.particles({path!r}, x, box=[1, 1, 1], eta=1.3, threads=4)
+    sphkern.particles({path!r}, x, box=[1, 1, 1], h_over_l=1.3, threads=4)
     raise SystemExit("not raised")
 except RuntimeError as e:
     assert "plugin kernel crash_in_band crashed with signal 11 (SIGSEGV)" in str(e), str(e)
-r = sphkern.particles("cubic_bspline", x, box=[1, 1, 1], eta=1.3, threads=4)
+r = sphkern.particles("cubic_bspline", x, box=[1, 1, 1], h_over_l=1.3, threads=4)
 assert r["e0"].shape == (20000,)
 """)
     assert status == 0 and lines == [], (status, lines)

@@ -63,7 +63,7 @@ TEST_CASE("eps request: each bad value is refused naming its option or argument"
     auto window = eps_at({30});
     window.axis = Axis::nh;
     auto nh = refusal([&] { check_eps_request(window, eps_options()); });
-    CHECK(nh.first == "--axis nh names a window, not one value: give --k on the k or eta axis");
+    CHECK(nh.first == "--axis nh names a window, not one value: give --k on the k or h_over_l axis");
     CHECK(nh.second == ExitCode::input);
     auto shells = eps_at({1});
     shells.evaluation.shell_radii = {1, -1};
@@ -100,7 +100,7 @@ TEST_CASE("eps request: the values that need the lattice are refused naming thei
     eta.axis = Axis::eta;
     eta.evaluation.a_p = 8.0; // k = eta a_p^(1/3) = 120
     auto far = refusal([&] { run_eps_at_k(eta, eps_options(), kernel, lattice); });
-    CHECK(far.first == "k = 120 is not allowed, expected a number in (0, 100] (--k 60 on the eta axis)");
+    CHECK(far.first == "k = 120 is not allowed, expected a number in (0, 100] (--k 60 on the h_over_l axis)");
     CHECK(far.second == ExitCode::input);
 }
 

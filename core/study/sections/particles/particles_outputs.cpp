@@ -47,7 +47,7 @@ std::string ParticlesResults::markdown(const Study&) const
         "sum form one h below the surface, as RMS over the set, against the neighbour number "
         "N_H = c_D (R h)^D / V (Dehnen & Aly 2012).\n\n";
     for (const auto& [source, group] : by_source(cases)) {
-        s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n{}| kernel | N_H | eta | neighbours | mean e0 | RMS e0 | "
+        s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n{}| kernel | N_H | h/l | neighbours | mean e0 | RMS e0 | "
                          "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|---|\n",
                          source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume),
                          group.front()->code.empty() ? "" : "At " + group.front()->code + ".\n\n");
@@ -111,7 +111,7 @@ nlohmann::json ParticlesResults::json(const Study&) const
             for (const auto& [key, s] : p.statistics)
                 statistics[key] = {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min},
                                    {"max", s.max},   {"p1", s.p1},   {"p50", s.p50}, {"p99", s.p99}};
-            points.push_back({{"nh", p.nh}, {"eta", p.eta}, {"mean_neighbours", p.mean_neighbours},
+            points.push_back({{"nh", p.nh}, {"h_over_l", p.eta}, {"mean_neighbours", p.mean_neighbours},
                               {"poisson_rms_e0", c.poisson_rms_e0[j]}, {"statistics", statistics}});
         }
         list.push_back({{"source", c.source}, {"kernel", c.kernel_label}, {"dimension", c.dimension},

@@ -22,20 +22,29 @@ std::uint64_t seed_of(const JsonNode& node)
     return seed ? static_cast<std::uint64_t>(seed->integer_in(0, 1LL << 53)) : 1;
 }
 
+// "eta" was sphkern's own h / l; it is refused naming its new key (SWIFT's eta is a code's setting).
+void refuse_old_eta(const JsonNode& node)
+{
+    if (auto eta = node.find("eta"))
+        eta->error("\"eta\" is the old name of sphkern's own h over the mean spacing; expected \"h_over_l\" (SWIFT's eta "
+                   "is a code's setting: \"code\": {\"name\": \"swift\", \"eta\": ...})");
+}
+
 // Read as numbers and strings, checked by the relax request's own checks, named by pointer.
 StudyRelax read_relax(const JsonNode& node)
 {
-    node.expect_keys({"kernel", "nh", "eta", "steps", "method"});
+    refuse_old_eta(node);
+    node.expect_keys({"kernel", "nh", "h_over_l", "steps", "method"});
     StudyRelax r;
     r.json_path = node.path();
     r.kernel = node.at("kernel").string();
-    if (node.find("nh") && node.find("eta")) node.error("expected one of \"nh\" and \"eta\"");
+    if (node.find("nh") && node.find("h_over_l")) node.error("expected one of \"nh\" and \"h_over_l\"");
     auto source = [&](const char* key) { return ValueSource::json(node.file(), node.path() + "/" + key); };
     RelaxSources sources = relax_sources(FrontEnd::python);
-    sources.smoothing = {source("eta"), source("nh"), source("k"), source("support_per_h")};
+    sources.smoothing = {source("h_over_l"), source("nh"), source("k"), source("support_per_h")};
     sources.steps = source("steps");
     auto number = [&](const char* key) { const auto n = node.find(key); return n ? std::optional(n->number()) : std::nullopt; };
-    r.smoothing = smoothing_spec({number("eta"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
+    r.smoothing = smoothing_spec({number("h_over_l"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
     if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(INT_MIN, INT_MAX));
     if (auto method = node.find("method")) r.settings.method = relax_method_of(method->string(), source("method"));
     check_relax_settings(r.settings, sources);
@@ -113,7 +122,7 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
     if (auto relax = node.find("relax")) {
         s.relax = read_relax(*relax);
         s.label += fmt::format(", relaxed ({}, {} = {:g}, {} steps)", s.relax->kernel,
-                               s.relax->smoothing.rule == SmoothingRule::nh ? "N_H" : "eta", s.relax->smoothing.value,
+                               s.relax->smoothing.rule == SmoothingRule::nh ? "N_H" : "h/l", s.relax->smoothing.value,
                                s.relax->settings.steps);
     }
     return s;
@@ -139,16 +148,17 @@ StudyCode read_code(const JsonNode& node)
 
 StudyParticles read_study_particles(const JsonNode& node, const std::filesystem::path& study_file)
 {
-    node.expect_keys({"sources", "nh", "eta", "code", "volume"});
+    refuse_old_eta(node);
+    node.expect_keys({"sources", "nh", "h_over_l", "code", "volume"});
     StudyParticles particles;
     particles.json_path = node.path();
     const auto sources = node.at("sources");
     const std::size_t n = sources.expect_array(1, 100);
     for (std::size_t i = 0; i < n; ++i) particles.sources.push_back(read_source(sources[i], study_file));
-    if (!!node.find("nh") + !!node.find("eta") + !!node.find("code") > 1)
-        node.error("expected one of \"nh\", \"eta\" and \"code\"");
+    if (!!node.find("nh") + !!node.find("h_over_l") + !!node.find("code") > 1)
+        node.error("expected one of \"nh\", \"h_over_l\" and \"code\"");
     if (auto code = node.find("code")) particles.code = read_code(*code);
-    if (auto range = node.find("nh") ? node.find("nh") : node.find("eta")) {
+    if (auto range = node.find("nh") ? node.find("nh") : node.find("h_over_l")) {
         range->expect_keys({"min", "max", "steps"});
         const auto steps = range->find("steps");
         particles.sweep = checked_sweep(node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta, range->at("min").number(),

@@ -57,8 +57,8 @@ ParticleRequest particle_request_of(const StudyParticles& p, const Study& study,
     ParticleArguments given = arguments_of(p);
     ParticleSources sources = particle_sources(FrontEnd::python);
     auto at = [&](const std::string& key) { return study_source(study, p.json_path + key); };
-    sources.nh_range = at("/nh"), sources.eta_range = at("/eta"), sources.volume = at("/volume");
-    sources.steps = at(p.sweep.rule == SmoothingRule::nh ? "/nh/steps" : "/eta/steps");
+    sources.nh_range = at("/nh"), sources.eta_range = at("/h_over_l"), sources.volume = at("/volume");
+    sources.steps = at(p.sweep.rule == SmoothingRule::nh ? "/nh/steps" : "/h_over_l/steps");
     if (p.code)
         sources.code = {at("/code/name"), at("/code/" + code_profile(p.code->name, sources.code.code).parameter)};
     return particle_request(given, kernel, set, sources);
