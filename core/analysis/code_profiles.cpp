@@ -1,6 +1,6 @@
 #include "analysis/code_profiles.hpp"
 
-#include "analysis/code_conventions.hpp"
+#include "analysis/swift_gamma.hpp"
 #include "support/error.hpp"
 
 #include <boost/math/tools/toms748_solve.hpp>
@@ -37,6 +37,17 @@ const std::vector<CodeProfile>& code_profiles()
          "(its kernels: cubic spline, Wendland quintic C2, poly6, spiky)",
          false, true}};
     return all;
+}
+
+const std::vector<const CodeProfile*>& study_codes()
+{
+    static const std::vector<const CodeProfile*> codes = [] {
+        std::vector<const CodeProfile*> out;
+        for (const auto& p : code_profiles())
+            if (!p.sets_volume) out.push_back(&p);
+        return out;
+    }();
+    return codes;
 }
 
 const CodeProfile& code_profile(const std::string& name, const ValueSource& source)

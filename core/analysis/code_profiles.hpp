@@ -32,6 +32,10 @@ struct CodeProfile {
 };
 const std::vector<CodeProfile>& code_profiles();
 
+// The profiles whose setting leaves the particle volume as it is (all but SPlisHSPlasH): the
+// codes a recommended k is also given in.
+const std::vector<const CodeProfile*>& study_codes();
+
 // The profile of `name`; an unknown name is refused naming the source and listing the codes.
 const CodeProfile& code_profile(const std::string& name, const ValueSource& source);
 // Whether the code ships the kernel; require_code_kernel refuses (exit 3) one it does not,

@@ -1,6 +1,8 @@
 // `sphkern roots`: the k where eps_rho or eps_gradP vanish, the jumps, condition (22).
 #include "cli/command.hpp"
+#include "analysis/code_profiles.hpp"
 #include "requests/roots_request.hpp"
+#include "support/error.hpp"
 
 #include "stability/stability_scan.hpp"
 
@@ -24,7 +26,7 @@ struct RootsOptions : CommonOptions {
     std::string h_model = "fixed";
 };
 
-// The adapter: the option texts as types (an unknown axis, h model or convention is refused here).
+// The adapter: the option texts as types (an unknown axis, h model or code is refused here).
 RootsRequest request_from(const RootsOptions& o)
 {
     RootsRequest r;
@@ -35,8 +37,10 @@ RootsRequest request_from(const RootsOptions& o)
     r.lateral = o.lateral;
     r.stability = o.stability;
     r.model = {o.gamma, o.horizon, o.steps, parse_h_model(o.h_model, "--h-model")};
-    if (!o.convention.empty()) r.convention = &code_convention(o.convention, "--convention");
-    if (!o.code.empty()) r.code = &code_profile(o.code, ValueSource::option("--code"));
+    // --convention is the old name of --code: the same answer, with the code's own density.
+    if (!o.convention.empty() && !o.code.empty()) throw Error(ExitCode::usage, "give one of --code and --convention (its old name)");
+    const std::string& code = o.code.empty() ? o.convention : o.code;
+    if (!code.empty()) r.code = &code_profile(code, ValueSource::option(o.code.empty() ? "--convention" : "--code"));
     r.evaluation = evaluation_inputs(o.evaluation);
     return r;
 }
@@ -87,14 +91,12 @@ Action add_roots_command(Command app)
                                                         "stability) and where condition (22) holds there");
     command.add_option("--gamma", options->gamma, "With --stability: adiabatic index").capture_default_str();
     command.add_option("--steps", options->steps, "With --stability: k intervals of the scan").capture_default_str();
-    command.add_option("--convention", options->convention, "Also give k in a code's convention: pysph (hdx), "
-                                                             "dualsphysics (coefh), swift (eta), gadget (N_ngb), "
-                                                             "splishsplash (H/r_p)");
+    command.add_option("--convention", options->convention, "The old name of --code, kept as its alias");
     command.add_option("--code", options->code, "Also give every k as an SPH code's own setting, with its own SPH "
                                                  "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
     command.add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
                                                        "count as stable (weak)").capture_default_str();
-    command.add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = eta (m/rho)^(1/D), "
+    command.add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = (h/l) (m/rho)^(1/D), "
                                                        "grad-h terms); k is the equilibrium h = k d in both")
         .capture_default_str();
     add_evaluation_options(command, options->evaluation);

@@ -294,7 +294,7 @@ SWIFT's eta, at the k of `sphkern.code_k`:
 inline constexpr const char* roots = R"doc(The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k.
 
 Always the whole document of `sphkern roots --json` (one dict, whatever the options);
-`stability` and `convention` add a key each.
+`stability` and `code` add a key each.
 
 Parameters
 ----------
@@ -331,8 +331,7 @@ horizon : float, default 100
 h_model : str, default "fixed"
     With stability: "fixed" or "adaptive" (h = (h/l) (m / rho)^(1/D) with the grad-h terms).
 convention : str, optional
-    Add "convention": the answer in a code's convention ("pysph", "dualsphysics",
-    "swift", "gadget" or "splishsplash"), as `roots --convention`.
+    The old name of code, kept as its alias (the same answer).
 code : str, optional
     Add "code": every k of the answer as a code's own setting, with its own SPH density
     ("swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics"), as
@@ -347,7 +346,7 @@ dict
     best_max_error, epsilon), sites and all_sites (the same per site and over all sites),
     best_k_at_window_edge (and best_k_note when it is), window, k_range, h_over_l_range, axis,
     a_p, site, lateral_in_verdict, kernel and lattice; "stability" with stability=True,
-    "convention" with a convention and "code" with a code.
+    "code" with a code (or convention).
 
 Examples
 --------

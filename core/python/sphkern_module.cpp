@@ -198,8 +198,9 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.lateral = lateral;
     r.stability = stability;
     r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model")};
-    if (convention) r.convention = &code_convention(*convention, "convention");
-    if (code) r.code = &code_profile(*code, ValueSource::argument("code"));
+    // convention is the old name of code: the same answer, with the code's own density.
+    if (convention && code) throw Error(ExitCode::input, "give one of code and convention (its old name)");
+    if (code || convention) r.code = &code_profile(code ? *code : *convention, ValueSource::argument(code ? "code" : "convention"));
     return r;
 }
 

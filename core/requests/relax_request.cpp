@@ -1,6 +1,6 @@
 #include "requests/relax_request.hpp"
 
-#include "analysis/code_conventions.hpp"
+#include "analysis/swift_gamma.hpp"
 #include "analysis/code_profiles.hpp"
 #include "particles/density_smoothing.hpp"
 #include "particles/formats/swift_kernels.hpp"

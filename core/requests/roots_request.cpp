@@ -3,7 +3,6 @@
 #include "analysis/site_errors.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/recommended_k.hpp"
-#include "stability/roots_convention.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
@@ -77,9 +76,6 @@ nlohmann::json roots_request_document(const RootsRequest& r, const RootsResult& 
     auto document = roots_document(kernel, lattice, result.a_p, result.k_min, result.k_max, r.epsilon, r.lateral,
                                    r.evaluation.site, result.analysis, r.axis, r.window_min, r.window_max);
     if (r.stability) document["stability"] = result.stability.json;
-    if (r.convention)
-        document["convention"] = roots_convention_json(*r.convention, kernel, lattice.dimension, result.a_p,
-                                                       result.analysis.all_along, result.stability.recommended);
     if (const auto& c = result.in_code) {
         nlohmann::json accurate = nlohmann::json::array();
         for (const auto& i : c->accurate) accurate.push_back({i.from, i.to});
@@ -133,32 +129,13 @@ void print_roots_stability(const RootsRequest& r, const RootsStability& stabilit
                    intervals_text(stability.both), recommended_text(stability.recommended));
 }
 
-void print_roots_convention(const RootsRequest& r, const RootsResult& result, const Kernel& kernel, int dimension)
-{
-    if (!r.convention) return;
-    const auto& c = *r.convention;
-    if (const auto why = convention_undefined(c, kernel, dimension); !why.empty())
-        return fmt::print(results_file(), "in {}'s convention ({}): {}\n", c.name, c.quantity, why);
-    auto in = [&](double k) { return in_convention(c, kernel, dimension, result.a_p, k); };
-    const auto& all_along = result.analysis.all_along;
-    const auto& recommended = result.stability.recommended;
-    std::string s = fmt::format("in {}'s convention ({}): best k of condition (22) {} = {:.6g}", c.name, c.quantity,
-                                c.quantity, in(all_along.best_k));
-    for (const auto& i : all_along.intervals)
-        s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", c.quantity, in(i.from), in(i.to));
-    if (recommended.found)
-        s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", c.quantity, in(recommended.k),
-                         in(recommended.widest.from), in(recommended.widest.to));
-    fmt::print(results_file(), "{}\n", s);
-}
-
 void print_roots_in_code(const RootsRequest& r, const RootsResult& result)
 {
     if (!result.in_code) return;
     const auto& c = *result.in_code;
     const std::string& p = r.code->parameter;
-    std::string s = fmt::format("in {}'s own setting ({}, with its SPH density): best k of condition (22) {} = {:.6g}",
-                                r.code->name, p, p, c.best);
+    std::string s = fmt::format("in {}'s own setting ({}{}): best k of condition (22) {} = {:.6g}", r.code->name, p,
+                                r.code->from_sph_density ? ", with its SPH density" : "", p, c.best);
     for (const auto& i : c.accurate) s += fmt::format("; (22) holds for {} in [{:.6g}, {:.6g}]", p, i.from, i.to);
     if (c.recommended)
         s += fmt::format("; recommended {} = {:.6g} ([{:.6g}, {:.6g}])", p, c.recommended_value, c.recommended->from,
@@ -178,14 +155,13 @@ void print_other_sites(const RootsAnalysis& analysis, int chosen)
     }
 }
 
-// What follows the sites: the best k at the window's edge, stability, the convention.
-void print_roots_tail(const RootsRequest& r, const RootsResult& result, const Kernel& kernel, int dimension)
+// What follows the sites: the best k at the window's edge, stability, the code's setting.
+void print_roots_tail(const RootsRequest& r, const RootsResult& result)
 {
     if (at_window_edge(result.analysis.all_along.best_k, result.k_min, result.k_max))
         fmt::print(results_file(), "best k of condition (22) = {:.6f}: {}\n", result.analysis.all_along.best_k,
                    window_edge_note);
     print_roots_stability(r, result.stability);
-    print_roots_convention(r, result, kernel, dimension);
     print_roots_in_code(r, result);
 }
 
@@ -210,7 +186,7 @@ void print_roots(const RootsRequest& r, const RootsResult& result, const Kernel&
         fmt::print(results_file(), "every site at once{}: along gravity {}\n  for every direction: {}\n", lateral,
                    acceptance_text(analysis.all_along), acceptance_text(analysis.all_every));
     }
-    print_roots_tail(r, result, kernel, lattice.dimension);
+    print_roots_tail(r, result);
 }
 
 } // namespace sphkern

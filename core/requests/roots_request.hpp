@@ -1,9 +1,8 @@
 // One roots request, whichever front end built it (the command line's `roots`, Python's
 // sphkern.roots): the k in a window where eps_rho or eps_gradP vanish, the jumps and
-// condition (22) at every site; on request the stable k and a code's convention.
+// condition (22) at every site; on request the stable k and a code's own setting.
 #pragma once
 
-#include "analysis/code_conventions.hpp"
 #include "analysis/code_profiles.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_roots.hpp"
@@ -27,8 +26,7 @@ struct RootsRequest {
     bool lateral = false;  // the lateral gradient error counts in condition (22) too
     bool stability = false;
     RootsStabilityOptions model; // checked whether or not `stability` asks for it
-    const CodeConvention* convention = nullptr; // none: k only in sphkern's convention
-    const CodeProfile* code = nullptr;          // a code's own setting beside k, with its own density
+    const CodeProfile* code = nullptr; // a code's own setting beside k, with its own density
     EvaluationInputs evaluation;
 };
 

@@ -1,6 +1,6 @@
 #include "study/report.hpp"
 
-#include "analysis/code_conventions.hpp"
+#include "analysis/swift_gamma.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "study/report_text.hpp"
 #include "support/io/install_paths.hpp"

@@ -62,9 +62,15 @@ for s in st:  # a sample is stable exactly when it lies in a stable interval
         rec = o['recommended']
         if o['accurate_and_stable']:
             widest = max(o['accurate_and_stable'], key=lambda i: i[1] - i[0])
-            # SWIFT's gamma is not defined for the 2D super-Gaussian (its second moment is -1)
-            names = {'pysph', 'dualsphysics', 'gadget', 'splishsplash'} | ({'swift'} if s['kernel'] != 'super_gaussian' else set())
-            assert rec['found'] and rec['interval'] == widest and set(rec['conventions']) == names, rec
+            codes = rec.get('codes', {})
+            assert rec['found'] and rec['interval'] == widest, rec
+            assert set(codes) <= {'swift', 'phantom', 'gadget2', 'gadget4', 'pysph', 'dualsphysics'}, rec
+            # Every code ships the cubic spline; PySPH's hdx is h over the rest spacing, k / a_p^(1/2) in 2D.
+            if s['kernel'] == 'cubic_bspline':
+                assert len(codes) == 6, rec
+            a_p = {'voronoi': 3 ** 0.5 / 2, 'cube': 1.0}.get(o['volume_coefficient'])
+            if 'pysph' in codes and a_p:
+                assert abs(codes['pysph'] - rec['k'] / a_p ** 0.5) < 1e-12 * codes['pysph'], (rec, a_p)
         else:
             assert not rec['found'], rec
 "

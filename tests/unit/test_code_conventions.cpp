@@ -1,7 +1,8 @@
-// sphkern's k in other codes' conventions: SWIFT's kernel gamma against the values SWIFT
-// lists, and each conversion against its definition written out for the sc lattice.
+// sphkern's k as other codes set it: SWIFT's kernel gamma against the values SWIFT lists, and
+// each code's parameter against its definition written out for the sc lattice.
 #include "helpers.hpp"
-#include "analysis/code_conventions.hpp"
+#include "analysis/code_profiles.hpp"
+#include "analysis/swift_gamma.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/surface_request.hpp"
 #include "stability/recommended_k.hpp"
@@ -29,25 +30,28 @@ TEST_CASE("SWIFT's kernel gamma H / (2 sigma) is the value SWIFT lists for its 3
     }
 }
 
-TEST_CASE("each convention follows from h = k d and H = R h, and SWIFT's eta 1.2348 with the cubic spline is GADGET's 48 neighbours")
+TEST_CASE("each code's parameter at the rest density follows from h = k d and H = R h, and SWIFT's eta 1.2348 with the cubic spline is GADGET's 48 neighbours")
 {
     const Kernel cubic = shipped_kernel("cubic_bspline"); // R = 2
     const double k = 1.3, a_p = 1;                       // sc: dp = d
     const double H = 2 * k;
-    CHECK(in_convention(code_convention("pysph", "--convention"), cubic, 3, a_p, k) == doctest::Approx(k));
-    CHECK(in_convention(code_convention("dualsphysics", "--convention"), cubic, 3, a_p, k) ==
-          doctest::Approx(H / (2 * std::sqrt(3.0))));
-    CHECK(in_convention(code_convention("splishsplash", "--convention"), cubic, 3, a_p, k) == doctest::Approx(2 * H));
-    CHECK(in_convention(code_convention("gadget", "--convention"), cubic, 3, a_p, k) ==
-          doctest::Approx(4 * M_PI / 3 * H * H * H));
-    CHECK(in_convention(code_convention("gadget", "--convention"), cubic, 2, a_p, k) == doctest::Approx(M_PI * H * H));
+    const auto source = ValueSource::option("--code");
+    auto at_rest = [&](const char* code, int dim, double ap, double kk) {
+        return code_parameter(code_profile(code, source), cubic, dim, ap, kk, 0);
+    };
+    CHECK(at_rest("pysph", 3, a_p, k) == doctest::Approx(k));
+    CHECK(at_rest("phantom", 3, a_p, k) == doctest::Approx(k));
+    CHECK(at_rest("dualsphysics", 3, a_p, k) == doctest::Approx(H / (2 * std::sqrt(3.0))));
+    CHECK(at_rest("splishsplash", 3, a_p, k) == doctest::Approx(H / 4));
+    CHECK(at_rest("gadget2", 3, a_p, k) == doctest::Approx(4 * M_PI / 3 * H * H * H));
+    CHECK(at_rest("gadget2", 2, a_p, k) == doctest::Approx(M_PI * H * H));
     // SWIFT's default eta = 1.2348 gives about 48 neighbours (its documentation): the same k both ways.
     const double swift_k = 1.2348 * 1.825742 / 2; // H = gamma eta dp = R k d
-    CHECK(in_convention(code_convention("swift", "--convention"), cubic, 3, a_p, swift_k) == doctest::Approx(1.2348).epsilon(1e-6));
-    CHECK(in_convention(code_convention("gadget", "--convention"), cubic, 3, a_p, swift_k) == doctest::Approx(48.0).epsilon(1e-3));
+    CHECK(at_rest("swift", 3, a_p, swift_k) == doctest::Approx(1.2348).epsilon(1e-6));
+    CHECK(at_rest("gadget2", 3, a_p, swift_k) == doctest::Approx(48.0).epsilon(1e-3));
     // A volume coefficient scales the spacing: dp = a_p^(1/D) d.
-    CHECK(in_convention(code_convention("pysph", "--convention"), cubic, 3, 0.5, k) == doctest::Approx(k / std::cbrt(0.5)));
-    CHECK_THROWS_AS(code_convention("nosuch", "--convention"), Error);
+    CHECK(at_rest("pysph", 3, 0.5, k) == doctest::Approx(k / std::cbrt(0.5)));
+    CHECK_THROWS_AS(code_profile("nosuch", source), Error);
 }
 
 TEST_CASE("the recommended k is the centre of the widest overlap, flagged when it touches the window")

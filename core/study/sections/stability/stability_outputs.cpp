@@ -1,6 +1,6 @@
 #include "study/sections/stability/stability_section.hpp"
 
-#include "analysis/code_conventions.hpp"
+#include "analysis/code_profiles.hpp"
 #include "analysis/results_json.hpp"
 #include "stability/stability_json.hpp"
 #include "study/canvas.hpp"
@@ -37,8 +37,8 @@ nlohmann::json stability_json(const StabilityCase& c)
     }
     for (const auto& o : c.overlap) {
         auto recommended = recommended_json(o.recommended);
-        for (std::size_t i = 0; i < o.in_conventions.size(); ++i) // a convention undefined for the kernel is left out
-            if (std::isfinite(o.in_conventions[i])) recommended["conventions"][code_conventions()[i].name] = o.in_conventions[i];
+        for (std::size_t i = 0; i < o.in_codes.size(); ++i) // a code that does not ship the kernel is left out
+            if (std::isfinite(o.in_codes[i])) recommended["codes"][study_codes()[i]->name] = o.in_codes[i];
         overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
                            {"accurate_and_stable", intervals_json(o.both)}, {"recommended", recommended}});
     }
@@ -50,15 +50,16 @@ nlohmann::json stability_json(const StabilityCase& c)
     return entry;
 }
 
-// One recommended k per kernel, lattice and a_p, and the same resolution in other codes' conventions.
+// One recommended k per kernel, lattice and a_p, and the same resolution in each code's own setting.
 std::string recommended_markdown(const std::vector<StabilityCase>& cases)
 {
     std::string s = "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
-                    "faster than the horizon, with its margin in k and N_H, and the same resolution in the conventions of "
-                    "other codes (" + method_document() + " section 10).\n\n| lattice | kernel | a_p | k | N_H |";
-    for (const auto& c : code_conventions()) s += fmt::format(" {} {} |", c.name, c.quantity);
+                    "faster than the horizon, with its margin in k and N_H, and the same resolution in each code's own "
+                    "setting, with the lattice's SPH density where the code solves for h with it (" + method_document() +
+                    " section 9; blank where the code does not ship the kernel).\n\n| lattice | kernel | a_p | k | N_H |";
+    for (const CodeProfile* c : study_codes()) s += fmt::format(" {} {} |", c->name, c->parameter);
     s += "\n|---|---|---|---|---|";
-    for (std::size_t i = 0; i < code_conventions().size(); ++i) s += "---|";
+    for (std::size_t i = 0; i < study_codes().size(); ++i) s += "---|";
     s += "\n";
     for (const auto& c : cases)
         for (const auto& o : c.overlap) {
@@ -66,14 +67,14 @@ std::string recommended_markdown(const std::vector<StabilityCase>& cases)
             if (!r.found) {
                 s += fmt::format("| {} | {} | {} | none: no k is both accurate and stable | |", c.lattice,
                                  c.kernel_label, o.ap_name);
-                for (std::size_t i = 0; i < code_conventions().size(); ++i) s += " |";
+                for (std::size_t i = 0; i < study_codes().size(); ++i) s += " |";
                 s += "\n";
                 continue;
             }
             s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
                              r.k, r.margin, r.at_window_edge ? fmt::format(" ({})", window_edge_note) : "",
                              r.neighbours, r.neighbours_from, r.neighbours_to);
-            for (double v : o.in_conventions) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " not defined |";
+            for (double v : o.in_codes) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " |";
             s += "\n";
         }
     return s + "\n";

@@ -1,6 +1,6 @@
 #include "study/sections/stability/stability_section.hpp"
 
-#include "analysis/code_conventions.hpp"
+#include "analysis/code_profiles.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/h_model.hpp"
 #include "stability/stability_budget.hpp"
@@ -69,8 +69,11 @@ StabilityOverlap overlap(const StudyCase& b, const StabilityCase& c, const Kerne
                                    std::max(k_max, b.k_max));
     o.recommended = recommend_k(o.both, b.k_min, b.k_max, errors);
     if (o.recommended.found)
-        for (const auto& convention : code_conventions())
-            o.in_conventions.push_back(in_convention(convention, kernel, lattice.dimension, b.a_p, o.recommended.k));
+        for (const CodeProfile* code : study_codes())
+            o.in_codes.push_back(code_ships(*code, kernel)
+                                     ? code_parameter(*code, kernel, lattice.dimension, b.a_p, o.recommended.k,
+                                                      errors.at(o.recommended.k).eps_rho)
+                                     : NAN);
     return o;
 }
 

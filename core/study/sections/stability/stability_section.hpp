@@ -21,7 +21,9 @@ struct StabilityOverlap {
     std::string ap_name;
     std::vector<KInterval> accurate, both;
     RecommendedK recommended; // the centre of the widest of `both`
-    std::vector<double> in_conventions; // the recommended k in each of code_conventions(), when found
+    // The recommended k in each code's own setting (study_codes(), with the lattice's SPH density
+    // at the site), when found; NaN for a code that does not ship the kernel.
+    std::vector<double> in_codes;
 };
 
 struct StabilityCase {
