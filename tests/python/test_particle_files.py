@@ -10,6 +10,8 @@ import subprocess
 import numpy as np
 import pytest
 
+import fluid_tanks
+
 h5py = pytest.importorskip("h5py")
 
 CLI = os.environ["SPHKERN_CLI"]
@@ -571,19 +573,8 @@ def brute_force_sums(fluid, others):
 
 
 def wall_and_fluid():
-    """A 2D fluid block (jittered, variable h and density) above three layers of wall particles."""
-    rng = np.random.default_rng(34)
-    dx = 0.05
-    gx, gy = np.meshgrid(np.arange(20) * dx + dx / 2, np.arange(20) * dx + dx / 2)
-    n = gx.size
-    rho = 1000 * rng.uniform(0.98, 1.02, n)
-    fluid = {"x": gx.ravel() + rng.uniform(-0.1, 0.1, n) * dx, "y": gy.ravel() + rng.uniform(-0.1, 0.1, n) * dx,
-             "z": np.zeros(n), "h": 1.2 * dx * rng.uniform(0.95, 1.05, n), "rho": rho, "m": rho * dx**2}
-    wx, wy = np.meshgrid(np.arange(-3, 23) * dx + dx / 2, -np.arange(3) * dx - dx / 2)
-    k = wx.size
-    solid = {"x": wx.ravel(), "y": wy.ravel(), "z": np.zeros(k), "h": np.full(k, 1.2 * dx),
-             "rho": np.full(k, 1000.0), "m": np.full(k, 1000 * dx**2)}
-    return fluid, solid
+    """The tank of the several-array tests: 20 x 20 fluid particles, h varying by 5%."""
+    return fluid_tanks.wall_and_fluid(34, 20, 0.1, 0.05)
 
 
 def per_particle(path, *args):

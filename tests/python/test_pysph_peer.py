@@ -6,6 +6,7 @@ import json
 import os
 import subprocess
 
+import fluid_tanks
 import numpy as np
 from pysph.base.kernels import WendlandQuintic
 from pysph.base.utils import get_particle_array
@@ -32,19 +33,8 @@ class VolumeSums(Equation):
 
 
 def tank():
-    """A jittered 2D fluid block with h, m and rho varying per particle, above three wall layers."""
-    rng = np.random.default_rng(35)
-    dx = 0.05
-    gx, gy = np.meshgrid(np.arange(16) * dx + dx / 2, np.arange(16) * dx + dx / 2)
-    n = gx.size
-    rho = 1000 * rng.uniform(0.98, 1.02, n)
-    fluid = {"x": gx.ravel() + rng.uniform(-0.15, 0.15, n) * dx, "y": gy.ravel() + rng.uniform(-0.15, 0.15, n) * dx,
-             "h": 1.3 * dx * rng.uniform(0.8, 1.2, n), "rho": rho, "m": rho * dx**2 * rng.uniform(0.95, 1.05, n)}
-    wx, wy = np.meshgrid(np.arange(-3, 19) * dx + dx / 2, -np.arange(3) * dx - dx / 2)
-    k = wx.size
-    solid = {"x": wx.ravel(), "y": wy.ravel(), "h": 1.3 * dx * rng.uniform(0.8, 1.2, k),
-             "rho": np.full(k, 1000.0), "m": np.full(k, 1000 * dx**2)}
-    return fluid, solid
+    """A fluid over a wall, h varying by +-20% in both (PySPH keeps z, zero, itself)."""
+    return fluid_tanks.wall_and_fluid(35, 16, 0.15, 0.2, h_wall_spread=0.2, mass_spread=0.05, with_z=False)
 
 
 def pysph_sums(fluid, solid):
