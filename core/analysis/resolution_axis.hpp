@@ -1,6 +1,6 @@
-// The resolution scale a window is given in. k = h / d depends on the lattice's d; the
-// Dehnen & Aly convention eta = h / V^(1/D), with V = a_p d^D the particle volume, is
-// comparable across lattices and volume coefficients; nh is the number of neighbours
+// The resolution scale a window is given in. k = h / d depends on the lattice's d;
+// h_over_l = h / V^(1/D) (Axis::eta), sphkern's h over the mean spacing with V = a_p d^D the
+// particle volume, is comparable across lattices and volume coefficients; nh is the number of neighbours
 // inside the support R h (a step function of k, counted at a site).
 #pragma once
 

@@ -21,7 +21,7 @@ struct SettingOptions {
 void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
 
 // --hfact, --nngb, --hdx and --coefh: the codes' parameters but SWIFT's --eta, for a command
-// whose --eta is also sphkern's own (`particles`).
+// that declares --eta itself (`particles`, `relax`).
 void add_code_parameters(Command command, SettingOptions& options);
 
 // Whether any of --k, --code and the codes' parameters is given.

@@ -44,7 +44,7 @@ Action add_eps_command(Command app)
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
     command.add_option("lattice", options->lattice, "Lattice name or file").required();
     add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
-    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or eta (h/V^(1/D))").capture_default_str();
+    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or h_over_l (h/V^(1/D))").capture_default_str();
     add_evaluation_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

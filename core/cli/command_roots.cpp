@@ -85,7 +85,7 @@ Action add_roots_command(Command app)
     command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
     command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
     command.add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
-    command.add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), eta (h/V^(1/D)) or nh (neighbours)")
+    command.add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), h_over_l (h/V^(1/D)) or nh (neighbours)")
         .capture_default_str();
     command.add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
                                                         "stability) and where condition (22) holds there");

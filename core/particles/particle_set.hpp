@@ -35,7 +35,7 @@ struct ParticleSet {
     std::optional<PeriodicBox> box;
     double support_per_h = 0;   // a file's own convention (SWIFT's kernel gamma), 0 if unknown
     // A file with no h whose code's support is this many particle radii, a radius the file does
-    // not hold (SPlisHSPlasH: 4); 0 for others. Without a radius such a set needs --eta or --nh.
+    // not hold (SPlisHSPlasH: 4); 0 for others. Without a radius such a set needs --h-over-l or --nh.
     double support_per_radius = 0;
     // The kernel that convention belongs to: as the file names it ("Wendland C2") and as
     // sphkern does ("wendland_c2", empty if sphkern ships no such kernel); empty if not said.
