@@ -1,5 +1,5 @@
 // A code's own setting on the command line (`eps`, `assess`, `surface`, `pairing`): --code NAME and that code's
-// parameter by its own name (--eta, --hfact, --nngb, --hdx, --coefh), or --k.
+// parameter by its own name (--eta, --hfact, --nngb, --hdx, --coefh, --particle-radius), or --k.
 #pragma once
 
 #include "cli/options.hpp"
