@@ -44,49 +44,52 @@ std::string option_of(std::string parameter)
 
 } // namespace
 
-std::optional<CodeSetting> code_setting(const SettingOptions& o)
+namespace {
+
+// The code and its parameter's value as given (none: named alone); nullopt without --code. A
+// parameter without --code, or another code's, is refused. `eta` is the option --eta fills.
+std::optional<CodeChoice> code_choice(const SettingOptions& o, const std::optional<double>& eta)
 {
     const std::pair<const char*, const std::optional<double>*> given[] = {
-        {"eta", &o.eta},     {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh},
+        {"eta", &eta},     {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh},
         {"particle_radius", &o.particle_radius}};
-    std::optional<CodeSetting> setting;
-    for (const auto& [name, value] : given) {
-        if (!value->has_value()) continue;
-        if (o.code.empty())
-            throw Error(ExitCode::usage, fmt::format("{} is a code's setting; expected --code too", option_of(name)));
-        const auto& profile = code_profile(o.code, ValueSource::option("--code"));
-        if (profile.parameter != name)
-            throw Error(ExitCode::usage, fmt::format("{}: {} sets its resolution with {}", option_of(name), o.code,
-                                                     option_of(profile.parameter)));
-        if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and {}", option_of(name)));
-        setting = CodeSetting{o.code, **value};
-    }
-    if (!o.code.empty() && !setting)
-        throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, {}", o.code,
-                                                 option_of(code_profile(o.code, ValueSource::option("--code")).parameter)));
-    if (!setting && !o.k) throw Error(ExitCode::usage, "--k is required (or --code and the code's setting)");
-    return setting;
-}
-
-std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std::optional<double>& eta)
-{
-    const std::pair<const char*, const std::optional<double>*> settings[] = {
-        {"eta", &eta}, {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh}};
     if (o.code.empty()) {
-        refuse_eta_without_code(o, eta);
-        for (const auto& [name, value] : settings)
-            if (value->has_value()) throw Error(ExitCode::usage, fmt::format("--{} is a code's setting; expected --code too", name));
+        for (const auto& [name, value] : given)
+            if (value->has_value())
+                throw Error(ExitCode::usage, fmt::format("{} is a code's setting; expected --code too", option_of(name)));
         return std::nullopt;
     }
     const std::string parameter = code_profile(o.code, ValueSource::option("--code")).parameter;
     CodeChoice choice{o.code, std::nullopt};
-    for (const auto& [name, value] : settings) {
+    for (const auto& [name, value] : given) {
         if (!value->has_value()) continue;
         if (name != parameter)
-            throw Error(ExitCode::usage, fmt::format("--{}: {} sets its resolution with {}", name, o.code, option_of(parameter)));
+            throw Error(ExitCode::usage, fmt::format("{}: {} sets its resolution with {}", option_of(name), o.code,
+                                                     option_of(parameter)));
         choice.value = **value;
     }
     return choice;
+}
+
+} // namespace
+
+std::optional<CodeSetting> code_setting(const SettingOptions& o)
+{
+    const auto choice = code_choice(o, o.eta);
+    if (!choice) {
+        if (!o.k) throw Error(ExitCode::usage, "--k is required (or --code and the code's setting)");
+        return std::nullopt;
+    }
+    const std::string parameter = option_of(code_profile(o.code, ValueSource::option("--code")).parameter);
+    if (!choice->value) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, {}", o.code, parameter));
+    if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and {}", parameter));
+    return CodeSetting{o.code, *choice->value};
+}
+
+std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std::optional<double>& eta)
+{
+    refuse_eta_without_code(o, eta);
+    return code_choice(o, eta);
 }
 
 void refuse_eta_without_code(const SettingOptions& o, const std::optional<double>& eta)

@@ -60,8 +60,7 @@ int assess_file(const AssessOptions& o)
     std::tie(sources.code.code, sources.code.value) = code_sources(o.setting);
     ParticleArguments given;
     const auto choice = code_beside_own_eta(o.setting, o.setting.eta);
-    if (choice->value) given.code = CodeSetting{choice->code, *choice->value};
-    else given.stored_h_code = choice->code;
+    name_code(given, choice->code, choice->value);
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
     if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel));
     else print_particle_assess(results_file(), kernel, set, given, result);

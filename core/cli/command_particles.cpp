@@ -45,8 +45,7 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
     ParticleArguments a;
     if (const auto code = code_beside_own_eta(o.codes, o.eta)) {
         sources.code.value = code_sources(o.codes).second;
-        if (code->value) a.code = CodeSetting{code->code, *code->value};
-        else a.stored_h_code = code->code;
+        name_code(a, code->code, code->value);
     }
     if (!o.eta_range.empty())
         throw Error(ExitCode::usage, "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");

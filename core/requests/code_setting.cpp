@@ -2,6 +2,7 @@
 
 #include "analysis/code_profiles.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "requests/smoothing_request.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -86,9 +87,8 @@ SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSo
         fail_input(fmt::format("{}: the set stores no h; with {} {}, expected {} too (the code's parameter)", set.name,
                                sources.code.name, code, sources.value.name));
     if (!set.file_kernel.empty() && set.file_kernel_name != kernel.name())
-        fail_input(fmt::format("{}: the file's h is for its kernel \"{}\"{}, not {}; expected that kernel", set.name,
-                               set.file_kernel, set.file_kernel_name.empty() ? "" : " (sphkern's " + set.file_kernel_name + ")",
-                               kernel.name()));
+        fail_input(fmt::format("{}: the file's h is for its kernel {}, not {}; expected that kernel", set.name,
+                               file_kernel_text(set), kernel.name()));
     return {SmoothingRule::file, 0, code_support_per_h(profile, kernel, set.dimension), pair_smoothing(profile)};
 }
 

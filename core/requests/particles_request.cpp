@@ -16,6 +16,12 @@ ParticleSources particle_sources(FrontEnd f)
             {n("code"), n("value")}}; // the command line names the code's parameter itself
 }
 
+void name_code(ParticleArguments& given, const std::string& code, std::optional<double> value)
+{
+    if (value) given.code = CodeSetting{code, *value};
+    else given.stored_h_code = code;
+}
+
 void check_threads(int threads, const ValueSource& source) { check_range(threads, 0, 1024, source); }
 
 namespace {

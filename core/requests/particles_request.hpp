@@ -31,6 +31,10 @@ struct ParticleArguments {
     bool per_particle_files = false; // the front end writes per-particle values (no sweep; e1, m1 and E kept)
 };
 
+// A code named with its parameter's value (`code`: h as the code sets it), or alone
+// (`stored_h_code`: the set's stored h as the code stores it).
+void name_code(ParticleArguments& given, const std::string& code, std::optional<double> value);
+
 struct ParticleSources {
     SmoothingSources smoothing;
     ValueSource eta_range, nh_range, steps, volume, gravity, depth, rho0, threads, histogram, per_particle_files;

@@ -129,8 +129,11 @@ ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, 
     if (solved_h(*code)) {
         const double c = code_smoothing({code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")},
                                         kernel, set.dimension).value;
-        const PerParticle h = density_smoothing_lengths(kernel, set, c, volume, threads);
-        for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i] * to_stored;
+        // Solved once on the run's set: copy c of it holds particle i at c n + i (tiled_set), and
+        // its periodic images are the other copies, so each copy's h is the original's.
+        const ParticleSet& run_set = run.state.set;
+        const PerParticle h = density_smoothing_lengths(kernel, run_set, c, mean_volume(run_set), threads);
+        for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i % run_set.size()] * to_stored;
     }
     return out;
 }

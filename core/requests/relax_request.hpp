@@ -65,8 +65,9 @@ SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, 
 // speed is the relaxation's c = 1, u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal
 // gas has that sound speed). Without a code: SWIFT's layout for its own kernels, h = H / gamma
 // with SWIFT's gamma and the kernel's name, and sphkern's h and R for a kernel SWIFT lacks.
-// With a code: its layout and its stored h (code_support_per_h), solved per particle on
-// `written` where the code's parameter is given and the code solves h with its density.
+// With a code: its layout and its stored h (code_support_per_h), solved per particle on the
+// run's set (each copy takes the original's) where the code's parameter is given and the code
+// solves h with its density.
 // `written`: the run's set, or copies of it side by side (tiled_set).
 ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
                                   double eos_gamma, const std::optional<RelaxCode>& code, int threads);

@@ -47,11 +47,15 @@ void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const 
     if (spec.rule != SmoothingRule::file || spec.support_per_h > 0 || set.file_kernel.empty() ||
         set.file_kernel_name == kernel)
         return;
-    fail_input(fmt::format("{}: the file's h and its kernel gamma {} are for its kernel \"{}\"{}, not {}; expected that "
+    fail_input(fmt::format("{}: the file's h and its kernel gamma {} are for its kernel {}, not {}; expected that "
                            "kernel, or {} X to map its h to {}'s support",
-                           set.name, set.support_per_h, set.file_kernel,
-                           set.file_kernel_name.empty() ? "" : " (sphkern's " + set.file_kernel_name + ")", kernel,
-                           sources.support_per_h.name, kernel));
+                           set.name, set.support_per_h, file_kernel_text(set), kernel, sources.support_per_h.name, kernel));
+}
+
+std::string file_kernel_text(const ParticleSet& set)
+{
+    return fmt::format("\"{}\"{}", set.file_kernel,
+                       set.file_kernel_name.empty() ? "" : " (sphkern's " + set.file_kernel_name + ")");
 }
 
 SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& set, const SmoothingSources& sources,

@@ -33,6 +33,9 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
 void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const std::string& kernel,
                        const SmoothingSources& sources);
 
+// The kernel a file names, as its errors quote it: "Cubic spline (M4)" (sphkern's cubic_bspline).
+std::string file_kernel_text(const ParticleSet& set);
+
 // The spec for a set: none given, the file's h where the set has h and `file_h_allowed`.
 SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& set, const SmoothingSources& sources,
                            bool file_h_allowed = true);

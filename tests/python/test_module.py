@@ -166,6 +166,9 @@ def test_roots_with_stability_code_and_adaptive_h_equal_the_command_line():
     with pytest.raises(ValueError) as raised:
         sphkern.roots("cubic_bspline", "fcc", convention="gadget")
     assert str(raised.value).startswith('convention: "gadget" is unknown, expected one of swift, phantom, gadget2')
+    with pytest.raises(ValueError) as raised:
+        sphkern.roots("cubic_bspline", "fcc", code="swift", convention="swift")
+    assert str(raised.value) == "give one of code and convention (its old name)"
 
 
 def test_roots_returns_one_dict_whatever_the_options():

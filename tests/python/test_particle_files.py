@@ -286,18 +286,19 @@ def test_a_relaxed_glass_is_written_as_swift_initial_conditions_of_its_kernel(tm
     assert other.returncode == 3 and 'are for its kernel "Wendland C2"' in other.stderr, other.stderr
 
 
-def relax_for(tmp_path, kernel, name, *code):
+def relax_for(tmp_path, kernel, name, *code, count=600):
     out = tmp_path / name
-    done = subprocess.run([CLI, "relax", kernel, "poisson", "--count", "600", "--steps", "20", "--output", str(out),
+    done = subprocess.run([CLI, "relax", kernel, "poisson", "--count", str(count), "--steps", "20", "--output", str(out),
                            "--json", *code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     return out, json.loads(done.stdout)
 
 
-def periodic_density(x, support, w):
-    """rho_i / m = sum_j W(r_ij, H_i) over the minimum images in the unit box, i itself included."""
+def periodic_density(x, support, w, box=(1.0, 1.0, 1.0)):
+    """rho_i / m = sum_j W(r_ij, H_i) over the minimum images in the box, i itself included."""
+    box = np.asarray(box)
     d = x[:, None, :] - x[None, :, :]
-    d -= np.round(d)
+    d -= np.round(d / box) * box
     q = np.sqrt((d**2).sum(axis=2)) / support[:, None]
     return (w(np.minimum(q, 1)) / support[:, None] ** 3).sum(axis=1)
 
@@ -336,6 +337,15 @@ def test_initial_conditions_for_gadget_and_swift_hold_the_codes_own_h(tmp_path):
     alone = run(str(out), "--code", "swift")
     solved = run(str(out), "--code", "swift", "--eta", "1.2348")
     assert abs(alone["h_min"] - solved["h_min"]) < 1e-12 and abs(alone["h_max"] - solved["h_max"]) < 1e-12
+    # Tiled copies take their original's h, which holds SWIFT's definition in the larger box too.
+    out, _ = relax_for(tmp_path, "wendland_c2", "tiled.hdf5", "--code", "swift", "--eta", "1.2348", "--tile", "2,1,1",
+                       count=300)
+    with h5py.File(out, "r") as f:
+        x, h = f["PartType0/Coordinates"][:], f["PartType0/SmoothingLength"][:]
+        assert list(f["Header"].attrs["BoxSize"]) == [2.0, 1.0, 1.0] and len(h) == 600
+    assert np.array_equal(h[:300], h[300:])
+    eta = h * periodic_density(x, gamma * h, wendland, box=(2, 1, 1)) ** (1 / 3)
+    assert np.max(np.abs(eta - 1.2348)) < 1e-9
 
 
 def test_initial_conditions_for_pysph_are_what_its_load_reads(tmp_path):

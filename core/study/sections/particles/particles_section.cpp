@@ -38,8 +38,7 @@ ParticleSet relaxed(const Study& study, const Kernel& kernel, const StudyParticl
 ParticleArguments arguments_of(const StudyParticles& p)
 {
     ParticleArguments given;
-    if (p.code && p.code->value) given.code = CodeSetting{p.code->name, *p.code->value};
-    else if (p.code) given.stored_h_code = p.code->name;
+    if (p.code) name_code(given, p.code->name, p.code->value);
     else {
         const bool nh = p.sweep.rule == SmoothingRule::nh;
         (nh ? given.nh_range : given.eta_range) = std::array<double, 2>{p.sweep.from, p.sweep.to};
