@@ -14,6 +14,8 @@
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -95,6 +97,31 @@ void add_options(Command c, ParticlesOptions& o)
     add_json_option(c, o);
 }
 
+// A snapshot larger than the memory budget, measured slab by slab: the same statistics and
+// CSV as in memory, the CSV streamed in file order as the slabs' results are merged.
+int measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot, ParticleSources& sources,
+                     const std::vector<OutputTarget>& outputs)
+{
+    const ParticleSet& set = snapshot.sample();
+    check_output_targets(outputs, set.linked_files); // what the file reached through its links
+    if (!o.vtk.empty())
+        throw Error(ExitCode::input, fmt::format("--vtk {}: {} is measured in slabs (over the memory budget), whose "
+                                                 "per-particle values are written as --csv only",
+                                                 o.vtk, set.name));
+    const auto arguments = arguments_of(o, sources);
+    const ParticleRequest request = particle_request(arguments, kernel, set, sources);
+    ParticleAnswer answer;
+    if (o.csv.empty()) answer = analyse_particles_in_slabs(kernel, snapshot, request, {});
+    else
+        write_file_atomically(o.csv, [&](std::ostream& out) {
+            ParticleCsvRows csv(out, set.dimension, worker_threads(o.threads));
+            answer = analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& rows) { csv.write(rows); });
+        });
+    if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel));
+    else print_particle_answer(results_file(), kernel, set, answer, arguments);
+    return 0;
+}
+
 } // namespace
 
 Action add_particles_command(Command app)
@@ -112,6 +139,8 @@ Action add_particles_command(Command app)
         PhaseTimes phases;
         auto sources = particle_sources(FrontEnd::command_line);
         check_threads(o.threads, sources.threads); // the set is read on them
+        if (const auto snapshot = snapshot_in_slabs(source_of(o), source_sources(FrontEnd::command_line)))
+            return measure_in_slabs(o, kernel, *snapshot, sources, outputs);
         const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links

@@ -225,7 +225,7 @@ AppendWithin append_within_for(CompressPath path)
     for (std::size_t j = 0; j < grid.points(); ++j) {
         const double dx = grid.x()[j] - xi, dy = grid.y()[j] - yi, dz = grid.z()[j] - zi;
         if (j == p || dx * dx + dy * dy + dz * dz != 0) continue;
-        const auto i = grid.source(p), k = grid.source(j);
+        const auto i = grid.id(p), k = grid.id(j);
         if (dx == 0 && dy == 0 && dz == 0)
             fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set_name,
                                    std::min(i, k), std::max(i, k), xi, yi, zi));

@@ -1,5 +1,7 @@
 #include "particles/neighbour_grid.hpp"
 
+#include "particles/periodic_images.hpp"
+
 #include "support/error.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/parallel_for.hpp"
@@ -32,52 +34,38 @@ struct Ghosts {
 // in block order: the same points in the same order on any thread count.
 Ghosts find_ghosts(const ParticleSet& set, double reach, int threads)
 {
-    const int dim = set.dimension;
-    Eigen::Matrix3d cell = set.box->edges;
-    if (dim == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
-    const Eigen::Matrix3d inverse = cell.inverse();
-    // A ghost is needed where an image lies within `reach` of the box: within this
-    // fractional margin of a face along each edge.
-    Eigen::Vector3d margin = Eigen::Vector3d::Zero();
-    for (int a = 0; a < dim; ++a) margin[a] = reach * inverse.row(a).norm() * (1 + 1e-9);
-    const int nz = dim == 3 ? 1 : 0;
+    const PeriodicImages images(*set.box, set.dimension, reach);
     std::vector<Ghosts> blocks((set.size() + particle_block_size - 1) / particle_block_size);
     ParallelFor pass;
     pass.run_blocks(set.size(), particle_block_size, threads, [&](std::size_t block, std::size_t begin, std::size_t end) {
         Ghosts& g = blocks[block];
-        for (std::size_t i = begin; i < end; ++i) {
-            const Eigen::Vector3d f = inverse * set.position(i);
-            // Most particles lie farther than the margin from every face: no image of theirs is near.
-            bool inner = true;
-            for (int d = 0; d < dim; ++d) inner = inner && f[d] >= margin[d] && f[d] < 1 - margin[d];
-            if (inner) continue;
-            for (int a = -1; a <= 1; ++a)
-                for (int b = -1; b <= 1; ++b)
-                    for (int c = -nz; c <= nz; ++c) {
-                        if (a == 0 && b == 0 && c == 0) continue;
-                        const Eigen::Vector3d image = f + Eigen::Vector3d(a, b, c);
-                        bool near = true;
-                        for (int d = 0; d < dim; ++d) near = near && image[d] >= -margin[d] && image[d] < 1 + margin[d];
-                        if (!near) continue;
-                        const Eigen::Vector3d p = cell * image;
-                        g.x.push_back(p.x()), g.y.push_back(p.y()), g.z.push_back(dim == 3 ? p.z() : 0.0);
-                        g.source.push_back(static_cast<std::uint32_t>(i));
-                    }
-        }
+        for (std::size_t i = begin; i < end; ++i)
+            images.of(set.position(i), [&](double x, double y, double z) {
+                g.x.push_back(x), g.y.push_back(y), g.z.push_back(z);
+                g.source.push_back(static_cast<std::uint32_t>(i));
+            });
     });
     Ghosts all;
     for (const Ghosts& g : blocks) all.append(g);
     return all;
 }
 
+// The points of a window's rows: its particles in set order, then the ghosts in theirs (the
+// order they have among the whole set's points), each tagged as the grid stores it.
+struct WindowPoints {
+    std::vector<double> x, y, z;
+    std::vector<std::uint32_t> tagged;
+};
+
 } // namespace
 
-// The points before sorting: the particles, then their ghosts.
+// The points before sorting: the particles, then their ghosts; or a window's points, tagged.
 struct NeighbourGrid::Unsorted {
     const double* own[3];
     const double* image[3];
     const std::uint32_t* image_source;
     std::size_t particles;
+    const std::uint32_t* tagged = nullptr; // a window's: source and unvisited bit of every point
     double at(int axis, std::size_t p) const { return p < particles ? own[axis][p] : image[axis][p - particles]; }
     std::uint32_t source(std::size_t p) const
     {
@@ -85,9 +73,34 @@ struct NeighbourGrid::Unsorted {
     }
 };
 
-NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
+GridGeometry GridGeometry::of(const std::array<double, 6>& range, std::size_t count, double reach)
+{
+    GridGeometry g;
+    double extent[3];
+    for (int a = 0; a < 3; ++a) {
+        extent[a] = range[2 * a + 1] - range[2 * a];
+        g.lo[a] = range[2 * a];
+        // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
+        // block of bins around a bin holds every neighbour (wider bins are never wrong).
+        const double per_reach = static_cast<double>(NeighbourGrid::stencil_reach * (a == 0 ? NeighbourGrid::x_bins_per_reach : 1));
+        g.n[a] = static_cast<std::size_t>(std::clamp(std::floor(extent[a] / reach * per_reach), 1.0, 1e9));
+    }
+    // Not many more bins than points, so that sparse or long thin sets stay small: the axis
+    // with the most bins is halved until they are few enough; and fewer than 2^32 bins in all,
+    // so that a row or a bin along x is a 32-bit number.
+    const double most = std::min(4 * static_cast<double>(count) + 64, 4294967295.0);
+    while (static_cast<double>(g.n[0]) * static_cast<double>(g.n[1]) * static_cast<double>(g.n[2]) > most) {
+        std::size_t& widest = *std::max_element(g.n, g.n + 3);
+        widest = (widest + 1) / 2;
+    }
+    for (int a = 0; a < 3; ++a) g.scale[a] = extent[a] > 0 ? static_cast<double>(g.n[a]) / extent[a] : 0.0;
+    return g;
+}
+
+NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads, const GridWindow* window)
     // A thread for every 8192 particles at most: on a small set, starting threads costs more than they save.
-    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 8192 + 1, 1, static_cast<std::size_t>(std::max(1, threads)))))
+    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 8192 + 1, 1, static_cast<std::size_t>(std::max(1, threads))))),
+      ids_(set.ids)
 {
     if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
     if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
@@ -107,12 +120,32 @@ NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads)
             fail_input(fmt::format("{}: {} particles and their periodic images, more than this engine indexes",
                                    set.name, particles_ + ghosts.size()));
     }
-    const Unsorted points{{set.x.data(), set.y.data(), set.z.data()},
-                          {ghosts.x.data(), ghosts.y.data(), ghosts.z.data()},
-                          ghosts.source.data(),
-                          particles_};
-    size_bins(points, particles_ + ghosts.size(), reach);
-    sort_into_bins(points, particles_ + ghosts.size());
+    const Unsorted all{{set.x.data(), set.y.data(), set.z.data()},
+                       {ghosts.x.data(), ghosts.y.data(), ghosts.z.data()},
+                       ghosts.source.data(),
+                       particles_};
+    if (!window) {
+        size_bins(all, particles_ + ghosts.size(), reach);
+        sort_into_bins(all, particles_ + ghosts.size());
+        return;
+    }
+    // A slab: the whole set's bins, the window's rows kept.
+    const int axis = window->axis;
+    geometry_ = window->whole;
+    std::copy(geometry_.n, geometry_.n + 3, n_);
+    offset_[axis] = window->first, n_[axis] = window->last - window->first;
+    WindowPoints kept;
+    for (std::size_t p = 0; p < particles_ + ghosts.size(); ++p) {
+        const std::size_t row = geometry_.bin(axis, all.at(axis, p));
+        if (row < window->first || row >= window->last) continue;
+        const bool visited = p < measured_ && row >= window->own_first && row < window->own_last;
+        kept.x.push_back(all.at(0, p)), kept.y.push_back(all.at(1, p)), kept.z.push_back(all.at(2, p));
+        kept.tagged.push_back(all.source(p) | (visited ? 0u : unvisited_bit));
+    }
+    ghosts = {};
+    Unsorted points{{kept.x.data(), kept.y.data(), kept.z.data()}, {nullptr, nullptr, nullptr}, nullptr, kept.x.size()};
+    points.tagged = kept.tagged.data();
+    sort_into_bins(points, kept.x.size());
 }
 
 void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double reach)
@@ -131,26 +164,9 @@ void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double 
         [](Range& r, const Range& block) {
             for (int a = 0; a < 3; ++a) r[2 * a] = std::min(r[2 * a], block[2 * a]), r[2 * a + 1] = std::max(r[2 * a + 1], block[2 * a + 1]);
         });
-    double extent[3];
-    for (int a = 0; a < 3; ++a) {
-        extent[a] = range[2 * a + 1] - range[2 * a];
-        lo_[a] = range[2 * a];
-        // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
-        // block of bins around a bin holds every neighbour (wider bins are never wrong).
-        const double per_reach = static_cast<double>(stencil_reach * (a == 0 ? x_bins_per_reach : 1));
-        n_[a] = static_cast<std::size_t>(std::clamp(std::floor(extent[a] / reach * per_reach), 1.0, 1e9));
-    }
-    // Not many more bins than points, so that sparse or long thin sets stay small: the axis
-    // with the most bins is halved until they are few enough; and fewer than 2^32 bins in all,
-    // so that a row or a bin along x is a 32-bit number.
-    const double most = std::min(4 * static_cast<double>(count) + 64, 4294967295.0);
-    while (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) > most) {
-        std::size_t& widest = *std::max_element(n_, n_ + 3);
-        widest = (widest + 1) / 2;
-    }
-    for (int a = 0; a < 3; ++a) scale_[a] = extent[a] > 0 ? static_cast<double>(n_[a]) / extent[a] : 0.0;
+    geometry_ = GridGeometry::of(range, count, reach);
+    std::copy(geometry_.n, geometry_.n + 3, n_);
 }
-
 // A stable counting sort by bin in two steps, first by row of bins (y and z), then by bin
 // along x within each row: every step's counters stay in cache, where one pass over all the
 // bins' counters (megabytes on a large set) missed it at every point. The first step carries
@@ -193,7 +209,7 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
             const std::uint32_t k = next[row[p]]++;
             x_[k] = points.at(0, p), y_[k] = points.at(1, p), z_[k] = points.at(2, p);
             // Ghosts follow the particles, and the neighbours-only particles end the particles.
-            source_[k] = points.source(p) | (p >= measured_ ? unvisited_bit : 0u);
+            source_[k] = points.tagged ? points.tagged[p] : points.source(p) | (p >= measured_ ? unvisited_bit : 0u);
         }
     });
     row = {};

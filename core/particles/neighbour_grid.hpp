@@ -8,12 +8,38 @@
 #include "support/process/first_touch.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 namespace sphkern {
+
+// The bins of a whole set: along each axis n bins from lo, coordinate c in bin
+// floor((c - lo) scale) clamped to [0, n - 1]. A slab of a larger set (particles/slabs) sorts
+// its points into the whole set's bins, so that each bin holds the same points in the same order.
+struct GridGeometry {
+    std::size_t n[3] = {1, 1, 1};
+    double lo[3] = {0, 0, 0}, scale[3] = {0, 0, 0};
+    std::size_t bin(int a, double c) const
+    {
+        const double t = std::floor((c - lo[a]) * scale[a]);
+        return static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(n[a] - 1)));
+    }
+    // The bins of `count` points (particles and ghosts) within range = {min x, max x, min y,
+    // max y, min z, max z}, for a largest support radius `reach`.
+    static GridGeometry of(const std::array<double, 6>& range, std::size_t count, double reach);
+};
+
+// A slab of a larger set: the whole set's bins, of which the rows [first, last) along `axis`
+// hold points: the slab's own rows [own_first, own_last) and the halo beside them (a row of
+// bins is at least a reach wide). Only the particles in the own rows are visited.
+struct GridWindow {
+    GridGeometry whole;
+    int axis = 2;
+    std::size_t first = 0, last = 0, own_first = 0, own_last = 0;
+};
 
 class NeighbourGrid {
 public:
@@ -33,13 +59,16 @@ public:
 
     // `reach`: the largest support radius of any particle. Throws Error(input) for a periodic
     // box narrower than twice the reach (a particle would see two images of one neighbour).
-    // Built on `threads` threads; the grid is the same on any number.
-    NeighbourGrid(const ParticleSet& set, double reach, int threads = 1);
+    // Built on `threads` threads; the grid is the same on any number. With a window, the set
+    // is a slab of a larger one and only the window's rows are kept.
+    NeighbourGrid(const ParticleSet& set, double reach, int threads = 1, const GridWindow* window = nullptr);
 
     std::size_t points() const { return x_.size(); }  // particles and ghosts
     std::size_t particles() const { return particles_; }
     // The particle a point (particle or ghost) stands for.
     std::uint32_t source(std::size_t point) const { return source_[point] & ~unvisited_bit; }
+    // The particle's row in its file (ParticleSet::id), for errors.
+    std::uint64_t id(std::size_t point) const { return ids_.empty() ? source(point) : ids_[source(point)]; }
     const double* x() const { return x_.data(); }
     const double* y() const { return y_.data(); }
     const double* z() const { return z_.data(); }
@@ -96,17 +125,17 @@ private:
     std::size_t clusters_per_row() const { return (n_[0] + bins_per_cluster - 1) / bins_per_cluster; }
     // The bin of coordinate c along axis a: the one formula of the sort and the search, so
     // that a point within the chord lies in a bin of the cut run (the formula is monotone).
+    // Counted from the window's first row (0 for a whole set).
     std::size_t bin_along(int a, double c) const
     {
-        const double t = std::floor((c - lo_[a]) * scale_[a]);
-        return static_cast<std::size_t>(std::clamp(t, 0.0, static_cast<double>(n_[a] - 1)));
+        return std::clamp(geometry_.bin(a, c), offset_[a], offset_[a] + n_[a] - 1) - offset_[a];
     }
     // The distance along axis a from c (in bin `own`) to bin `cell`, a little short of it
     // (the bin edges are computed, not stored).
     double gap(int a, std::size_t cell, std::size_t own, double c, double reach) const
     {
         if (cell == own) return 0.0;
-        const double edge = lo_[a] + static_cast<double>(cell < own ? cell + 1 : cell) / scale_[a];
+        const double edge = geometry_.lo[a] + static_cast<double>(offset_[a] + (cell < own ? cell + 1 : cell)) / geometry_.scale[a];
         return std::max(0.0, std::abs(c - edge) - 1e-9 * reach);
     }
     struct Unsorted;
@@ -124,8 +153,10 @@ private:
     std::size_t measured_ = 0; // particles [0, measured_) are visited
     FirstTouchVector<std::uint32_t> source_;
     std::vector<std::uint32_t> start_; // first point of each bin, and one past the last (points number fewer than 2^32)
-    std::size_t n_[3] = {1, 1, 1};
-    double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0}; // bin of c along a: floor((c - lo) scale)
+    GridGeometry geometry_;               // the whole set's bins
+    std::size_t n_[3] = {1, 1, 1};        // the bins kept along each axis (a window's rows, or all)
+    std::size_t offset_[3] = {0, 0, 0};   // the whole set's bin of the first kept one
+    std::vector<std::uint64_t> ids_;      // ParticleSet::ids
 };
 
 } // namespace sphkern

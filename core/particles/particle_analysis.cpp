@@ -19,20 +19,17 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
 {
     ParticlePoint point;
     const int threads = m.threads;
-    const std::pair<const char*, std::span<const double>> fields[] = {
-        {"e0", m.e0}, {"eps_rho", m.eps_rho_values()}, {"eps_gradp", m.eps_gradp}, {"eps_gradp_sum", m.eps_gradp_sum}};
-    for (const auto& [name, values] : fields) {
+    const std::span<const double> fields[] = {m.e0, m.eps_rho_values(), m.eps_gradp, m.eps_gradp_sum, m.e1_norm, m.m1_norm, m.E_norm};
+    for (std::size_t f = 0; f < std::size(fields); ++f) {
         // Without masses eps_rho is e0: its summary is e0's.
-        const bool same = !point.statistics.empty() && values.data() == m.e0.data();
-        point.statistics.emplace_back(name, same ? point.statistics.front().second : summarise(values, threads));
+        const bool same = f > 0 && fields[f].data() == m.e0.data();
+        point.statistics.emplace_back(measure_names[f], same ? point.statistics.front().second : summarise(fields[f], threads));
     }
-    point.statistics.emplace_back("|e1|", summarise(m.e1_norm, threads));
-    point.statistics.emplace_back("|m1|", summarise(m.m1_norm, threads));
-    point.statistics.emplace_back("||E||_F", summarise(m.E_norm, threads));
     point.statistics.emplace_back(
-        "neighbours", summarise_values(m.size(), threads, [&](std::size_t i) { return static_cast<double>(m.neighbours[i]); }));
+        measure_names[7], summarise_values(m.size(), threads, [&](std::size_t i) { return static_cast<double>(m.neighbours[i]); }));
     if (bins)
-        for (const auto& [name, values] : fields) point.histograms.emplace_back(name, histogram(values, bins, threads));
+        for (std::size_t f = 0; f < measures_with_histograms; ++f)
+            point.histograms.emplace_back(measure_names[f], histogram(fields[f], bins, threads));
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;
@@ -42,7 +39,7 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
 
 // No result is printed as a non-finite number: statistics that overflow a double (eps_rho
 // against a reference density far below the masses' density) are refused, naming the quantity.
-void require_finite(const ParticlePoint& point, const ParticleSet& set, const ParticleAnswer& answer)
+void require_finite(const ParticlePoint& point, const ParticleSet& set, double rho0)
 {
     for (const auto& [name, s] : point.statistics) {
         const double fields[] = {s.mean, s.std, s.rms, s.min, s.max, s.p1, s.p50, s.p99};
@@ -50,7 +47,7 @@ void require_finite(const ParticlePoint& point, const ParticleSet& set, const Pa
         const std::string why = name == std::string("eps_rho") && !set.mass.empty()
                                     ? fmt::format(" (the masses over rho0 = {:g}); expected a reference density "
                                                   "rho0 nearer the set's mass density",
-                                                  answer.rho0)
+                                                  rho0)
                                     : "; expected values within the range of a double";
         fail_input(fmt::format("{}: the statistics of {} overflow a double{}", set.name, name, why));
     }
@@ -82,6 +79,14 @@ void answer_volumes(ParticleAnswer& answer, const ParticleSet& set, const Partic
 
 } // namespace
 
+void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set, double rho0)
+{
+    require_finite(point, set, rho0);
+    point.eta = h.mean / unit;
+    point.nh = neighbour_number(point.eta, support, set.dimension);
+    point.h_min = h.min, point.h_max = h.max;
+}
+
 const Summary& ParticlePoint::statistic(const std::string& name) const
 {
     for (const auto& [key, s] : statistics)
@@ -93,6 +98,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
 {
     kernel.require_dimension(set.dimension, set.name);
     ParticleAnswer answer;
+    answer.particles = set.measured();
     PhaseTimes& phases = answer.phases;
     const int threads = worker_threads(request.threads);
     answer_volumes(answer, set, request, threads);
@@ -122,11 +128,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
                                    "larger h or a denser set",
                                    set.name, *i, h[*i]));
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
-        require_finite(point, set, answer);
-        const Summary h_range = statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; });
-        point.eta = h_range.mean / unit;
-        point.nh = neighbour_number(point.eta, R, dim);
-        point.h_min = h_range.min, point.h_max = h_range.max;
+        finish_point(point, statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; }), unit, R, set, answer.rho0);
         answer.threads = measures.threads;
         phases.lap("statistics");
         if (specs.size() > 1) spdlog::debug("{}: {} of {} (h/l = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);

@@ -47,6 +47,7 @@ struct ParticlePoint {
 };
 
 struct ParticleAnswer {
+    std::size_t particles = 0; // measured (a PySPH file's first array)
     VolumeModel volume = VolumeModel::uniform;
     double mean_volume = 0, rho0 = 1, spacing = 1;
     Eigen::Vector3d gravity;
@@ -59,5 +60,14 @@ struct ParticleAnswer {
 
 // Checks the request against the set (one line per problem), then measures.
 ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request);
+
+// The statistics of a point, in this order; the first four have histograms.
+inline constexpr const char* measure_names[] = {"e0", "eps_rho", "eps_gradp", "eps_gradp_sum", "|e1|", "|m1|", "||E||_F", "neighbours"};
+inline constexpr std::size_t measures_with_histograms = 4;
+
+// A point's h over the mean spacing, N_H and h range from the statistics of h (`unit` the
+// mean spacing V̄^(1/D)); and one line for statistics that overflow a double (Error(input)),
+// so that no non-finite number is printed.
+void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set, double rho0);
 
 } // namespace sphkern

@@ -36,9 +36,12 @@ using Clock = std::chrono::steady_clock;
 struct PointInputs {
     std::vector<double> per_point; // empty when uniform
     double all = 0;
-    static PointInputs of(const NeighbourGrid& grid, const PerParticleView& given)
+    // `find_uniform`: an array of one value is taken as that value (not in a slab, whose
+    // uniform values are the whole set's, said by the view).
+    static PointInputs of(const NeighbourGrid& grid, const PerParticleView& given, bool find_uniform)
     {
         if (given.is_uniform()) return {{}, given.uniform};
+        if (!find_uniform) return {grid.gather(given.values), 0.0};
         const std::span<const double> per_particle = given.values;
         const double v = per_particle.front();
         const bool uniform = !first_index_where(per_particle.size(), grid.threads(), [&](std::size_t i) { return per_particle[i] != v; });
@@ -70,6 +73,7 @@ public:
         return results_.back();
     }
     bool full() const { return results_.size() >= flush_at; }
+    const PointResult& last() const { return results_.back(); }
     void flush(ParticleMeasures& out)
     {
         constexpr std::size_t ahead = 8;
@@ -180,8 +184,8 @@ struct Sweep {
         if (std::isfinite(r.e0) && std::isfinite(r.eps_gradp))
             fail_input(fmt::format("{}: eps_rho of particle {} overflows a double (its masses over rho0 = {:g}); expected "
                                    "a reference density rho0 nearer the set's mass density",
-                                   set.name, r.i, in.rho0));
-        fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", r.i, set.name),
+                                   set.name, set.id(r.i), in.rho0));
+        fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", set.id(r.i), set.name),
                             fmt::format("h = {:.6g}", h), {nb.q.data(), nb.count});
     }
 
@@ -250,9 +254,9 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
 {
     check_inputs(set, inputs);
     kernel.require_dimension(set.dimension, set.name);
-    const double h_max = inputs.h.is_uniform()
-                             ? inputs.h.uniform
-                             : parallel_reduce(
+    const double h_max = inputs.slab           ? inputs.slab->h_max
+                         : inputs.h.is_uniform() ? inputs.h.uniform
+                                                 : parallel_reduce(
                                    set.size(), worker_threads(inputs.threads), 0.0,
                                    [&](std::size_t i, double& m) { m = std::max(m, inputs.h[i]); },
                                    [](double& m, double block) { m = std::max(m, block); });
@@ -260,8 +264,9 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     PhaseTimes phases;
     ParticleMeasures out;
     out.threads = worker_threads(inputs.threads);
-    const NeighbourGrid grid(set, kernel.support() * h_max, out.threads);
-    PointInputs h_points = PointInputs::of(grid, inputs.h);
+    const NeighbourGrid grid(set, kernel.support() * h_max, out.threads, inputs.slab ? &inputs.slab->window : nullptr);
+    const bool find_uniform = !inputs.slab;
+    PointInputs h_points = PointInputs::of(grid, inputs.h, find_uniform);
     // One h for every particle makes every pair's h that h.
     const bool pair_mean = inputs.pair == PairSmoothing::mean && !h_points.per_point.empty();
     PointInputs reach_points = reaches(grid, h_points, kernel.support(), pair_mean, h_max);
@@ -269,7 +274,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
                       set,
                       inputs,
                       grid,
-                      PointInputs::of(grid, inputs.volume),
+                      PointInputs::of(grid, inputs.volume, find_uniform),
                       std::move(h_points),
                       std::move(reach_points),
                       inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
@@ -289,6 +294,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
     std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread
+    std::vector<std::size_t> pairs(static_cast<std::size_t>(out.threads), 0);
     const double* b = pair_mean ? neighbour_points.data() : sweep.mass.empty() ? nullptr : sweep.mass.data();
     const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point, b, false, set.name + ": the sums"};
     pair_pass(
@@ -296,14 +302,13 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
         [&](int thread, std::size_t p, Neighbours& nb) {
             ResultBlock& block = results[static_cast<std::size_t>(thread)];
             sweep.measure(p, nb, block);
+            pairs[static_cast<std::size_t>(thread)] += static_cast<std::size_t>(block.last().neighbours);
             if (block.full()) block.flush(out);
         },
         [&](int thread) { results[static_cast<std::size_t>(thread)].flush(out); });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-    out.pairs = parallel_reduce(
-        n, out.threads, std::size_t{0}, [&](std::size_t i, std::size_t& pairs) { pairs += static_cast<std::size_t>(out.neighbours[i]); },
-        [](std::size_t& total, std::size_t block) { total += block; });
+    for (const std::size_t p : pairs) out.pairs += p;
     phases.lap("sums");
     out.phases = phases;
     return out;

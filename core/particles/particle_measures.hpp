@@ -5,6 +5,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "particles/neighbour_grid.hpp"
 #include "particles/per_particle.hpp"
 #include "particles/particle_set.hpp"
 #include "particles/smoothing_lengths.hpp"
@@ -18,6 +19,14 @@
 
 namespace sphkern {
 
+// A slab of a larger set (particles/slabs): the whole set's bins and largest h, so that every
+// particle of the slab's own rows sees what it sees in the whole set, in the same order. Its h
+// and V are uniform only where their views say so (the whole set's), never found so in the slab.
+struct MeasureSlab {
+    GridWindow window;
+    double h_max = 0;
+};
+
 // Views of the caller's arrays (nothing per particle is copied).
 struct MeasureInputs {
     PerParticleView h;              // sphkern's h of every particle (support R h)
@@ -30,10 +39,12 @@ struct MeasureInputs {
     int threads = 0;            // 0: every core
     bool vectors = true;        // keep e1, m1 and E per particle (else only their magnitudes)
     PairSmoothing pair = PairSmoothing::own; // the mean: W(r_ij, (h_i + h_j) / 2) and its gradient
+    const MeasureSlab* slab = nullptr;       // a slab: only its own rows' particles measured
 };
 
 // Every array is written by the threads of the sums (first touch), one value per measured
-// particle (ParticleSet::measured: the neighbours-only particles have none).
+// particle (ParticleSet::measured: the neighbours-only particles have none; in a slab, only
+// the particles of its own rows have theirs).
 // The statistics need only the scalars (52 bytes a particle without masses); the vectors and
 // the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {

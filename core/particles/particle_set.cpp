@@ -36,7 +36,7 @@ void check_positive(const ParticleValues& values, const ParticleSet& set, const 
     if (values.size() != set.size())
         fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
     if (const auto i = first_index_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
-        fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, *i,
+        fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, set.id(*i),
                                values[*i]));
 }
 
@@ -65,7 +65,7 @@ void wrap_into_box(ParticleSet& set, WrapReach reach, int threads)
         return true;
     };
     if (const auto i = first_index_where(set.size(), threads, [&](std::size_t i) { return !wrap(i); }))
-        fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, *i,
+        fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, set.id(*i),
                                set.x[*i], set.y[*i], set.z[*i]));
 }
 
@@ -76,22 +76,27 @@ void validate_particle_set(ParticleSet& set, int threads)
     if (set.size() < 2) fail_input(fmt::format("{}: {} particles; expected at least 2", set.name, set.size()));
     if (set.y.size() != set.size() || set.z.size() != set.size())
         fail_input(fmt::format("{}: the coordinate arrays differ in length", set.name));
-    const auto not_finite = [&](std::size_t i) {
-        return !std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]);
-    };
-    if (const auto i = first_index_where(set.size(), threads, not_finite))
-        fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, *i, set.x[*i],
-                               set.y[*i], set.z[*i]));
-    check_positive(set.h, set, "the smoothing length", threads);
-    check_positive(set.mass, set, "the mass", threads);
-    check_positive(set.density, set, "the density", threads);
     if (set.box) {
         const double volume = set.box->volume(set.dimension);
         if (!std::isfinite(volume) || volume <= 0)
             fail_input(fmt::format("{}: the periodic box has no volume; expected {} independent edges", set.name,
                                    set.dimension));
-        wrap_into_box(set, WrapReach::one_box, threads);
     }
+    validate_particle_values(set, threads);
+}
+
+void validate_particle_values(ParticleSet& set, int threads)
+{
+    const auto not_finite = [&](std::size_t i) {
+        return !std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]);
+    };
+    if (const auto i = first_index_where(set.size(), threads, not_finite))
+        fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, set.id(*i), set.x[*i],
+                               set.y[*i], set.z[*i]));
+    check_positive(set.h, set, "the smoothing length", threads);
+    check_positive(set.mass, set, "the mass", threads);
+    check_positive(set.density, set, "the density", threads);
+    if (set.box) wrap_into_box(set, WrapReach::one_box, threads);
 }
 
 } // namespace sphkern

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,7 +48,12 @@ struct ParticleSet {
     // solids): they enter the others' sums but are not measured; the statistics are over the rest.
     std::size_t neighbours_only = 0;
 
+    // Each particle's row in its file where the set is a part of a larger one (a slab, a chunk
+    // read); empty: the row is the index. Errors name particles by it.
+    std::vector<std::uint64_t> ids;
+
     std::size_t size() const { return x.size(); }
+    std::uint64_t id(std::size_t i) const { return ids.empty() ? i : ids[i]; }
     std::size_t measured() const { return x.size() - neighbours_only; }
     Eigen::Vector3d position(std::size_t i) const { return {x[i], y[i], z[i]}; }
 };
@@ -56,6 +62,9 @@ struct ParticleSet {
 // the box (wrapped into it), positive finite h, masses and densities. Throws Error(input)
 // naming the set, the field and the particle id (the lowest one, on any number of threads).
 void validate_particle_set(ParticleSet& set, int threads = 1);
+// Its per-particle part, for a part of a set read chunk by chunk: finite coordinates, positive
+// finite h, masses and densities, and each particle wrapped into the box.
+void validate_particle_values(ParticleSet& set, int threads = 1);
 
 // The box shared out equally, V = box / N, and its D-th root l = V^(1/D), the mean spacing
 // (a set with a box).

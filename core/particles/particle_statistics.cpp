@@ -109,26 +109,38 @@ void Percentiles::finish(const std::vector<std::vector<std::vector<std::uint64_t
 
 } // namespace statistics_detail
 
-Histogram histogram(std::span<const double> values, std::size_t bins, int threads)
+void ExactSummary::fold_counts()
 {
-    Histogram h;
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    h.lo = *lo, h.hi = *hi;
-    const double width = (h.hi - h.lo) / static_cast<double>(bins);
+    auto& total = counts_.front();
+    for (std::size_t t = 1; t < counts_.size(); ++t)
+        for (std::size_t b = 0; b < statistics_detail::buckets; ++b) total[b] += counts_[t][b];
+    counts_.resize(1);
+}
+
+void Histogram::add(std::span<const double> values, int threads)
+{
+    const std::size_t bins = counts.size();
+    const double width = (hi - lo) / static_cast<double>(bins);
     threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / statistics_detail::buckets + 1));
-    std::vector<std::vector<std::size_t>> counts(static_cast<std::size_t>(threads));
+    std::vector<std::vector<std::size_t>> parts(static_cast<std::size_t>(threads));
     ParallelFor pass;
     pass.run(values.size(), threads, [&](int t, std::size_t begin, std::size_t end) {
-        auto& c = counts[static_cast<std::size_t>(t)];
+        auto& c = parts[static_cast<std::size_t>(t)];
         c.assign(bins, 0);
         for (std::size_t i = begin; i < end; ++i) {
-            const std::size_t b = width > 0 ? static_cast<std::size_t>((values[i] - h.lo) / width) : 0;
+            const std::size_t b = width > 0 ? static_cast<std::size_t>((values[i] - lo) / width) : 0;
             c[std::min(b, bins - 1)] += 1;
         }
     });
-    h.counts.assign(bins, 0);
-    for (const auto& c : counts)
-        for (std::size_t b = 0; b < bins; ++b) h.counts[b] += c[b];
+    for (const auto& c : parts)
+        for (std::size_t b = 0; b < bins; ++b) counts[b] += c[b];
+}
+
+Histogram histogram(std::span<const double> values, std::size_t bins, int threads)
+{
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    Histogram h(*lo, *hi, bins);
+    h.add(values, threads);
     return h;
 }
 

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -69,23 +70,106 @@ private:
 
 Summary merge_moments(const std::vector<Moments>& blocks);
 
+} // namespace statistics_detail
+
+// The exact summary of n values that arrive in index order, in runs [begin, begin + count)
+// whose begin is a multiple of particle_block_size (the whole range at once, or a file read
+// chunk by chunk): three passes over the values, each taking every run in order. The moments
+// are per fixed block of particle_block_size, merged in block order, and the percentiles come
+// from integer counts and a selection of the keys in the ranks' buckets, so the bits depend
+// neither on the thread count nor on how the values were cut into runs.
+class ExactSummary {
+public:
+    explicit ExactSummary(std::size_t n) : n_(n), blocks_((n + particle_block_size - 1) / particle_block_size) {}
+
+    // Pass 1: the moments of each block of the run (two passes over a block in cache).
+    template <class Value>
+    void add_moments(std::size_t begin, std::size_t count, int threads, const Value& value)
+    {
+        using namespace statistics_detail;
+        ParallelFor pass;
+        pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t to) {
+            Moments& m = blocks_[begin / particle_block_size + b];
+            double sum = 0;
+            for (std::size_t i = from; i < to; ++i) {
+                const double v = value(i);
+                sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
+            }
+            m.count = static_cast<double>(to - from), m.mean = sum / m.count;
+            for (std::size_t i = from; i < to; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
+        });
+    }
+    // Mean, std, RMS and range: the moments alone.
+    Summary moments() const { return statistics_detail::merge_moments(blocks_); }
+
+    // Pass 2: each value's bucket counted (a thread counts into its own buckets, first touched
+    // by it: one thread per 65536 values at most).
+    template <class Value>
+    void count(std::size_t count, int threads, const Value& value)
+    {
+        using namespace statistics_detail;
+        if (!buckets_) summary_ = moments(), buckets_.emplace(summary_.min, summary_.max);
+        const int workers = std::clamp<int>(threads, 1, static_cast<int>(count / buckets + 1));
+        const std::size_t first = counts_.size();
+        counts_.resize(first + static_cast<std::size_t>(workers));
+        ParallelFor counting;
+        counting.run(count, workers, [&](int t, std::size_t from, std::size_t to) {
+            auto& c = counts_[first + static_cast<std::size_t>(t)];
+            c.assign(buckets, 0);
+            for (std::size_t i = from; i < to; ++i) ++c[buckets_->of(order_key(value(i)))];
+        });
+        // The counts so far in one: memory stays one set of buckets per thread, however many runs.
+        if (counts_.size() > static_cast<std::size_t>(workers)) fold_counts();
+    }
+
+    // Pass 3: the keys in the buckets of the percentiles' ranks gathered.
+    template <class Value>
+    void gather(std::size_t count, int threads, const Value& value)
+    {
+        using namespace statistics_detail;
+        if (!percentiles_) percentiles_.emplace(counts_, n_, *buckets_, std::max(1, threads)), counts_.clear();
+        const int workers = std::clamp<int>(threads, 1, static_cast<int>(count / buckets + 1));
+        const std::size_t first = parts_.size();
+        parts_.resize(first + static_cast<std::size_t>(workers));
+        ParallelFor gathering;
+        gathering.run(count, workers, [&](int t, std::size_t from, std::size_t to) {
+            auto& part = parts_[first + static_cast<std::size_t>(t)];
+            part.resize(percentiles_->slots());
+            for (std::size_t i = from; i < to; ++i) {
+                const std::uint64_t key = order_key(value(i));
+                if (const int k = percentiles_->slot(key); k >= 0) part[static_cast<std::size_t>(k)].push_back(key);
+            }
+        });
+    }
+
+    // After the three passes: the whole summary.
+    Summary finish() const
+    {
+        Summary s = summary_;
+        percentiles_->finish(parts_, s);
+        return s;
+    }
+
+private:
+    void fold_counts();
+    std::size_t n_;
+    std::vector<statistics_detail::Moments> blocks_;
+    Summary summary_;
+    std::optional<statistics_detail::KeyBuckets> buckets_;
+    std::vector<std::vector<std::uint32_t>> counts_;
+    std::optional<statistics_detail::Percentiles> percentiles_;
+    std::vector<std::vector<std::vector<std::uint64_t>>> parts_;
+};
+
+namespace statistics_detail {
+
 // The moments of value(i) over [0, n), block by block.
 template <class Value>
 Summary moments(std::size_t n, int threads, const Value& value)
 {
-    std::vector<Moments> blocks((n + particle_block_size - 1) / particle_block_size);
-    ParallelFor pass;
-    pass.run_blocks(n, particle_block_size, threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        Moments& m = blocks[b];
-        double sum = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-            const double v = value(i);
-            sum += v, m.min = std::min(m.min, v), m.max = std::max(m.max, v);
-        }
-        m.count = static_cast<double>(end - begin), m.mean = sum / m.count;
-        for (std::size_t i = begin; i < end; ++i) m.m2 += (value(i) - m.mean) * (value(i) - m.mean);
-    });
-    return merge_moments(blocks);
+    ExactSummary summary(n);
+    summary.add_moments(0, n, threads, value);
+    return summary.moments();
 }
 
 } // namespace statistics_detail
@@ -103,31 +187,11 @@ inline Summary summarise_moments(std::span<const double> values, int threads = 1
 template <class Value>
 Summary summarise_values(std::size_t n, int threads, const Value& value)
 {
-    using namespace statistics_detail;
-    Summary s = moments(n, threads, value);
-    const KeyBuckets of(s.min, s.max);
-    // A thread counts into its own buckets (allocated and first touched by it): one thread per 65536 values at most.
-    const int workers = std::clamp<int>(threads, 1, static_cast<int>(n / buckets + 1));
-    std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(workers));
-    ParallelFor counting;
-    counting.run(n, workers, [&](int t, std::size_t begin, std::size_t end) {
-        auto& c = counts[static_cast<std::size_t>(t)];
-        c.assign(buckets, 0);
-        for (std::size_t i = begin; i < end; ++i) ++c[of.of(order_key(value(i)))];
-    });
-    const Percentiles percentiles(counts, n, of, workers);
-    std::vector<std::vector<std::vector<std::uint64_t>>> parts(static_cast<std::size_t>(workers));
-    ParallelFor gathering;
-    gathering.run(n, workers, [&](int t, std::size_t begin, std::size_t end) {
-        auto& part = parts[static_cast<std::size_t>(t)];
-        part.resize(percentiles.slots());
-        for (std::size_t i = begin; i < end; ++i) {
-            const std::uint64_t key = order_key(value(i));
-            if (const int k = percentiles.slot(key); k >= 0) part[static_cast<std::size_t>(k)].push_back(key);
-        }
-    });
-    percentiles.finish(parts, s);
-    return s;
+    ExactSummary summary(n);
+    summary.add_moments(0, n, threads, value);
+    summary.count(n, threads, value);
+    summary.gather(n, threads, value);
+    return summary.finish();
 }
 
 inline Summary summarise(std::span<const double> values, int threads = 1)
@@ -138,6 +202,11 @@ inline Summary summarise(std::span<const double> values, int threads = 1)
 struct Histogram {
     double lo = 0, hi = 0;
     std::vector<std::size_t> counts; // equal bins over [lo, hi], the last one closed
+
+    Histogram(double lo, double hi, std::size_t bins) : lo(lo), hi(hi), counts(bins, 0) {}
+    Histogram() = default;
+    // Counts `values` into the bins (integers: in any order, in any runs).
+    void add(std::span<const double> values, int threads = 1);
 };
 Histogram histogram(std::span<const double> values, std::size_t bins, int threads = 1);
 

@@ -55,7 +55,7 @@ nlohmann::json point_json(const ParticlePoint& p)
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
                                     const ParticleArguments& asked)
 {
-    nlohmann::json source = {{"name", set.name}, {"particles", set.measured()}, {"dimension", set.dimension},
+    nlohmann::json source = {{"name", set.name}, {"particles", answer.particles}, {"dimension", set.dimension},
                              {"periodic", set.box.has_value()}};
     if (set.neighbours_only) source["neighbours_only"] = set.neighbours_only;
     if (set.box) {
@@ -87,7 +87,7 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
                            const ParticleArguments& asked)
 {
     fmt::print(out, "{} on {}: {} particles{} in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
-               kernel.label(), set.name, set.measured(),
+               kernel.label(), set.name, answer.particles,
                set.neighbours_only ? fmt::format(" (and {} neighbours only)", set.neighbours_only) : "", set.dimension,
                set.box ? "periodic box" : "free (no box)",
                volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
@@ -116,24 +116,62 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
 }
 
 // The per-particle values in the shortest form that reads back to the same double.
+namespace {
+
+// One particle's CSV row: the one format of the whole set in memory and of a set in slabs.
+struct CsvRow {
+    std::uint64_t id;
+    double x, y, z, h, volume;
+    long long neighbours;
+    double e0, eps_rho, eps_gradp;
+    std::array<double, 3> e1, m1;
+};
+
+void format_row(fmt::memory_buffer& row, const CsvRow& r, bool three)
+{
+    auto to = std::back_inserter(row);
+    fmt::format_to(to, "{},{},{},", r.id, r.x, r.y);
+    if (three) fmt::format_to(to, "{},", r.z);
+    fmt::format_to(to, "{},{},{},{},{},{},{},{},", r.h, r.volume, r.neighbours, r.e0, r.eps_rho, r.eps_gradp, r.e1[0], r.e1[1]);
+    if (three) fmt::format_to(to, "{},", r.e1[2]);
+    fmt::format_to(to, "{},{}", r.m1[0], r.m1[1]);
+    if (three) fmt::format_to(to, ",{}", r.m1[2]);
+    fmt::format_to(to, "\n");
+}
+
+void print_csv_header(ChunkedWriter& out, bool three)
+{
+    out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
+              three ? "e1_z," : "", three ? ",m1_z" : "");
+}
+
+} // namespace
+
 void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
     const auto& eps_rho = m.eps_rho_values();
     const bool three = set.dimension == 3;
     ChunkedWriter out(stream);
-    out.print("id,x,y,{}h,volume,neighbours,e0,eps_rho,eps_gradp,e1_x,e1_y,{}m1_x,m1_y{}\n", three ? "z," : "",
-              three ? "e1_z," : "", three ? ",m1_z" : "");
+    print_csv_header(out, three);
     out.rows(set.measured(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
-        auto to = std::back_inserter(row);
-        fmt::format_to(to, "{},{},{},", i, set.x[i], set.y[i]);
-        if (three) fmt::format_to(to, "{},", set.z[i]);
-        fmt::format_to(to, "{},{},{},{},{},{},{},{},", answer.h[i], answer.volumes[i], m.neighbours[i], m.e0[i],
-                       eps_rho[i], m.eps_gradp[i], m.e1[i][0], m.e1[i][1]);
-        if (three) fmt::format_to(to, "{},", m.e1[i][2]);
-        fmt::format_to(to, "{},{}", m.m1[i][0], m.m1[i][1]);
-        if (three) fmt::format_to(to, ",{}", m.m1[i][2]);
-        fmt::format_to(to, "\n");
+        format_row(row, {i, set.x[i], set.y[i], set.z[i], answer.h[i], answer.volumes[i], m.neighbours[i], m.e0[i], eps_rho[i],
+                         m.eps_gradp[i], m.e1[i], m.m1[i]},
+                   three);
+    });
+}
+
+ParticleCsvRows::ParticleCsvRows(std::ostream& out, int dimension, int threads) : out_(out), three_(dimension == 3), threads_(threads)
+{
+    print_csv_header(out_, three_);
+}
+
+void ParticleCsvRows::write(const MeasuredRows& r)
+{
+    out_.rows(r.count, threads_, [&](fmt::memory_buffer& row, std::size_t k) {
+        format_row(row, {r.begin + k, r.x[k], r.y[k], r.z[k], r.h[k], r.volume[k], static_cast<long long>(r.neighbours[k]), r.e0[k],
+                         r.eps_rho[k], r.eps_gradp[k], {r.e1[0][k], r.e1[1][k], r.e1[2][k]}, {r.m1[0][k], r.m1[1][k], r.m1[2][k]}},
+                   three_);
     });
 }
 

@@ -2,6 +2,9 @@
 // per-particle values as CSV or legacy VTK (point data, for ParaView).
 #pragma once
 
+#include "particles/slabs/particles_in_slabs.hpp"
+#include "support/io/chunked_writer.hpp"
+
 #include "requests/particles_request.hpp"
 #include "particles/particle_analysis.hpp"
 
@@ -22,6 +25,18 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
 // One row per particle in id order: id, x, y, [z,] h, volume, neighbours, e0, eps_rho,
 // eps_gradp, e1_x, e1_y[, e1_z], m1_x, m1_y[, m1_z]. Needs a single h (answer.measures).
 void write_particle_csv(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
+// The same rows streamed run by run from a set measured in slabs (`dimension` its D): the header
+// with the first call, the bytes the whole set in memory gives.
+class ParticleCsvRows {
+public:
+    ParticleCsvRows(std::ostream& out, int dimension, int threads);
+    void write(const MeasuredRows& rows);
+
+private:
+    ChunkedWriter out_;
+    bool three_;
+    int threads_;
+};
 void write_particle_vtk(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
 
 } // namespace sphkern

@@ -85,4 +85,24 @@ ParticleSet load_source(const ParticleSource& s, const SourceSources& sources, i
     return load_particles(s, threads);
 }
 
+std::unique_ptr<SnapshotRows> snapshot_in_slabs(const ParticleSource& s, const SourceSources& sources)
+{
+    if (s.kind != SourceKind::file || particle_file_format(s.spec) != ParticleFileFormat::hdf5) return nullptr;
+    check_particle_source(s, sources);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(s.spec, ec) || !is_snapshot(s.spec)) return nullptr;
+    auto snapshot = std::make_unique<SnapshotRows>(s.spec);
+    if (snapshot->size() <= max_particles()) return nullptr;
+    if (s.file.dimension)
+        sources.dim.fail(fmt::format("{}: a snapshot of {} particles, over the memory budget, is read in slabs; expected its "
+                                     "/Header Dimension instead",
+                                     *s.file.dimension, snapshot->size()));
+    if (s.box) {
+        PeriodicBox box;
+        for (int a = 0; a < snapshot->sample().dimension; ++a) box.edges(a, a) = (*s.box)[a];
+        snapshot->set_box(box);
+    }
+    return snapshot;
+}
+
 } // namespace sphkern

@@ -3,10 +3,12 @@
 // the lattice read once.
 #pragma once
 
+#include "particles/formats/snapshot_rows.hpp"
 #include "particles/sources/particle_source.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <cstddef>
+#include <memory>
 
 namespace sphkern {
 
@@ -27,5 +29,11 @@ void set_memory_budget(double gib, const ValueSource& source);
 // Checked, then made or read: a block takes as many cell counts as its lattice has dimensions,
 // and a block or a Poisson set over the memory budget is refused before it is made.
 ParticleSet load_source(const ParticleSource& source, const SourceSources& sources, int threads);
+
+// A particle file that is a SWIFT or GADGET snapshot declaring more particles than the memory
+// budget holds: opened to be read in slabs (particles/slabs), its box the one given where a box
+// is given; none for any other source. A dimension given for it is refused (finding its one
+// constant coordinate would read it whole).
+std::unique_ptr<SnapshotRows> snapshot_in_slabs(const ParticleSource& source, const SourceSources& sources);
 
 } // namespace sphkern

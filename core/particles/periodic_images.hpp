@@ -1,0 +1,53 @@
+// The periodic images of a particle that lie within a reach of its box: the ghosts a
+// neighbour search adds at the faces. One formula for the grid and for the slabs of a set
+// read in parts, so that both find the same images at the same coordinates, bit for bit.
+#pragma once
+
+#include "particles/particle_set.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+namespace sphkern {
+
+class PeriodicImages {
+public:
+    PeriodicImages(const PeriodicBox& box, int dimension, double reach) : dim_(dimension), cell_(box.edges)
+    {
+        if (dim_ == 2) cell_.col(2) = Eigen::Vector3d::UnitZ();
+        inverse_ = cell_.inverse();
+        // An image is needed where it lies within `reach` of the box: within this fractional
+        // margin of a face along each edge.
+        for (int a = 0; a < dim_; ++a) margin_[a] = reach * inverse_.row(a).norm() * (1 + 1e-9);
+    }
+
+    // visit(x, y, z) for each image of `position` (inside the box) near the box, in a fixed order.
+    template <class Visit>
+    void of(const Eigen::Vector3d& position, const Visit& visit) const
+    {
+        const Eigen::Vector3d f = inverse_ * position;
+        // Most particles lie farther than the margin from every face: no image of theirs is near.
+        bool inner = true;
+        for (int d = 0; d < dim_; ++d) inner = inner && f[d] >= margin_[d] && f[d] < 1 - margin_[d];
+        if (inner) return;
+        const int nz = dim_ == 3 ? 1 : 0;
+        for (int a = -1; a <= 1; ++a)
+            for (int b = -1; b <= 1; ++b)
+                for (int c = -nz; c <= nz; ++c) {
+                    if (a == 0 && b == 0 && c == 0) continue;
+                    const Eigen::Vector3d image = f + Eigen::Vector3d(a, b, c);
+                    bool near = true;
+                    for (int d = 0; d < dim_; ++d) near = near && image[d] >= -margin_[d] && image[d] < 1 + margin_[d];
+                    if (!near) continue;
+                    const Eigen::Vector3d p = cell_ * image;
+                    visit(p.x(), p.y(), dim_ == 3 ? p.z() : 0.0);
+                }
+    }
+
+private:
+    int dim_;
+    Eigen::Matrix3d cell_, inverse_;
+    Eigen::Vector3d margin_ = Eigen::Vector3d::Zero();
+};
+
+} // namespace sphkern

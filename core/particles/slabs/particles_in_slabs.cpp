@@ -1,0 +1,197 @@
+#include "particles/slabs/particles_in_slabs.hpp"
+
+#include "particles/particle_measures.hpp"
+#include "particles/particles_memory.hpp"
+#include "particles/periodic_images.hpp"
+#include "particles/slabs/slab_plan.hpp"
+#include "particles/slabs/slab_spills.hpp"
+#include "support/error.hpp"
+#include "support/process/progress.hpp"
+#include "support/text/setting_names.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <optional>
+
+namespace sphkern {
+
+namespace {
+
+// A spilled record: the particle's row, h and the statistics' measures; then, for a
+// per-particle output, its position, volume, e1 and m1.
+enum Field : std::size_t { row, h_field, neighbours, e0, eps_rho, eps_gradp, eps_gradp_sum, e1_norm, m1_norm, E_norm, x, y, z, volume, e1, m1 = e1 + 3 };
+constexpr std::size_t statistics_fields = E_norm + 1, output_fields = m1 + 3;
+// The column of each of measure_names.
+constexpr Field measure_field[] = {e0, eps_rho, eps_gradp, eps_gradp_sum, e1_norm, m1_norm, E_norm, neighbours};
+
+// The slab's particles: each with a point (itself or a periodic image) in the slab's rows, in file order.
+ParticleSet read_slab(const SnapshotRows& file, const SlabPlan& plan, const Slab& slab, double reach, int threads)
+{
+    const ParticleSet& sample = file.sample();
+    std::optional<PeriodicImages> images;
+    if (sample.box) images.emplace(*sample.box, sample.dimension, reach);
+    ParticleSet set = sample;
+    for (auto* v : {&set.x, &set.y, &set.z, &set.h, &set.mass, &set.density}) v->clear();
+    set.linked_files.clear();
+    const int axis = plan.axis;
+    auto inside = [&](double x, double y, double z) {
+        const double c[3] = {x, y, z};
+        const std::size_t r = plan.geometry.bin(axis, c[axis]);
+        return r >= slab.first && r < slab.last;
+    };
+    for (std::size_t begin = 0; begin < file.size(); begin += slab_read_rows) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(file.size(), begin + slab_read_rows), threads);
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            bool keep = inside(rows.x[i], rows.y[i], rows.z[i]);
+            if (!keep && images) images->of(rows.position(i), [&](double x, double y, double z) { keep = keep || inside(x, y, z); });
+            if (!keep) continue;
+            set.x.push_back(rows.x[i]), set.y.push_back(rows.y[i]), set.z.push_back(rows.z[i]);
+            if (!rows.h.empty()) set.h.push_back(rows.h[i]);
+            if (!rows.mass.empty()) set.mass.push_back(rows.mass[i]);
+            if (!rows.density.empty()) set.density.push_back(rows.density[i]);
+            set.ids.push_back(rows.id(i));
+        }
+    }
+    return set;
+}
+
+void refuse(const ParticleSet& set, const std::string& what)
+{
+    fail_input(fmt::format("{}: {} particles, over the memory budget ({}), are measured in slabs, which {}", set.name,
+                           set.size(), setting_named("memory_limit"), what));
+}
+
+} // namespace
+
+std::size_t slab_spill_bytes(std::size_t particles, bool per_particle)
+{
+    return particles * (per_particle ? output_fields : statistics_fields) * sizeof(double);
+}
+
+ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRows& file, const ParticleRequest& request,
+                                          const MeasuredRowsSink& rows)
+{
+    const ParticleSet& sample = file.sample();
+    const std::size_t n = file.size();
+    kernel.require_dimension(sample.dimension, sample.name);
+    if (n < 2) fail_input(fmt::format("{}: {} particles; expected at least 2", sample.name, n));
+    const SmoothingSpec& spec = request.smoothing;
+    if (request.sweep) refuse(sample, "take one h, not a sweep");
+    if (spec.rule == SmoothingRule::density) refuse(sample, "take h from h over l, N_H or the file, not solved from each particle's density");
+    const VolumeModel model = request.volume.value_or(default_volume_model(sample));
+    if (model == VolumeModel::voronoi) refuse(sample, "take uniform volumes or the file's, not Voronoi cells");
+    if (!request.given_volumes.empty()) refuse(sample, "take uniform volumes or the file's, not given ones");
+    const bool per_particle = static_cast<bool>(rows);
+    const std::size_t fields = per_particle ? output_fields : statistics_fields;
+    // The disk the spills need, before anything is read.
+    const auto room = std::filesystem::space(SlabSpills::folder_parent()).available;
+    if (slab_spill_bytes(n, per_particle) > room)
+        throw Error(ExitCode::output, fmt::format("{}: the slabs' per-particle results need {:.4g} bytes of disk in {}, which "
+                                                  "has {:.4g}; expected more room there (TMPDIR)",
+                                                  sample.name, static_cast<double>(slab_spill_bytes(n, per_particle)),
+                                                  SlabSpills::folder_parent().string(), static_cast<double>(room)));
+    ParticleAnswer answer;
+    PhaseTimes& phases = answer.phases;
+    const int threads = worker_threads(request.threads);
+    answer.particles = n, answer.volume = model, answer.threads = threads;
+    answer.gravity = request.gravity ? request.gravity->normalized() : sample.gravity;
+
+    // What is held beside a slab (a run of rows read and of records spilled), and after the
+    // slabs what the merge and the statistics hold (a run of records, each slab's read buffer,
+    // the blocks' moments and the buckets of the percentiles); then the plan checks each slab.
+    const std::size_t beside_slab = slab_read_rows * (8 + fields) * sizeof(double) + (n / particle_block_size + 1) * 400;
+    const std::size_t statistics = std::size_t{8} << 20;
+    if (memory_limit_bytes() <= beside_slab + statistics)
+        fail_input(fmt::format("{}: the memory budget of {:.4g} bytes ({}) leaves nothing for a slab; expected more than {:.4g}",
+                               sample.name, static_cast<double>(memory_limit_bytes()), setting_named("memory_limit"),
+                               static_cast<double>(beside_slab + statistics)));
+    const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads}, memory_limit_bytes() - beside_slab - statistics);
+    answer.mean_volume = plan.mean_volume, answer.rho0 = plan.rho0, answer.spacing = plan.spacing;
+    phases.lap("plan");
+    spdlog::debug("{}: {} particles in {} slabs along axis {}", sample.name, n, plan.slabs.size(), plan.axis);
+
+    SlabSpills spills(fields, plan.slabs.size());
+    ParticlePoint point;
+    std::optional<std::pair<std::uint64_t, double>> alone; // the first particle with no neighbour, and its h
+    Progress progress(sample.name + ": slabs", plan.slabs.size());
+    for (std::size_t s = 0; s < plan.slabs.size(); ++s) {
+        const Slab& slab = plan.slabs[s];
+        progress.reach(s, fmt::format("slab {} of {}", s + 1, plan.slabs.size()));
+        phases.restart();
+        const ParticleSet set = read_slab(file, plan, slab, kernel.support() * plan.h_max, threads);
+        const PerParticle volumes = plan.uniform_volume ? PerParticle::same(set.size(), plan.volume) : particle_volumes(set, model, threads);
+        const PerParticle h = plan.uniform_h ? PerParticle::same(set.size(), plan.h) : smoothing_lengths(set, kernel, spec, plan.mean_volume, threads);
+        phases.lap("read");
+        const MeasureSlab window{{plan.geometry, plan.axis, slab.first, slab.last, slab.own_first, slab.own_last}, plan.h_max};
+        const MeasureInputs inputs{h.view(),      volumes.view(),  set.mass,          plan.rho0, plan.spacing, request.depth,
+                                   answer.gravity, request.threads, per_particle, spec.pair, &window};
+        const ParticleMeasures m = measure_particles(kernel, set, inputs);
+        phases.merge(m.phases);
+        phases.restart();
+        point.seconds += m.seconds, point.cpu_seconds += m.cpu_seconds, point.pairs += m.pairs;
+        // The slab's own particles, in file order.
+        std::vector<double> records;
+        const auto flush = [&] { spills.append(s, records), records.clear(); };
+        for (std::size_t i = 0; i < set.measured(); ++i) {
+            const double c[3] = {set.x[i], set.y[i], set.z[i]};
+            const std::size_t r = plan.geometry.bin(plan.axis, c[plan.axis]);
+            if (r < slab.own_first || r >= slab.own_last) continue;
+            if (m.neighbours[i] == 0 && (!alone || set.ids[i] < alone->first)) alone.emplace(set.ids[i], h[i]);
+            const double record[] = {static_cast<double>(set.ids[i]), h[i], static_cast<double>(m.neighbours[i]), m.e0[i],
+                                     m.eps_rho_values()[i], m.eps_gradp[i], m.eps_gradp_sum[i], m.e1_norm[i], m.m1_norm[i], m.E_norm[i]};
+            records.insert(records.end(), std::begin(record), std::end(record));
+            if (per_particle) {
+                const double more[] = {set.x[i], set.y[i], set.z[i], volumes[i], m.e1[i][0], m.e1[i][1], m.e1[i][2], m.m1[i][0], m.m1[i][1], m.m1[i][2]};
+                records.insert(records.end(), std::begin(more), std::end(more));
+            }
+            if (records.size() >= fields * 4096) flush();
+        }
+        flush();
+        spills.close_slab(s);
+        phases.lap("spill");
+    }
+    // A particle that sees no other has no SPH sums to judge: h is too small for the set.
+    if (alone)
+        fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a larger h or a "
+                               "denser set",
+                               sample.name, alone->first, alone->second));
+
+    // The statistics from the spills merged into file order, in three passes (ExactSummary);
+    // the per-particle output with the first.
+    const std::size_t measures = std::size(measure_names);
+    std::vector<ExactSummary> summaries(measures + 1, ExactSummary(n)); // and h's
+    spills.merge(n, slab_read_rows, [&](std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& c) {
+        for (std::size_t f = 0; f < measures; ++f)
+            summaries[f].add_moments(begin, count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
+        summaries[measures].add_moments(begin, count, threads, [&](std::size_t k) { return c[h_field][k]; });
+        if (!per_particle) return;
+        rows({begin, count, c[x].data(), c[y].data(), c[z].data(), c[h_field].data(), c[volume].data(), c[neighbours].data(),
+              c[e0].data(), c[eps_rho].data(), c[eps_gradp].data(), {c[e1].data(), c[e1 + 1].data(), c[e1 + 2].data()},
+              {c[m1].data(), c[m1 + 1].data(), c[m1 + 2].data()}});
+    });
+    std::vector<Histogram> histograms;
+    for (std::size_t f = 0; request.histogram_bins && f < measures_with_histograms; ++f) {
+        const Summary s = summaries[f].moments();
+        histograms.emplace_back(s.min, s.max, request.histogram_bins);
+    }
+    spills.merge(n, slab_read_rows, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
+        for (std::size_t f = 0; f < measures; ++f)
+            summaries[f].count(count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
+        for (std::size_t f = 0; f < histograms.size(); ++f) histograms[f].add({c[measure_field[f]].data(), count}, threads);
+    });
+    spills.merge(n, slab_read_rows, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
+        for (std::size_t f = 0; f < measures; ++f)
+            summaries[f].gather(count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
+    });
+    for (std::size_t f = 0; f < measures; ++f) point.statistics.emplace_back(measure_names[f], summaries[f].finish());
+    for (std::size_t f = 0; f < histograms.size(); ++f) point.histograms.emplace_back(measure_names[f], histograms[f]);
+    point.mean_neighbours = point.statistics.back().second.mean;
+    finish_point(point, summaries[measures].moments(), std::pow(plan.mean_volume, 1.0 / sample.dimension), kernel.support(),
+                 sample, plan.rho0);
+    phases.lap("statistics");
+    answer.points.push_back(std::move(point));
+    return answer;
+}
+
+} // namespace sphkern

@@ -1,0 +1,171 @@
+#include "particles/slabs/slab_plan.hpp"
+
+#include "particles/particles_memory.hpp"
+#include "particles/periodic_images.hpp"
+#include "support/error.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/parallel_for.hpp"
+#include "support/text/setting_names.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace sphkern {
+
+namespace {
+
+// A sum over the whole set taken run by run as parallel_sum takes it at once: each block of
+// particle_block_size summed in order, the blocks added in block order. The same bits.
+class BlockSum {
+public:
+    explicit BlockSum(std::size_t n) : blocks_((n + particle_block_size - 1) / particle_block_size, 0.0) {}
+    template <class Term>
+    void add(std::size_t begin, std::size_t count, int threads, const Term& term)
+    {
+        ParallelFor pass;
+        pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t to) {
+            double& sum = blocks_[begin / particle_block_size + b];
+            for (std::size_t i = from; i < to; ++i) sum += term(i);
+        });
+    }
+    double total() const
+    {
+        double total = 0;
+        for (const double b : blocks_) total += b;
+        return total;
+    }
+
+private:
+    std::vector<double> blocks_;
+};
+
+// visit(row) for the row of bins along `axis` of every point of the particle: its own, and each
+// periodic image near the box.
+template <class Visit>
+void for_each_point(const ParticleSet& set, std::size_t i, const PeriodicImages* images, const Visit& visit)
+{
+    visit(set.x[i], set.y[i], set.z[i]);
+    if (images) images->of(set.position(i), visit);
+}
+
+} // namespace
+
+ParticleSet read_valid_rows(const SnapshotRows& file, std::size_t begin, std::size_t end, int threads)
+{
+    throw_if_interrupted();
+    ParticleSet rows = file.rows(begin, end);
+    validate_particle_values(rows, threads);
+    return rows;
+}
+
+SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPlanInputs& in, std::size_t slab_bytes)
+{
+    const ParticleSet& sample = file.sample();
+    const std::size_t n = file.size();
+    const int dim = sample.dimension, threads = in.threads;
+    SlabPlan plan;
+    plan.particles = n;
+    plan.axis = dim - 1;
+    if (in.volume == VolumeModel::uniform) {
+        if (!sample.box) particle_volumes(sample, in.volume); // the refusal of a set without a box
+        plan.volume = sample.box->volume(dim) / static_cast<double>(n); // mean_volume of the whole set
+    }
+    const bool file_h = in.smoothing.rule == SmoothingRule::file;
+
+    // Pass 1: the volumes, masses and file h, checked and summed as the whole set's.
+    BlockSum volume_sum(n), mass_sum(n);
+    bool first = true;
+    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+        const std::size_t count = rows.size();
+        if (in.volume == VolumeModel::file) {
+            const PerParticle v = particle_volumes(rows, in.volume, threads);
+            if (const auto i = first_index_where(count, threads, [&](std::size_t i) { return !std::isfinite(v[i]) || v[i] <= 0; }))
+                fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", rows.id(*i), v[*i]));
+            if (first) plan.volume = v[0];
+            plan.uniform_volume = plan.uniform_volume && !first_index_where(count, threads, [&](std::size_t i) { return v[i] != plan.volume; });
+            volume_sum.add(begin, count, threads, [&](std::size_t i) { return v[i]; });
+        } else {
+            volume_sum.add(begin, count, threads, [&](std::size_t) { return plan.volume; });
+        }
+        if (!rows.mass.empty()) mass_sum.add(begin, count, threads, [&](std::size_t i) { return rows.mass[i]; });
+        if (file_h) {
+            const PerParticle h = smoothing_lengths(rows, kernel, in.smoothing, 0, threads);
+            if (first) plan.h = h[0];
+            plan.uniform_h = plan.uniform_h && !first_index_where(count, threads, [&](std::size_t i) { return h[i] != plan.h; });
+            plan.h_max = std::max(plan.h_max, parallel_reduce(
+                                                  count, threads, 0.0, [&](std::size_t i, double& m) { m = std::max(m, h[i]); },
+                                                  [](double& m, double block) { m = std::max(m, block); }));
+        }
+        first = false;
+    }
+    const double total_volume = volume_sum.total();
+    plan.mean_volume = total_volume / static_cast<double>(n);
+    plan.spacing = std::pow(plan.mean_volume, 1.0 / dim);
+    plan.rho0 = in.rho0.value_or(1.0);
+    if (!in.rho0 && !sample.mass.empty()) plan.rho0 = mass_sum.total() / total_volume;
+    if (!file_h) plan.h = plan.h_max = smoothing_lengths(sample, kernel, in.smoothing, plan.mean_volume, threads).uniform;
+    const double reach = kernel.support() * plan.h_max;
+    if (sample.box && sample.box->smallest_width(dim) < 2 * reach)
+        fail_input(fmt::format("{}: the periodic box is {:.6g} wide, less than twice the support radius {:.6g}; expected a "
+                               "larger box or a smaller h",
+                               sample.name, sample.box->smallest_width(dim), reach));
+    std::optional<PeriodicImages> images;
+    if (sample.box) images.emplace(*sample.box, dim, reach);
+
+    // Pass 2: the extent of the particles and their images, which sizes the whole set's bins.
+    std::array<double, 6> range = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
+    std::size_t points = 0;
+    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                const double c[3] = {x, y, z};
+                for (int a = 0; a < 3; ++a) range[2 * a] = std::min(range[2 * a], c[a]), range[2 * a + 1] = std::max(range[2 * a + 1], c[a]);
+                ++points;
+            });
+    }
+    plan.geometry = GridGeometry::of(range, points, reach);
+
+    // Pass 3: the points in each row of bins along the axis.
+    const int axis = plan.axis;
+    std::vector<std::size_t> in_row(plan.geometry.n[axis], 0);
+    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                const double c[3] = {x, y, z};
+                ++in_row[plan.geometry.bin(axis, c[axis])];
+            });
+    }
+
+    // Slabs of whole rows, each as thick as the budget allows with its halo.
+    const std::size_t rows_along = in_row.size();
+    auto points_in = [&](std::size_t own_first, std::size_t own_last) {
+        Slab s{own_first > 0 ? own_first - 1 : 0, std::min(own_last + 1, rows_along), own_first, own_last, 0};
+        for (std::size_t r = s.first; r < s.last; ++r) s.points += in_row[r];
+        return s;
+    };
+    const std::size_t most = slab_bytes / bytes_per_particle;
+    for (std::size_t a = 0; a < rows_along;) {
+        Slab slab = points_in(a, a + 1);
+        if (slab.points > most)
+            fail_input(fmt::format("{}: a slab one row of bins thick holds {} particles and images ({:.4g} bytes), over the "
+                                   "memory budget of {:.4g} bytes ({}); expected a larger budget",
+                                   sample.name, slab.points, static_cast<double>(slab.points * bytes_per_particle),
+                                   static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
+        for (std::size_t b = a + 2; b <= rows_along; ++b) {
+            const Slab thicker = points_in(a, b);
+            if (thicker.points > most) break;
+            slab = thicker;
+        }
+        plan.slabs.push_back(slab);
+        a = slab.own_last;
+    }
+    return plan;
+}
+
+} // namespace sphkern
