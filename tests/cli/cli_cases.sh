@@ -367,6 +367,21 @@ check "surface stopped by SIGTERM: exit $status in $elapsed ms, $err" test $stat
 signal_when 'particles and [0-9]+ ghosts on' TERM -- particles cubic_bspline fcc --size 120,120,120 --k 1.3 --csv "$work/psig.csv"
 check "particles stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "particles stopped writes no csv" test -z "$(leftovers psig.csv)"
+# A snapshot over the budget, measured in slabs: no CSV and no spill folder left.
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+with h5py.File(sys.argv[1], 'w') as f:
+    f.create_group('Header').attrs['BoxSize'] = [1.0, 1.0, 1.0]
+    f.create_dataset('PartType0/Coordinates', data=numpy.random.default_rng(6).random((400000, 3)))
+" "$work/slabsig.h5"
+mkdir -p "$work/slabtmp"
+saved_tmpdir=${TMPDIR-}
+export TMPDIR="$work/slabtmp"
+signal_when 'in [0-9]+ slabs along axis' TERM -- particles cubic_bspline "$work/slabsig.h5" --nh 60 --memory-limit 0.08 --csv "$work/slabsig.csv"
+if [ -n "$saved_tmpdir" ]; then export TMPDIR="$saved_tmpdir"; else unset TMPDIR; fi
+check "particles in slabs stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
+check "particles in slabs stopped writes no csv" test -z "$(leftovers slabsig.csv)"
+check "particles in slabs stopped leaves no spill folder: $(ls -A "$work/slabtmp")" test -z "$(ls -A "$work/slabtmp")"
 signal_when 'relaxing [0-9]+ particles' TERM -- relax wendland_c2 poisson --count 200000 --nh 100 --steps 1000 --output "$work/rsig.h5"
 check "relax stopped by SIGTERM: exit $status in $elapsed ms, $err" test $status -eq 130
 check "relax stopped writes no file" test -z "$(leftovers rsig.h5)"
@@ -1082,8 +1097,20 @@ with h5py.File(sys.argv[3], 'w') as f:
     f.create_group('Header').attrs['Dimension'] = numpy.nan
     f.create_dataset('PartType0/Coordinates', data=numpy.random.default_rng(1).random((100, 3)))
 " "$work/declared.h5" "$work/budget.h5" "$work/nandim.h5"
-expect 3 'declared.h5: dataset /PartType0/Coordinates declares 1000000000000 rows .*over the memory budget' -- particles cubic_bspline "$work/declared.h5" --nh 40
-expect 3 'budget.h5: dataset /PartType0/Coordinates declares 50000000 rows .*over the memory budget' -- particles cubic_bspline "$work/budget.h5" --nh 40 --memory-limit 0.05
+# `particles` measures a snapshot over the budget in slabs: the disk their results need is
+# checked first, and a slab one row of bins thick must fit the budget. Other commands read a
+# set whole.
+expect 3 'declared.h5: the slabs. per-particle results need 8e\+13 bytes of disk in .*expected more room there' -- particles cubic_bspline "$work/declared.h5" --nh 40
+expect 3 'budget.h5: the snapshot declares 50000000 particles .*over the memory budget of .* bytes \(--memory-limit\)' -- relax cubic_bspline "$work/budget.h5" --nh 40 --steps 1 --memory-limit 0.05
+/usr/bin/python3 -c "
+import h5py, numpy, sys
+x = numpy.random.default_rng(5).random((100000, 3))
+x[:, 2] *= 0.001  # one thin layer: one row of bins holds every particle
+with h5py.File(sys.argv[1], 'w') as f:
+    f.create_group('Header').attrs['BoxSize'] = [1.0, 1.0, 1.0]
+    f.create_dataset('PartType0/Coordinates', data=x)
+" "$work/crowded.h5"
+expect 3 'crowded.h5: a slab one row of bins thick holds [0-9]+ particles and images .*over the memory budget' -- particles cubic_bspline "$work/crowded.h5" --nh 40 --memory-limit 0.03
 expect 3 'nandim.h5: /Header Dimension is nan; expected 2 or 3' -- particles cubic_bspline "$work/nandim.h5" --nh 40
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1099511627776 double\n0 0 0\n' >"$work/declared.vtk"
 expect 3 'declared.vtk.*unexpected end of file' -- particles cubic_bspline "$work/declared.vtk" --nh 40

@@ -541,9 +541,14 @@ def test_a_broken_snapshot_in_parts_names_the_part(tmp_path):
     assert "NumPart_ThisFile[0] is 7 but /PartType0/Coordinates has 750 rows" in refused(str(tmp_path / "count.1.hdf5"))
     # The base names no file: the parts are named instead.
     assert "name one of them, such as" in refused(str(tmp_path / "count.hdf5"))
-    # The declared total is checked against the budget before any part is read.
-    line = refused(str(tmp_path / "box.1.hdf5"), "--memory-limit", "0.0000001")
-    assert "declares 1500 particles in 3 files" in line
+    # The declared total is checked against the budget before any part's particles are read:
+    # `relax` reads a set whole; `particles` measures a snapshot over the budget in slabs, which
+    # need a budget too.
+    write_parts(tmp_path / "good", x, h, m, rho, 3)
+    done = subprocess.run([CLI, "relax", "wendland_c2", str(tmp_path / "good.1.hdf5"), "--nh", "40", "--steps", "1",
+                           "--memory-limit", "0.0000001"], capture_output=True, text=True)
+    assert done.returncode == 3 and "the snapshot declares 1500 particles" in done.stderr, done.stderr
+    assert "leaves nothing for a slab" in refused(str(tmp_path / "good.1.hdf5"), "--memory-limit", "0.0000001")
 
 
 def pysph_dump(path, arrays):

@@ -131,6 +131,7 @@ struct File {
         Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
         check_links();
         if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
+        check_sources(set.get(), path); // the files it maps are inputs from now on
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} is not a table of rows", name, path));

@@ -185,7 +185,6 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
     std::vector<std::string> inputs;
     const auto named = std::make_unique<OpenFile>(file);
     const File& f = named->file();
-    inputs.insert(inputs.end(), named->linked_files().begin(), named->linked_files().end());
     const auto files = f.attribute("/Header", "NumFilesPerSnapshot");
     const double total = declared_total(f);
     if (files.empty() || files[0] <= 1 || (f.exists(coordinates_path) && static_cast<double>(f.rows(coordinates_path)) >= total)) {
@@ -219,6 +218,7 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
                                    "expected the parts of one snapshot",
                                    f.name, count, first, total));
     }
+    inputs.insert(inputs.end(), named->linked_files().begin(), named->linked_files().end());
     parts.total = parts.list.back().first + parts.list.back().layout.rows;
     std::sort(inputs.begin(), inputs.end());
     inputs.erase(std::unique(inputs.begin(), inputs.end()), inputs.end());

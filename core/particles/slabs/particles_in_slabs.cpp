@@ -87,26 +87,26 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     // The disk the spills need, before anything is read.
     const auto room = std::filesystem::space(SlabSpills::folder_parent()).available;
     if (slab_spill_bytes(n, per_particle) > room)
-        throw Error(ExitCode::output, fmt::format("{}: the slabs' per-particle results need {:.4g} bytes of disk in {}, which "
-                                                  "has {:.4g}; expected more room there (TMPDIR)",
-                                                  sample.name, static_cast<double>(slab_spill_bytes(n, per_particle)),
-                                                  SlabSpills::folder_parent().string(), static_cast<double>(room)));
+        fail_input(fmt::format("{}: the slabs' per-particle results need {:.4g} bytes of disk in {}, which has {:.4g}; "
+                               "expected more room there (TMPDIR)",
+                               sample.name, static_cast<double>(slab_spill_bytes(n, per_particle)),
+                               SlabSpills::folder_parent().string(), static_cast<double>(room)));
     ParticleAnswer answer;
     PhaseTimes& phases = answer.phases;
     const int threads = worker_threads(request.threads);
     answer.particles = n, answer.volume = model, answer.threads = threads;
     answer.gravity = request.gravity ? request.gravity->normalized() : sample.gravity;
 
-    // What is held beside a slab (a run of rows read and of records spilled), and after the
-    // slabs what the merge and the statistics hold (a run of records, each slab's read buffer,
-    // the blocks' moments and the buckets of the percentiles); then the plan checks each slab.
-    const std::size_t beside_slab = slab_read_rows * (8 + fields) * sizeof(double) + (n / particle_block_size + 1) * 400;
-    const std::size_t statistics = std::size_t{8} << 20;
-    if (memory_limit_bytes() <= beside_slab + statistics)
+    // Beside a slab, a run of rows read and of records spilled are held; after the slabs, the
+    // merge and the statistics hold a run of records, each slab's read buffer, the blocks'
+    // moments and the percentiles' buckets (about 8 MiB).
+    const std::size_t beside_slab = slab_read_rows * (8 + fields) * sizeof(double);
+    const std::size_t statistics = (std::size_t{8} << 20) + (n / particle_block_size + 1) * 400;
+    if (memory_limit_bytes() <= std::max(beside_slab, statistics))
         fail_input(fmt::format("{}: the memory budget of {:.4g} bytes ({}) leaves nothing for a slab; expected more than {:.4g}",
                                sample.name, static_cast<double>(memory_limit_bytes()), setting_named("memory_limit"),
-                               static_cast<double>(beside_slab + statistics)));
-    const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads}, memory_limit_bytes() - beside_slab - statistics);
+                               static_cast<double>(std::max(beside_slab, statistics))));
+    const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads}, memory_limit_bytes() - beside_slab);
     answer.mean_volume = plan.mean_volume, answer.rho0 = plan.rho0, answer.spacing = plan.spacing;
     phases.lap("plan");
     spdlog::debug("{}: {} particles in {} slabs along axis {}", sample.name, n, plan.slabs.size(), plan.axis);
