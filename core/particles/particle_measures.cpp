@@ -73,7 +73,7 @@ public:
         return results_.back();
     }
     bool full() const { return results_.size() >= flush_at; }
-    const PointResult& last() const { return results_.back(); }
+    std::size_t pairs() const { return pairs_; }
     void flush(ParticleMeasures& out)
     {
         constexpr std::size_t ahead = 8;
@@ -84,6 +84,7 @@ public:
             out.e0[r.i] = r.e0, out.eps_gradp[r.i] = r.eps_gradp, out.eps_gradp_sum[r.i] = r.eps_gradp_sum;
             out.e1_norm[r.i] = r.e1_norm, out.m1_norm[r.i] = r.m1_norm, out.E_norm[r.i] = r.E_norm;
             out.neighbours[r.i] = r.neighbours;
+            pairs_ += static_cast<std::size_t>(r.neighbours);
             if (masses) out.eps_rho[r.i] = r.eps_rho;
             if (vectors) out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
         }
@@ -102,6 +103,7 @@ private:
         if (!out.e1.empty()) __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
     }
     std::vector<PointResult> results_;
+    std::size_t pairs_ = 0; // the neighbours of the particles flushed
 };
 
 struct Sweep {
@@ -294,7 +296,6 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     auto t0 = Clock::now();
     const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
     std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread
-    std::vector<std::size_t> pairs(static_cast<std::size_t>(out.threads), 0);
     const double* b = pair_mean ? neighbour_points.data() : sweep.mass.empty() ? nullptr : sweep.mass.data();
     const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point, b, false, set.name + ": the sums"};
     pair_pass(
@@ -302,13 +303,12 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
         [&](int thread, std::size_t p, Neighbours& nb) {
             ResultBlock& block = results[static_cast<std::size_t>(thread)];
             sweep.measure(p, nb, block);
-            pairs[static_cast<std::size_t>(thread)] += static_cast<std::size_t>(block.last().neighbours);
             if (block.full()) block.flush(out);
         },
         [&](int thread) { results[static_cast<std::size_t>(thread)].flush(out); });
     out.seconds = seconds_since(t0);
     out.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-    for (const std::size_t p : pairs) out.pairs += p;
+    for (const ResultBlock& block : results) out.pairs += block.pairs();
     phases.lap("sums");
     out.phases = phases;
     return out;

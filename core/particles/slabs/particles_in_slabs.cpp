@@ -12,6 +12,9 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <optional>
 
 namespace sphkern {
@@ -25,34 +28,67 @@ constexpr std::size_t statistics_fields = E_norm + 1, output_fields = m1 + 3;
 // The column of each of measure_names.
 constexpr Field measure_field[] = {e0, eps_rho, eps_gradp, eps_gradp_sum, e1_norm, m1_norm, E_norm, neighbours};
 
-// The slab's particles: each with a point (itself or a periodic image) in the slab's rows, in file order.
-ParticleSet read_slab(const SnapshotRows& file, const SlabPlan& plan, const Slab& slab, double reach, int threads)
+// A particle in a slab's input: its row, position, and its h, mass and density where the file has them.
+struct InputLayout {
+    bool h, mass, density;
+    std::size_t fields() const { return 4 + h + mass + density; }
+};
+
+// One pass over the file: each particle to the input of every slab that holds a point of it
+// (itself or a periodic image), in file order.
+void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, const InputLayout& layout, SlabSpills& inputs, int threads)
 {
     const ParticleSet& sample = file.sample();
     std::optional<PeriodicImages> images;
     if (sample.box) images.emplace(*sample.box, sample.dimension, reach);
-    ParticleSet set = sample;
-    for (auto* v : {&set.x, &set.y, &set.z, &set.h, &set.mass, &set.density}) v->clear();
-    set.linked_files.clear();
-    const int axis = plan.axis;
-    auto inside = [&](double x, double y, double z) {
-        const double c[3] = {x, y, z};
-        const std::size_t r = plan.geometry.bin(axis, c[axis]);
-        return r >= slab.first && r < slab.last;
-    };
+    // The slabs a row of bins belongs to: its own slab, and the one or two whose halo it is.
+    std::vector<std::array<std::size_t, 3>> slabs_of(plan.geometry.n[plan.axis], {SIZE_MAX, SIZE_MAX, SIZE_MAX});
+    for (std::size_t s = 0; s < plan.slabs.size(); ++s)
+        for (std::size_t r = plan.slabs[s].first; r < plan.slabs[s].last; ++r)
+            *std::find(slabs_of[r].begin(), slabs_of[r].end(), SIZE_MAX) = s;
+    std::vector<std::vector<double>> buffers(plan.slabs.size());
+    const std::size_t fields = layout.fields(), flush_at = 1024 * fields;
     for (std::size_t begin = 0; begin < file.size(); begin += slab_read_rows) {
         const ParticleSet rows = read_valid_rows(file, begin, std::min(file.size(), begin + slab_read_rows), threads);
         for (std::size_t i = 0; i < rows.size(); ++i) {
-            bool keep = inside(rows.x[i], rows.y[i], rows.z[i]);
-            if (!keep && images) images->of(rows.position(i), [&](double x, double y, double z) { keep = keep || inside(x, y, z); });
-            if (!keep) continue;
-            set.x.push_back(rows.x[i]), set.y.push_back(rows.y[i]), set.z.push_back(rows.z[i]);
-            if (!rows.h.empty()) set.h.push_back(rows.h[i]);
-            if (!rows.mass.empty()) set.mass.push_back(rows.mass[i]);
-            if (!rows.density.empty()) set.density.push_back(rows.density[i]);
-            set.ids.push_back(rows.id(i));
+            std::array<std::size_t, 6> to; // its points lie in two rows at most (z and an image's), each in three slabs at most
+            std::size_t count = 0;
+            auto add = [&](double x, double y, double z) {
+                const double c[3] = {x, y, z};
+                for (const std::size_t s : slabs_of[plan.geometry.bin(plan.axis, c[plan.axis])])
+                    if (s != SIZE_MAX && std::find(to.begin(), to.begin() + static_cast<std::ptrdiff_t>(count), s) == to.begin() + static_cast<std::ptrdiff_t>(count))
+                        to[count++] = s;
+            };
+            add(rows.x[i], rows.y[i], rows.z[i]);
+            if (images) images->of(rows.position(i), add);
+            for (std::size_t k = 0; k < count; ++k) {
+                auto& b = buffers[to[k]];
+                b.insert(b.end(), {static_cast<double>(rows.id(i)), rows.x[i], rows.y[i], rows.z[i]});
+                if (layout.h) b.push_back(rows.h[i]);
+                if (layout.mass) b.push_back(rows.mass[i]);
+                if (layout.density) b.push_back(rows.density[i]);
+                if (b.size() >= flush_at) inputs.append(to[k], b), b.clear();
+            }
         }
     }
+    for (std::size_t s = 0; s < buffers.size(); ++s) inputs.append(s, buffers[s]), inputs.close_slab(s);
+}
+
+// Slab s's particles from its input, in file order.
+ParticleSet read_slab(const ParticleSet& sample, const SlabSpills& inputs, std::size_t s, const InputLayout& layout, std::size_t points)
+{
+    ParticleSet set = sample;
+    for (auto* v : {&set.x, &set.y, &set.z, &set.h, &set.mass, &set.density}) v->clear(), v->reserve(points);
+    set.linked_files.clear();
+    set.ids.reserve(points);
+    inputs.read(s, [&](const double* r) {
+        set.ids.push_back(static_cast<std::uint64_t>(r[0]));
+        set.x.push_back(r[1]), set.y.push_back(r[2]), set.z.push_back(r[3]);
+        std::size_t k = 4;
+        if (layout.h) set.h.push_back(r[k++]);
+        if (layout.mass) set.mass.push_back(r[k++]);
+        if (layout.density) set.density.push_back(r[k++]);
+    });
     return set;
 }
 
@@ -108,9 +144,21 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
                                static_cast<double>(std::max(beside_slab, statistics))));
     const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads}, memory_limit_bytes() - beside_slab);
     answer.mean_volume = plan.mean_volume, answer.rho0 = plan.rho0, answer.spacing = plan.spacing;
-    phases.lap("plan");
     spdlog::debug("{}: {} particles in {} slabs along axis {}", sample.name, n, plan.slabs.size(), plan.axis);
 
+    // The slabs' inputs, written in one more pass, and the room they and the results take.
+    const InputLayout layout{!sample.h.empty(), !sample.mass.empty(), !sample.density.empty()};
+    std::size_t slab_points = 0;
+    for (const Slab& slab : plan.slabs) slab_points += slab.points;
+    const std::size_t disk = slab_points * layout.fields() * sizeof(double) + slab_spill_bytes(n, per_particle);
+    if (disk > room)
+        fail_input(fmt::format("{}: the slabs' inputs and results need {:.4g} bytes of disk in {}, which has {:.4g}; expected "
+                               "more room there (TMPDIR)",
+                               sample.name, static_cast<double>(disk), SlabSpills::folder_parent().string(), static_cast<double>(room)));
+    const double reach = kernel.support() * plan.h_max;
+    SlabSpills inputs(layout.fields(), plan.slabs.size());
+    distribute(file, plan, reach, layout, inputs, threads);
+    phases.lap("plan");
     SlabSpills spills(fields, plan.slabs.size());
     ParticlePoint point;
     std::optional<std::pair<std::uint64_t, double>> alone; // the first particle with no neighbour, and its h
@@ -119,7 +167,7 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
         const Slab& slab = plan.slabs[s];
         progress.reach(s, fmt::format("slab {} of {}", s + 1, plan.slabs.size()));
         phases.restart();
-        const ParticleSet set = read_slab(file, plan, slab, kernel.support() * plan.h_max, threads);
+        const ParticleSet set = read_slab(sample, inputs, s, layout, slab.points);
         const PerParticle volumes = plan.uniform_volume ? PerParticle::same(set.size(), plan.volume) : particle_volumes(set, model, threads);
         const PerParticle h = plan.uniform_h ? PerParticle::same(set.size(), plan.h) : smoothing_lengths(set, kernel, spec, plan.mean_volume, threads);
         phases.lap("read");

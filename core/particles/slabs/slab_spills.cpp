@@ -96,6 +96,11 @@ void SlabSpills::close_slab(std::size_t slab)
                                                   files_[slab].string(), folder_parent().string()));
 }
 
+void SlabSpills::read(std::size_t slab, const std::function<void(const double* record)>& visit) const
+{
+    for (SpillReader reader(files_[slab], fields_); !reader.done(); reader.next()) visit(reader.record());
+}
+
 void SlabSpills::merge(std::size_t n, std::size_t run, const Visit& visit) const
 {
     std::vector<std::unique_ptr<SpillReader>> readers;

@@ -1,6 +1,7 @@
-// The per-particle results of a set measured slab by slab: each slab's records (its particles'
-// file rows and values, in file order) appended to a file of its own in a folder sphkern makes
-// in the temporary directory, then read back merged into file order, run by run. The folder is
+// Records per slab of a set measured slab by slab, each slab's in a file of its own in a folder
+// sphkern makes in the temporary directory: the particles each slab reads (its own and its
+// halo's, in file order), and the per-particle results of its own particles (their file rows
+// and values, in file order), read back merged into file order, run by run. The folder is
 // removed when the spills go, and by a second interrupting signal (a staging path).
 #pragma once
 
@@ -34,6 +35,9 @@ public:
     // columns[f][k] field f of row begin + k (every row in exactly one slab).
     using Visit = std::function<void(std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& columns)>;
     void merge(std::size_t n, std::size_t run, const Visit& visit) const;
+
+    // Slab s's records in the order appended: visit(record) for each.
+    void read(std::size_t slab, const std::function<void(const double* record)>& visit) const;
 
 private:
     std::size_t fields_;
