@@ -20,18 +20,14 @@ namespace {
 
 // The periodic images near the box's faces, in particle order.
 struct Ghosts {
-    std::vector<double> x, y, z;
-    std::vector<std::uint32_t> source;
+    FirstTouchVector<double> x, y, z;
+    FirstTouchVector<std::uint32_t> source;
     std::size_t size() const { return x.size(); }
-    void append(const Ghosts& more)
-    {
-        x.insert(x.end(), more.x.begin(), more.x.end()), y.insert(y.end(), more.y.begin(), more.y.end());
-        z.insert(z.end(), more.z.begin(), more.z.end()), source.insert(source.end(), more.source.begin(), more.source.end());
-    }
 };
 
-// Block by block of particles, each block's images in a list of its own, the lists appended
-// in block order: the same points in the same order on any thread count.
+// Block by block of particles, each block's images in a list of its own, the lists copied
+// into place in block order, each block by a thread: the same points in the same order on
+// any thread count, and no thread copies them all.
 Ghosts find_ghosts(const ParticleSet& set, double reach, int threads)
 {
     const PeriodicImages images(*set.box, set.dimension, reach);
@@ -45,8 +41,19 @@ Ghosts find_ghosts(const ParticleSet& set, double reach, int threads)
                 g.source.push_back(static_cast<std::uint32_t>(i));
             });
     });
+    std::vector<std::size_t> first(blocks.size() + 1, 0);
+    for (std::size_t b = 0; b < blocks.size(); ++b) first[b + 1] = first[b] + blocks[b].size();
     Ghosts all;
-    for (const Ghosts& g : blocks) all.append(g);
+    all.x.resize(first.back()), all.y.resize(first.back()), all.z.resize(first.back()), all.source.resize(first.back());
+    ParallelFor copy;
+    copy.run_blocks(blocks.size(), 1, threads, [&](std::size_t b, std::size_t, std::size_t) {
+        const auto at = static_cast<std::ptrdiff_t>(first[b]);
+        std::copy(blocks[b].x.begin(), blocks[b].x.end(), all.x.begin() + at);
+        std::copy(blocks[b].y.begin(), blocks[b].y.end(), all.y.begin() + at);
+        std::copy(blocks[b].z.begin(), blocks[b].z.end(), all.z.begin() + at);
+        std::copy(blocks[b].source.begin(), blocks[b].source.end(), all.source.begin() + at);
+        blocks[b] = {};
+    });
     return all;
 }
 

@@ -176,8 +176,11 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
     result.spacing = length_unit(set);
     result.h = h;
     if (!std::isfinite(h) || h <= 0) fail_input(fmt::format("{}: h = {:g} is not positive", set.name, h));
+    PhaseTimes phases;
     result.state = start_state(kernel, std::move(set), h, settings, result.spacing);
     RelaxState& s = result.state;
+    phases.lap("start");
+    s.forces.phases = {};
     // c is one d per unit time: a time step of time_step h / c is time_step h / d units of d / c.
     const double dt = settings.time_step * h / result.spacing;
     result.dt = settings.method == RelaxMethod::pressure ? dt : 0;
@@ -190,6 +193,7 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
                   relax_method_name(settings.method));
     Progress progress(s.set.name + ": relaxation", static_cast<std::size_t>(settings.steps));
     result.stop = "steps";
+    phases.restart();
     for (int n = 1; n <= settings.steps; ++n) {
         throw_if_interrupted();
         RelaxStep step;
@@ -207,6 +211,12 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
             break;
         }
     }
+    // The steps' time less their passes' is the rest: kicks, moves and the errors.
+    phases.lap("steps");
+    double passes = 0;
+    for (const auto& [name, seconds] : s.forces.phases.phases()) result.phases.add(name, seconds), passes += seconds;
+    result.phases.add("start", phases.phases().front().second);
+    result.phases.add("moves", std::max(0.0, phases.phases().back().second - passes));
     return result;
 }
 

@@ -43,6 +43,9 @@ struct RelaxResult {
     double h = 1;
     double dt = 0;                  // in d / c (pressure)
     std::string stop;               // why it stopped: "tolerance" or "steps"
+    // Seconds of the start (its first sums), and over the steps of the grid, the density and
+    // force passes, and the rest (kicks, moves, wrapping, each step's errors).
+    PhaseTimes phases;
 };
 
 // A relaxation stopped because its integration diverged (a move not finite, or longer than a

@@ -70,8 +70,11 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const int dim = set.dimension;
     const std::size_t n = set.size();
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
+    out.phases.restart();
     const NeighbourGrid grid(set, reach, model.threads);
-    out.density.assign(n, 0.0);
+    out.phases.lap("grid");
+    // Every value is written by the passes: sized, not cleared, so that no thread zeroes them alone.
+    out.density.resize(n);
     const double w0 = kernel.w(0, dim, model.k);
     for_each_particle(grid, set, reach, nullptr, model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
@@ -82,8 +85,9 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
             fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
                                 fmt::format("h = {:.6g}", model.h), {nb.q.data(), nb.count});
     });
+    out.phases.lap("density");
     // pi_j = P_j / rho_j^2 in point order, for the force.
-    std::vector<double> pi(n, 0.0);
+    FirstTouchVector<double> pi(n);
     // The equation of state, not the kernel: (rho / rho0)^gamma past a double.
     if (model.pressure)
         if (const auto i = first_index_where(n, model.threads, [&](std::size_t i) {
@@ -93,16 +97,16 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
             fail_input(fmt::format("{}: the pressure of particle {} overflows a double (rho / rho0 = {:.4g}, gamma = "
                                    "{:g}); expected a gamma nearer 1 or a smaller time step",
                                    set.name, *i, out.density[*i] / model.rho0, model.gamma));
-    const std::vector<double> pi_points = grid.gather(pi);
-    for (auto* v : {&out.gx, &out.gy, &out.gz}) v->assign(n, 0.0);
-    for (auto* v : {&out.ax, &out.ay, &out.az}) v->assign(model.pressure ? n : 0, 0.0);
+    const std::vector<double> pi_points = model.pressure ? grid.gather(pi) : std::vector<double>(grid.points(), 0.0);
+    for (auto* v : {&out.gx, &out.gy, &out.gz}) v->resize(n);
+    for (auto* v : {&out.ax, &out.ay, &out.az}) v->resize(model.pressure ? n : 0);
     const double scale = 1 / (hd * model.h); // W' = dW/dq: dW/dr = W' / h^(D+1)
     for_each_particle(grid, set, reach, pi_points.data(), model.threads, [&](std::size_t p, Neighbours& nb) {
         scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
         kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
         const std::size_t i = grid.source(p);
         const PairSums s = pair_sums(nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r.data(), nb.dw.data(), nb.a.data(),
-                                     nb.count, scale, pi[i]);
+                                     nb.count, scale, model.pressure ? pi[i] : 0.0);
         out.gx[i] = -model.volume * s.g[0], out.gy[i] = -model.volume * s.g[1], out.gz[i] = -model.volume * s.g[2];
         if (model.pressure)
             out.ax[i] = model.mass * s.a[0], out.ay[i] = model.mass * s.a[1], out.az[i] = model.mass * s.a[2];
@@ -110,6 +114,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
             fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
                                 fmt::format("h = {:.6g}", model.h), {nb.q.data(), nb.count});
     });
+    out.phases.lap("forces");
 }
 
 } // namespace sphkern

@@ -6,6 +6,8 @@
 // the result does not depend on the thread count.
 #pragma once
 
+#include "support/process/phase_times.hpp"
+
 #include "kernels/kernel.hpp"
 #include "particles/particle_set.hpp"
 
@@ -29,6 +31,7 @@ struct ForceField {
     std::vector<double> density;     // rho_i
     std::vector<double> gx, gy, gz;  // sum_j V grad_i W_ij (1 / length)
     std::vector<double> ax, ay, az;  // the pressure acceleration (empty without `pressure`)
+    PhaseTimes phases;               // grid, density and forces, added up over every call
     double pressure(double density, const ForceModel& model) const;
 };
 

@@ -36,6 +36,13 @@ nlohmann::json summary_json(const Summary& s)
             {"p1", s.p1},     {"p50", s.p50}, {"p99", s.p99}};
 }
 
+nlohmann::json phases_json(const PhaseTimes& phases)
+{
+    nlohmann::json document = nlohmann::json::object();
+    for (const auto& [name, seconds] : phases.phases()) document[name] = seconds;
+    return document;
+}
+
 nlohmann::json point_json(const ParticlePoint& p)
 {
     nlohmann::json statistics = nlohmann::json::object();
@@ -73,9 +80,7 @@ nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set
                                {"rho0", answer.rho0},
                                {"gravity", vector_json(answer.gravity, set.dimension)},
                                {"threads", answer.threads}};
-    nlohmann::json phases = nlohmann::json::object();
-    for (const auto& [name, seconds] : answer.phases.phases()) phases[name] = seconds;
-    document["phases"] = phases;
+    document["phases"] = phases_json(answer.phases);
     if (answer.points.size() == 1) document.update(point_json(answer.points[0]));
     else document["sweep"] = points;
     if (asked.code) document["code"] = code_answer_json(*asked.code);

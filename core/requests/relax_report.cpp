@@ -59,7 +59,8 @@ nlohmann::json relax_json(const Kernel& kernel, const RelaxSettings& settings, c
             {"final", point_json(judged.measures.points.front())},
             {"glass", quality},
             {"poisson_rms_e0", judged.poisson_rms_e0},
-            {"rms_e0_over_poisson", rms_e0 / judged.poisson_rms_e0}};
+            {"rms_e0_over_poisson", rms_e0 / judged.poisson_rms_e0},
+            {"phases", phases_json(run.phases)}};
 }
 
 void print_relax(std::FILE* out, const Kernel& kernel, const RelaxSettings& settings, const RelaxResult& run,
