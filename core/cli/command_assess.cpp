@@ -55,6 +55,7 @@ int assess_file(const AssessOptions& o)
     auto kernel = make_kernel(registry, o.kernel, o.sets);
     SourceOptions source;
     source.source = o.lattice, source.box = o.box, source.array = o.array;
+    const auto digest = o.json ? start_source_digest(source) : nullptr;
     const ParticleSet set = load_source(source_of(source), source_sources(FrontEnd::command_line), 0);
     ParticleSources sources = particle_sources(FrontEnd::command_line);
     std::tie(sources.code.code, sources.code.value) = code_sources(o.setting);
@@ -62,7 +63,7 @@ int assess_file(const AssessOptions& o)
     const auto choice = code_beside_own_eta(o.setting, o.setting.eta);
     name_code(given, choice->code, choice->value);
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
-    if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel));
+    if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));
     else print_particle_assess(results_file(), kernel, set, given, result);
     return 0;
 }

@@ -100,7 +100,7 @@ void add_options(Command c, ParticlesOptions& o)
 // A snapshot larger than the memory budget, measured slab by slab: the same statistics and
 // CSV as in memory, the CSV streamed in file order as the slabs' results are merged.
 int measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot, ParticleSources& sources,
-                     const std::vector<OutputTarget>& outputs)
+                     const std::vector<OutputTarget>& outputs, FileDigest* digest)
 {
     const ParticleSet& set = snapshot.sample();
     check_output_targets(outputs, set.linked_files); // what the file reached through its links
@@ -117,7 +117,7 @@ int measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const Snap
             ParticleCsvRows csv(out, set.dimension, worker_threads(o.threads));
             answer = analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& rows) { csv.write(rows); });
         });
-    if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel));
+    if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel, digest));
     else print_particle_answer(results_file(), kernel, set, answer, arguments);
     return 0;
 }
@@ -139,8 +139,9 @@ Action add_particles_command(Command app)
         PhaseTimes phases;
         auto sources = particle_sources(FrontEnd::command_line);
         check_threads(o.threads, sources.threads); // the set is read on them
+        const auto digest = o.json ? start_source_digest(o) : nullptr;
         if (const auto snapshot = snapshot_in_slabs(source_of(o), source_sources(FrontEnd::command_line)))
-            return measure_in_slabs(o, kernel, *snapshot, sources, outputs);
+            return measure_in_slabs(o, kernel, *snapshot, sources, outputs, digest.get());
         const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
         phases.lap("read");
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
@@ -152,7 +153,7 @@ Action add_particles_command(Command app)
         if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
         if (!outputs.empty()) phases.lap("write");
         answer.phases = phases;
-        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel));
+        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel, digest.get()));
         else print_particle_answer(results_file(), kernel, set, answer, arguments);
         return 0;
     };

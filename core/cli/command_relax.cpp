@@ -124,6 +124,7 @@ Action add_relax_command(Command app)
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         if (code) check_relax_code(*code, o.output, kernel, {code_source, value_source});
+        const auto digest = o.json ? start_source_digest(o) : nullptr;
         ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
         if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, {code_source, value_source});
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
@@ -144,7 +145,7 @@ Action add_relax_command(Command app)
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);
             if (code) document["code"] = relax_code_json(*code);
-            print_json(document, source_inputs(o, kernel));
+            print_json(document, source_inputs(o, kernel, digest.get()));
         } else {
             print_relax(results_file(), kernel, o.settings, run, judged);
             if (code) fmt::print(results_file(), "{}\n", relax_code_text(*code));

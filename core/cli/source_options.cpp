@@ -96,7 +96,13 @@ ParticleSource source_of(const SourceOptions& o)
     return source;
 }
 
-nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel)
+std::unique_ptr<FileDigest> start_source_digest(const SourceOptions& o)
+{
+    if (source_kind(o.source) != SourceKind::file) return nullptr;
+    return std::make_unique<FileDigest>(o.source);
+}
+
+nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel, FileDigest* digest)
 {
     const auto kind = source_kind(o.source);
     std::optional<Lattice> lattice;
@@ -106,7 +112,7 @@ nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel)
                              {"count", o.count}, {"box", o.box}, {"array", o.array}};
     if (!o.cell.empty()) source["cell"] = o.cell;
     if (o.particle_radius) source["particle_radius"] = *o.particle_radius;
-    if (kind == SourceKind::file) source["sha256"] = file_sha256_hex(o.source);
+    if (kind == SourceKind::file) source["sha256"] = digest ? digest->get() : file_sha256_hex(o.source);
     inputs["particles"] = source;
     return inputs;
 }

@@ -2,6 +2,10 @@
 // shared by `particles` and `relax`.
 #pragma once
 
+#include "support/io/sha256.hpp"
+
+#include <memory>
+
 #include "kernels/kernel.hpp"
 #include "particles/sources/particle_source.hpp"
 
@@ -28,6 +32,9 @@ void add_source_options(Command command, SourceOptions& options);
 ParticleSource source_of(const SourceOptions& options);
 
 // The kernel, the lattice and the source as given, and a file's SHA-256: enough to run it again.
-nlohmann::json source_inputs(const SourceOptions& options, const Kernel& kernel);
+// A file source's SHA-256, started now on a thread of its own (none for a lattice or Poisson
+// set), for source_inputs: the command's work hides the seconds a large file takes.
+std::unique_ptr<FileDigest> start_source_digest(const SourceOptions& options);
+nlohmann::json source_inputs(const SourceOptions& options, const Kernel& kernel, FileDigest* digest = nullptr);
 
 } // namespace sphkern::cli
