@@ -116,30 +116,47 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
     std::optional<PeriodicImages> images;
     if (sample.box) images.emplace(*sample.box, dim, reach);
 
-    // Pass 2: the extent of the particles and their images, which sizes the whole set's bins.
-    std::array<double, 6> range = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
-    std::size_t points = 0;
+    // Pass 2: the extent of the particles and their images, which sizes the whole set's bins
+    // (minima, maxima and a count: exact in any order, so each run is taken on the threads).
+    using Extent = std::array<double, 7>; // min and max along x, y, z, and the points
+    const Extent none = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY, 0};
+    Extent extent = none;
+    auto widen = [](Extent& e, const Extent& more) {
+        for (int a = 0; a < 3; ++a) e[2 * a] = std::min(e[2 * a], more[2 * a]), e[2 * a + 1] = std::max(e[2 * a + 1], more[2 * a + 1]);
+        e[6] += more[6];
+    };
     for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
         const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
-        for (std::size_t i = 0; i < rows.size(); ++i)
-            for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
-                const double c[3] = {x, y, z};
-                for (int a = 0; a < 3; ++a) range[2 * a] = std::min(range[2 * a], c[a]), range[2 * a + 1] = std::max(range[2 * a + 1], c[a]);
-                ++points;
-            });
+        widen(extent, parallel_reduce(
+                          rows.size(), threads, none,
+                          [&](std::size_t i, Extent& e) {
+                              for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                                  widen(e, {x, x, y, y, z, z, 1});
+                              });
+                          },
+                          widen));
     }
-    plan.geometry = GridGeometry::of(range, points, reach);
+    plan.geometry = GridGeometry::of({extent[0], extent[1], extent[2], extent[3], extent[4], extent[5]},
+                                     static_cast<std::size_t>(extent[6]), reach);
 
-    // Pass 3: the points in each row of bins along the axis.
+    // Pass 3: the points in each row of bins along the axis (integers: each thread counts its own).
     const int axis = plan.axis;
     std::vector<std::size_t> in_row(plan.geometry.n[axis], 0);
     for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
         const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
-        for (std::size_t i = 0; i < rows.size(); ++i)
-            for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
-                const double c[3] = {x, y, z};
-                ++in_row[plan.geometry.bin(axis, c[axis])];
-            });
+        std::vector<std::vector<std::size_t>> counts(static_cast<std::size_t>(std::max(1, threads)));
+        ParallelFor pass;
+        pass.run(rows.size(), threads, [&](int t, std::size_t from, std::size_t to) {
+            auto& c = counts[static_cast<std::size_t>(t)];
+            c.assign(in_row.size(), 0);
+            for (std::size_t i = from; i < to; ++i)
+                for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                    const double at[3] = {x, y, z};
+                    ++c[plan.geometry.bin(axis, at[axis])];
+                });
+        });
+        for (const auto& c : counts)
+            for (std::size_t r = 0; r < c.size(); ++r) in_row[r] += c[r];
     }
 
     // Slabs of whole rows, each as thick as the budget allows with its halo.
