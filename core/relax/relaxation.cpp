@@ -95,12 +95,13 @@ bool finish_moves(RelaxState& s, RelaxStep& step, const Moves& moves)
                         std::move(history));
 }
 
-// Kick (exact damping over half a step, then the force), used twice a step.
+// Kick (exact damping over half a step, then the force), used twice a step: no sum, so in
+// blocks small enough to keep 16 threads busy on 10^5 particles.
 void kick(RelaxState& s, double half_dt, double damping_factor)
 {
     const bool three = s.set.dimension == 3;
     ParallelFor pass;
-    pass.run_blocks(s.set.size(), particle_block_size, s.model.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    pass.run_blocks(s.set.size(), 2048, s.model.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             s.vx[i] = s.vx[i] * damping_factor + s.forces.ax[i] * half_dt;
             s.vy[i] = s.vy[i] * damping_factor + s.forces.ay[i] * half_dt;
