@@ -10,6 +10,8 @@ import h5py
 import numpy as np
 import pytest
 
+from test_particle_files import refused
+
 CLI = os.environ["SPHKERN_CLI"]
 N = 60000
 # Under the budget of N particles (in the engine's estimate), over what the plan keeps aside: slabs.
@@ -58,14 +60,6 @@ def run(*args, env=None):
     assert done.returncode == 0, done.stderr
     slabs = [line for line in done.stderr.splitlines() if " slabs along axis " in line]
     return json.loads(done.stdout), slabs
-
-
-def refused(*args):
-    done = subprocess.run([CLI, "particles", "wendland_c2", *args], capture_output=True, text=True)
-    lines = done.stderr.strip().splitlines()
-    assert done.returncode == 3, done.stderr
-    assert len(lines) == 1 and lines[0].startswith("sphkern: error: "), done.stderr
-    return lines[0]
 
 
 @pytest.mark.parametrize("dim,periodic", [(3, True), (3, False), (2, True), (2, False)])

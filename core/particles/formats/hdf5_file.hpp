@@ -36,6 +36,7 @@ public:
     {
         if (id_ >= 0) close_(id_);
     }
+    Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
     Handle(const Handle&) = delete;
     Handle& operator=(const Handle&) = delete;
     hid_t get() const { return id_; }
@@ -141,21 +142,32 @@ struct File {
     }
     std::size_t rows(const std::string& path) const { return static_cast<std::size_t>(shape(path)[0]); }
     // A dataset of doubles (any stored number type is converted) with its shape.
-    ParticleValues dataset(const std::string& path, std::vector<hsize_t>& shape) const
+    // A dataset of numbers, opened: its links and sources followed, another stored type refused.
+    Handle open_numbers(const std::string& path) const
     {
         Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
         check_links();
         if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
         check_sources(set.get(), path);
+        Handle type(H5Dget_type(set.get()), H5Tclose);
+        const H5T_class_t kind = H5Tget_class(type.get());
+        if (kind != H5T_FLOAT && kind != H5T_INTEGER) fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
+        return set;
+    }
+    // Reads the selection `space` of `set` into `values` (memory laid out as `memory`).
+    void read_numbers(const Handle& set, hid_t memory, hid_t space, ParticleValues& values, const std::string& path) const
+    {
+        if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, values.data()) < 0)
+            fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
+    }
+    ParticleValues dataset(const std::string& path, std::vector<hsize_t>& shape) const
+    {
+        const Handle set = open_numbers(path);
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} has rank {}; expected 1 or 2", name, path, rank));
         shape.assign(static_cast<std::size_t>(rank), 0);
         H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
-        Handle type(H5Dget_type(set.get()), H5Tclose);
-        const H5T_class_t kind = H5Tget_class(type.get());
-        if (kind != H5T_FLOAT && kind != H5T_INTEGER)
-            fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
         // A declared size is checked against the budget before anything is allocated for it.
         double total = 1;
         for (auto s : shape) total *= static_cast<double>(s);
@@ -167,21 +179,14 @@ struct File {
                                    static_cast<double>(shape[0]) * bytes_per_particle,
                                    static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         ParticleValues values(static_cast<std::size_t>(total));
-        if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-            fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
+        read_numbers(set, H5S_ALL, H5S_ALL, values, path);
         return values;
     }
     // Rows [begin, begin + count) of a table of numbers (any stored number type, as doubles),
     // `columns` a row: a hyperslab, so that a file larger than memory is read a part at a time.
     ParticleValues row_range(const std::string& path, std::size_t begin, std::size_t count, std::size_t columns) const
     {
-        Handle set(H5Dopen2(id, path.c_str(), dataset_access), H5Dclose);
-        check_links();
-        if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
-        check_sources(set.get(), path);
-        Handle type(H5Dget_type(set.get()), H5Tclose);
-        const H5T_class_t kind = H5Tget_class(type.get());
-        if (kind != H5T_FLOAT && kind != H5T_INTEGER) fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
+        const Handle set = open_numbers(path);
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         const hsize_t start[2] = {begin, 0}, extent[2] = {count, columns};
@@ -189,8 +194,7 @@ struct File {
             fail_input(fmt::format("{}: rows {} to {} of dataset {} cannot be selected", name, begin, begin + count, path));
         Handle memory(H5Screate_simple(rank, extent, nullptr), H5Sclose);
         ParticleValues values(count * columns);
-        if (count && H5Dread(set.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, values.data()) < 0)
-            fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
+        read_numbers(set, memory.get(), space.get(), values, path);
         return values;
     }
     ParticleValues column(const std::string& path, std::size_t count) const
