@@ -120,13 +120,16 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     if (!request.given_volumes.empty()) refuse(sample, "take uniform volumes or the file's, not given ones");
     const bool per_particle = static_cast<bool>(rows);
     const std::size_t fields = per_particle ? output_fields : statistics_fields;
-    // The disk the spills need, before anything is read.
+    // The disk the slabs' files need: their results before anything is read, their inputs too once planned.
     const auto room = std::filesystem::space(SlabSpills::folder_parent()).available;
-    if (slab_spill_bytes(n, per_particle) > room)
-        fail_input(fmt::format("{}: the slabs' per-particle results need {:.4g} bytes of disk in {}, which has {:.4g}; "
-                               "expected more room there (TMPDIR)",
-                               sample.name, static_cast<double>(slab_spill_bytes(n, per_particle)),
-                               SlabSpills::folder_parent().string(), static_cast<double>(room)));
+    auto require_room = [&](std::size_t bytes, const char* what) {
+        if (bytes > room)
+            fail_input(fmt::format("{}: the slabs' {} need {:.4g} bytes of disk in {}, which has {:.4g}; expected more room "
+                                   "there (TMPDIR)",
+                                   sample.name, what, static_cast<double>(bytes), SlabSpills::folder_parent().string(),
+                                   static_cast<double>(room)));
+    };
+    require_room(slab_spill_bytes(n, per_particle), "per-particle results");
     ParticleAnswer answer;
     PhaseTimes& phases = answer.phases;
     const int threads = worker_threads(request.threads);
@@ -150,11 +153,7 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     const InputLayout layout{!sample.h.empty(), !sample.mass.empty(), !sample.density.empty()};
     std::size_t slab_points = 0;
     for (const Slab& slab : plan.slabs) slab_points += slab.points;
-    const std::size_t disk = slab_points * layout.fields() * sizeof(double) + slab_spill_bytes(n, per_particle);
-    if (disk > room)
-        fail_input(fmt::format("{}: the slabs' inputs and results need {:.4g} bytes of disk in {}, which has {:.4g}; expected "
-                               "more room there (TMPDIR)",
-                               sample.name, static_cast<double>(disk), SlabSpills::folder_parent().string(), static_cast<double>(room)));
+    require_room(slab_points * layout.fields() * sizeof(double) + slab_spill_bytes(n, per_particle), "inputs and results");
     const double reach = kernel.support() * plan.h_max;
     SlabSpills inputs(layout.fields(), plan.slabs.size());
     distribute(file, plan, reach, layout, inputs, threads);
