@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+
 namespace sphkern {
 
 class PeriodicImages {
@@ -41,5 +43,20 @@ private:
     Eigen::Matrix3d cell_, inverse_;
     Eigen::Vector3d margin_ = Eigen::Vector3d::Zero();
 };
+
+// The images of a set's particles (none without a box).
+inline std::optional<PeriodicImages> periodic_images_of(const ParticleSet& set, double reach)
+{
+    if (!set.box) return std::nullopt;
+    return PeriodicImages(*set.box, set.dimension, reach);
+}
+
+// visit(x, y, z) for particle i's own point, then each of its images near the box.
+template <class Visit>
+void for_each_point(const ParticleSet& set, std::size_t i, const std::optional<PeriodicImages>& images, const Visit& visit)
+{
+    visit(set.x[i], set.y[i], set.z[i]);
+    if (images) images->of(set.position(i), visit);
+}
 
 } // namespace sphkern

@@ -20,7 +20,7 @@ COMPARED = ["statistics", "histograms", "h_over_l", "nh", "h_min", "h_max", "mea
             "rho0", "source"]
 
 
-def snapshot(path, dim, periodic, parts=1, seed=7, gadget=False):
+def snapshot(path, dim, periodic, parts=1, seed=7, gadget=False, tamper=None):
     """A SWIFT snapshot of N Poisson particles, h varying by +-15%, masses and densities; in
     `parts` files BASE.K.hdf5 where parts > 1 (then `path` is the base). GADGET's layout where
     asked: single precision, SmoothingLength and Density, one mass in the MassTable."""
@@ -32,6 +32,8 @@ def snapshot(path, dim, periodic, parts=1, seed=7, gadget=False):
     h = 1.2 * l * rng.uniform(0.85, 1.15, N)
     m = rng.uniform(0.9, 1.1, N) / N
     rho = rng.uniform(0.95, 1.05, N)
+    if tamper:
+        tamper(x)
     bounds = np.linspace(0, N, parts + 1).astype(int)
     names = []
     for k in range(parts):
@@ -102,7 +104,8 @@ def test_snapshots_in_parts_in_slabs_give_the_one_file_result(tmp_path):
 
 def test_what_slabs_cannot_do_is_refused(tmp_path):
     name = snapshot(tmp_path / "set.hdf5", 3, True)
-    assert "measured in slabs, which take one h, not a sweep" in refused(name, *SLABS, "--nh-range", "40", "60")
+    assert f"{N} particles, over the memory budget (--memory-limit), are measured in slabs, which take one h, not a sweep" \
+        in refused(name, *SLABS, "--nh-range", "40", "60")
     assert "not solved from each particle's density" in refused(name, *SLABS, "--code", "swift", "--eta", "1.2")
     assert "not Voronoi cells" in refused(name, *SLABS, "--volume", "voronoi")
     assert "--csv only" in refused(name, *SLABS, "--vtk", str(tmp_path / "a.vtk"))
@@ -110,3 +113,16 @@ def test_what_slabs_cannot_do_is_refused(tmp_path):
         [CLI, "particles", "wendland_c2", name, *SLABS, "--dim", "3"], capture_output=True, text=True).stderr
     assert "leaves nothing for a slab" in refused(name, "--memory-limit", "0.001")
     assert not (tmp_path / "a.vtk").exists()
+
+
+def test_a_bad_particle_in_slabs_is_named_by_its_row_as_in_memory(tmp_path):
+    def not_finite(x):
+        x[45000, 1] = np.nan
+
+    def twins(x):
+        x[50001] = x[41234]
+    for tamper, says in ((not_finite, "particle 45000 has a non-finite coordinate"),
+                         (twins, "particles 41234 and 50001 are at the same position")):
+        name = snapshot(tmp_path / f"{tamper.__name__}.hdf5", 3, True, tamper=tamper)
+        whole, sliced = refused(name), refused(name, *SLABS)
+        assert says in whole and sliced == whole, (whole, sliced)

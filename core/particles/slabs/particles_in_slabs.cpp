@@ -38,9 +38,7 @@ struct InputLayout {
 // (itself or a periodic image), in file order.
 void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, const InputLayout& layout, SlabSpills& inputs, int threads)
 {
-    const ParticleSet& sample = file.sample();
-    std::optional<PeriodicImages> images;
-    if (sample.box) images.emplace(*sample.box, sample.dimension, reach);
+    const auto images = periodic_images_of(file.sample(), reach);
     // The slabs a row of bins belongs to: its own slab, and the one or two whose halo it is.
     std::vector<std::array<std::size_t, 3>> slabs_of(plan.geometry.n[plan.axis], {SIZE_MAX, SIZE_MAX, SIZE_MAX});
     for (std::size_t s = 0; s < plan.slabs.size(); ++s)
@@ -59,8 +57,7 @@ void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, co
                     if (s != SIZE_MAX && std::find(to.begin(), to.begin() + static_cast<std::ptrdiff_t>(count), s) == to.begin() + static_cast<std::ptrdiff_t>(count))
                         to[count++] = s;
             };
-            add(rows.x[i], rows.y[i], rows.z[i]);
-            if (images) images->of(rows.position(i), add);
+            for_each_point(rows, i, images, add);
             for (std::size_t k = 0; k < count; ++k) {
                 auto& b = buffers[to[k]];
                 b.insert(b.end(), {static_cast<double>(rows.id(i)), rows.x[i], rows.y[i], rows.z[i]});
@@ -92,10 +89,11 @@ ParticleSet read_slab(const ParticleSet& sample, const SlabSpills& inputs, std::
     return set;
 }
 
-void refuse(const ParticleSet& set, const std::string& what)
+// The sample holds the header, not the count: the file's count is given.
+void refuse(const ParticleSet& sample, std::size_t particles, const std::string& what)
 {
-    fail_input(fmt::format("{}: {} particles, over the memory budget ({}), are measured in slabs, which {}", set.name,
-                           set.size(), setting_named("memory_limit"), what));
+    fail_input(fmt::format("{}: {} particles, over the memory budget ({}), are measured in slabs, which {}", sample.name,
+                           particles, setting_named("memory_limit"), what));
 }
 
 } // namespace
@@ -113,11 +111,11 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     kernel.require_dimension(sample.dimension, sample.name);
     if (n < 2) fail_input(fmt::format("{}: {} particles; expected at least 2", sample.name, n));
     const SmoothingSpec& spec = request.smoothing;
-    if (request.sweep) refuse(sample, "take one h, not a sweep");
-    if (spec.rule == SmoothingRule::density) refuse(sample, "take h from h over l, N_H or the file, not solved from each particle's density");
+    if (request.sweep) refuse(sample, n, "take one h, not a sweep");
+    if (spec.rule == SmoothingRule::density) refuse(sample, n, "take h from h over l, N_H or the file, not solved from each particle's density");
     const VolumeModel model = request.volume.value_or(default_volume_model(sample));
-    if (model == VolumeModel::voronoi) refuse(sample, "take uniform volumes or the file's, not Voronoi cells");
-    if (!request.given_volumes.empty()) refuse(sample, "take uniform volumes or the file's, not given ones");
+    if (model == VolumeModel::voronoi) refuse(sample, n, "take uniform volumes or the file's, not Voronoi cells");
+    if (!request.given_volumes.empty()) refuse(sample, n, "take uniform volumes or the file's, not given ones");
     const bool per_particle = static_cast<bool>(rows);
     const std::size_t fields = per_particle ? output_fields : statistics_fields;
     // The disk the slabs' files need: their results before anything is read, their inputs too once planned.

@@ -42,15 +42,6 @@ private:
     std::vector<double> blocks_;
 };
 
-// visit(row) for the row of bins along `axis` of every point of the particle: its own, and each
-// periodic image near the box.
-template <class Visit>
-void for_each_point(const ParticleSet& set, std::size_t i, const PeriodicImages* images, const Visit& visit)
-{
-    visit(set.x[i], set.y[i], set.z[i]);
-    if (images) images->of(set.position(i), visit);
-}
-
 } // namespace
 
 ParticleSet read_valid_rows(const SnapshotRows& file, std::size_t begin, std::size_t end, int threads)
@@ -113,8 +104,7 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
         fail_input(fmt::format("{}: the periodic box is {:.6g} wide, less than twice the support radius {:.6g}; expected a "
                                "larger box or a smaller h",
                                sample.name, sample.box->smallest_width(dim), reach));
-    std::optional<PeriodicImages> images;
-    if (sample.box) images.emplace(*sample.box, dim, reach);
+    const auto images = periodic_images_of(sample, reach);
 
     // Pass 2: the extent of the particles and their images, which sizes the whole set's bins
     // (minima, maxima and a count: exact in any order, so each run is taken on the threads).
@@ -130,7 +120,7 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
         widen(extent, parallel_reduce(
                           rows.size(), threads, none,
                           [&](std::size_t i, Extent& e) {
-                              for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                              for_each_point(rows, i, images, [&](double x, double y, double z) {
                                   widen(e, {x, x, y, y, z, z, 1});
                               });
                           },
@@ -150,7 +140,7 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
             auto& c = counts[static_cast<std::size_t>(t)];
             c.assign(in_row.size(), 0);
             for (std::size_t i = from; i < to; ++i)
-                for_each_point(rows, i, images ? &*images : nullptr, [&](double x, double y, double z) {
+                for_each_point(rows, i, images, [&](double x, double y, double z) {
                     const double at[3] = {x, y, z};
                     ++c[plan.geometry.bin(axis, at[axis])];
                 });
