@@ -138,7 +138,8 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) {
             const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
             const ParticleSet& out = o.tile.empty() ? run.state.set : written;
-            write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads));
+            write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads),
+                                o.settings.threads);
         }
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });

@@ -10,6 +10,7 @@
 #include "stability/stability_budget.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <Eigen/LU>
 #include <fmt/format.h>
@@ -80,18 +81,17 @@ BlockPrediction block_prediction(const Dispersion& dispersion, const ReciprocalL
     return p;
 }
 
-// x - site by the minimum image of the block's box.
-double displacement_rms(const ParticleSet& set, const ParticleSet& sites)
+// x - site by the minimum image of the block's box, summed in blocks on `threads` threads.
+double displacement_rms(const ParticleSet& set, const ParticleSet& sites, int threads)
 {
     Eigen::Matrix3d cell = set.box->edges;
     if (set.dimension == 2) cell.col(2) = Eigen::Vector3d::UnitZ();
     const Eigen::Matrix3d inverse = cell.inverse();
-    double sum = 0;
-    for (std::size_t i = 0; i < set.size(); ++i) {
+    const double sum = parallel_sum(set.size(), worker_threads(threads), [&](std::size_t i) {
         Eigen::Vector3d f = inverse * (set.position(i) - sites.position(i));
         for (int a = 0; a < set.dimension; ++a) f[a] -= std::round(f[a]);
-        sum += (cell * f).squaredNorm();
-    }
+        return (cell * f).squaredNorm();
+    });
     return std::sqrt(sum / static_cast<double>(set.size()));
 }
 
@@ -171,19 +171,19 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
     }
     LatticeBlockSpec spec;
     spec.cells = {p.cells, p.cells, lattice.dimension == 3 ? p.cells : 1};
-    const ParticleSet sites = lattice_particles(lattice, spec);
+    const ParticleSet sites = lattice_particles(lattice, spec, worker_threads(r.threads));
     spec.sigma = r.noise, spec.seed = r.seed;
-    ParticleSet start = lattice_particles(lattice, spec);
+    ParticleSet start = lattice_particles(lattice, spec, worker_threads(r.threads));
     p.particles = start.size();
     RelaxSettings settings;
     settings.method = RelaxMethod::pressure;
     settings.time_step = r.time_step, settings.damping = r.damping, settings.gamma = r.gamma, settings.threads = r.threads;
     settings.steps = std::max(1, static_cast<int>(std::ceil(r.duration / (r.time_step * k))));
     std::vector<std::pair<double, double>> series;
-    p.rms_start = displacement_rms(start, sites);
+    p.rms_start = displacement_rms(start, sites, r.threads);
     p.paired_start = paired_fraction(start, r.threads);
     const RelaxResult run = relax_particles(kernel, std::move(start), k, settings, [&](const RelaxState& s, const RelaxStep& step) {
-        series.emplace_back(step.time, displacement_rms(s.set, sites));
+        series.emplace_back(step.time, displacement_rms(s.set, sites, r.threads));
     });
     p.rms_end = series.back().second;
     for (const auto& point : series) p.rms_max = std::max(p.rms_max, point.second);

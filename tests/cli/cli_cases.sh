@@ -1101,7 +1101,7 @@ with h5py.File(sys.argv[3], 'w') as f:
 # checked first, and a slab one row of bins thick must fit the budget. Other commands read a
 # set whole.
 expect 3 'declared.h5: the slabs. per-particle results need 8e\+13 bytes of disk in .*expected more room there' -- particles cubic_bspline "$work/declared.h5" --nh 40
-expect 3 'budget.h5: the snapshot declares 50000000 particles .*over the memory budget of .* bytes \(--memory-limit\)' -- relax cubic_bspline "$work/budget.h5" --nh 40 --steps 1 --memory-limit 0.05
+expect 3 'budget.h5: /PartType0/Coordinates declares 50000000 particles \(.*bytes for the particles\); over the memory budget of .* bytes \(--memory-limit\)' -- relax cubic_bspline "$work/budget.h5" --nh 40 --steps 1 --memory-limit 0.05
 /usr/bin/python3 -c "
 import h5py, numpy, sys
 x = numpy.random.default_rng(5).random((100000, 3))

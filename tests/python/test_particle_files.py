@@ -547,7 +547,7 @@ def test_a_broken_snapshot_in_parts_names_the_part(tmp_path):
     write_parts(tmp_path / "good", x, h, m, rho, 3)
     done = subprocess.run([CLI, "relax", "wendland_c2", str(tmp_path / "good.1.hdf5"), "--nh", "40", "--steps", "1",
                            "--memory-limit", "0.0000001"], capture_output=True, text=True)
-    assert done.returncode == 3 and "the snapshot declares 1500 particles" in done.stderr, done.stderr
+    assert done.returncode == 3 and "/PartType0/Coordinates declares 1500 particles in 3 parts" in done.stderr, done.stderr
     assert "leaves nothing for a slab" in refused(str(tmp_path / "good.1.hdf5"), "--memory-limit", "0.0000001")
 
 

@@ -18,8 +18,11 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 using namespace sphkern;
@@ -260,6 +263,17 @@ TEST_CASE("a relaxed set written in SWIFT's layout and as CSV reads back")
             CHECK(back.box->edges.diagonal() == Eigen::Vector3d(2, 2, 2));
         }
     }
+    // The CSV's rows are formatted in blocks on several threads: the same bytes as on one.
+    const ParticleSet larger = poisson_set(9000, 3, 2.0, 5);
+    const ParticleOutput larger_output{std::vector<double>(larger.size(), 0.31), 1.936492, 0.016, 1.0, "", 0.9};
+    auto csv_text = [&](int threads) {
+        write_particle_file(folder / "larger.csv", larger, larger_output, threads);
+        std::ifstream in(folder / "larger.csv");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const std::string one = csv_text(1);
+    CHECK(std::count(one.begin(), one.end(), '\n') == 9002);
+    CHECK(csv_text(3) == one);
     std::filesystem::remove_all(folder);
 }
 
@@ -316,6 +330,14 @@ TEST_CASE("the pairing instability in motion follows the linear verdict")
     CHECK(stable.paired_end == 0);
     // Linear motion: the RMS displacement follows every block mode damped from the noise.
     CHECK(stable.rms_end / stable.rms_start == doctest::Approx(stable.predicted_factor).epsilon(0.1));
+    // Every pass, the block's draw and the RMS sums included, is the same on any thread count.
+    request.threads = 3;
+    const auto stable_on_3 = pairing_motion(shipped_kernel("cubic_bspline"), fcc, request).front();
+    CHECK(stable_on_3.rms_start == stable.rms_start);
+    CHECK(stable_on_3.rms_end == stable.rms_end);
+    CHECK(stable_on_3.rms_max == stable.rms_max);
+    CHECK(stable_on_3.measured_rate == stable.measured_rate);
+    request.threads = 2;
     request.k_min = request.k_max = 1.8;
     const auto pairing = pairing_motion(shipped_kernel("cubic_bspline"), fcc, request).front();
     CHECK(pairing.verdict == Verdict::unstable);

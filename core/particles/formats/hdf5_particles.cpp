@@ -148,9 +148,11 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
         const SnapshotRows snapshot(file);
         // The budget is checked against the declared total before anything is read.
         if (snapshot.size() > max_particles())
-            fail_input(fmt::format("{}: the snapshot declares {} particles ({:.4g} bytes for the particles); over the memory "
-                                   "budget of {:.4g} bytes ({})",
-                                   name, snapshot.size(), static_cast<double>(snapshot.size()) * bytes_per_particle,
+            fail_input(fmt::format("{}: /PartType0/Coordinates declares {} particles{} ({:.4g} bytes for the particles); over "
+                                   "the memory budget of {:.4g} bytes ({})",
+                                   name, snapshot.size(),
+                                   snapshot.parts() > 1 ? fmt::format(" in {} parts", snapshot.parts()) : std::string(),
+                                   static_cast<double>(snapshot.size()) * bytes_per_particle,
                                    static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         set = snapshot.rows(0, snapshot.size());
         inputs = snapshot.sample().linked_files;

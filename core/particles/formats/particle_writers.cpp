@@ -2,9 +2,11 @@
 
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
+#include "support/io/chunked_writer.hpp"
 
 #include <fmt/format.h>
 
+#include <iterator>
 #include <memory>
 #include <ostream>
 
@@ -32,18 +34,21 @@ void check_output(const ParticleSet& set, const ParticleOutput& output, const st
 
 } // namespace
 
-void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output)
+void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
+                         int threads)
 {
     check_output(set, output, "a CSV particle file");
     const Eigen::Matrix3d& e = set.box->edges;
-    write_file_atomically(file, [&](std::ostream& out) {
-        out << fmt::format("# periodic box {:.17g} {:.17g}{}; support radius = {:.17g} h\n", e(0, 0), e(1, 1),
-                           set.dimension == 3 ? fmt::format(" {:.17g}", e(2, 2)) : std::string(), output.support_per_h);
-        out << (set.dimension == 3 ? "x,y,z,h,m\n" : "x,y,h,m\n");
-        for (std::size_t i = 0; i < set.size(); ++i) {
-            if (set.dimension == 3) out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], set.z[i], output.h[i], output.mass);
-            else out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], output.h[i], output.mass);
-        }
+    const bool three = set.dimension == 3;
+    write_file_atomically(file, [&](std::ostream& stream) {
+        ChunkedWriter out(stream);
+        out.print("# periodic box {:.17g} {:.17g}{}; support radius = {:.17g} h\n", e(0, 0), e(1, 1),
+                  three ? fmt::format(" {:.17g}", e(2, 2)) : std::string(), output.support_per_h);
+        out.text(three ? "x,y,z,h,m\n" : "x,y,h,m\n");
+        out.rows(set.size(), worker_threads(threads), [&](fmt::memory_buffer& row, std::size_t i) {
+            if (three) fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], set.z[i], output.h[i], output.mass);
+            else fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], output.h[i], output.mass);
+        });
     });
 }
 
@@ -54,11 +59,12 @@ void check_particle_output_name(const std::filesystem::path& file)
         throw Error(ExitCode::usage, file.string() + ": expected a name ending in .h5, .hdf5 or .csv");
 }
 
-void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output)
+void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
+                         int threads)
 {
     check_particle_output_name(file);
     const std::string ext = file.extension().string();
-    if (ext == ".csv") write_csv_particles(file, set, output);
+    if (ext == ".csv") write_csv_particles(file, set, output, threads);
     else write_hdf5_particles(file, set, output);
 }
 

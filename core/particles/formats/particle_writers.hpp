@@ -49,12 +49,16 @@ void require_layout_box(const ParticleSet& set, ParticleLayout layout, const std
 //   reads. PySPH's periodic domain is its application's, not the file's.
 void write_hdf5_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);
 
-// x,y[,z],h,m with 17 significant digits, after comment lines that state the box and R.
-void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);
+// x,y[,z],h,m with 17 significant digits, after comment lines that state the box and R; the
+// rows formatted on `threads` threads (0: every core), written in order (the text does not
+// depend on them).
+void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
+                         int threads = 1);
 
 // Error(usage) for a name that does not end in .h5, .hdf5 or .csv ("x.txt: expected ...").
 void check_particle_output_name(const std::filesystem::path& file);
-// By extension: .h5/.hdf5 (output.layout) or .csv.
-void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output);
+// By extension: .h5/.hdf5 (output.layout) or .csv (its rows formatted on `threads` threads).
+void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
+                         int threads = 1);
 
 } // namespace sphkern

@@ -230,6 +230,8 @@ SnapshotRows::~SnapshotRows() = default;
 
 std::size_t SnapshotRows::size() const { return parts_->total; }
 
+std::size_t SnapshotRows::parts() const { return parts_->list.size(); }
+
 const ParticleSet& SnapshotRows::sample() const { return parts_->sample; }
 
 ParticleSet SnapshotRows::rows(std::size_t begin, std::size_t end) const

@@ -23,7 +23,8 @@ public:
     SnapshotRows(const SnapshotRows&) = delete;
     SnapshotRows& operator=(const SnapshotRows&) = delete;
 
-    std::size_t size() const; // the particles of all parts
+    std::size_t size() const;  // the particles of all parts
+    std::size_t parts() const; // 1 for a snapshot in one file
     // The set's header and its first rows (at most two): what a request is checked against.
     // Its linked_files are every file the snapshot reads (its parts and their links).
     const ParticleSet& sample() const;
