@@ -5,7 +5,7 @@
 #pragma once
 
 #include "analysis/gradient_form.hpp"
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 
 #include <cstddef>
 

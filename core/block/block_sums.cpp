@@ -1,8 +1,8 @@
 #include "block/block_sums.hpp"
 
 #include "block/block_pair_sums.hpp"
-#include "particles/neighbour_gather.hpp"
-#include "particles/pair_pass.hpp"
+#include "particles/engine/neighbour_gather.hpp"
+#include "particles/engine/pair_pass.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include "block/block_geometry.hpp"
 #include "kernels/kernel.hpp"
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 
 namespace sphkern {
 

@@ -4,7 +4,7 @@
 #include "block/block_particle_set.hpp"
 #include "block/block_sums.hpp"
 #include "kernels/kernel_validity.hpp"
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"

@@ -1,9 +1,9 @@
 #include "particles/density_smoothing.hpp"
 
 #include "kernels/kernel_validity.hpp"
-#include "particles/neighbour_gather.hpp"
-#include "particles/neighbour_grid.hpp"
-#include "particles/pair_pass.hpp"
+#include "particles/engine/neighbour_gather.hpp"
+#include "particles/engine/neighbour_grid.hpp"
+#include "particles/engine/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/vector_clones.hpp"

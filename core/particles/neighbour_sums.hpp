@@ -4,7 +4,7 @@
 // result is the same bits on any machine and thread count.
 #pragma once
 
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 
 #include <cstddef>
 

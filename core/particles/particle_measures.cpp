@@ -1,9 +1,9 @@
 #include "particles/particle_measures.hpp"
 
 #include "kernels/kernel_validity.hpp"
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 #include "particles/neighbour_sums.hpp"
-#include "particles/pair_pass.hpp"
+#include "particles/engine/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 

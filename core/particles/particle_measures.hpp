@@ -5,7 +5,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 #include "particles/per_particle.hpp"
 #include "particles/particle_set.hpp"
 #include "particles/smoothing_lengths.hpp"

@@ -1,7 +1,7 @@
 #include "relax/glass_quality.hpp"
 
-#include "particles/neighbour_gather.hpp"
-#include "particles/pair_pass.hpp"
+#include "particles/engine/neighbour_gather.hpp"
+#include "particles/engine/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 

@@ -1,8 +1,8 @@
 #include "relax/sph_forces.hpp"
 
 #include "kernels/kernel_validity.hpp"
-#include "particles/neighbour_gather.hpp"
-#include "particles/pair_pass.hpp"
+#include "particles/engine/neighbour_gather.hpp"
+#include "particles/engine/pair_pass.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/vector_clones.hpp"

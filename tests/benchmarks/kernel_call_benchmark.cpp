@@ -5,7 +5,7 @@
 #include "block/block_pair_sums.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 #include "particles/neighbour_sums.hpp"
 
 #include <benchmark/benchmark.h>

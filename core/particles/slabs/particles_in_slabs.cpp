@@ -2,7 +2,7 @@
 
 #include "particles/particle_measures.hpp"
 #include "particles/particles_memory.hpp"
-#include "particles/periodic_images.hpp"
+#include "particles/engine/periodic_images.hpp"
 #include "particles/slabs/slab_plan.hpp"
 #include "particles/slabs/slab_spills.hpp"
 #include "support/error.hpp"

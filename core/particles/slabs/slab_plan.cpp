@@ -1,7 +1,7 @@
 #include "particles/slabs/slab_plan.hpp"
 
 #include "particles/particles_memory.hpp"
-#include "particles/periodic_images.hpp"
+#include "particles/engine/periodic_images.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 #include "support/process/parallel_for.hpp"

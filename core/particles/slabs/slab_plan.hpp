@@ -7,7 +7,7 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/formats/snapshot_rows.hpp"
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 #include "particles/particle_volumes.hpp"
 #include "particles/smoothing_lengths.hpp"
 

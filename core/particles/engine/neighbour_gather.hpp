@@ -3,7 +3,7 @@
 // caller needs), in the grid's fixed order. The loops are written so that they vectorise.
 #pragma once
 
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 
 #include <cstdint>
 #include <string>

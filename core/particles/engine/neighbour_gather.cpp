@@ -1,4 +1,4 @@
-#include "particles/neighbour_gather.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 
 #include "kernels/kernel.hpp"
 #include "support/error.hpp"

@@ -1,6 +1,6 @@
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 
-#include "particles/periodic_images.hpp"
+#include "particles/engine/periodic_images.hpp"
 
 #include "support/error.hpp"
 #include "support/process/first_touch.hpp"

@@ -1,4 +1,4 @@
-#include "particles/periodic_images.hpp"
+#include "particles/engine/periodic_images.hpp"
 
 #include <Eigen/LU>
 

@@ -6,8 +6,8 @@
 // which cluster changes no result. Progress is shown by the first thread, in the runs of clusters taken by all.
 #pragma once
 
-#include "particles/neighbour_gather.hpp"
-#include "particles/neighbour_grid.hpp"
+#include "particles/engine/neighbour_gather.hpp"
+#include "particles/engine/neighbour_grid.hpp"
 #include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
 
