@@ -20,10 +20,11 @@ COMPARED = ["statistics", "histograms", "h_over_l", "nh", "h_min", "h_max", "mea
             "rho0", "source"]
 
 
-def snapshot(path, dim, periodic, parts=1, seed=7, gadget=False, tamper=None):
-    """A SWIFT snapshot of N Poisson particles, h varying by +-15%, masses and densities; in
+def snapshot(path, dim, periodic, parts=1, seed=7, gadget=False, tamper=None, count=N):
+    """A SWIFT snapshot of `count` Poisson particles, h varying by +-15%, masses and densities; in
     `parts` files BASE.K.hdf5 where parts > 1 (then `path` is the base). GADGET's layout where
     asked: single precision, SmoothingLength and Density, one mass in the MassTable."""
+    N = count
     rng = np.random.default_rng(seed)
     x = rng.uniform(0, 1, (N, 3))
     if dim == 2:
@@ -86,6 +87,23 @@ def test_slabs_give_the_whole_sets_statistics_and_csv(tmp_path, dim, periodic):
             assert sliced.get(key) == whole.get(key), key
         assert (tmp_path / "slabs.csv").read_bytes() == (tmp_path / "whole.csv").read_bytes()
         assert not list(spill.iterdir()), "the slabs' spill folder is removed"
+
+
+def test_runs_of_rows_follow_the_threads_and_change_no_bit(tmp_path):
+    """The file is read, and the spills merged, in runs of two blocks per thread where the budget
+    holds them: a different run on each thread count, the same statistics."""
+    name = snapshot(tmp_path / "set.hdf5", 3, True, count=200000)
+    whole, _ = run(name, "--histogram", "9")
+    runs = set()
+    for threads in ("1", "2", "7"):
+        sliced, slabs = run(name, "--memory-limit", "0.05", "--histogram", "9", "--threads", threads)
+        assert slabs, "the set is over the budget"
+        rows = int(slabs[0].split("in runs of ")[1].split()[0])
+        assert rows % 8192 == 0
+        runs.add(rows)
+        for key in COMPARED:
+            assert sliced.get(key) == whole.get(key), key
+    assert len(runs) == 3, runs
 
 
 def test_snapshots_in_parts_in_slabs_give_the_one_file_result(tmp_path):

@@ -6,6 +6,7 @@
 #include "particles/slabs/slab_plan.hpp"
 #include "particles/slabs/slab_spills.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
 #include "support/text/setting_names.hpp"
 
@@ -15,7 +16,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <span>
 
 namespace sphkern {
 
@@ -35,8 +38,10 @@ struct InputLayout {
 };
 
 // One pass over the file: each particle to the input of every slab that holds a point of it
-// (itself or a periodic image), in file order.
-void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, const InputLayout& layout, SlabSpills& inputs, int threads)
+// (itself or a periodic image), in file order. A run's blocks are sorted on the threads, each
+// into records per slab, and appended block after block.
+void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, const InputLayout& layout, SlabSpills& inputs,
+                std::size_t run, int threads)
 {
     const auto images = periodic_images_of(file.sample(), reach);
     // The slabs a row of bins belongs to: its own slab, and the one or two whose halo it is.
@@ -44,31 +49,37 @@ void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, co
     for (std::size_t s = 0; s < plan.slabs.size(); ++s)
         for (std::size_t r = plan.slabs[s].first; r < plan.slabs[s].last; ++r)
             *std::find(slabs_of[r].begin(), slabs_of[r].end(), SIZE_MAX) = s;
-    std::vector<std::vector<double>> buffers(plan.slabs.size());
-    const std::size_t fields = layout.fields(), flush_at = 1024 * fields;
-    for (std::size_t begin = 0; begin < file.size(); begin += slab_read_rows) {
-        const ParticleSet rows = read_valid_rows(file, begin, std::min(file.size(), begin + slab_read_rows), threads);
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            std::array<std::size_t, 6> to; // its points lie in two rows at most (z and an image's), each in three slabs at most
-            std::size_t count = 0;
-            auto add = [&](double x, double y, double z) {
-                const double c[3] = {x, y, z};
-                for (const std::size_t s : slabs_of[plan.geometry.bin(plan.axis, c[plan.axis])])
-                    if (s != SIZE_MAX && std::find(to.begin(), to.begin() + static_cast<std::ptrdiff_t>(count), s) == to.begin() + static_cast<std::ptrdiff_t>(count))
-                        to[count++] = s;
-            };
-            for_each_point(rows, i, images, add);
-            for (std::size_t k = 0; k < count; ++k) {
-                auto& b = buffers[to[k]];
-                b.insert(b.end(), {static_cast<double>(rows.id(i)), rows.x[i], rows.y[i], rows.z[i]});
-                if (layout.h) b.push_back(rows.h[i]);
-                if (layout.mass) b.push_back(rows.mass[i]);
-                if (layout.density) b.push_back(rows.density[i]);
-                if (b.size() >= flush_at) inputs.append(to[k], b), b.clear();
+    for (std::size_t begin = 0; begin < file.size(); begin += run) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(file.size(), begin + run), threads);
+        std::vector<std::vector<std::vector<double>>> blocks((rows.size() + particle_block_size - 1) / particle_block_size);
+        ParallelFor pass;
+        pass.run_blocks(rows.size(), particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t end) {
+            auto& records = blocks[b];
+            records.resize(plan.slabs.size());
+            for (std::size_t i = from; i < end; ++i) {
+                std::array<std::size_t, 6> to; // its points lie in two rows at most (z and an image's), each in three slabs at most
+                std::size_t count = 0;
+                auto add = [&](double x, double y, double z) {
+                    const double c[3] = {x, y, z};
+                    for (const std::size_t s : slabs_of[plan.geometry.bin(plan.axis, c[plan.axis])])
+                        if (s != SIZE_MAX && std::find(to.begin(), to.begin() + static_cast<std::ptrdiff_t>(count), s) == to.begin() + static_cast<std::ptrdiff_t>(count))
+                            to[count++] = s;
+                };
+                for_each_point(rows, i, images, add);
+                for (std::size_t k = 0; k < count; ++k) {
+                    auto& r = records[to[k]];
+                    r.insert(r.end(), {static_cast<double>(rows.id(i)), rows.x[i], rows.y[i], rows.z[i]});
+                    if (layout.h) r.push_back(rows.h[i]);
+                    if (layout.mass) r.push_back(rows.mass[i]);
+                    if (layout.density) r.push_back(rows.density[i]);
+                }
             }
-        }
+        });
+        for (const auto& records : blocks)
+            for (std::size_t s = 0; s < records.size(); ++s)
+                if (!records[s].empty()) inputs.append(s, records[s]);
     }
-    for (std::size_t s = 0; s < buffers.size(); ++s) inputs.append(s, buffers[s]), inputs.close_slab(s);
+    for (std::size_t s = 0; s < plan.slabs.size(); ++s) inputs.close_slab(s);
 }
 
 // Slab s's particles from its input, in file order.
@@ -87,6 +98,42 @@ ParticleSet read_slab(const ParticleSet& sample, const SlabSpills& inputs, std::
         if (layout.density) set.density.push_back(r[k++]);
     });
     return set;
+}
+
+// The records of a slab's own particles (those in its own rows), in file order: formatted in
+// blocks on the threads, a run of particles at a time, and handed to `append` block after
+// block. `alone` becomes the lowest row of a particle with no neighbour, and its h.
+void spill_own_particles(const ParticleSet& set, const ParticleMeasures& m, const PerParticle& h, const PerParticle& volumes,
+                         const SlabPlan& plan, const Slab& slab, bool per_particle, std::size_t run, int threads,
+                         std::optional<std::pair<std::uint64_t, double>>& alone,
+                         const std::function<void(std::span<const double>)>& append)
+{
+    const auto lower = [](auto& a, const auto& b) {
+        if (b && (!a || b->first < a->first)) a = b;
+    };
+    for (std::size_t first = 0; first < set.measured(); first += run) {
+        const std::size_t count = std::min(run, set.measured() - first);
+        const std::size_t blocks = (count + particle_block_size - 1) / particle_block_size;
+        std::vector<std::vector<double>> records(blocks);
+        std::vector<std::optional<std::pair<std::uint64_t, double>>> alone_in(blocks);
+        ParallelFor pass;
+        pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t end) {
+            for (std::size_t i = first + from; i < first + end; ++i) {
+                const double c[3] = {set.x[i], set.y[i], set.z[i]};
+                const std::size_t r = plan.geometry.bin(plan.axis, c[plan.axis]);
+                if (r < slab.own_first || r >= slab.own_last) continue;
+                if (m.neighbours[i] == 0) lower(alone_in[b], std::optional(std::pair(set.ids[i], h[i])));
+                const double record[] = {static_cast<double>(set.ids[i]), h[i], static_cast<double>(m.neighbours[i]), m.e0[i],
+                                         m.eps_rho_values()[i], m.eps_gradp[i], m.eps_gradp_sum[i], m.e1_norm[i], m.m1_norm[i], m.E_norm[i]};
+                records[b].insert(records[b].end(), std::begin(record), std::end(record));
+                if (per_particle) {
+                    const double more[] = {set.x[i], set.y[i], set.z[i], volumes[i], m.e1[i][0], m.e1[i][1], m.e1[i][2], m.m1[i][0], m.m1[i][1], m.m1[i][2]};
+                    records[b].insert(records[b].end(), std::begin(more), std::end(more));
+                }
+            }
+        });
+        for (std::size_t b = 0; b < blocks; ++b) append(records[b]), lower(alone, alone_in[b]);
+    }
 }
 
 // The sample holds the header, not the count: the file's count is given.
@@ -137,15 +184,18 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     // Beside a slab, a run of rows read and of records spilled are held; after the slabs, the
     // merge and the statistics hold a run of records, each slab's read buffer, the blocks'
     // moments and the percentiles' buckets (about 8 MiB).
-    const std::size_t beside_slab = slab_read_rows * (8 + fields) * sizeof(double);
+    const std::size_t row_bytes = (8 + fields) * sizeof(double);
+    const std::size_t run = slab_run_rows(threads, row_bytes, memory_limit_bytes() / 4);
+    const std::size_t beside_slab = run * row_bytes;
     const std::size_t statistics = (std::size_t{8} << 20) + (n / particle_block_size + 1) * 400;
     if (memory_limit_bytes() <= std::max(beside_slab, statistics))
         fail_input(fmt::format("{}: the memory budget of {:.4g} bytes ({}) leaves nothing for a slab; expected more than {:.4g}",
                                sample.name, static_cast<double>(memory_limit_bytes()), setting_named("memory_limit"),
                                static_cast<double>(std::max(beside_slab, statistics))));
-    const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads}, memory_limit_bytes() - beside_slab);
+    const SlabPlan plan = plan_slabs(file, kernel, {spec, model, request.rho0, threads, run}, memory_limit_bytes() - beside_slab);
     answer.mean_volume = plan.mean_volume, answer.rho0 = plan.rho0, answer.spacing = plan.spacing;
-    spdlog::debug("{}: {} particles in {} slabs along axis {}", sample.name, n, plan.slabs.size(), plan.axis);
+    spdlog::debug("{}: {} particles in {} slabs along axis {}, read in runs of {} rows", sample.name, n, plan.slabs.size(),
+                  plan.axis, run);
 
     // The slabs' inputs, written in one more pass, and the room they and the results take.
     const InputLayout layout{!sample.h.empty(), !sample.mass.empty(), !sample.density.empty()};
@@ -154,7 +204,7 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     require_room(slab_points * layout.fields() * sizeof(double) + slab_spill_bytes(n, per_particle), "inputs and results");
     const double reach = kernel.support() * plan.h_max;
     SlabSpills inputs(layout.fields(), plan.slabs.size());
-    distribute(file, plan, reach, layout, inputs, threads);
+    distribute(file, plan, reach, layout, inputs, run, threads);
     phases.lap("plan");
     SlabSpills spills(fields, plan.slabs.size());
     ParticlePoint point;
@@ -175,24 +225,9 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
         phases.merge(m.phases);
         phases.restart();
         point.seconds += m.seconds, point.cpu_seconds += m.cpu_seconds, point.pairs += m.pairs;
-        // The slab's own particles, in file order.
-        std::vector<double> records;
-        const auto flush = [&] { spills.append(s, records), records.clear(); };
-        for (std::size_t i = 0; i < set.measured(); ++i) {
-            const double c[3] = {set.x[i], set.y[i], set.z[i]};
-            const std::size_t r = plan.geometry.bin(plan.axis, c[plan.axis]);
-            if (r < slab.own_first || r >= slab.own_last) continue;
-            if (m.neighbours[i] == 0 && (!alone || set.ids[i] < alone->first)) alone.emplace(set.ids[i], h[i]);
-            const double record[] = {static_cast<double>(set.ids[i]), h[i], static_cast<double>(m.neighbours[i]), m.e0[i],
-                                     m.eps_rho_values()[i], m.eps_gradp[i], m.eps_gradp_sum[i], m.e1_norm[i], m.m1_norm[i], m.E_norm[i]};
-            records.insert(records.end(), std::begin(record), std::end(record));
-            if (per_particle) {
-                const double more[] = {set.x[i], set.y[i], set.z[i], volumes[i], m.e1[i][0], m.e1[i][1], m.e1[i][2], m.m1[i][0], m.m1[i][1], m.m1[i][2]};
-                records.insert(records.end(), std::begin(more), std::end(more));
-            }
-            if (records.size() >= fields * 4096) flush();
-        }
-        flush();
+        spill_own_particles(set, m, h, volumes, plan, slab, per_particle, run, threads, alone, [&](std::span<const double> records) {
+            spills.append(s, records);
+        });
         spills.close_slab(s);
         phases.lap("spill");
     }
@@ -206,7 +241,7 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
     // the per-particle output with the first.
     const std::size_t measures = std::size(measure_names);
     std::vector<ExactSummary> summaries(measures + 1, ExactSummary(n)); // and h's
-    spills.merge(n, slab_read_rows, [&](std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& c) {
+    spills.merge(n, run, threads, [&](std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& c) {
         for (std::size_t f = 0; f < measures; ++f)
             summaries[f].add_moments(begin, count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
         summaries[measures].add_moments(begin, count, threads, [&](std::size_t k) { return c[h_field][k]; });
@@ -220,12 +255,12 @@ ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRo
         const Summary s = summaries[f].moments();
         histograms.emplace_back(s.min, s.max, request.histogram_bins);
     }
-    spills.merge(n, slab_read_rows, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
+    spills.merge(n, run, threads, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
         for (std::size_t f = 0; f < measures; ++f)
             summaries[f].count(count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
         for (std::size_t f = 0; f < histograms.size(); ++f) histograms[f].add({c[measure_field[f]].data(), count}, threads);
     });
-    spills.merge(n, slab_read_rows, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
+    spills.merge(n, run, threads, [&](std::size_t, std::size_t count, const std::vector<std::vector<double>>& c) {
         for (std::size_t f = 0; f < measures; ++f)
             summaries[f].gather(count, threads, [&](std::size_t k) { return c[measure_field[f]][k]; });
     });

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -44,6 +45,13 @@ private:
 
 } // namespace
 
+std::size_t slab_run_rows(int threads, std::size_t row_bytes, std::size_t room)
+{
+    const std::size_t fit = room / std::max<std::size_t>(1, row_bytes * particle_block_size);
+    const std::size_t blocks = std::clamp<std::size_t>(fit, 2, 2 * static_cast<std::size_t>(std::max(1, threads)));
+    return blocks * particle_block_size;
+}
+
 ParticleSet read_valid_rows(const SnapshotRows& file, std::size_t begin, std::size_t end, int threads)
 {
     throw_if_interrupted();
@@ -57,6 +65,7 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
     const ParticleSet& sample = file.sample();
     const std::size_t n = file.size();
     const int dim = sample.dimension, threads = in.threads;
+    const std::size_t run = in.run_rows;
     SlabPlan plan;
     plan.particles = n;
     plan.axis = dim - 1;
@@ -69,8 +78,8 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
     // Pass 1: the volumes, masses and file h, checked and summed as the whole set's.
     BlockSum volume_sum(n), mass_sum(n);
     bool first = true;
-    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
-        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+    for (std::size_t begin = 0; begin < n; begin += run) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + run), threads);
         const std::size_t count = rows.size();
         if (in.volume == VolumeModel::file) {
             const PerParticle v = particle_volumes(rows, in.volume, threads);
@@ -115,8 +124,8 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
         for (int a = 0; a < 3; ++a) e[2 * a] = std::min(e[2 * a], more[2 * a]), e[2 * a + 1] = std::max(e[2 * a + 1], more[2 * a + 1]);
         e[6] += more[6];
     };
-    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
-        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+    for (std::size_t begin = 0; begin < n; begin += run) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + run), threads);
         widen(extent, parallel_reduce(
                           rows.size(), threads, none,
                           [&](std::size_t i, Extent& e) {
@@ -132,8 +141,8 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
     // Pass 3: the points in each row of bins along the axis (integers: each thread counts its own).
     const int axis = plan.axis;
     std::vector<std::size_t> in_row(plan.geometry.n[axis], 0);
-    for (std::size_t begin = 0; begin < n; begin += slab_read_rows) {
-        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + slab_read_rows), threads);
+    for (std::size_t begin = 0; begin < n; begin += run) {
+        const ParticleSet rows = read_valid_rows(file, begin, std::min(n, begin + run), threads);
         std::vector<std::vector<std::size_t>> counts(static_cast<std::size_t>(std::max(1, threads)));
         ParallelFor pass;
         pass.run(rows.size(), threads, [&](int t, std::size_t from, std::size_t to) {

@@ -10,20 +10,25 @@
 #include "particles/engine/neighbour_grid.hpp"
 #include "particles/particle_volumes.hpp"
 #include "particles/smoothing_lengths.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <cstddef>
 #include <vector>
 
 namespace sphkern {
 
-// Rows of the file read at a time: a whole number of the blocks that sums are taken in.
-inline constexpr std::size_t slab_read_rows = std::size_t{1} << 14;
+// Rows of the file read, and of the spills merged, at a time: a whole number of the blocks
+// that sums are taken in (a run adds its blocks as the whole set's sum does), two blocks per
+// thread so that every thread has some, fewer where `room` holds fewer runs of rows of
+// `row_bytes`, and never fewer than two. The results do not depend on it.
+std::size_t slab_run_rows(int threads, std::size_t row_bytes, std::size_t room);
 
 struct SlabPlanInputs {
     SmoothingSpec smoothing; // eta, N_H or the file's h
     VolumeModel volume = VolumeModel::uniform; // uniform or file
     std::optional<double> rho0;
     int threads = 1;
+    std::size_t run_rows = particle_block_size; // slab_run_rows
 };
 
 // One slab: its own rows of bins along the axis, and the rows it holds (its own and the halo).

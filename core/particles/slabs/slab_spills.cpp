@@ -2,12 +2,14 @@
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 namespace sphkern {
@@ -101,22 +103,30 @@ void SlabSpills::read(std::size_t slab, const std::function<void(const double* r
     for (SpillReader reader(files_[slab], fields_); !reader.done(); reader.next()) visit(reader.record());
 }
 
-void SlabSpills::merge(std::size_t n, std::size_t run, const Visit& visit) const
+void SlabSpills::merge(std::size_t n, std::size_t run, int threads, const Visit& visit) const
 {
     std::vector<std::unique_ptr<SpillReader>> readers;
     for (const auto& file : files_) readers.push_back(std::make_unique<SpillReader>(file, fields_));
     std::vector<std::vector<double>> columns(fields_, std::vector<double>(run));
+    std::vector<std::size_t> placed(readers.size());
     for (std::size_t begin = 0; begin < n; begin += run) {
         throw_if_interrupted();
         const std::size_t count = std::min(run, n - begin), end = begin + count;
-        std::size_t placed = 0;
-        for (auto& reader : readers)
-            for (; !reader->done() && reader->row() < end; reader->next(), ++placed) {
-                const double* record = reader->record();
-                const std::size_t k = reader->row() - begin;
-                for (std::size_t f = 0; f < fields_; ++f) columns[f][k] = record[f];
+        // Each slab holds its own rows: the readers write disjoint places of the columns.
+        ParallelFor pass;
+        pass.run(readers.size(), threads, [&](int, std::size_t first, std::size_t last) {
+            for (std::size_t s = first; s < last; ++s) {
+                SpillReader& reader = *readers[s];
+                for (placed[s] = 0; !reader.done() && reader.row() < end; reader.next(), ++placed[s]) {
+                    const double* record = reader.record();
+                    const std::size_t k = reader.row() - begin;
+                    for (std::size_t f = 0; f < fields_; ++f) columns[f][k] = record[f];
+                }
             }
-        if (placed != count) throw std::logic_error("the slabs' results miss rows");
+        });
+        std::size_t total = 0;
+        for (const std::size_t p : placed) total += p;
+        if (total != count) throw std::logic_error("the slabs' results miss rows");
         visit(begin, count, columns);
     }
 }
