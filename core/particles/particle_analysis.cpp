@@ -17,19 +17,56 @@ namespace {
 
 ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
 {
-    ParticlePoint point;
+    static constexpr double MeasureRecord::*fields[] = {&MeasureRecord::e0,      &MeasureRecord::e0,      &MeasureRecord::eps_gradp,
+                                                        &MeasureRecord::eps_gradp_sum, &MeasureRecord::e1_norm, &MeasureRecord::m1_norm,
+                                                        &MeasureRecord::E_norm};
     const int threads = m.threads;
-    const std::span<const double> fields[] = {m.e0, m.eps_rho_values(), m.eps_gradp, m.eps_gradp_sum, m.e1_norm, m.m1_norm, m.E_norm};
-    for (std::size_t f = 0; f < std::size(fields); ++f) {
-        // Without masses eps_rho is e0: its summary is e0's.
-        const bool same = f > 0 && fields[f].data() == m.e0.data();
-        point.statistics.emplace_back(measure_names[f], same ? point.statistics.front().second : summarise(fields[f], threads));
+    const std::size_t n = m.size(), measures = std::size(measure_names);
+    // Without masses eps_rho is e0: its summary is e0's.
+    const bool eps_rho_is_e0 = m.eps_rho.empty();
+    // Each pass of the statistics reads the records once, a run at a time, into a column per
+    // measure (the passes read each value of a column); a run gives each thread a share of the
+    // percentiles' buckets to count.
+    const std::size_t run = statistics_detail::buckets * static_cast<std::size_t>(std::max(1, threads));
+    std::vector<std::vector<double>> columns(measures, std::vector<double>(std::min(run, n)));
+    auto each_run = [&](const auto& step) {
+        for (std::size_t begin = 0; begin < n; begin += run) {
+            const std::size_t count = std::min(run, n - begin);
+            ParallelFor pass;
+            pass.run_blocks(count, particle_block_size, threads, [&](std::size_t, std::size_t from, std::size_t to) {
+                for (std::size_t k = from; k < to; ++k) {
+                    const MeasureRecord& r = m.scalars[begin + k];
+                    for (std::size_t f = 0; f < 7; ++f) columns[f][k] = r.*fields[f];
+                    columns[7][k] = r.neighbours;
+                    if (!eps_rho_is_e0) columns[1][k] = m.eps_rho[begin + k];
+                }
+            });
+            for (std::size_t f = 0; f < measures; ++f) {
+                if (f == 1 && eps_rho_is_e0) continue;
+                const double* column = columns[f].data();
+                step(f, begin, count, [column](std::size_t k) { return column[k]; });
+            }
+        }
+    };
+    std::vector<ExactSummary> summaries(measures, ExactSummary(n));
+    each_run([&](std::size_t f, std::size_t begin, std::size_t count, const auto& value) {
+        summaries[f].add_moments(begin, count, threads, value);
+    });
+    std::vector<Histogram> histograms;
+    for (std::size_t f = 0; bins && f < measures_with_histograms; ++f) {
+        const Summary s = summaries[f == 1 && eps_rho_is_e0 ? 0 : f].moments();
+        histograms.emplace_back(s.min, s.max, bins);
     }
-    point.statistics.emplace_back(
-        measure_names[7], summarise_values(m.size(), threads, [&](std::size_t i) { return static_cast<double>(m.neighbours[i]); }));
-    if (bins)
-        for (std::size_t f = 0; f < measures_with_histograms; ++f)
-            point.histograms.emplace_back(measure_names[f], histogram(fields[f], bins, threads));
+    each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) {
+        summaries[f].count(count, threads, value);
+        if (f < histograms.size()) histograms[f].add_values(count, threads, value);
+    });
+    each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) { summaries[f].gather(count, threads, value); });
+    ParticlePoint point;
+    for (std::size_t f = 0; f < measures; ++f)
+        point.statistics.emplace_back(measure_names[f], summaries[f == 1 && eps_rho_is_e0 ? 0 : f].finish());
+    for (std::size_t f = 0; f < histograms.size(); ++f)
+        point.histograms.emplace_back(measure_names[f], histograms[f == 1 && eps_rho_is_e0 ? 0 : f]);
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;
@@ -122,12 +159,14 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         auto measures = measure_particles(kernel, set, inputs);
         phases.merge(measures.phases);
         phases.restart();
+        ParticlePoint point = summarise_point(measures, request.histogram_bins);
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
-        if (const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.neighbours[i] == 0; }))
+        if (point.statistics.back().second.min == 0) {
+            const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.scalars[i].neighbours == 0; });
             fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
                                    "larger h or a denser set",
                                    set.name, *i, h[*i]));
-        ParticlePoint point = summarise_point(measures, request.histogram_bins);
+        }
         finish_point(point, statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; }), unit, R, set, answer.rho0);
         answer.threads = measures.threads;
         phases.lap("statistics");

@@ -53,10 +53,10 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // One particle's results in sweep order, before they go to the particle's own (file) place.
 struct PointResult {
-    double e0, eps_rho, eps_gradp, eps_gradp_sum, e1_norm, m1_norm, E_norm;
+    MeasureRecord scalars;
+    double eps_rho;
     std::array<double, 3> e1, m1;
     std::array<double, 6> E;
-    int neighbours;
     std::uint32_t i;
 };
 
@@ -81,10 +81,8 @@ public:
         for (std::size_t k = 0; k < results_.size(); ++k) {
             if (k + ahead < results_.size()) prefetch(out, results_[k + ahead].i);
             const PointResult& r = results_[k];
-            out.e0[r.i] = r.e0, out.eps_gradp[r.i] = r.eps_gradp, out.eps_gradp_sum[r.i] = r.eps_gradp_sum;
-            out.e1_norm[r.i] = r.e1_norm, out.m1_norm[r.i] = r.m1_norm, out.E_norm[r.i] = r.E_norm;
-            out.neighbours[r.i] = r.neighbours;
-            pairs_ += static_cast<std::size_t>(r.neighbours);
+            out.scalars[r.i] = r.scalars;
+            pairs_ += static_cast<std::size_t>(r.scalars.neighbours);
             if (masses) out.eps_rho[r.i] = r.eps_rho;
             if (vectors) out.e1[r.i] = r.e1, out.m1[r.i] = r.m1, out.E[r.i] = r.E;
         }
@@ -95,10 +93,9 @@ private:
     // The destinations of a result a few ahead: the stores then find their lines in cache.
     static void prefetch(ParticleMeasures& out, std::size_t i)
     {
-        __builtin_prefetch(&out.e0[i], 1), __builtin_prefetch(&out.eps_gradp[i], 1);
-        __builtin_prefetch(&out.eps_gradp_sum[i], 1), __builtin_prefetch(&out.e1_norm[i], 1);
-        __builtin_prefetch(&out.m1_norm[i], 1), __builtin_prefetch(&out.E_norm[i], 1);
-        __builtin_prefetch(&out.neighbours[i], 1);
+        // A record may straddle two lines.
+        const char* record = reinterpret_cast<const char*>(&out.scalars[i]);
+        __builtin_prefetch(record, 1), __builtin_prefetch(record + sizeof(MeasureRecord) - 1, 1);
         if (!out.eps_rho.empty()) __builtin_prefetch(&out.eps_rho[i], 1);
         if (!out.e1.empty()) __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
     }
@@ -145,7 +142,8 @@ struct Sweep {
         PointResult& r = out.next();
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
-        if (!std::isfinite(r.e0) || !std::isfinite(r.eps_gradp) || !std::isfinite(r.eps_rho)) fail_non_finite(r, nb, h);
+        if (!std::isfinite(r.scalars.e0) || !std::isfinite(r.scalars.eps_gradp) || !std::isfinite(r.eps_rho))
+            fail_non_finite(r, nb, h);
     }
 
     // The neighbours inside the support R h_ij of their pair, h_ij = (h_i + h_j) / 2, moved to
@@ -183,7 +181,7 @@ struct Sweep {
     // a neighbour's q, or else an h the sums overflow at.
     [[noreturn]] void fail_non_finite(const PointResult& r, const Neighbours& nb, double h) const
     {
-        if (std::isfinite(r.e0) && std::isfinite(r.eps_gradp))
+        if (std::isfinite(r.scalars.e0) && std::isfinite(r.scalars.eps_gradp))
             fail_input(fmt::format("{}: eps_rho of particle {} overflows a double (its masses over rho0 = {:g}); expected "
                                    "a reference density rho0 nearer the set's mass density",
                                    set.name, set.id(r.i), in.rho0));
@@ -197,23 +195,24 @@ struct Sweep {
     {
         const int dim = set.dimension;
         const double hd = dim == 3 ? h * h * h : h * h, hd1 = hd * h; // std::pow costs more than the sums of a particle
-        out.e0 = s0 / hd - 1;
-        out.eps_rho = sm ? *sm / hd / in.rho0 - 1 : out.e0;
+        MeasureRecord& scalars = out.scalars;
+        scalars.e0 = s0 / hd - 1;
+        out.eps_rho = sm ? *sm / hd / in.rho0 - 1 : scalars.e0;
         for (int a = 0; a < 3; ++a) out.m1[static_cast<std::size_t>(a)] = m1[a] / hd / h;
         for (int a = 0; a < 3; ++a) out.e1[static_cast<std::size_t>(a)] = e1[a] / hd1 * h;
         std::array<double, 6> tensor;
         for (int a = 0; a < 6; ++a) tensor[static_cast<std::size_t>(a)] = E[a] / hd1 - (a < dim ? 1.0 : 0.0);
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
         out.E = tensor;
-        out.E_norm = frobenius_norm(tensor, dim);
-        out.e1_norm = std::hypot(out.e1[0], out.e1[1], out.e1[2]), out.m1_norm = std::hypot(out.m1[0], out.m1[1], out.m1[2]);
+        scalars.E_norm = frobenius_norm(tensor, dim);
+        scalars.e1_norm = std::hypot(out.e1[0], out.e1[1], out.e1[2]), scalars.m1_norm = std::hypot(out.m1[0], out.m1[1], out.m1[2]);
         const Eigen::Vector3d g = in.gravity.value_or(set.gravity);
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
-        out.eps_gradp = g.dot(T * g);
+        scalars.eps_gradp = g.dot(T * g);
         const Eigen::Vector3d e1v(out.e1[0], out.e1[1], out.e1[2]);
-        out.eps_gradp_sum = out.eps_gradp + 2 * in.depth * e1v.dot(g);
-        out.neighbours = static_cast<int>(n);
+        scalars.eps_gradp_sum = scalars.eps_gradp + 2 * in.depth * e1v.dot(g);
+        scalars.neighbours = static_cast<int>(n);
     }
 };
 
@@ -287,8 +286,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     // The measured particles only: the neighbours-only ones end the set and are not visited.
     const std::size_t n = set.measured();
     // Written in the particles' own order, random in memory on a disordered set.
-    for (auto* v : {&out.e0, &out.eps_gradp, &out.eps_gradp_sum, &out.e1_norm, &out.m1_norm, &out.E_norm}) v->resize(n);
-    out.neighbours.resize(n);
+    out.scalars.resize(n);
     if (!inputs.mass.empty()) out.eps_rho.resize(n);
     if (inputs.vectors) out.e1.resize(n), out.m1.resize(n), out.E.resize(n);
     spdlog::debug("{}: {} particles and {} ghosts on {} threads ({} of the particles neighbours only)", set.name,

@@ -42,25 +42,32 @@ struct MeasureInputs {
     const MeasureSlab* slab = nullptr;       // a slab: only its own rows' particles measured
 };
 
+// One particle's scalar measures side by side: the sums write a particle's in one or two cache
+// lines. On a disordered set a particle's place in memory is random, and an array per measure
+// cost a line each, seven in all (a quarter of the sums on a Poisson set; BENCHMARKS.md).
+struct MeasureRecord {
+    double e0, eps_gradp, eps_gradp_sum;
+    double e1_norm, m1_norm, E_norm; // |e1|, |m1| and ||E||_F
+    int neighbours;                  // j != i inside the support
+};
+
 // Every array is written by the threads of the sums (first touch), one value per measured
 // particle (ParticleSet::measured: the neighbours-only particles have none; in a slab, only
 // the particles of its own rows have theirs).
-// The statistics need only the scalars (52 bytes a particle without masses); the vectors and
+// The statistics need only the scalars (56 bytes a particle without masses); the vectors and
 // the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {
-    FirstTouchVector<double> e0, eps_gradp, eps_gradp_sum;
+    FirstTouchVector<MeasureRecord> scalars;
     FirstTouchVector<double> eps_rho;                  // empty without masses: then eps_rho = e0
-    FirstTouchVector<double> e1_norm, m1_norm, E_norm; // |e1|, |m1| and ||E||_F
     FirstTouchVector<std::array<double, 3>> e1, m1;    // empty unless asked for
     FirstTouchVector<std::array<double, 6>> E;         // xx, yy, zz, xy, xz, yz; empty unless asked for
-    FirstTouchVector<int> neighbours;                  // j != i inside the support
     std::size_t pairs = 0;                // sum of the neighbour counts
     int threads = 1;
     double seconds = 0;                   // the sums, without the neighbour grid
     PhaseTimes phases;                    // grid and sums
     double cpu_seconds = 0;               // the same, CPU time of all threads (a loaded machine's measure)
-    std::size_t size() const { return e0.size(); }
-    const FirstTouchVector<double>& eps_rho_values() const { return eps_rho.empty() ? e0 : eps_rho; }
+    std::size_t size() const { return scalars.size(); }
+    double eps_rho_of(std::size_t i) const { return eps_rho.empty() ? scalars[i].e0 : eps_rho[i]; }
 };
 
 // Every particle's measures by direct sums over its neighbours (periodic images by the

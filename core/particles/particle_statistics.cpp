@@ -117,25 +117,6 @@ void ExactSummary::fold_counts()
     counts_.resize(1);
 }
 
-void Histogram::add(std::span<const double> values, int threads)
-{
-    const std::size_t bins = counts.size();
-    const double width = (hi - lo) / static_cast<double>(bins);
-    threads = std::clamp<int>(threads, 1, static_cast<int>(values.size() / statistics_detail::buckets + 1));
-    std::vector<std::vector<std::size_t>> parts(static_cast<std::size_t>(threads));
-    ParallelFor pass;
-    pass.run(values.size(), threads, [&](int t, std::size_t begin, std::size_t end) {
-        auto& c = parts[static_cast<std::size_t>(t)];
-        c.assign(bins, 0);
-        for (std::size_t i = begin; i < end; ++i) {
-            const std::size_t b = width > 0 ? static_cast<std::size_t>((values[i] - lo) / width) : 0;
-            c[std::min(b, bins - 1)] += 1;
-        }
-    });
-    for (const auto& c : parts)
-        for (std::size_t b = 0; b < bins; ++b) counts[b] += c[b];
-}
-
 Histogram histogram(std::span<const double> values, std::size_t bins, int threads)
 {
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());

@@ -206,8 +206,34 @@ struct Histogram {
     Histogram(double lo, double hi, std::size_t bins) : lo(lo), hi(hi), counts(bins, 0) {}
     Histogram() = default;
     // Counts `values` into the bins (integers: in any order, in any runs).
-    void add(std::span<const double> values, int threads = 1);
+    void add(std::span<const double> values, int threads = 1)
+    {
+        add_values(values.size(), threads, [&](std::size_t i) { return values[i]; });
+    }
+    // Counts value(i) for i in [0, n).
+    template <class Value>
+    void add_values(std::size_t n, int threads, const Value& value);
 };
 Histogram histogram(std::span<const double> values, std::size_t bins, int threads = 1);
+
+template <class Value>
+void Histogram::add_values(std::size_t n, int threads, const Value& value)
+{
+    const std::size_t bins = counts.size();
+    const double width = (hi - lo) / static_cast<double>(bins);
+    threads = std::clamp<int>(threads, 1, static_cast<int>(n / statistics_detail::buckets + 1));
+    std::vector<std::vector<std::size_t>> parts(static_cast<std::size_t>(threads));
+    ParallelFor pass;
+    pass.run(n, threads, [&](int t, std::size_t begin, std::size_t end) {
+        auto& c = parts[static_cast<std::size_t>(t)];
+        c.assign(bins, 0);
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::size_t b = width > 0 ? static_cast<std::size_t>((value(i) - lo) / width) : 0;
+            c[std::min(b, bins - 1)] += 1;
+        }
+    });
+    for (const auto& c : parts)
+        for (std::size_t b = 0; b < bins; ++b) counts[b] += c[b];
+}
 
 } // namespace sphkern

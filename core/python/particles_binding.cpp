@@ -121,7 +121,6 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Giv
     return a;
 }
 
-py::array_t<double> column(std::span<const double> values) { return py::array_t<double>(values.size(), values.data()); }
 py::array_t<double> column(const PerParticle& values)
 {
     py::array_t<double> out(values.size());
@@ -190,13 +189,21 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             out["h"] = column(answer.h);
             out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
             out["volume"] = column(answer.volumes);
-            for (const auto& [name, values] :
-                 {std::pair{"e0", &m.e0}, {"eps_rho", &m.eps_rho_values()}, {"eps_gradp", &m.eps_gradp}, {"eps_gradp_sum", &m.eps_gradp_sum}})
-                out[name] = column(*values);
+            auto scalar = [&](auto value) {
+                py::array_t<double> values(m.size());
+                for (std::size_t i = 0; i < m.size(); ++i) values.mutable_at(i) = value(i);
+                return values;
+            };
+            out["e0"] = scalar([&](std::size_t i) { return m.scalars[i].e0; });
+            out["eps_rho"] = scalar([&](std::size_t i) { return m.eps_rho_of(i); });
+            out["eps_gradp"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp; });
+            out["eps_gradp_sum"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp_sum; });
             out["e1"] = rows<3>(m.e1, d);
             out["m1"] = rows<3>(m.m1, d);
             out["E"] = tensors(m.E, set.dimension);
-            out["neighbours"] = py::array_t<int>(m.neighbours.size(), m.neighbours.data());
+            py::array_t<int> neighbours(m.size());
+            for (std::size_t i = 0; i < m.size(); ++i) neighbours.mutable_at(i) = m.scalars[i].neighbours;
+            out["neighbours"] = neighbours;
             return out;
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),

@@ -155,13 +155,13 @@ void print_csv_header(ChunkedWriter& out, bool three)
 void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;
-    const auto& eps_rho = m.eps_rho_values();
     const bool three = set.dimension == 3;
     ChunkedWriter out(stream);
     print_csv_header(out, three);
     out.rows(set.measured(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
-        format_row(row, {i, set.x[i], set.y[i], set.z[i], answer.h[i], answer.volumes[i], m.neighbours[i], m.e0[i], eps_rho[i],
-                         m.eps_gradp[i], m.e1[i], m.m1[i]},
+        const MeasureRecord& r = m.scalars[i];
+        format_row(row, {i, set.x[i], set.y[i], set.z[i], answer.h[i], answer.volumes[i], r.neighbours, r.e0, m.eps_rho_of(i),
+                         r.eps_gradp, m.e1[i], m.m1[i]},
                    three);
     });
 }
@@ -197,10 +197,10 @@ void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const Part
     scalars("id", [](std::size_t i) { return i; });
     scalars("h", [&](std::size_t i) { return answer.h[i]; });
     scalars("volume", [&](std::size_t i) { return answer.volumes[i]; });
-    scalars("neighbours", [&](std::size_t i) { return m.neighbours[i]; });
-    scalars("e0", [&](std::size_t i) { return m.e0[i]; });
-    scalars("eps_rho", [&](std::size_t i) { return m.eps_rho_values()[i]; });
-    scalars("eps_gradp", [&](std::size_t i) { return m.eps_gradp[i]; });
+    scalars("neighbours", [&](std::size_t i) { return m.scalars[i].neighbours; });
+    scalars("e0", [&](std::size_t i) { return m.scalars[i].e0; });
+    scalars("eps_rho", [&](std::size_t i) { return m.eps_rho_of(i); });
+    scalars("eps_gradp", [&](std::size_t i) { return m.scalars[i].eps_gradp; });
     for (const auto& [name, field] : {std::pair{"e1", &m.e1}, std::pair{"m1", &m.m1}}) {
         out.print("VECTORS {} double\n", name);
         out.rows(n, threads, [&](fmt::memory_buffer& row, std::size_t i) {

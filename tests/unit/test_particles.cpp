@@ -111,6 +111,14 @@ struct VariedInputs {
     }
 };
 
+// One measure of every particle.
+std::vector<double> values_of(const ParticleMeasures& m, double MeasureRecord::*field)
+{
+    std::vector<double> values;
+    for (const MeasureRecord& r : m.scalars) values.push_back(r.*field);
+    return values;
+}
+
 void check_against_brute_force(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& in)
 {
     const auto m = measure_particles(kernel, set, in);
@@ -118,12 +126,12 @@ void check_against_brute_force(const Kernel& kernel, const ParticleSet& set, con
     int larger = 0;
     for (std::size_t i = 0; i < set.size(); i += 7) {
         const Brute b = brute_force(kernel, set, in, i, g);
-        CHECK(m.neighbours[i] == b.neighbours);
-        CHECK(m.e0[i] == doctest::Approx(b.e0).epsilon(1e-12));
-        CHECK(m.eps_rho_values()[i] == doctest::Approx(b.eps_rho).epsilon(1e-12));
-        CHECK(m.eps_gradp[i] == doctest::Approx(b.eps_gradp).epsilon(1e-12));
+        CHECK(m.scalars[i].neighbours == b.neighbours);
+        CHECK(m.scalars[i].e0 == doctest::Approx(b.e0).epsilon(1e-12));
+        CHECK(m.eps_rho_of(i) == doctest::Approx(b.eps_rho).epsilon(1e-12));
+        CHECK(m.scalars[i].eps_gradp == doctest::Approx(b.eps_gradp).epsilon(1e-12));
         const Eigen::Vector3d e1(m.e1[i][0], m.e1[i][1], m.e1[i][2]);
-        CHECK(m.eps_gradp_sum[i] == doctest::Approx(b.eps_gradp + 2 * in.depth * e1.dot(g)).epsilon(1e-12));
+        CHECK(m.scalars[i].eps_gradp_sum == doctest::Approx(b.eps_gradp + 2 * in.depth * e1.dot(g)).epsilon(1e-12));
         for (int a = 0; a < 3; ++a) {
             CHECK(std::abs(m.e1[i][static_cast<std::size_t>(a)] - b.e1[a]) < 1e-11);
             CHECK(std::abs(m.m1[i][static_cast<std::size_t>(a)] - b.m1[a]) < 1e-11);
@@ -132,9 +140,9 @@ void check_against_brute_force(const Kernel& kernel, const ParticleSet& set, con
         const double stored[6] = {b.E(0, 0), b.E(1, 1), b.E(2, 2), b.E(0, 1), b.E(0, 2), b.E(1, 2)};
         for (int c = 0; c < 6; ++c) CHECK(std::abs(E[static_cast<std::size_t>(c)] - stored[c]) < 1e-11);
         // The magnitudes the statistics read, against the brute force's own vectors and tensor.
-        CHECK(m.e1_norm[i] == doctest::Approx(b.e1.norm()).epsilon(1e-10));
-        CHECK(m.m1_norm[i] == doctest::Approx(b.m1.norm()).epsilon(1e-10));
-        CHECK(std::abs(m.E_norm[i] - b.E.norm()) < 1e-10); // E is symmetric: r and grad W are parallel
+        CHECK(m.scalars[i].e1_norm == doctest::Approx(b.e1.norm()).epsilon(1e-10));
+        CHECK(m.scalars[i].m1_norm == doctest::Approx(b.m1.norm()).epsilon(1e-10));
+        CHECK(std::abs(m.scalars[i].E_norm - b.E.norm()) < 1e-10); // E is symmetric: r and grad W are parallel
         larger += b.neighbours > 10;
     }
     CHECK(larger > 0); // the sets are dense enough for the sums to mean something
@@ -194,13 +202,13 @@ TEST_CASE("on an unperturbed periodic lattice block every particle has the latti
         for (std::size_t i = 0; i < set.size(); ++i) {
             const auto& site = *sites[i % static_cast<std::size_t>(lattice.sites())];
             const auto values = site.at(k);
-            worst_rho = std::max(worst_rho, std::abs(m.e0[i] - values.eps_rho));
-            worst_gradp = std::max(worst_gradp, std::abs(m.eps_gradp[i] - values.eps_gradp));
+            worst_rho = std::max(worst_rho, std::abs(m.scalars[i].e0 - values.eps_rho));
+            worst_gradp = std::max(worst_gradp, std::abs(m.scalars[i].eps_gradp - values.eps_gradp));
             // e1 = h sum V grad_i W = -k m1 of the lattice code (its first moment, times d^(D+1)).
             const Eigen::Vector3d first = site.tensor(k).first_moment;
             for (int a = 0; a < 3; ++a)
                 worst_e1 = std::max(worst_e1, std::abs(m.e1[i][static_cast<std::size_t>(a)] + k * first[a]));
-            REQUIRE(m.neighbours[i] == values.neighbours);
+            REQUIRE(m.scalars[i].neighbours == values.neighbours);
         }
         CHECK(worst_rho < 1e-12);
         CHECK(worst_gradp < 1e-12);
@@ -425,8 +433,8 @@ TEST_CASE("a perturbed lattice is the same for a seed, and results do not depend
     const auto one = analyse_particles(kernel, a, request);
     request.threads = 3;
     const auto three = analyse_particles(kernel, a, request);
-    CHECK(one.measures->e0 == three.measures->e0);
-    CHECK(one.measures->eps_gradp == three.measures->eps_gradp);
+    CHECK(values_of(*one.measures, &MeasureRecord::e0) == values_of(*three.measures, &MeasureRecord::e0));
+    CHECK(values_of(*one.measures, &MeasureRecord::eps_gradp) == values_of(*three.measures, &MeasureRecord::eps_gradp));
     // The disorder shows: the spread of e0 is far above rounding.
     CHECK(one.points[0].statistics[0].second.std > 1e-4);
 }
@@ -449,11 +457,11 @@ TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with th
             const auto& E = m.E[i]; // xx, yy, zz, xy, xz, yz
             const double expected = u.x() * u.x() * E[0] + u.y() * u.y() * E[1] + u.z() * u.z() * E[2] +
                                     2 * (u.x() * u.y() * E[3] + u.x() * u.z() * E[4] + u.y() * u.z() * E[5]);
-            CHECK(m.eps_gradp[i] == doctest::Approx(expected).epsilon(1e-12).scale(1));
+            CHECK(m.scalars[i].eps_gradp == doctest::Approx(expected).epsilon(1e-12).scale(1));
             // The sum form at depth D: eps_gradp + 2 D (e1 . g).
             const double e1_g = u.x() * m.e1[i][0] + u.y() * m.e1[i][1] + u.z() * m.e1[i][2];
-            CHECK(m.eps_gradp_sum[i] == doctest::Approx(expected + 2 * request.depth * e1_g).epsilon(1e-12).scale(1));
-            largest_change = std::max(largest_change, std::abs(m.eps_gradp[i] - E[2])); // the set's g is -z
+            CHECK(m.scalars[i].eps_gradp_sum == doctest::Approx(expected + 2 * request.depth * e1_g).epsilon(1e-12).scale(1));
+            largest_change = std::max(largest_change, std::abs(m.scalars[i].eps_gradp - E[2])); // the set's g is -z
         }
         CHECK(largest_change > 1e-3);
     }
@@ -752,8 +760,8 @@ TEST_CASE("copies of a periodic set side by side: each copy where its shift puts
         const auto all = analyse_particles(kernel, big, request);
         double worst = 0;
         for (std::size_t k = 0; k < big.size(); ++k) {
-            worst = std::max(worst, std::abs(all.measures->e0[k] - one.measures->e0[k % n]));
-            CHECK(all.measures->neighbours[k] == one.measures->neighbours[k % n]);
+            worst = std::max(worst, std::abs(all.measures->scalars[k].e0 - one.measures->scalars[k % n].e0));
+            CHECK(all.measures->scalars[k].neighbours == one.measures->scalars[k % n].neighbours);
         }
         CHECK(worst < 1e-12);
     }
@@ -807,8 +815,8 @@ TEST_CASE("a rectangular cell holds the lattice's own points, and a block cut fr
         double worst = 0;
         for (std::size_t i = 0; i < set.size(); ++i) {
             const auto values = sites[primitive_site[i % cell.motif.size()]]->at(k);
-            worst = std::max(worst, std::abs(answer.measures->e0[i] - values.eps_rho));
-            REQUIRE(answer.measures->neighbours[i] == values.neighbours);
+            worst = std::max(worst, std::abs(answer.measures->scalars[i].e0 - values.eps_rho));
+            REQUIRE(answer.measures->scalars[i].neighbours == values.neighbours);
         }
         CHECK(worst < 1e-12);
     }

@@ -122,9 +122,10 @@ void spill_own_particles(const ParticleSet& set, const ParticleMeasures& m, cons
                 const double c[3] = {set.x[i], set.y[i], set.z[i]};
                 const std::size_t r = plan.geometry.bin(plan.axis, c[plan.axis]);
                 if (r < slab.own_first || r >= slab.own_last) continue;
-                if (m.neighbours[i] == 0) lower(alone_in[b], std::optional(std::pair(set.ids[i], h[i])));
-                const double record[] = {static_cast<double>(set.ids[i]), h[i], static_cast<double>(m.neighbours[i]), m.e0[i],
-                                         m.eps_rho_values()[i], m.eps_gradp[i], m.eps_gradp_sum[i], m.e1_norm[i], m.m1_norm[i], m.E_norm[i]};
+                const MeasureRecord& s = m.scalars[i];
+                if (s.neighbours == 0) lower(alone_in[b], std::optional(std::pair(set.ids[i], h[i])));
+                const double record[] = {static_cast<double>(set.ids[i]), h[i], static_cast<double>(s.neighbours), s.e0,
+                                         m.eps_rho_of(i), s.eps_gradp, s.eps_gradp_sum, s.e1_norm, s.m1_norm, s.E_norm};
                 records[b].insert(records[b].end(), std::begin(record), std::end(record));
                 if (per_particle) {
                     const double more[] = {set.x[i], set.y[i], set.z[i], volumes[i], m.e1[i][0], m.e1[i][1], m.e1[i][2], m.m1[i][0], m.m1[i][1], m.m1[i][2]};
