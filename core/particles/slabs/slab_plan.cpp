@@ -1,5 +1,6 @@
 #include "particles/slabs/slab_plan.hpp"
 
+#include "particles/particle_statistics.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/engine/periodic_images.hpp"
 #include "support/error.hpp"
@@ -48,7 +49,9 @@ private:
 std::size_t slab_run_rows(int threads, std::size_t row_bytes, std::size_t room)
 {
     const std::size_t fit = room / std::max<std::size_t>(1, row_bytes * particle_block_size);
-    const std::size_t blocks = std::clamp<std::size_t>(fit, 2, 2 * static_cast<std::size_t>(std::max(1, threads)));
+    // As many rows a thread as the percentiles' buckets, so that each thread counts a share of a run.
+    const std::size_t per_thread = statistics_detail::buckets / particle_block_size;
+    const std::size_t blocks = std::clamp<std::size_t>(fit, 2, per_thread * static_cast<std::size_t>(std::max(1, threads)));
     return blocks * particle_block_size;
 }
 

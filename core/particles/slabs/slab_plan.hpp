@@ -18,9 +18,9 @@
 namespace sphkern {
 
 // Rows of the file read, and of the spills merged, at a time: a whole number of the blocks
-// that sums are taken in (a run adds its blocks as the whole set's sum does), two blocks per
-// thread so that every thread has some, fewer where `room` holds fewer runs of rows of
-// `row_bytes`, and never fewer than two. The results do not depend on it.
+// that sums are taken in (a run adds its blocks as the whole set's sum does), 65536 rows per
+// thread so that every thread has blocks to take and values to count, fewer where `room` holds
+// fewer rows of `row_bytes`, and never fewer than two blocks. The results do not depend on it.
 std::size_t slab_run_rows(int threads, std::size_t row_bytes, std::size_t room);
 
 struct SlabPlanInputs {
