@@ -1,6 +1,7 @@
 #include "particles/particle_analysis.hpp"
 
 #include "support/error.hpp"
+#include "support/process/first_touch.hpp"
 #include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
@@ -26,9 +27,11 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
     const bool eps_rho_is_e0 = m.eps_rho.empty();
     // Each pass of the statistics reads the records once, a run at a time, into a column per
     // measure (the passes read each value of a column); a run gives each thread a share of the
-    // percentiles' buckets to count.
-    const std::size_t run = statistics_detail::buckets * static_cast<std::size_t>(std::max(1, threads));
-    std::vector<std::vector<double>> columns(measures, std::vector<double>(std::min(run, n)));
+    // percentiles' buckets to count, and is at most a quarter of the set, so that the columns
+    // take at most 16 bytes a particle (whole blocks: the moments go block by block).
+    const std::size_t quarter = n / 4 / particle_block_size * particle_block_size;
+    const std::size_t run = std::max(particle_block_size, std::min(statistics_detail::buckets * static_cast<std::size_t>(std::max(1, threads)), quarter));
+    std::vector<ParticleValues> columns(measures, ParticleValues(std::min(run, n)));
     auto each_run = [&](const auto& step) {
         for (std::size_t begin = 0; begin < n; begin += run) {
             const std::size_t count = std::min(run, n - begin);

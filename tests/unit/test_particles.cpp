@@ -568,6 +568,43 @@ TEST_CASE("two particles at one position, and a box smaller than the support, ar
                          doctest::Contains("less than twice the support radius"), Error);
 }
 
+TEST_CASE("a set's statistics, read from its records a run at a time, are each measure's own, on 1 and 3 threads")
+{
+    // 300000 particles: runs of 65536 records on one thread and of 73728 on three (a quarter
+    // of the set), several of them either way.
+    PoissonSpec spec;
+    spec.count = 300000, spec.seed = 5;
+    const auto set = poisson_particles(spec);
+    ParticleRequest request;
+    request.smoothing = {SmoothingRule::nh, 20, 0};
+    request.histogram_bins = 13;
+    request.threads = 1;
+    const auto one = analyse_particles(shipped_kernel("cubic_bspline"), set, request);
+    request.threads = 3;
+    const auto three = analyse_particles(shipped_kernel("cubic_bspline"), set, request);
+    const auto& m = *one.measures;
+    const auto& stats = one.points[0].statistics;
+    REQUIRE(stats.size() == 8);
+    const std::vector<double> columns[] = {values_of(m, &MeasureRecord::e0),      values_of(m, &MeasureRecord::e0),
+                                           values_of(m, &MeasureRecord::eps_gradp), values_of(m, &MeasureRecord::eps_gradp_sum),
+                                           values_of(m, &MeasureRecord::e1_norm), values_of(m, &MeasureRecord::m1_norm),
+                                           values_of(m, &MeasureRecord::E_norm)};
+    std::vector<double> neighbours;
+    for (const MeasureRecord& r : m.scalars) neighbours.push_back(r.neighbours);
+    for (std::size_t f = 0; f < stats.size(); ++f) {
+        CAPTURE(stats[f].first);
+        const Summary expected = summarise(f < 7 ? columns[f] : neighbours, 1);
+        CHECK(std::memcmp(&stats[f].second, &expected, sizeof expected) == 0);
+        CHECK(std::memcmp(&three.points[0].statistics[f].second, &expected, sizeof expected) == 0);
+    }
+    REQUIRE(one.points[0].histograms.size() == 4);
+    for (std::size_t f = 0; f < 4; ++f) {
+        const Histogram expected = histogram(columns[f], 13, 1);
+        CHECK(one.points[0].histograms[f].second.counts == expected.counts);
+        CHECK(three.points[0].histograms[f].second.counts == expected.counts);
+    }
+}
+
 TEST_CASE("statistics: percentiles interpolate between order statistics as numpy does")
 {
     // numpy.percentile([3, 1, 4, 1, 5, 9, 2, 6], [1, 50, 99]) = [1.0, 3.5, 8.79].
