@@ -49,13 +49,15 @@ void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, co
     for (std::size_t s = 0; s < plan.slabs.size(); ++s)
         for (std::size_t r = plan.slabs[s].first; r < plan.slabs[s].last; ++r)
             *std::find(slabs_of[r].begin(), slabs_of[r].end(), SIZE_MAX) = s;
+    // Each block's records per slab, kept from run to run (their room is taken once).
+    std::vector<std::vector<std::vector<double>>> blocks((run + particle_block_size - 1) / particle_block_size,
+                                                         std::vector<std::vector<double>>(plan.slabs.size()));
     for (std::size_t begin = 0; begin < file.size(); begin += run) {
         const ParticleSet rows = read_valid_rows(file, begin, std::min(file.size(), begin + run), threads);
-        std::vector<std::vector<std::vector<double>>> blocks((rows.size() + particle_block_size - 1) / particle_block_size);
         ParallelFor pass;
         pass.run_blocks(rows.size(), particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t end) {
             auto& records = blocks[b];
-            records.resize(plan.slabs.size());
+            for (auto& r : records) r.clear();
             for (std::size_t i = from; i < end; ++i) {
                 std::array<std::size_t, 6> to; // its points lie in two rows at most (z and an image's), each in three slabs at most
                 std::size_t count = 0;
@@ -75,9 +77,9 @@ void distribute(const SnapshotRows& file, const SlabPlan& plan, double reach, co
                 }
             }
         });
-        for (const auto& records : blocks)
-            for (std::size_t s = 0; s < records.size(); ++s)
-                if (!records[s].empty()) inputs.append(s, records[s]);
+        for (std::size_t b = 0; b * particle_block_size < rows.size(); ++b)
+            for (std::size_t s = 0; s < blocks[b].size(); ++s)
+                if (!blocks[b][s].empty()) inputs.append(s, blocks[b][s]);
     }
     for (std::size_t s = 0; s < plan.slabs.size(); ++s) inputs.close_slab(s);
 }
@@ -111,13 +113,15 @@ void spill_own_particles(const ParticleSet& set, const ParticleMeasures& m, cons
     const auto lower = [](auto& a, const auto& b) {
         if (b && (!a || b->first < a->first)) a = b;
     };
+    // Each block's records, kept from run to run (their room is taken once).
+    std::vector<std::vector<double>> records((run + particle_block_size - 1) / particle_block_size);
     for (std::size_t first = 0; first < set.measured(); first += run) {
         const std::size_t count = std::min(run, set.measured() - first);
         const std::size_t blocks = (count + particle_block_size - 1) / particle_block_size;
-        std::vector<std::vector<double>> records(blocks);
         std::vector<std::optional<std::pair<std::uint64_t, double>>> alone_in(blocks);
         ParallelFor pass;
         pass.run_blocks(count, particle_block_size, threads, [&](std::size_t b, std::size_t from, std::size_t end) {
+            records[b].clear();
             for (std::size_t i = first + from; i < first + end; ++i) {
                 const double c[3] = {set.x[i], set.y[i], set.z[i]};
                 const std::size_t r = plan.geometry.bin(plan.axis, c[plan.axis]);
