@@ -2,15 +2,14 @@
 // shared by `particles` and `relax`.
 #pragma once
 
-#include "support/io/sha256.hpp"
-
-#include <memory>
-
+#include "cli/options.hpp"
 #include "kernels/kernel.hpp"
 #include "particles/sources/particle_source.hpp"
+#include "support/io/sha256.hpp"
 
-#include "cli/options.hpp"
 #include <nlohmann/json_fwd.hpp>
+
+#include <memory>
 
 #include <optional>
 #include <string>

@@ -23,15 +23,17 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
                                                         &MeasureRecord::E_norm};
     const int threads = m.threads;
     const std::size_t n = m.size(), measures = std::size(measure_names);
-    // Without masses eps_rho is e0: its summary is e0's.
+    // Without masses eps_rho is e0: its summary is e0's (measure f's statistics are own(f)'s).
     const bool eps_rho_is_e0 = m.eps_rho.empty();
+    const auto own = [&](std::size_t f) { return f == 1 && eps_rho_is_e0 ? std::size_t{0} : f; };
     // Each pass of the statistics reads the records once, a run at a time, into a column per
     // measure (the passes read each value of a column); a run gives each thread a share of the
     // percentiles' buckets to count, and is at most a quarter of the set, so that the columns
     // take at most 16 bytes a particle (whole blocks: the moments go block by block).
     const std::size_t quarter = n / 4 / particle_block_size * particle_block_size;
     const std::size_t run = std::max(particle_block_size, std::min(statistics_detail::buckets * static_cast<std::size_t>(std::max(1, threads)), quarter));
-    std::vector<ParticleValues> columns(measures, ParticleValues(std::min(run, n)));
+    std::vector<ParticleValues> columns(measures);
+    for (auto& column : columns) column.resize(std::min(run, n));
     auto each_run = [&](const auto& step) {
         for (std::size_t begin = 0; begin < n; begin += run) {
             const std::size_t count = std::min(run, n - begin);
@@ -45,7 +47,7 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
                 }
             });
             for (std::size_t f = 0; f < measures; ++f) {
-                if (f == 1 && eps_rho_is_e0) continue;
+                if (own(f) != f) continue;
                 const double* column = columns[f].data();
                 step(f, begin, count, [column](std::size_t k) { return column[k]; });
             }
@@ -57,7 +59,7 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
     });
     std::vector<Histogram> histograms;
     for (std::size_t f = 0; bins && f < measures_with_histograms; ++f) {
-        const Summary s = summaries[f == 1 && eps_rho_is_e0 ? 0 : f].moments();
+        const Summary s = summaries[own(f)].moments();
         histograms.emplace_back(s.min, s.max, bins);
     }
     each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) {
@@ -67,9 +69,9 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
     each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) { summaries[f].gather(count, threads, value); });
     ParticlePoint point;
     for (std::size_t f = 0; f < measures; ++f)
-        point.statistics.emplace_back(measure_names[f], summaries[f == 1 && eps_rho_is_e0 ? 0 : f].finish());
+        point.statistics.emplace_back(measure_names[f], summaries[own(f)].finish());
     for (std::size_t f = 0; f < histograms.size(); ++f)
-        point.histograms.emplace_back(measure_names[f], histograms[f == 1 && eps_rho_is_e0 ? 0 : f]);
+        point.histograms.emplace_back(measure_names[f], histograms[own(f)]);
     point.mean_neighbours = point.statistics.back().second.mean;
     point.seconds = m.seconds;
     point.cpu_seconds = m.cpu_seconds;

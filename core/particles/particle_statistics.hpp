@@ -70,6 +70,13 @@ private:
 
 Summary merge_moments(const std::vector<Moments>& blocks);
 
+// The threads that count `count` values, each into buckets of its own (first touched by it):
+// one per 65536 values at most, as more would spend longer on their buckets than on the values.
+inline int counting_threads(std::size_t count, int threads)
+{
+    return std::clamp<int>(threads, 1, static_cast<int>(count / buckets + 1));
+}
+
 } // namespace statistics_detail
 
 // The exact summary of n values that arrive in index order, in runs [begin, begin + count)
@@ -102,14 +109,13 @@ public:
     // Mean, std, RMS and range: the moments alone.
     Summary moments() const { return statistics_detail::merge_moments(blocks_); }
 
-    // Pass 2: each value's bucket counted (a thread counts into its own buckets, first touched
-    // by it: one thread per 65536 values at most).
+    // Pass 2: each value's bucket counted (on counting_threads).
     template <class Value>
     void count(std::size_t count, int threads, const Value& value)
     {
         using namespace statistics_detail;
         if (!buckets_) summary_ = moments(), buckets_.emplace(summary_.min, summary_.max);
-        const int workers = std::clamp<int>(threads, 1, static_cast<int>(count / buckets + 1));
+        const int workers = counting_threads(count, threads);
         const std::size_t first = counts_.size();
         counts_.resize(first + static_cast<std::size_t>(workers));
         ParallelFor counting;
@@ -128,7 +134,7 @@ public:
     {
         using namespace statistics_detail;
         if (!percentiles_) percentiles_.emplace(counts_, n_, *buckets_, std::max(1, threads)), counts_.clear();
-        const int workers = std::clamp<int>(threads, 1, static_cast<int>(count / buckets + 1));
+        const int workers = counting_threads(count, threads);
         const std::size_t first = parts_.size();
         parts_.resize(first + static_cast<std::size_t>(workers));
         ParallelFor gathering;
@@ -221,7 +227,7 @@ void Histogram::add_values(std::size_t n, int threads, const Value& value)
 {
     const std::size_t bins = counts.size();
     const double width = (hi - lo) / static_cast<double>(bins);
-    threads = std::clamp<int>(threads, 1, static_cast<int>(n / statistics_detail::buckets + 1));
+    threads = statistics_detail::counting_threads(n, threads);
     std::vector<std::vector<std::size_t>> parts(static_cast<std::size_t>(threads));
     ParallelFor pass;
     pass.run(n, threads, [&](int t, std::size_t begin, std::size_t end) {

@@ -120,7 +120,6 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
     }
 }
 
-// The per-particle values in the shortest form that reads back to the same double.
 namespace {
 
 // One particle's CSV row: the one format of the whole set in memory and of a set in slabs.
@@ -152,6 +151,7 @@ void print_csv_header(ChunkedWriter& out, bool three)
 
 } // namespace
 
+// The per-particle values in the shortest form that reads back to the same double.
 void write_particle_csv(std::ostream& stream, const ParticleSet& set, const ParticleAnswer& answer)
 {
     const auto& m = *answer.measures;

@@ -2,11 +2,10 @@
 // per-particle values as CSV or legacy VTK (point data, for ParaView).
 #pragma once
 
-#include "particles/slabs/particles_in_slabs.hpp"
-#include "support/io/chunked_writer.hpp"
-
-#include "requests/particles_request.hpp"
 #include "particles/particle_analysis.hpp"
+#include "particles/slabs/particles_in_slabs.hpp"
+#include "requests/particles_request.hpp"
+#include "support/io/chunked_writer.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
