@@ -1,37 +1,15 @@
 #include "cli/code_options.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace sphkern::cli {
-
-void add_setting_options(Command c, SettingOptions& o, const std::string& k_help)
-{
-    c.add_option("--k", o.k, k_help);
-    c.add_option("--code", o.code, "Give the resolution as an SPH code sets it: swift, phantom, gadget2, gadget4, "
-                                   "pysph, dualsphysics or splishsplash, with its parameter below");
-    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
-    add_code_parameters(c, o);
-    c.add_option("--particle-radius", o.particle_radius,
-                 "With --code splishsplash: its particle radius r in d, support 4 r and volume 0.8 (2 r)^D");
-}
-
-void add_code_parameters(Command c, SettingOptions& o)
-{
-    c.add_option("--hfact", o.hfact, "With --code phantom: Phantom's hfact, h = hfact (m / rho)^(1/D)");
-    c.add_option("--nngb", o.nngb, "With --code gadget2 or gadget4: the weighted neighbour number");
-    c.add_option("--hdx", o.hdx, "With --code pysph: PySPH's hdx, h = hdx dx");
-    c.add_option("--coefh", o.coefh, "With --code dualsphysics: DualSPHysics' coefh, h = coefh sqrt(D) dp");
-}
-
-bool setting_given(const SettingOptions& o)
-{
-    return o.k || !o.code.empty() || o.eta || o.hfact || o.nngb || o.hdx || o.coefh;
-}
 
 namespace {
 
@@ -42,7 +20,41 @@ std::string option_of(std::string parameter)
     return "--" + parameter;
 }
 
+// Each code's parameter as an option, "With --code gadget2 or gadget4: ..." (the codes that
+// share a parameter named together), but those in `skip`.
+void add_parameters(Command c, SettingOptions& o, const std::vector<std::string>& skip)
+{
+    std::vector<std::string> done = skip;
+    for (const auto& p : code_profiles()) {
+        if (std::find(done.begin(), done.end(), p.parameter) != done.end()) continue;
+        done.push_back(p.parameter);
+        std::vector<std::string> codes;
+        for (const auto& q : code_profiles())
+            if (q.parameter == p.parameter) codes.push_back(q.name);
+        c.add_option(option_of(p.parameter), o.parameters[p.parameter],
+                     fmt::format("With --code {}: {}", fmt::join(codes, " or "), p.parameter_help));
+    }
+}
+
 } // namespace
+
+void add_setting_options(Command c, SettingOptions& o, const std::string& k_help)
+{
+    c.add_option("--k", o.k, k_help);
+    std::vector<std::string> names;
+    for (const auto& p : code_profiles()) names.push_back(p.name);
+    c.add_option("--code", o.code, fmt::format("Give the resolution as an SPH code sets it: {}, with its parameter below",
+                                               fmt::join(names, ", ")));
+    add_parameters(c, o, {});
+}
+
+void add_code_parameters(Command c, SettingOptions& o) { add_parameters(c, o, {"eta", "particle_radius"}); }
+
+bool setting_given(const SettingOptions& o)
+{
+    return o.k || !o.code.empty() ||
+           std::any_of(o.parameters.begin(), o.parameters.end(), [](const auto& p) { return p.second.has_value(); });
+}
 
 namespace {
 
@@ -50,9 +62,9 @@ namespace {
 // parameter without --code, or another code's, is refused. `eta` is the option --eta fills.
 std::optional<CodeChoice> code_choice(const SettingOptions& o, const std::optional<double>& eta)
 {
-    const std::pair<const char*, const std::optional<double>*> given[] = {
-        {"eta", &eta},     {"hfact", &o.hfact}, {"nngb", &o.nngb}, {"hdx", &o.hdx}, {"coefh", &o.coefh},
-        {"particle_radius", &o.particle_radius}};
+    std::vector<std::pair<std::string, const std::optional<double>*>> given;
+    for (const auto& [name, value] : o.parameters) given.emplace_back(name, &value);
+    if (!o.parameters.contains("eta")) given.emplace_back("eta", &eta);
     if (o.code.empty()) {
         for (const auto& [name, value] : given)
             if (value->has_value())
@@ -75,7 +87,7 @@ std::optional<CodeChoice> code_choice(const SettingOptions& o, const std::option
 
 std::optional<CodeSetting> code_setting(const SettingOptions& o)
 {
-    const auto choice = code_choice(o, o.eta);
+    const auto choice = code_choice(o, std::nullopt);
     if (!choice) {
         if (!o.k) throw Error(ExitCode::usage, "--k is required (or --code and the code's setting)");
         return std::nullopt;

@@ -5,6 +5,7 @@
 #include "cli/options.hpp"
 #include "requests/eps_request.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -13,15 +14,17 @@ namespace sphkern::cli {
 struct SettingOptions {
     std::optional<double> k;
     std::string code;
-    std::optional<double> eta, hfact, nngb, hdx, coefh, particle_radius;
+    // Each code's parameter by its name ("eta", "hfact", ...), as its option fills it.
+    std::map<std::string, std::optional<double>> parameters;
 };
 
-// --k (with `k_help`), --code and the codes' parameters (SPlisHSPlasH's --particle-radius
-// too: `particles` and `relax` have their own, a file's radius).
+// --k (with `k_help`), --code and every code's parameter (code_table), SPlisHSPlasH's
+// --particle-radius too.
 void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
 
-// --hfact, --nngb, --hdx and --coefh: the codes' parameters but SWIFT's --eta, for a command
-// that declares --eta itself (`particles`, `relax`).
+// The codes' parameters but SWIFT's --eta and SPlisHSPlasH's --particle-radius, for a command
+// that declares those (and --code) itself (`particles`, `relax`: sphkern's own --eta beside
+// --code swift, a file's particle radius).
 void add_code_parameters(Command command, SettingOptions& options);
 
 // Whether any of --k, --code and the codes' parameters is given.

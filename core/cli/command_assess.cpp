@@ -60,7 +60,7 @@ int assess_file(const AssessOptions& o)
     ParticleSources sources = particle_sources(FrontEnd::command_line);
     std::tie(sources.code.code, sources.code.value) = code_sources(o.setting);
     ParticleArguments given;
-    const auto choice = code_beside_own_eta(o.setting, o.setting.eta);
+    const auto choice = code_beside_own_eta(o.setting, std::nullopt);
     name_code(given, choice->code, choice->value);
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
     if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));

@@ -4,11 +4,11 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
+#include "particles/particles_memory.hpp"
 #include "requests/particles_report.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/source_request.hpp"
-#include "particles/particles_memory.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"

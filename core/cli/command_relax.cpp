@@ -123,9 +123,9 @@ Action add_relax_command(Command app)
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
-        if (code) check_relax_code(*code, o.output, kernel, {code_source, value_source});
         const auto digest = o.json ? start_source_digest(o) : nullptr;
         ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.settings.threads);
+        if (code) check_relax_code(*code, o.output, kernel, set.dimension, {code_source, value_source});
         if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, {code_source, value_source});
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
         const double h = relax_h(spec, set, kernel, sources.smoothing);

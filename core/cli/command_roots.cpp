@@ -1,6 +1,6 @@
 // `sphkern roots`: the k where eps_rho or eps_gradP vanish, the jumps, condition (22).
 #include "cli/command.hpp"
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "requests/roots_request.hpp"
 #include "support/error.hpp"
 

@@ -4,16 +4,16 @@
 #include "support/text/printable_text.hpp"
 
 #include "kernels/plugin_file.hpp"
-#include "kernels/plugin_probe_cache.hpp"
-#include "support/error.hpp"
-#include "support/io/results_output.hpp"
-#include "support/process/interruption.hpp"
-#include "support/process/isolated_call.hpp"
 #include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "kernels/plugin_host/plugin_exit_hook.hpp"
 #include "kernels/plugin_host/plugin_faults.hpp"
 #include "kernels/plugin_host/plugin_host.hpp"
 #include "kernels/plugin_host/plugin_watchdog.hpp"
+#include "kernels/plugin_probe_cache.hpp"
+#include "support/error.hpp"
+#include "support/io/results_output.hpp"
+#include "support/process/interruption.hpp"
+#include "support/process/isolated_call.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <nlohmann/json.hpp>
@@ -31,6 +31,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <type_traits>
 #include <fcntl.h>
@@ -55,21 +56,35 @@ bool valid_text(const char* s)
 }
 
 // A plugin's constructors run inside the load: whatever folder they move the process to, it
-// is moved back, so that relative output paths keep meaning the folder they were given in.
+// is moved back, so that relative output paths keep meaning the folder they were given in. The
+// folder is kept as its path and identity, not as a descriptor: a constructor may close every
+// descriptor (and a number it freed may be another file's by the time we would close it).
 class KeepWorkingFolder {
 public:
-    KeepWorkingFolder() : folder_(::open(".", O_PATH | O_DIRECTORY | O_CLOEXEC)) {}
+    KeepWorkingFolder()
+    {
+        std::error_code error;
+        path_ = std::filesystem::current_path(error);
+        known_ = !error && ::stat(".", &identity_) == 0;
+    }
     ~KeepWorkingFolder()
     {
-        if (folder_ < 0) return;
-        if (::fchdir(folder_) != 0) spdlog::warn("cannot return to the working folder after loading a plugin");
-        ::close(folder_);
+        if (!known_ || here()) return;
+        if (::chdir(path_.c_str()) != 0 || !here())
+            spdlog::warn("cannot return to the working folder {} after loading a plugin", path_.string());
     }
     KeepWorkingFolder(const KeepWorkingFolder&) = delete;
     KeepWorkingFolder& operator=(const KeepWorkingFolder&) = delete;
 
 private:
-    int folder_;
+    bool here() const
+    {
+        struct stat now {};
+        return ::stat(".", &now) == 0 && now.st_dev == identity_.st_dev && now.st_ino == identity_.st_ino;
+    }
+    std::filesystem::path path_;
+    struct stat identity_ {};
+    bool known_ = false;
 };
 
 // The dynamic loader's own words ("undefined symbol: f") from Boost.DLL's message, which wraps

@@ -1,6 +1,7 @@
 #include "kernels/plugin_file.hpp"
 
 #include "support/error.hpp"
+#include "support/process/high_descriptor.hpp"
 #include "support/process/resource_errors.hpp"
 
 #include <cerrno>
@@ -30,7 +31,8 @@ PluginFile::PluginFile(const std::filesystem::path& file) : name_(file.string())
     // A device or a pipe would be read without end by the loader (and opening a FIFO would block).
     if (!S_ISREG(st.st_mode))
         throw Error(ExitCode::plugin, name_ + ": is not a regular file (a device or pipe?), expected a shared library");
-    fd_ = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    // Out of reach of a constructor that closes the low descriptors: the load reads through it.
+    fd_ = move_out_of_reach(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (fd_ < 0) {
         if (is_resource_error(errno)) fail_resource(errno, name_ + ": cannot be opened");
         throw Error(ExitCode::plugin, name_ + ": cannot be opened: " + std::strerror(errno));

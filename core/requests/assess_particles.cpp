@@ -1,6 +1,6 @@
 #include "requests/assess_particles.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "requests/particles_report.hpp"
 
 #include <fmt/format.h>

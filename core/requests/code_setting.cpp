@@ -1,7 +1,7 @@
 #include "requests/code_setting.hpp"
 
-#include "analysis/code_profiles.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "codes/code_table.hpp"
 #include "requests/smoothing_request.hpp"
 #include "support/error.hpp"
 
@@ -19,11 +19,25 @@ PairSmoothing pair_smoothing(const CodeProfile& profile) { return profile.pair_m
 
 // The h (in d) that gives the code's parameter `value` at rest where m / rho = a_p d^D: the
 // parameter is linear in h, or in h^D for a neighbour number.
-
 double rest_h(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double value)
 {
     const double at_one = code_parameter(profile, kernel, dimension, a_p, 1, 0);
-    return std::pow(value / at_one, profile.parameter == "nngb" ? 1.0 / dimension : 1.0);
+    return std::pow(value / at_one, profile.counts_neighbours ? 1.0 / dimension : 1.0);
+}
+
+// Where the code solves h from each particle's SPH density, a parameter at or below that of a
+// particle with no neighbour inside its support (self density m W(0) / h^D, so that
+// (m / rho)^(1/D) = h / W(0)^(1/D)) has no h to settle at: h shrinks towards zero. Refused
+// before any sum, naming the source.
+void require_neighbour_reach(const CodeProfile& profile, const Kernel& kernel, int dimension, double value,
+                             const ValueSource& source)
+{
+    if (!profile.from_sph_density) return;
+    const double lone = profile.parameter_of(kernel, dimension, std::pow(kernel.w(0, dimension, 1), 1.0 / dimension), 1);
+    if (!(value > lone))
+        source.fail(fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support, "
+                                "below which {}'s density solve has no h",
+                                value, lone, profile.parameter, profile.title));
 }
 
 } // namespace
@@ -44,7 +58,7 @@ std::optional<CodeSetting> code_setting_of(const std::optional<std::string>& cod
 void check_code_setting(const CodeSetting& setting, const CodeSettingSources& sources)
 {
     const auto& profile = code_profile(setting.code, sources.code);
-    if (profile.parameter == "nngb") check_positive(setting.value, sources.value);
+    if (profile.counts_neighbours) check_positive(setting.value, sources.value);
     else check_number(setting.value, 0, k_limit, LowEnd::open, sources.value);
 }
 
@@ -52,8 +66,8 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
                         const Lattice& lattice, const Evaluation& evaluation)
 {
     const auto& profile = code_profile(setting.code, sources.code);
-    require_code_kernel(profile, kernel);
     const int dim = lattice.dimension;
+    require_code_kernel(profile, kernel, dim);
     const double rest_k = rest_h(profile, kernel, dim, evaluation.a_p, setting.value);
     const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
     const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
@@ -70,8 +84,9 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
                              int dimension)
 {
     const auto& profile = code_profile(setting.code, sources.code);
-    require_code_kernel(profile, kernel);
+    require_code_kernel(profile, kernel, dimension);
     require_lattice_volume(profile, "a particle set");
+    require_neighbour_reach(profile, kernel, dimension, setting.value, sources.value);
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
     return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile)};
@@ -81,7 +96,7 @@ SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSo
                                     const ParticleSet& set)
 {
     const auto& profile = code_profile(code, sources.code);
-    require_code_kernel(profile, kernel);
+    require_code_kernel(profile, kernel, set.dimension);
     require_lattice_volume(profile, "a particle set");
     if (set.h.empty())
         fail_input(fmt::format("{}: the set stores no h; with {} {}, expected {} too (the code's parameter)", set.name,

@@ -1,6 +1,6 @@
 #include "requests/pairing_request.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 
 #include "requests/particles_request.hpp"
 #include "stability/dispersion.hpp"

@@ -1,18 +1,19 @@
 #include "requests/relax_request.hpp"
 
-#include "analysis/swift_gamma.hpp"
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
+#include "codes/swift/swift_gamma.hpp"
+#include "codes/swift/swift_kernels.hpp"
 #include "particles/density_smoothing.hpp"
-#include "particles/formats/swift_kernels.hpp"
 #include "particles/particle_volumes.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
-#include "support/process/parallel_for.hpp"
 #include "relax/glass_quality.hpp"
 #include "requests/particles_request.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -80,29 +81,39 @@ bool solved_h(const RelaxCode& code)
 
 ParticleLayout relax_layout(const std::optional<RelaxCode>& code)
 {
-    if (!code || code->name == "swift") return ParticleLayout::swift;
-    if (code->name == "gadget2" || code->name == "gadget4") return ParticleLayout::gadget;
-    return ParticleLayout::pysph;
+    if (!code) return ParticleLayout::swift;
+    switch (code_profile(code->name, ValueSource::argument("code")).layout) {
+    case CodeLayout::gadget: return ParticleLayout::gadget;
+    case CodeLayout::pysph: return ParticleLayout::pysph;
+    default: return ParticleLayout::swift; // a .csv output (the code's h in a column)
+    }
 }
 
-void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel,
+void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel, int dimension,
                       const CodeSettingSources& sources)
 {
     const auto& profile = code_profile(code.name, sources.code);
     require_lattice_volume(profile, "a relaxation");
     const bool hdf5 = !output.empty() && !output.ends_with(".csv");
-    if (hdf5 && (code.name == "phantom" || code.name == "dualsphysics"))
-        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph; "
-                                      "{} starts from files of its own (a .csv output holds its h)",
-                                      code.name, code.name == "phantom" ? "Phantom" : "DualSPHysics"));
-    if (code.name == "pysph" && output.ends_with(".h5"))
-        sources.code.fail(fmt::format("pysph: PySPH's load reads a name ending in .hdf5; expected one, not {}", output));
+    if (hdf5 && profile.layout == CodeLayout::none) {
+        std::vector<std::string> hdf5_codes;
+        for (const auto& p : code_profiles())
+            if (p.layout != CodeLayout::none) hdf5_codes.push_back(p.name);
+        const std::string last = hdf5_codes.back();
+        hdf5_codes.pop_back();
+        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for {} and {}; {} starts from files of "
+                                      "its own (a .csv output holds its h)",
+                                      code.name, fmt::join(hdf5_codes, ", "), last, profile.title));
+    }
+    if (hdf5 && !output.ends_with(profile.hdf5_suffix))
+        sources.code.fail(fmt::format("{}: {}; expected a name ending in {}, not {}", code.name, profile.hdf5_suffix_reason,
+                                      profile.hdf5_suffix, output));
     if (!code.value && output.empty())
         sources.code.fail(fmt::format("{}: names the code the written set is for, or with {} sets h; expected an output "
                                       "or {}",
                                       code.name, sources.value.name, sources.value.name));
     if (code.value) check_code_setting({code.name, *code.value}, sources);
-    require_code_kernel(profile, kernel);
+    require_code_kernel(profile, kernel, dimension);
 }
 
 SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension, const CodeSettingSources& sources)

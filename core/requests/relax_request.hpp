@@ -3,8 +3,8 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
-#include "particles/particle_set.hpp"
 #include "particles/formats/particle_writers.hpp"
+#include "particles/particle_set.hpp"
 #include "relax/relax_settings.hpp"
 #include "requests/code_setting.hpp"
 #include "requests/relax_report.hpp"
@@ -50,8 +50,8 @@ struct RelaxCode {
 
 // A code, a value its parameter can take, a kernel it ships; named alone only beside an
 // output (empty: none); an HDF5 output only for the codes whose initial conditions sphkern
-// writes (swift, gadget2, gadget4, pysph), and for PySPH one its load reads (.hdf5 or .csv).
-void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel,
+// writes (the codes with a layout), and a name the code opens (GADGET and PySPH: .hdf5; or .csv).
+void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel, int dimension,
                       const CodeSettingSources& sources);
 
 // The layout an .h5/.hdf5 output is written in: SWIFT's without a code.

@@ -32,7 +32,7 @@ namespace {
 RootsInCode in_code(const CodeProfile& profile, const RootsResult& result, const Kernel& kernel, int dimension,
                     const HydrostaticErrors& site)
 {
-    require_code_kernel(profile, kernel);
+    require_code_kernel(profile, kernel, dimension);
     require_lattice_volume(profile, "a window of k at the lattice's a_p");
     auto value = [&](double k) { return code_parameter(profile, kernel, dimension, result.a_p, k, site.at(k).eps_rho); };
     RootsInCode c;

@@ -3,9 +3,9 @@
 // condition (22) at every site; on request the stable k and a code's own setting.
 #pragma once
 
-#include "analysis/code_profiles.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_roots.hpp"
+#include "codes/code_table.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "requests/evaluation_inputs.hpp"

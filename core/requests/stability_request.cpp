@@ -3,8 +3,8 @@
 #include "analysis/hydrostatic_errors.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/stability_json.hpp"
-#include "support/process/parallel_for.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -51,7 +51,7 @@ void check_combination(const StabilityRequest& r, const StabilitySources& source
 nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, const Lattice& lattice, double k_max,
                                  const nlohmann::json& document)
 {
-    require_code_kernel(code, kernel);
+    require_code_kernel(code, kernel, lattice.dimension);
     require_lattice_volume(code, "a window of k at the lattice's a_p");
     const double a_p = lattice.volume_coefficient("voronoi");
     const HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max);

@@ -2,7 +2,7 @@
 // Python's sphkern.stability): validated once, run by one dispatch on its mode.
 #pragma once
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "stability/h_model.hpp"

@@ -1,7 +1,7 @@
 #include "study/report.hpp"
 
-#include "analysis/swift_gamma.hpp"
 #include "analysis/resolution_axis.hpp"
+#include "codes/swift/swift_gamma.hpp"
 #include "study/report_text.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/io/provenance.hpp"

@@ -1,8 +1,8 @@
 // sphkern's k as other codes set it: SWIFT's kernel gamma against the values SWIFT lists, and
 // each code's parameter against its definition written out for the sc lattice.
+#include "codes/code_table.hpp"
+#include "codes/swift/swift_gamma.hpp"
 #include "helpers.hpp"
-#include "analysis/code_profiles.hpp"
-#include "analysis/swift_gamma.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/surface_request.hpp"
 #include "stability/recommended_k.hpp"

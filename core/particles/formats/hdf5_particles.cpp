@@ -1,10 +1,10 @@
 // HDF5 particle files: SWIFT and GADGET snapshots and initial conditions (/Header,
 // /PartType0; formats/snapshot_rows) and PySPH output (/particles/<array>/arrays/<property>).
+#include "codes/swift/swift_kernels.hpp"
+#include "particles/formats/hdf5_file.hpp"
 #include "particles/formats/particle_arrays.hpp"
 #include "particles/formats/particle_files.hpp"
-#include "particles/formats/hdf5_file.hpp"
 #include "particles/formats/snapshot_rows.hpp"
-#include "particles/formats/swift_kernels.hpp"
 
 #include "particles/particles_memory.hpp"
 #include "support/error.hpp"

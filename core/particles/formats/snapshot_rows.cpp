@@ -1,7 +1,7 @@
 #include "particles/formats/snapshot_rows.hpp"
 
+#include "codes/swift/swift_kernels.hpp"
 #include "particles/formats/hdf5_file.hpp"
-#include "particles/formats/swift_kernels.hpp"
 
 #include <cmath>
 #include <optional>

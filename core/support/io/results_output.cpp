@@ -1,6 +1,7 @@
 #include "support/io/results_output.hpp"
 
 #include "support/error.hpp"
+#include "support/process/high_descriptor.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -18,7 +19,8 @@ struct stat original {};
 void separate_results_from_stdout()
 {
     if (results) return;
-    int fd = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+    // High, out of reach of a plugin's constructor that closes the low descriptors.
+    int fd = move_out_of_reach(::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3));
     if (fd < 0) return; // stdout is closed: results go nowhere, as they would have
     results = ::fdopen(fd, "w");
     if (!results) {

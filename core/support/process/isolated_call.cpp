@@ -2,6 +2,7 @@
 
 #include "support/process/resource_errors.hpp"
 
+#include "support/process/high_descriptor.hpp"
 #include "support/process/interruption.hpp"
 
 #include <algorithm>
@@ -134,7 +135,7 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
     }
     if (pid == 0) {
         ::close(fds[0]);
-        answer_in_child(fds[1], work);
+        answer_in_child(move_out_of_reach(fds[1]), work);
     }
     ::close(fds[1]);
     const ChildAnswer answer = read_answer(fds[0], pid, timeout_seconds);

@@ -1,6 +1,6 @@
 #include "study/sections/particles/particles_section.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"

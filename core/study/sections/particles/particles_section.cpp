@@ -1,6 +1,6 @@
 #include "study/sections/particles/particles_section.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "particles/particles_memory.hpp"
 #include "particles/poisson_reference.hpp"
 #include "relax/relaxation.hpp"
@@ -69,7 +69,8 @@ void analyse_source(const StudyParticles& p, const Study& study, const StudyInpu
 {
     for (const auto& kernel : inputs.kernels) {
         if (!kernel.supports(set.dimension)) continue;
-        if (p.code && !code_ships(code_profile(p.code->name, ValueSource::argument("code")), kernel)) {
+        const CodeProfile* code = p.code ? &code_profile(p.code->name, ValueSource::argument("code")) : nullptr;
+        if (code && !code->user_kernels && !code_ships(*code, kernel, set.dimension)) {
             spdlog::warn("particles: {} does not ship {}; it is left out of {}", p.code->name, kernel.label(), s.label);
             continue;
         }

@@ -1,7 +1,7 @@
 #include "study/sections/stability/stability_section.hpp"
 
-#include "analysis/code_profiles.hpp"
 #include "analysis/results_json.hpp"
+#include "codes/code_table.hpp"
 #include "stability/stability_json.hpp"
 #include "study/canvas.hpp"
 #include "study/report_text.hpp"

@@ -1,6 +1,6 @@
 #include "study/sections/stability/stability_section.hpp"
 
-#include "analysis/code_profiles.hpp"
+#include "codes/code_table.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/h_model.hpp"
 #include "stability/stability_budget.hpp"
@@ -70,7 +70,7 @@ StabilityOverlap overlap(const StudyCase& b, const StabilityCase& c, const Kerne
     o.recommended = recommend_k(o.both, b.k_min, b.k_max, errors);
     if (o.recommended.found)
         for (const CodeProfile* code : study_codes())
-            o.in_codes.push_back(code_ships(*code, kernel)
+            o.in_codes.push_back(code_ships(*code, kernel, lattice.dimension)
                                      ? code_parameter(*code, kernel, lattice.dimension, b.a_p, o.recommended.k,
                                                       errors.at(o.recommended.k).eps_rho)
                                      : NAN);

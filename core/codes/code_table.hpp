@@ -1,8 +1,9 @@
-// The SPH codes' own settings of the resolution, each as its code defines it, on a lattice
-// at rest with particle volume V = a_p d^D (m = rho0 V). Where a code solves for h from the
-// SPH density (SWIFT, Phantom, GADGET), the density is the lattice's own SPH sum,
-// rho = rho0 (1 + eps_rho(k)), not rho0: at the recommended k of cubic/fcc the two differ by
-// about 0.2% in eta. The definitions, with H the support radius (sphkern's R h = R k d):
+// The SPH codes sphkern speaks (each in its folder codes/<name>/), and what the requests ask of
+// one: its parameter on a lattice at rest with particle volume V = a_p d^D (m = rho0 V), the
+// kernels and dimensions it runs, the support radius over the h its files store. Where a code
+// solves for h from the SPH density (SWIFT, Phantom, GADGET), the density is the lattice's own
+// SPH sum, rho = rho0 (1 + eps_rho(k)), not rho0: at the recommended k of cubic/fcc the two
+// differ by about 0.2% in eta. The definitions, with H the support radius (sphkern's R h = R k d):
 //   swift         eta   = h_s / (m / rho)^(1/D),  H = gamma h_s, gamma = R / (2 sigma)
 //   phantom       hfact = h_p / (m / rho)^(1/D),  H = R h_p (its radkern is the kernel's R)
 //   gadget2/4     nngb  = omega_D H^D rho / m,    the weighted neighbour number
@@ -10,8 +11,10 @@
 //   dualsphysics  coefh = h_d / (sqrt(D) dp),     dp = V^(1/D), H = 2 h_d
 //   splishsplash  particle_radius = r / d,        H = 4 r, and the volume m / rho0 = 0.8 (2 r)^D:
 //                 its one setting also sets the particle volume, whatever the lattice's is.
+// Adding a code: its folder, and its row in code_table.cpp.
 #pragma once
 
+#include "codes/code_profile.hpp"
 #include "kernels/kernel.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -21,15 +24,6 @@
 
 namespace sphkern {
 
-struct CodeProfile {
-    std::string name;                 // "swift"
-    std::string parameter;            // "eta": how the command line and Python name it
-    bool from_sph_density = false;    // h solved from the SPH density (else from the rest spacing)
-    std::vector<std::string> kernels; // sphkern's names of the kernels the code ships
-    std::string source;               // where the code states its definition
-    bool pair_mean = false;           // a pair's h in its sums is (h_i + h_j) / 2 (else h_i)
-    bool sets_volume = false;         // the setting fixes the particle volume too (SPlisHSPlasH)
-};
 const std::vector<CodeProfile>& code_profiles();
 
 // The profiles whose setting leaves the particle volume as it is (all but SPlisHSPlasH): the
@@ -38,10 +32,13 @@ const std::vector<const CodeProfile*>& study_codes();
 
 // The profile of `name`; an unknown name is refused naming the source and listing the codes.
 const CodeProfile& code_profile(const std::string& name, const ValueSource& source);
-// Whether the code ships the kernel; require_code_kernel refuses (exit 3) one it does not,
-// listing those it does.
-bool code_ships(const CodeProfile& profile, const Kernel& kernel);
-void require_code_kernel(const CodeProfile& profile, const Kernel& kernel);
+
+// Whether the code runs in `dimension` and ships the kernel there (its own function under the
+// code's name). require_code_kernel refuses (exit 2) a dimension the code does not run, or a
+// kernel it does not ship there, naming what it has; a code that takes a user's kernel (PySPH)
+// takes any other with a warning that the code does not ship it.
+bool code_ships(const CodeProfile& profile, const Kernel& kernel, int dimension);
+void require_code_kernel(const CodeProfile& profile, const Kernel& kernel, int dimension);
 
 // The support radius over the h the code stores in its files: SWIFT gamma, Phantom and PySPH
 // the kernel's R, GADGET 1 (its h is the support), DualSPHysics 2.

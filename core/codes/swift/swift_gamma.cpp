@@ -1,4 +1,4 @@
-#include "analysis/swift_gamma.hpp"
+#include "codes/swift/swift_gamma.hpp"
 
 #include "kernels/kernel_integrals.hpp"
 

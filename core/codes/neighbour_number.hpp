@@ -1,0 +1,10 @@
+// GADGET's weighted neighbour number: the volume of the support sphere (disc, segment) in
+// particle volumes, omega_D H^D rho / m with omega_D = 2, pi, 4 pi / 3 in 1D, 2D, 3D.
+#pragma once
+
+namespace sphkern {
+
+// omega_D H^D / s^D for the support radius H and the spacing s = (m / rho)^(1/D), both in d.
+double neighbour_number(int dimension, double support, double spacing);
+
+} // namespace sphkern

@@ -1,0 +1,41 @@
+"""What each SPH code can run, as its profile (core/codes/<code>/) says: its dimensions and its
+kernels per dimension (exit 2 naming what it has), and a setting below the one a particle with
+no neighbour inside its support has (exit 2, naming the option, before any sum)."""
+import pytest
+from conftest import expect
+
+CASES = [
+    # Phantom is 3D only; SPlisHSPlasH's 2D simulation has the cubic and Wendland C2 only.
+    ("phantom-2d", ["eps", "cubic_bspline", "triangular", "--code", "phantom", "--hfact", "1.2"], 2,
+     r"^sphkern: error: cubic_bspline: phantom runs in 3D only, not in 2D$"),
+    ("phantom-2d-particles", ["particles", "cubic_bspline", "poisson", "--count", "500", "--dim", "2", "--code",
+                              "phantom", "--hfact", "1.2"], 2, r"phantom runs in 3D only, not in 2D$"),
+    ("splishsplash-poly6-2d", ["eps", "muller_poly6", "square", "--code", "splishsplash", "--particle-radius", "0.5"], 2,
+     r"^sphkern: error: muller_poly6: splishsplash has it in 3D only; its kernels in 2D are cubic_bspline, wendland_c2$"),
+    ("splishsplash-spiky-3d", ["eps", "desbrun_spiky", "fcc", "--code", "splishsplash", "--particle-radius", "0.5"], 0, r"^$"),
+    ("gadget2-wendland", ["eps", "wendland_c2", "fcc", "--code", "gadget2", "--nngb", "48"], 2,
+     r"^sphkern: error: wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline$"),
+    ("pysph-2d-super-gaussian", ["eps", "pysph_super_gaussian", "square", "--code", "pysph", "--hdx", "1.2"], 0, r"^$"),
+    # A setting below a lone particle's: refused before the density solve (round 5, item 1).
+    ("swift-eta-below-lone", ["particles", "wendland_c2", "poisson", "--count", "2000", "--code", "swift", "--eta", "0.5"],
+     2, r"^sphkern: error: --eta: 0\.5: expected more than 0\.77\d+, the eta of a particle with no neighbour inside its support"),
+    ("swift-eta-tiny", ["particles", "wendland_c2", "poisson", "--count", "2000", "--code", "swift", "--eta", "0.01"], 2,
+     r"^sphkern: error: --eta: 0\.01: expected more than 0\.77"),
+    ("phantom-hfact-below-lone", ["particles", "cubic_bspline", "poisson", "--count", "2000", "--code", "phantom",
+                                  "--hfact", "0.3"], 2, r"^sphkern: error: --hfact: 0\.3: expected more than 0\.68\d+, the hfact"),
+    ("gadget2-nngb-below-lone", ["particles", "cubic_bspline", "poisson", "--count", "2000", "--code", "gadget2",
+                                 "--nngb", "5"], 2, r"^sphkern: error: --nngb: 5: expected more than 10\.66\d+, the nngb"),
+    ("relax-eta-below-lone", ["relax", "wendland_c2", "poisson", "--count", "500", "--steps", "2", "--code", "swift",
+                              "--eta", "0.5", "--output", "/nonexistent-folder/ic.hdf5"], 2, r"--eta: 0\.5: expected more than"),
+]
+
+
+@pytest.mark.parametrize("args,code,pattern", [c[1:] for c in CASES], ids=[c[0] for c in CASES])
+def test_code_case(args, code, pattern):
+    expect(args, code, pattern)
+
+
+def test_gadget_initial_conditions_end_in_hdf5(tmp_path):
+    expect(["relax", "cubic_bspline", "poisson", "--count", "300", "--steps", "2", "--code", "gadget2", "--output",
+            str(tmp_path / "ic.h5")], 2, r"gadget2: GADGET opens <InitCondFile>\.hdf5 .*expected a name ending in \.hdf5")
+    assert not (tmp_path / "ic.h5").exists()
