@@ -91,9 +91,13 @@ ErrorValues HydrostaticErrors::at_piece(double k, std::size_t active) const
     double along = gradient.dot(gravity_);
     v.eps_gradp = along - 1.0;
     v.lateral = (gradient - along * gravity_).norm();
-    if (!std::isfinite(v.eps_rho) || !std::isfinite(v.eps_gradp) || !std::isfinite(v.lateral))
+    if (!std::isfinite(v.eps_rho) || !std::isfinite(v.eps_gradp) || !std::isfinite(v.lateral)) {
+        std::vector<double> qs;
+        for (std::size_t s = 0; s < active; ++s) qs.push_back(terms_[s].radius / k);
+        fail_overflowing_kernel(kernel_, dim_, k, "the lattice's density and gradient sums", qs);
         fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the errors "
                                "are not finite numbers (expected k of order 1)", k));
+    }
     double reach = kernel_.support() * k * (1 + support_edge);
     for (const auto& s : all_shells_)
         if (s.radius <= reach) v.neighbours += s.count;
@@ -145,6 +149,9 @@ void HydrostaticErrors::fail_non_finite(double k, std::size_t active) const
         if (!std::isfinite(kernel_.w(q, dim_, k))) fail_non_finite_kernel(kernel_, "W", q, dim_, k);
         if (!std::isfinite(kernel_.dw(q, dim_, k))) fail_non_finite_kernel(kernel_, "dW/dr", q, dim_, k);
     }
+    std::vector<double> qs;
+    for (std::size_t s = 0; s < active; ++s) qs.push_back(terms_[s].radius / k);
+    fail_overflowing_kernel(kernel_, dim_, k, "the lattice's density and gradient sums", qs);
     fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the sums "
                            "overflow (expected k of order 1)", k));
 }

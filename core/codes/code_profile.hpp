@@ -14,6 +14,11 @@ namespace sphkern {
 // none for a code that starts from files of its own (a .csv output holds its h).
 enum class CodeLayout { swift, gadget, pysph, none };
 
+// What a code's density solve counts: each neighbour's mass (h_i = c (m_i / rho_i)^(1/D) with
+// rho_i = sum_j m_j W_ij) or each neighbour once (h_i = c (1 / n_i)^(1/D) with n_i = sum_j W_ij,
+// the number density: masses do not enter).
+enum class NeighbourCount { mass, number };
+
 // A kernel as the code names it, the sphkern kernel that is the same function, and the
 // dimensions in which the code has it.
 struct CodeKernel {
@@ -29,6 +34,8 @@ struct CodeProfile {
     std::string parameter_help; // the option's help: "SWIFT's eta, h = eta (m / rho)^(1/D)"
     std::string source;    // where the code states its definition
     bool from_sph_density = false; // h solved from the SPH density (else from the rest spacing)
+    NeighbourCount counts = NeighbourCount::mass; // what that solve counts, and where the code says so
+    std::string count_source;
     std::vector<int> dimensions;   // the dimensions the code runs
     std::vector<CodeKernel> kernels;
     bool user_kernels = false;     // the code takes a kernel it does not ship (a user's own)

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace sphkern {
 
@@ -30,6 +32,27 @@ void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, in
                             kernel.label(), kernel.definition().source, what, q, dim, k));
 }
 
+void fail_overflowing_kernel(const Kernel& kernel, int dim, double k, const std::string& sum, std::span<const double> q_values)
+{
+    std::vector<double> qs(q_values.begin(), q_values.end());
+    const int samples = 256;
+    for (int i = 0; i <= samples; ++i) qs.push_back(kernel.support() * i / samples);
+    double largest = 0;
+    const char* what = "W";
+    for (double q : qs)
+        for (const auto& [name, value] : {std::pair{"W", kernel.w(q, dim, k)}, std::pair{"dW/dr", kernel.dw(q, dim, k)}})
+            if (std::abs(value) > largest) largest = std::abs(value), what = name;
+    if (!(largest > 1e100)) return;
+    double from = INFINITY, to = -INFINITY;
+    for (double q : qs)
+        if (std::abs(kernel.w(q, dim, k)) > 1e-6 * largest || std::abs(kernel.dw(q, dim, k)) > 1e-6 * largest)
+            from = std::min(from, q), to = std::max(to, q);
+    throw Error(kernel_fault_code(kernel),
+                fmt::format("kernel {} ({}): {} reaches {:.4g} for q in [{:.6g}, {:.6g}] (D = {}, k = {:.6g}), and {} of its "
+                            "finite values overflows a double; expected values of order 1",
+                            kernel.label(), kernel.definition().source, what, largest, from, to, dim, k, sum));
+}
+
 void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where, const std::string& scale,
                          std::span<const double> neighbour_q)
 {
@@ -43,6 +66,7 @@ void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::str
         if (!std::isfinite(kernel.w(q, dim, k))) fail_non_finite_kernel(kernel, "W", q, dim, k);
         if (!std::isfinite(kernel.dw(q, dim, k))) fail_non_finite_kernel(kernel, "dW/dr", q, dim, k);
     }
+    fail_overflowing_kernel(kernel, dim, k, "the sum at " + where, neighbour_q);
     fail_input(fmt::format("{} is outside what kernel {} can be evaluated at: the sums at {} overflow (expected a "
                            "smoothing length of order the particle spacing)",
                            scale, kernel.label(), where));

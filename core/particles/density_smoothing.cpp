@@ -100,7 +100,7 @@ private:
 } // namespace
 
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
-                                      double mean_volume, int threads)
+                                      double mean_volume, int threads, bool by_number)
 {
     if (set.neighbours_only > 0)
         fail_input(fmt::format("{}: h from the SPH density is solved for every particle; the set has {} neighbours-only "
@@ -108,8 +108,9 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
                                set.name, set.neighbours_only));
     const int dim = set.dimension;
     const std::size_t n = set.size();
-    // Without masses every particle has the mean volume's (rho0 = 1).
-    const std::vector<double> own_masses = set.mass.size() == n ? std::vector<double>() : std::vector<double>(n, mean_volume);
+    // Without masses, or counting by number, every particle has the mean volume's (rho0 = 1).
+    const bool equal = by_number || set.mass.size() != n;
+    const std::vector<double> own_masses = equal ? std::vector<double>(n, mean_volume) : std::vector<double>();
     const std::span<const double> masses = own_masses.empty() ? std::span<const double>(set.mass) : own_masses;
     auto mass = [&](std::size_t i) { return masses[i]; };
     auto h_of = [&](std::size_t i, double rho) { return coefficient * std::pow(mass(i) / rho, 1.0 / dim); };

@@ -168,9 +168,9 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
         if (point.statistics.back().second.min == 0) {
             const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.scalars[i].neighbours == 0; });
-            fail_input(fmt::format("{}: particle {} has no neighbour inside its support (h = {:.6g}); expected a "
+            fail_input(fmt::format("{}: {} has no neighbour inside its support (h = {:.6g}); expected a "
                                    "larger h or a denser set",
-                                   set.name, *i, h[*i]));
+                                   set.name, set.particle(*i), h[*i]));
         }
         finish_point(point, statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; }), unit, R, set, answer.rho0);
         answer.threads = measures.threads;

@@ -182,10 +182,10 @@ struct Sweep {
     [[noreturn]] void fail_non_finite(const PointResult& r, const Neighbours& nb, double h) const
     {
         if (std::isfinite(r.scalars.e0) && std::isfinite(r.scalars.eps_gradp))
-            fail_input(fmt::format("{}: eps_rho of particle {} overflows a double (its masses over rho0 = {:g}); expected "
+            fail_input(fmt::format("{}: eps_rho of {} overflows a double (its masses over rho0 = {:g}); expected "
                                    "a reference density rho0 nearer the set's mass density",
-                                   set.name, set.id(r.i), in.rho0));
-        fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("particle {} of {}", set.id(r.i), set.name),
+                                   set.name, set.particle(r.i), in.rho0));
+        fail_non_finite_sum(kernel, set.dimension, h / in.spacing, fmt::format("{} of {}", set.particle(r.i), set.name),
                             fmt::format("h = {:.6g}", h), {nb.q.data(), nb.count});
     }
 

@@ -28,6 +28,13 @@ double PeriodicBox::smallest_width(int dimension) const
     return width;
 }
 
+std::string ParticleSet::particle(std::size_t i) const
+{
+    for (auto a = arrays.rbegin(); arrays.size() > 1 && a != arrays.rend(); ++a)
+        if (i >= a->second) return fmt::format("particle {} of array \"{}\"", i - a->second, a->first);
+    return fmt::format("particle {}", id(i));
+}
+
 namespace {
 
 void check_positive(const ParticleValues& values, const ParticleSet& set, const char* field, int threads)
@@ -36,7 +43,7 @@ void check_positive(const ParticleValues& values, const ParticleSet& set, const 
     if (values.size() != set.size())
         fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
     if (const auto i = first_index_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
-        fail_input(fmt::format("{}: {} of particle {} is {}, expected a positive finite number", set.name, field, set.id(*i),
+        fail_input(fmt::format("{}: {} of {} is {}, expected a positive finite number", set.name, field, set.particle(*i),
                                values[*i]));
 }
 
@@ -65,7 +72,7 @@ void wrap_into_box(ParticleSet& set, WrapReach reach, int threads)
         return true;
     };
     if (const auto i = first_index_where(set.size(), threads, [&](std::size_t i) { return !wrap(i); }))
-        fail_input(fmt::format("{}: particle {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, set.id(*i),
+        fail_input(fmt::format("{}: {} at ({:g}, {:g}, {:g}) lies outside the periodic box", set.name, set.particle(*i),
                                set.x[*i], set.y[*i], set.z[*i]));
 }
 
@@ -91,7 +98,7 @@ void validate_particle_values(ParticleSet& set, int threads)
         return !std::isfinite(set.x[i]) || !std::isfinite(set.y[i]) || !std::isfinite(set.z[i]);
     };
     if (const auto i = first_index_where(set.size(), threads, not_finite))
-        fail_input(fmt::format("{}: particle {} has a non-finite coordinate ({}, {}, {})", set.name, set.id(*i), set.x[*i],
+        fail_input(fmt::format("{}: {} has a non-finite coordinate ({}, {}, {})", set.name, set.particle(*i), set.x[*i],
                                set.y[*i], set.z[*i]));
     check_positive(set.h, set, "the smoothing length", threads);
     check_positive(set.mass, set, "the mass", threads);

@@ -52,8 +52,14 @@ struct ParticleSet {
     // read); empty: the row is the index. Errors name particles by it.
     std::vector<std::uint64_t> ids;
 
+    // A PySPH file's arrays read, in order, each with its first particle's index in the set;
+    // empty for other sets. Errors name a particle within its array.
+    std::vector<std::pair<std::string, std::size_t>> arrays;
+
     std::size_t size() const { return x.size(); }
     std::uint64_t id(std::size_t i) const { return ids.empty() ? i : ids[i]; }
+    // "particle 517", or "particle 5 of array \"solid\"" in a set of several arrays.
+    std::string particle(std::size_t i) const;
     std::size_t measured() const { return x.size() - neighbours_only; }
     Eigen::Vector3d position(std::size_t i) const { return {x[i], y[i], z[i]}; }
 };

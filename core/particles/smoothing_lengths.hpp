@@ -22,6 +22,7 @@ struct SmoothingSpec {
     double value = 1.2;        // eta, N_H, k or the density rule's coefficient; unused for `file`
     double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
     PairSmoothing pair = PairSmoothing::own;
+    bool by_number = false;    // `density`: the solve counts each neighbour once, not its mass (SWIFT, GADGET-2)
 };
 
 // N_H = c_D (R eta)^D, the mean number of neighbours inside the support at uniform density

@@ -89,7 +89,8 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
     require_neighbour_reach(profile, kernel, dimension, setting.value, sources.value);
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
-    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile)};
+    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile),
+            profile.counts == NeighbourCount::number};
 }
 
 SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSources& sources, const Kernel& kernel,
@@ -118,16 +119,20 @@ nlohmann::json code_k_json(const CodeK& code)
 nlohmann::json code_answer_json(const CodeSetting& setting)
 {
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
-    return {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
-            {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
+    nlohmann::json out = {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
+                          {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
+    if (profile.from_sph_density) out["counts"] = profile.counts == NeighbourCount::number ? "number" : "mass";
+    return out;
 }
 
 std::string code_answer_text(const CodeSetting& setting)
 {
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
     return fmt::format("{} {} = {:.10g}: h from {}", setting.code, profile.parameter, setting.value,
-                       profile.from_sph_density ? "each particle's SPH density (solved for every particle)"
-                                                : "the mean spacing");
+                       !profile.from_sph_density               ? "the mean spacing"
+                       : profile.counts == NeighbourCount::number ? "each particle's neighbour count sum_j W, by number as "
+                                                                    "the code counts (solved for every particle)"
+                                                                  : "each particle's SPH density (solved for every particle)");
 }
 
 nlohmann::json stored_code_json(const std::string& code, const Kernel& kernel, int dimension)

@@ -136,14 +136,15 @@ ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, 
     const auto& profile = code_profile(code->name, ValueSource::argument("code"));
     const double per_h = code_support_per_h(profile, kernel, set.dimension), to_stored = kernel.support() / per_h;
     ParticleOutput out{std::vector<double>(n, run.h * to_stored), per_h, mass, density,
-                       code->name == "swift" ? swift_kernel_label(kernel.name()) : "", u, relax_layout(code)};
+                       profile.layout == CodeLayout::swift ? swift_kernel_label(kernel.name()) : "", u, relax_layout(code)};
     if (solved_h(*code)) {
-        const double c = code_smoothing({code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")},
-                                        kernel, set.dimension).value;
+        const SmoothingSpec spec = code_smoothing(
+            {code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")}, kernel, set.dimension);
         // Solved once on the run's set: copy c of it holds particle i at c n + i (tiled_set), and
         // its periodic images are the other copies, so each copy's h is the original's.
         const ParticleSet& run_set = run.state.set;
-        const PerParticle h = density_smoothing_lengths(kernel, run_set, c, mean_volume(run_set), threads);
+        const PerParticle h = density_smoothing_lengths(kernel, run_set, spec.value, mean_volume(run_set), threads,
+                                                            spec.by_number);
         for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i % run_set.size()] * to_stored;
     }
     return out;

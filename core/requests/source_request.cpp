@@ -45,9 +45,11 @@ void check_particle_source(const ParticleSource& s, const SourceSources& sources
         if (s.box) check_box(*s.box, 3, sources.box);
         if (const std::string problem = particle_array_list_problem(s.file.array); !problem.empty())
             throw Error(sources.array.code, sources.array.name + " " + s.file.array + ": " + problem);
-        if (s.file.particle_radius && !(*s.file.particle_radius > 0 && std::isfinite(*s.file.particle_radius)))
+        // Its support radius, 4 r (SPlisHSPlasH's), must be a finite length too.
+        if (s.file.particle_radius && !(*s.file.particle_radius > 0 && std::isfinite(4 * *s.file.particle_radius)))
             throw Error(sources.particle_radius.code,
-                        fmt::format("{}: expected a positive finite length", sources.particle_radius.about(*s.file.particle_radius)));
+                        fmt::format("{}: expected a positive length whose support radius 4 r is finite",
+                                    sources.particle_radius.about(*s.file.particle_radius)));
     }
 }
 

@@ -474,8 +474,9 @@ study s_budget_sweep '{"name": "s", "kernels": ["cubic_bspline"], "lattices": ["
 expect 3 'lattices x sweep samples x k samples, over all sweeps = 2412000' -- run "$work/s_budget_sweep.json" -o "$work/out_budget"
 (ulimit -v 600000; "$sphkern" block cubic_bspline fcc --k 1.2 --size 8,8,8 --threads 1000 >/dev/null 2>"$work/threads.err")
 status=$?
-check "threads refused by the system: exit $status, $(cat "$work/threads.err")" test $status -eq 3
-check "threads message" grep -qE '^sphkern: error: cannot start 1000 threads .*use fewer threads$' "$work/threads.err"
+# The parts of the threads the system refuses run on those it allows, with one warning.
+check "threads refused by the system: exit $status, $(cat "$work/threads.err")" test $status -eq 0
+check "threads message" grep -qE '^sphkern: warning: cannot start 1000 threads .*the work runs on the threads the system allows$' "$work/threads.err"
 
 # Numbers: nothing non-finite, nothing from a kernel outside its valid parameters.
 expect 4 'kernel nan_band .*: W is not finite at q = 0.70' -- eps nan_band fcc --k 1.4184397163120568 --plugin "$broken/nan_band.so"
@@ -1101,7 +1102,7 @@ with h5py.File(sys.argv[3], 'w') as f:
 # checked first, and a slab one row of bins thick must fit the budget. Other commands read a
 # set whole.
 expect 3 'declared.h5: the slabs. per-particle results need 8e\+13 bytes of disk in .*expected more room there' -- particles cubic_bspline "$work/declared.h5" --nh 40
-expect 3 'budget.h5: /PartType0/Coordinates declares 50000000 particles \(.*bytes for the particles\); over the memory budget of .* bytes \(--memory-limit\)' -- relax cubic_bspline "$work/budget.h5" --nh 40 --steps 1 --memory-limit 0.05
+expect 3 'budget.h5: /PartType0/Coordinates declares 50000000 particles \(.*bytes for the particles\); over the .* particles \(.* bytes\) the memory budget of .* bytes holds \(--memory-limit\)' -- relax cubic_bspline "$work/budget.h5" --nh 40 --steps 1 --memory-limit 0.05
 /usr/bin/python3 -c "
 import h5py, numpy, sys
 x = numpy.random.default_rng(5).random((100000, 3))
@@ -1160,7 +1161,7 @@ expect 3 'splish.vtk: the file holds no h and no particle radius \(its support i
 expect 2 '--particle-radius: .*notsplish.vtk is not SPlisHSPlasH' -- particles cubic_bspline "$work/notsplish.vtk" --particle-radius 0.05 --box 1,1,1
 expect 2 '--particle-radius: .*arrays.h5 is not a VTK file' -- particles cubic_bspline "$work/arrays.h5" --particle-radius 0.05 --box 1,1,1
 expect 2 '--particle-radius gives the h of a SPlisHSPlasH file; poisson is not a file' -- particles cubic_bspline poisson --count 100 --particle-radius 0.05
-expect 2 '--particle-radius -1: expected a positive finite length' -- particles cubic_bspline "$work/splish.vtk" --particle-radius -1 --box 1,1,1
+expect 2 '--particle-radius -1: expected a positive length whose support radius 4 r is finite' -- particles cubic_bspline "$work/splish.vtk" --particle-radius -1 --box 1,1,1
 # The radius gives the file's h: a rule for h would leave it unused.
 expect 2 '--particle-radius excludes --h-over-l ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --h-over-l 1.2 --box 1,1,1
 expect 2 '--particle-radius excludes --nh-range ' -- particles cubic_bspline "$work/splish.vtk" --particle-radius 0.05 --nh-range 30 40 --box 1,1,1

@@ -71,3 +71,73 @@ TEST_CASE("SWIFT's eta on an fcc block gives every particle the k that eps --cod
     // PySPH and DualSPHysics set h from the spacing: one h for all, no density solved.
     CHECK(code_smoothing({"pysph", 1.2}, sources, kernel, 3).rule == SmoothingRule::eta);
 }
+
+namespace {
+
+// sum_j w_j W(|r_ij|, h) over every periodic image, the particle itself included; w_j = 1 without weights.
+double brute_sum(const Kernel& kernel, const ParticleSet& set, std::size_t i, double h, const ParticleValues* weights)
+{
+    const Eigen::Matrix3d& edges = set.box->edges;
+    double sum = 0;
+    for (std::size_t j = 0; j < set.size(); ++j)
+        for (int a = -1; a <= 1; ++a)
+            for (int b = -1; b <= 1; ++b)
+                for (int c = -1; c <= 1; ++c) {
+                    const Eigen::Vector3d r = Eigen::Vector3d(set.x[j] - set.x[i], set.y[j] - set.y[i], set.z[j] - set.z[i]) +
+                                              edges * Eigen::Vector3d(a, b, c);
+                    sum += (weights ? (*weights)[j] : 1.0) * kernel.w_truncated(r.norm() / h, 3, h) / (h * h * h);
+                }
+    return sum;
+}
+
+// Particle i's h by its code's own rule, bisected here on [h0 / 4, 4 h0]: by mass
+// h = c (m_i / sum_j m_j W_ij)^(1/3) (Phantom's rhoh in part.F90; GADGET-4's NumNgb from the
+// density in density.cc), by number h = c (1 / sum_j W_ij)^(1/3) (SWIFT's wcount in
+// runner_do_ghost; GADGET-2's weighted_numngb in density.c: no masses).
+double rule_h(const Kernel& kernel, const ParticleSet& set, std::size_t i, double c, bool by_number, double h0)
+{
+    auto g = [&](double h) {
+        const double per = by_number ? 1 / brute_sum(kernel, set, i, h, nullptr)
+                                     : set.mass[i] / brute_sum(kernel, set, i, h, &set.mass);
+        return h - c * std::cbrt(per);
+    };
+    double lo = h0 / 4, hi = 4 * h0;
+    REQUIRE(g(lo) < 0);
+    REQUIRE(g(hi) > 0);
+    for (int step = 0; step < 80; ++step) (g(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+}
+
+} // namespace
+
+TEST_CASE("each code counts its neighbours as its source does: SWIFT and GADGET-2 by number, Phantom and GADGET-4 by mass")
+{
+    const auto kernel = shipped_kernel("cubic_bspline");
+    ParticleSet set = poisson_particles({3, 600, Eigen::Vector3d::Ones(), 11});
+    const double volume = 1.0 / 600;
+    // Masses over a factor 4, as in SWIFT's SquareTest.
+    set.mass.resize(set.size());
+    for (std::size_t i = 0; i < set.size(); ++i) set.mass[i] = volume * (i % 3 == 0 ? 4.0 : 1.0);
+    const CodeSettingSources sources{ValueSource::option("--code"), ValueSource::option("--eta")};
+    struct Rule {
+        CodeSetting setting;
+        bool by_number;
+    };
+    const Rule rules[] = {{{"swift", 1.2348}, true}, {{"gadget2", 48}, true}, {{"phantom", 1.2}, false}, {{"gadget4", 48}, false}};
+    for (const auto& [setting, number] : rules) {
+        CAPTURE(setting.code);
+        const auto spec = code_smoothing(setting, sources, kernel, 3);
+        REQUIRE(spec.rule == SmoothingRule::density);
+        CHECK(spec.by_number == number);
+        const auto h = density_smoothing_lengths(kernel, set, spec.value, volume, 2, spec.by_number);
+        for (std::size_t i = 0; i < set.size(); i += 26) {
+            CAPTURE(i);
+            CHECK(h[i] == doctest::Approx(rule_h(kernel, set, i, spec.value, number, spec.value * std::cbrt(volume))).epsilon(1e-9));
+        }
+        // Where masses differ by 4, the other rule's h is off by more than 10% for some particle.
+        double largest = 0;
+        for (std::size_t i = 0; i < set.size(); i += 53)
+            largest = std::max(largest, std::abs(rule_h(kernel, set, i, spec.value, !number, h[i]) / h[i] - 1));
+        CHECK(largest > 0.1);
+    }
+}

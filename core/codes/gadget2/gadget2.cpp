@@ -15,6 +15,8 @@ CodeProfile gadget2_code()
     p.parameter_help = "the weighted neighbour number";
     p.source = "Springel 2005 (GADGET-2, MNRAS 364, 1105): (4 pi / 3) H^3 rho = N_sph m, H the support radius";
     p.from_sph_density = true;
+    p.counts = NeighbourCount::number;
+    p.count_source = "density.c, density_evaluate: weighted_numngb += NORM_COEFF * wk / hinv3, no masses";
     p.dimensions = dims;
     p.kernels = {{"cubic spline", "cubic_bspline", dims}};
     p.counts_neighbours = true;

@@ -16,6 +16,7 @@ CodeProfile gadget4_code()
     p.source = "Springel et al. 2021 (GADGET-4, MNRAS 506, 2871): DesNumNgb, the weighted neighbour number "
                "(4 pi / 3) H^3 rho / m";
     p.from_sph_density = true;
+    p.count_source = "src/sph/density.cc: NumNgb = NORM_COEFF * hfac * Density / Mass";
     p.dimensions = dims;
     p.kernels = {{"CUBIC_SPLINE_KERNEL", "cubic_bspline", dims},
                  {"WENDLAND_C2_KERNEL", "wendland_c2", dims},

@@ -14,6 +14,7 @@ CodeProfile phantom_code()
     p.source = "Price et al. 2018 (Phantom, PASA 35, e031): rho = m (hfact / h)^D with the SPH density, support "
                "radkern h";
     p.from_sph_density = true;
+    p.count_source = "part.F90, rhoh: rho = m (hfact / h)^3 against dens.F90's sum_j m_j W_ij";
     p.dimensions = space;
     p.kernels = {{"cubic", "cubic_bspline", space},         {"quartic", "quartic_bspline", space},
                  {"quintic", "morris_quintic", space},      {"WendlandC2", "wendland_c2", space},

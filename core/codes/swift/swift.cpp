@@ -16,6 +16,9 @@ CodeProfile swift_code()
     p.source = "SWIFT's hydro documentation: h = eta (m / rho)^(1/D) solved with the SPH density, H = gamma h "
                "(Dehnen & Aly 2012)";
     p.from_sph_density = true;
+    p.counts = NeighbourCount::number;
+    p.count_source = "runner_ghost.c, runner_do_ghost: h^D sum_j W_ij = eta^D with wcount (hydro_end_density), by "
+                     "mass only with SPH:use_mass_weighted_num_ngb";
     p.dimensions = all;
     p.kernels = {{"Cubic spline (M4)", "cubic_bspline", all},  {"Quartic spline (M5)", "quartic_bspline", all},
                  {"Quintic spline (M6)", "morris_quintic", all}, {"Wendland C2", "wendland_c2", plane_and_space},

@@ -133,6 +133,12 @@ struct File {
         check_links();
         if (!set.valid()) fail_input(fmt::format("{}: dataset {} cannot be opened", name, path));
         check_sources(set.get(), path); // the files it maps are inputs from now on
+        // What its values are comes before how many: a table of records (a compound type) is not numbers.
+        Handle type(H5Dget_type(set.get()), H5Tclose);
+        const H5T_class_t kind = H5Tget_class(type.get());
+        if (kind != H5T_FLOAT && kind != H5T_INTEGER)
+            fail_input(fmt::format("{}: dataset {} does not hold numbers (its values are {}); expected integers or floats",
+                                   name, path, kind == H5T_COMPOUND ? "records of several fields" : "not numbers"));
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} is not a table of rows", name, path));
@@ -174,9 +180,11 @@ struct File {
         if (static_cast<double>(shape[0]) > static_cast<double>(max_particles()) ||
             total * sizeof(double) > static_cast<double>(particle_file_byte_limit()))
             fail_input(fmt::format("{}: dataset {} declares {} rows ({:.4g} bytes to read, {:.4g} bytes for the "
-                                   "particles); over the memory budget of {:.4g} bytes ({})",
+                                   "particles); over the {:.4g} bytes a file's values may take of the memory budget of "
+                                   "{:.4g} bytes ({})",
                                    name, path, shape[0], total * sizeof(double),
                                    static_cast<double>(shape[0]) * bytes_per_particle,
+                                   static_cast<double>(particle_file_byte_limit()),
                                    static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         ParticleValues values(static_cast<std::size_t>(total));
         read_numbers(set, H5S_ALL, H5S_ALL, values, path);
@@ -236,6 +244,8 @@ struct File {
             char* value = nullptr;
             Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
             H5Tset_size(memory.get(), H5T_VARIABLE);
+            // h5py writes UTF-8 (its default for str): read in the file's character set, or HDF5 refuses to convert.
+            H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
             if (H5Aread(a.get(), memory.get(), &value) >= 0 && value) text = value;
             if (value) H5free_memory(value);
         } else {

@@ -184,6 +184,9 @@ void write_gadget(hid_t file, const ParticleSet& set, const ParticleOutput& outp
     write_scalar_attribute(header.get(), "HubbleParam", H5T_NATIVE_DOUBLE, 1.0);
     write_scalar_attribute(header.get(), "BoxSize", H5T_NATIVE_DOUBLE, side);
     write_scalar_attribute(header.get(), "NumFilesPerSnapshot", H5T_NATIVE_INT, 1);
+    // GADGET reads the attributes it knows by name; this one tells a 2D set (TWODIMS, z = 0) from a
+    // 3D one when the file is read back, as SWIFT's Dimension does.
+    write_scalar_attribute(header.get(), "Dimension", H5T_NATIVE_INT, set.dimension);
     // read_ic reads Flag_Entropy_ICs into one int: a scalar (0: InternalEnergy is u).
     for (const char* name : {"Flag_Entropy_ICs", "Flag_Sfr", "Flag_Cooling", "Flag_StellarAge", "Flag_Metals", "Flag_Feedback"})
         write_scalar_attribute(header.get(), name, H5T_NATIVE_INT, 0);

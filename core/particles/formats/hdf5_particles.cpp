@@ -119,7 +119,17 @@ ParticleSet read_pysph(const File& f, const std::string& requested)
 {
     const auto arrays = chosen_pysph_arrays(f, requested);
     ParticleSet set = read_pysph_array(f, arrays.front());
-    for (std::size_t a = 1; a < arrays.size(); ++a) append_pysph_array(set, read_pysph_array(f, arrays[a]), arrays.front(), arrays[a]);
+    if (set.size() == 0)
+        fail_input(fmt::format("{}: particle array \"{}\" has no particles (PySPH's dump of an empty array); expected "
+                               "the array to measure",
+                               f.name, arrays.front()));
+    set.arrays.emplace_back(arrays.front(), 0);
+    for (std::size_t a = 1; a < arrays.size(); ++a) {
+        ParticleSet more = read_pysph_array(f, arrays[a]);
+        if (more.size() == 0) continue; // an empty wall adds no neighbour, whatever properties it stores
+        set.arrays.emplace_back(arrays[a], set.size());
+        append_pysph_array(set, std::move(more), arrays.front(), arrays[a]);
+    }
     // PySPH keeps z (zero) for 2D runs.
     const bool flat = std::all_of(set.z.begin(), set.z.end(), [](double z) { return z == 0; });
     set.dimension = flat ? 2 : 3;
@@ -149,10 +159,11 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
         // The budget is checked against the declared total before anything is read.
         if (snapshot.size() > max_particles())
             fail_input(fmt::format("{}: /PartType0/Coordinates declares {} particles{} ({:.4g} bytes for the particles); over "
-                                   "the memory budget of {:.4g} bytes ({})",
+                                   "the {} particles ({:.4g} bytes) the memory budget of {:.4g} bytes holds ({})",
                                    name, snapshot.size(),
                                    snapshot.parts() > 1 ? fmt::format(" in {} parts", snapshot.parts()) : std::string(),
-                                   static_cast<double>(snapshot.size()) * bytes_per_particle,
+                                   static_cast<double>(snapshot.size()) * bytes_per_particle, max_particles(),
+                                   static_cast<double>(max_particles()) * bytes_per_particle,
                                    static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         set = snapshot.rows(0, snapshot.size());
         inputs = snapshot.sample().linked_files;

@@ -173,9 +173,11 @@ SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPl
         Slab slab = points_in(a, a + 1);
         if (slab.points > most)
             fail_input(fmt::format("{}: a slab one row of bins thick holds {} particles and images ({:.4g} bytes), over the "
-                                   "memory budget of {:.4g} bytes ({}); expected a larger budget",
+                                   "{:.4g} bytes a slab may take of the memory budget of {:.4g} bytes ({}); expected a "
+                                   "larger budget",
                                    sample.name, slab.points, static_cast<double>(slab.points * bytes_per_particle),
-                                   static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
+                                   static_cast<double>(most * bytes_per_particle), static_cast<double>(memory_limit_bytes()),
+                                   setting_named("memory_limit")));
         for (std::size_t b = a + 2; b <= rows_along; ++b) {
             const Slab thicker = points_in(a, b);
             if (thicker.points > most) break;

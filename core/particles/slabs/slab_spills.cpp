@@ -52,7 +52,23 @@ private:
 
 } // namespace
 
-std::filesystem::path SlabSpills::folder_parent() { return std::filesystem::temp_directory_path(); }
+std::filesystem::path SlabSpills::folder_parent()
+{
+    // TMPDIR as POSIX has it: unset or empty means /tmp; anything else must be a folder.
+    const char* given = std::getenv("TMPDIR");
+    if (!given || !*given) return "/tmp";
+    std::error_code error;
+    const auto status = std::filesystem::status(given, error);
+    if (!std::filesystem::exists(status))
+        throw Error(ExitCode::output, fmt::format("TMPDIR={}: no such folder; expected a folder for the slabs' temporary "
+                                                  "files (or TMPDIR unset, for /tmp)",
+                                                  given));
+    if (!std::filesystem::is_directory(status))
+        throw Error(ExitCode::output, fmt::format("TMPDIR={}: not a folder; expected a folder for the slabs' temporary "
+                                                  "files (or TMPDIR unset, for /tmp)",
+                                                  given));
+    return given;
+}
 
 SlabSpills::SlabSpills(std::size_t fields, std::size_t slabs) : fields_(fields)
 {

@@ -1,12 +1,14 @@
 // Splits [0, n) into one contiguous chunk per thread. A worker's exception is carried
-// to the caller (the first one wins, the other workers stop at their next check), a
-// thread the system refuses to create is an error rather than an abort, and an
-// interrupt stops every worker at its next item.
+// to the caller (the first one wins, the other workers stop at their next check), the
+// parts of a thread the system refuses to create run on the threads it allows (a warning
+// says so), and an interrupt stops every worker at its next item.
 #pragma once
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 #include "support/process/worker_pool.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <atomic>
@@ -27,6 +29,15 @@ namespace sphkern {
 inline constexpr std::size_t particle_block_size = std::size_t{1} << 13;
 
 // The threads a request for `requested` gets: every core for 0 or less.
+// Said once a process: the system refused a thread (ulimit -u, a container's limit), and the
+// work goes on with the threads it has.
+inline void warn_fewer_threads(int threads, const std::string& reason)
+{
+    static std::atomic<bool> said{false};
+    if (!said.exchange(true))
+        spdlog::warn("cannot start {} threads ({}); the work runs on the threads the system allows", threads, reason);
+}
+
 inline int worker_threads(int requested)
 {
     return requested > 0 ? requested : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -53,16 +64,19 @@ public:
                 failed_ = true;
             }
         };
-        std::string refused;
-        try {
-            if (threads == 1) guarded(0);
-            else if (!run_on_worker_pool(threads, guarded)) run_on_own_threads(threads, guarded);
-        } catch (const std::system_error& e) {
-            refused = e.what();
+        if (threads == 1) guarded(0);
+        else {
+            bool pooled = false;
+            try {
+                pooled = run_on_worker_pool(threads, guarded);
+            } catch (const std::system_error& e) {
+                // The pool ran nothing: every part runs here, one after another.
+                warn_fewer_threads(threads, e.what());
+                for (int t = 0; t < threads; ++t) guarded(t);
+                pooled = true;
+            }
+            if (!pooled) run_on_own_threads(threads, guarded);
         }
-        if (!refused.empty())
-            throw Error(ExitCode::input, "cannot start " + std::to_string(threads) + " threads (" + refused +
-                                             "); use fewer threads");
         if (first_error_) std::rethrow_exception(first_error_);
         throw_if_interrupted();
     }
@@ -94,15 +108,17 @@ private:
     void run_on_own_threads(int threads, const Guarded& guarded)
     {
         std::vector<std::thread> own;
-        for (int t = 1; t < threads; ++t) {
+        int t = 1;
+        for (; t < threads; ++t) {
             try {
                 own.emplace_back(guarded, t);
-            } catch (const std::system_error&) {
-                failed_ = true; // the workers already running stop at their next item
-                for (auto& th : own) th.join();
-                throw;
+            } catch (const std::system_error& e) {
+                // The parts no thread took run here, each once, as they would have on their own thread.
+                warn_fewer_threads(threads, e.what());
+                break;
             }
         }
+        for (; t < threads; ++t) guarded(t);
         guarded(0);
         for (auto& th : own) th.join();
     }
