@@ -15,8 +15,10 @@
 #include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -135,21 +137,31 @@ Action add_relax_command(Command app)
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
+        std::string wrote; // what --output wrote, and where, said beside the results
+        nlohmann::json wrote_json;
         if (!o.output.empty()) {
             const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
             const ParticleSet& out = o.tile.empty() ? run.state.set : written;
             write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads),
                                 o.settings.threads);
+            const char* layouts[] = {"SWIFT", "GADGET", "PySPH"};
+            const std::string layout =
+                o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))] + std::string(" HDF5");
+            const std::string where = std::filesystem::absolute(o.output).lexically_normal().string();
+            wrote = fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout);
+            wrote_json = {{"file", where}, {"particles", out.size()}, {"layout", layout}};
         }
         if (!o.history.empty())
             write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);
             if (code) document["code"] = relax_code_json(*code);
+            if (!wrote.empty()) document["output"] = wrote_json;
             print_json(document, source_inputs(o, kernel, digest.get()));
         } else {
             print_relax(results_file(), kernel, o.settings, run, judged);
             if (code) fmt::print(results_file(), "{}\n", relax_code_text(*code));
+            if (!wrote.empty()) fmt::print(results_file(), "{}\n", wrote);
         }
         return 0;
     };

@@ -11,8 +11,8 @@ CLI = os.environ["SPHKERN_CLI"]
 BROKEN = os.environ["SPHKERN_BROKEN_PLUGINS"]
 
 
-def run(args, cwd=None):
-    env = dict(os.environ, SPHKERN_PLUGIN_TIMEOUT="2")
+def run(args, cwd=None, env_extra=None):
+    env = dict(os.environ, SPHKERN_PLUGIN_TIMEOUT="2", **(env_extra or {}))
     return subprocess.run([CLI, *args], capture_output=True, text=True, cwd=cwd, env=env, timeout=60)
 
 

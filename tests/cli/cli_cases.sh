@@ -1111,7 +1111,7 @@ with h5py.File(sys.argv[1], 'w') as f:
     f.create_group('Header').attrs['BoxSize'] = [1.0, 1.0, 1.0]
     f.create_dataset('PartType0/Coordinates', data=x)
 " "$work/crowded.h5"
-expect 3 'crowded.h5: a slab one row of bins thick holds [0-9]+ particles and images .*over the memory budget' -- particles cubic_bspline "$work/crowded.h5" --nh 40 --memory-limit 0.03
+expect 3 'crowded.h5: a slab one row of bins thick holds [0-9]+ particles and images .*over the .* bytes a slab may take of the memory budget' -- particles cubic_bspline "$work/crowded.h5" --nh 40 --memory-limit 0.03
 expect 3 'nandim.h5: /Header Dimension is nan; expected 2 or 3' -- particles cubic_bspline "$work/nandim.h5" --nh 40
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1099511627776 double\n0 0 0\n' >"$work/declared.vtk"
 expect 3 'declared.vtk.*unexpected end of file' -- particles cubic_bspline "$work/declared.vtk" --nh 40

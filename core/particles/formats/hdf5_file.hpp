@@ -209,8 +209,9 @@ struct File {
     {
         std::vector<hsize_t> shape;
         auto values = dataset(path, shape);
-        if (shape.size() != 1 || shape[0] != count)
-            fail_input(fmt::format("{}: dataset {} has shape {}; expected ({})", name, path, shape_text(shape), count));
+        if (!(shape.size() == 1 || (shape.size() == 2 && shape[1] == 1)) || shape[0] != count)
+            fail_input(fmt::format("{}: dataset {} has shape {}; expected ({}) or ({}, 1)", name, path, shape_text(shape),
+                                   count, count));
         return values;
     }
     // A numeric attribute of `object` with up to `max` values.

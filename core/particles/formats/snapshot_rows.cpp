@@ -68,8 +68,10 @@ SnapshotPart snapshot_part(const File& f)
         for (const char* dataset : names) {
             const std::string path = std::string("/PartType0/") + dataset;
             if (!f.exists(path)) continue;
-            if (const auto s = f.shape(path); s.size() != 1 || s[0] != n)
-                fail_input(fmt::format("{}: dataset {} has shape {}; expected ({})", f.name, path, File::shape_text(s), n));
+            // SWIFT's own example scripts write (N, 1), which SWIFT reads as (N).
+            if (const auto s = f.shape(path); !(s.size() == 1 || (s.size() == 2 && s[1] == 1)) || s[0] != n)
+                fail_input(fmt::format("{}: dataset {} has shape {}; expected ({}) or ({}, 1)", f.name, path,
+                                       File::shape_text(s), n, n));
             return path;
         }
         return {};

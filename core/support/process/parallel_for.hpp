@@ -8,8 +8,6 @@
 #include "support/process/interruption.hpp"
 #include "support/process/worker_pool.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -31,12 +29,7 @@ inline constexpr std::size_t particle_block_size = std::size_t{1} << 13;
 // The threads a request for `requested` gets: every core for 0 or less.
 // Said once a process: the system refused a thread (ulimit -u, a container's limit), and the
 // work goes on with the threads it has.
-inline void warn_fewer_threads(int threads, const std::string& reason)
-{
-    static std::atomic<bool> said{false};
-    if (!said.exchange(true))
-        spdlog::warn("cannot start {} threads ({}); the work runs on the threads the system allows", threads, reason);
-}
+void warn_fewer_threads(int threads, const std::string& reason);
 
 inline int worker_threads(int requested)
 {
