@@ -49,7 +49,8 @@ def record(f, payload, endian):
     f.write(struct.pack(endian + "i", len(payload)))
 
 
-def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtype, endian, snap_format):
+def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtype, endian, snap_format,
+                      gas_blocks=("U", "RHO", "HSML")):
     """One file as write_file writes it: the header, then POS, VEL, ID, MASS (types whose
     MassTable entry is 0), U, RHO, HSML (gas), each block only where it holds particles, the
     types in order 0..5 in every block; SnapFormat 2 puts a labelled 8-byte record before each."""
@@ -66,7 +67,7 @@ def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtyp
     if with_mass:
         blocks.append(("MASS", cat("mass", with_mass).astype(real)))
     if npart[0]:
-        for label in ("U", "RHO", "HSML"):
+        for label in gas_blocks:
             blocks.append((label, types[0][label.lower()].astype(real)))
     with open(path, "wb") as f:
         head = header_bytes(npart, mass_table, npart_total, num_files, box, endian)
@@ -225,6 +226,30 @@ def test_a_file_splash_converts_to_gadget_reads_back_to_its_source(tmp_path):
                                 "--support-per-h", "1", "--json"], capture_output=True, text=True)
     assert reference.returncode == 0, reference.stderr
     assert results(json.loads(done.stdout)) == results(json.loads(reference.stdout))
+
+
+def test_initial_conditions_have_no_h_and_take_the_codes(tmp_path):
+    # read_ic.c reads POS, VEL, ID, MASS and U: initial conditions hold no RHO and no HSML.
+    p = particles()
+    ids = np.arange(1, N_GAS + 1)
+    gas = {"pos": p["gas_pos"], "vel": p["gas_vel"], "id": ids, "mass": p["gas_mass"], "u": p["u"]}
+    for snap_format in (1, 2):
+        path = tmp_path / f"ics_{snap_format}"
+        write_gadget_file(path, [gas, None, None, None, None, None], [0.0] * 6, [N_GAS, 0, 0, 0, 0, 0], 1, L, "f4", "<",
+                          snap_format, gas_blocks=("U",))
+        with h5py.File(tmp_path / "ics.hdf5", "w") as f:
+            header = f.create_group("Header")
+            header.attrs["NumPart_ThisFile"] = np.array([N_GAS, 0, 0, 0, 0, 0], dtype=np.int32)
+            header.attrs["NumPart_Total"] = np.array([N_GAS, 0, 0, 0, 0, 0], dtype=np.uint32)
+            header.attrs["MassTable"] = np.zeros(6)
+            header.attrs["BoxSize"] = L
+            header.attrs["NumFilesPerSnapshot"] = np.int32(1)
+            part = f.create_group("PartType0")
+            part["Coordinates"] = p["gas_pos"].astype("f4")
+            part["Masses"] = p["gas_mass"].astype("f4")
+        doc = measure(path, "--nngb", "40")
+        assert results(doc) == results(measure(tmp_path / "ics.hdf5", "--nngb", "40"))
+        assert doc["source"]["particles"] == N_GAS
 
 
 def good_file(tmp_path, name="snap_000", **kwargs):
