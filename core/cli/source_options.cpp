@@ -2,6 +2,7 @@
 
 #include "cli/command.hpp"
 #include "particles/formats/particle_arrays.hpp"
+#include "particles/formats/particle_files.hpp"
 #include "support/error.hpp"
 #include "support/io/sha256.hpp"
 #include "support/text/value_checks.hpp"
@@ -16,7 +17,7 @@ namespace sphkern::cli {
 
 void add_source_options(Command c, SourceOptions& o)
 {
-    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk)")
+    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot)")
         .required();
     c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
     c.add_option("--cell", o.cell, "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)");
@@ -99,7 +100,7 @@ ParticleSource source_of(const SourceOptions& o)
 std::unique_ptr<FileDigest> start_source_digest(const SourceOptions& o)
 {
     if (source_kind(o.source) != SourceKind::file) return nullptr;
-    return std::make_unique<FileDigest>(o.source);
+    return std::make_unique<FileDigest>(particle_file_named(o.source));
 }
 
 nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel, FileDigest* digest)
@@ -112,7 +113,7 @@ nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel, FileD
                              {"count", o.count}, {"box", o.box}, {"array", o.array}};
     if (!o.cell.empty()) source["cell"] = o.cell;
     if (o.particle_radius) source["particle_radius"] = *o.particle_radius;
-    if (kind == SourceKind::file) source["sha256"] = digest ? digest->get() : file_sha256_hex(o.source);
+    if (kind == SourceKind::file) source["sha256"] = digest ? digest->get() : file_sha256_hex(particle_file_named(o.source));
     inputs["particles"] = source;
     return inputs;
 }

@@ -1,5 +1,7 @@
 #include "particles/formats/particle_files.hpp"
 
+#include "particles/formats/gadget_records.hpp"
+
 #include "support/error.hpp"
 #include "support/text/setting_names.hpp"
 
@@ -19,27 +21,43 @@ std::optional<ParticleFileFormat> particle_file_format(const std::filesystem::pa
     if (ext == ".csv") return ParticleFileFormat::csv;
     if (ext == ".vtk") return ParticleFileFormat::vtk;
     std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        const std::filesystem::path first_part = file.string() + ".0";
+        if (std::filesystem::is_regular_file(first_part, ec) && is_gadget_binary(first_part)) return ParticleFileFormat::gadget_binary;
+        return std::nullopt;
+    }
     if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
     char head[16] = {};
     std::ifstream in(file, std::ios::binary);
     in.read(head, sizeof head);
     if (std::memcmp(head, "\x89HDF\r\n\x1a\n", 8) == 0) return ParticleFileFormat::hdf5;
     if (std::memcmp(head, "# vtk DataFile", 14) == 0) return ParticleFileFormat::vtk;
+    if (is_gadget_binary(file)) return ParticleFileFormat::gadget_binary;
     return std::nullopt;
+}
+
+std::filesystem::path particle_file_named(const std::filesystem::path& file)
+{
+    std::error_code ec;
+    const std::filesystem::path first_part = file.string() + ".0";
+    if (!std::filesystem::exists(file, ec) && particle_file_format(file) == ParticleFileFormat::gadget_binary) return first_part;
+    return file;
 }
 
 ParticleSet read_particle_file(const std::filesystem::path& file, const ParticleFileOptions& options)
 {
     const auto format = particle_file_format(file);
     if (!format)
-        fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv or .vtk");
+        fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv, .vtk "
+                                  "or a GADGET binary snapshot");
     if (options.particle_radius && *format != ParticleFileFormat::vtk)
         throw Error(ExitCode::usage, fmt::format("{}: {} is not a VTK file; the radius gives the h of "
                                                  "SPlisHSPlasH's VTK files only",
                                                  setting_named("particle_radius"), file.string()));
     ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
                       : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
-                                                           : read_vtk_particles(file, options);
+                      : *format == ParticleFileFormat::vtk ? read_vtk_particles(file, options)
+                                                           : read_gadget_binary_particles(file, options);
     apply_dimension(set, options);
     if (options.max_particles && set.size() > options.max_particles)
         fail_input(fmt::format("{}: {} particles, more than the memory limit of {} ({})", file.string(),
