@@ -38,6 +38,16 @@ std::pair<double, double> radial_integral(const Kernel& kernel, int dim, const s
     return {sphere_area(dim) * total, sphere_area(dim) * error};
 }
 
+double kernel_integral_estimate(const Kernel& kernel, int dim, double k)
+{
+    double total = 0;
+    const auto edges = piece_edges(kernel);
+    for (std::size_t i = 0; i + 1 < edges.size(); ++i)
+        total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+            [&](double q) { return kernel.w(q, dim, k) * radial_power_of(q, dim - 1); }, edges[i], edges[i + 1], 0);
+    return sphere_area(dim) * total;
+}
+
 std::pair<double, double> kernel_integral(const Kernel& kernel, int dim, double k, int radial_power)
 {
     return radial_integral(kernel, dim, [&](double q) { return kernel.w(q, dim, k) * radial_power_of(q, radial_power); });

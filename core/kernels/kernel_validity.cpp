@@ -17,7 +17,7 @@ ExitCode kernel_fault_code(const Kernel& kernel)
 
 void require_usable_kernel(const Kernel& kernel, int dim, double k)
 {
-    const double integral = kernel_integral(kernel, dim, k).first;
+    const double integral = kernel_integral_estimate(kernel, dim, k);
     if (std::isfinite(integral) && integral > 0) return;
     throw Error(kernel_fault_code(kernel),
                 fmt::format("kernel {} ({}): its {}D normalisation is {:.6g} at k = {:.6g}, expected a finite "
