@@ -1,5 +1,6 @@
 // sphkern: accuracy of SPH smoothing kernels on regular particle lattices.
 #include "cli/command.hpp"
+#include "cli/usage_hints.hpp"
 #include "support/error.hpp"
 #include "support/io/provenance.hpp"
 #include "support/io/results_output.hpp"
@@ -117,7 +118,7 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        return fail(std::string(e.what()) + " (see sphkern --help)", ExitCode::usage);
+        return fail(cli::usage_message(app, e, argc, argv), ExitCode::usage);
     }
     spdlog::set_level(spdlog::level::from_str(log_level));
 

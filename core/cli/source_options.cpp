@@ -1,6 +1,7 @@
 #include "cli/source_options.hpp"
 
 #include "cli/command.hpp"
+#include "lattices/lattice.hpp"
 #include "particles/formats/particle_arrays.hpp"
 #include "particles/formats/particle_files.hpp"
 #include "support/error.hpp"
@@ -8,8 +9,10 @@
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -53,6 +56,14 @@ ParticleSource source_of(const SourceOptions& o)
     ParticleSource source;
     source.spec = o.source;
     source.kind = source_kind(o.source);
+    // A word that names no lattice is a typo more often than a lattice without its --size.
+    auto names = shipped_lattice_names();
+    if (source.kind == SourceKind::lattice && !o.source.ends_with(".json") && std::find(names.begin(), names.end(), o.source) == names.end()) {
+        names.push_back("poisson");
+        throw Error(ExitCode::input, fmt::format("unknown source \"{}\"{}; expected poisson, a lattice ({}) or a "
+                                                 "particle file",
+                                                 o.source, did_you_mean(o.source, names), fmt::join(names.begin(), names.end() - 1, ", ")));
+    }
     if (source.kind != SourceKind::lattice && !o.size.empty())
         throw Error(ExitCode::usage, "--size cuts a lattice into a block; " + o.source + " is not a lattice");
     if (source.kind != SourceKind::lattice && !o.cell.empty())

@@ -1,0 +1,25 @@
+"""The first hour's typos get the right word (item 3 of the first-hour issue): an unknown command
+or option is named with the nearest one, a value that is not a number with the form expected,
+the extra words in the order typed, a misspelt source with the sources there are."""
+import pytest
+from conftest import expect
+
+CASES = [
+    ("command", ["rots"], 2, r'^sphkern: error: unknown command "rots" \(did you mean "roots"\?\); the commands are run, '),
+    ("command-case", ["Roots", "cubic_bspline", "fcc"], 2, r'unknown command "Roots" \(did you mean "roots"\?\)'),
+    ("option", ["roots", "cubic_bspline", "fcc", "--stabilty"], 2,
+     r'^sphkern: error: roots: unknown option "--stabilty" \(did you mean "--stability"\?\)'),
+    ("option-with-value", ["roots", "cubic_bspline", "fcc", "--k-max", "1.5"], 2,
+     r'roots: unknown option "--k-max" \(did you mean "--kmax"\?\)'),
+    ("not-a-number", ["roots", "cubic_bspline", "fcc", "--kmin", "abc"], 2,
+     r"^sphkern: error: --kmin abc: expected a number \(such as 1\.2 or 2e-3\)$"),
+    ("extra-words-in-order", ["eps", "cubic_bspline", "fcc", "--k", "1.2", "one", "two"], 2,
+     r"eps: the arguments one two were not expected"),
+    ("source", ["particles", "cubic_bspline", "poison", "--count", "100"], 3,
+     r'^sphkern: error: unknown source "poison" \(did you mean "poisson"\?\); expected poisson, a lattice \(bcc, '),
+]
+
+
+@pytest.mark.parametrize("args,code,pattern", [c[1:] for c in CASES], ids=[c[0] for c in CASES])
+def test_typo(args, code, pattern):
+    expect(args, code, pattern)
