@@ -17,7 +17,7 @@ namespace sphkern::cli {
 
 void add_plugin_option(Command command, CommonOptions& options)
 {
-    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)");
+    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)").one_value_per_use();
 }
 
 void add_json_option(Command command, CommonOptions& options)
@@ -27,7 +27,7 @@ void add_json_option(Command command, CommonOptions& options)
 
 void add_set_option(Command command, std::vector<std::string>& sets)
 {
-    command.add_option("--set", sets, "Kernel parameter NAME=VALUE (repeatable)");
+    command.add_option("--set", sets, "Kernel parameter NAME=VALUE (repeatable)").one_value_per_use();
 }
 
 std::map<std::string, double> parse_sets(const std::vector<std::string>& sets)

@@ -27,6 +27,14 @@ Option Option::expected(int values)
     return *this;
 }
 
+Option Option::one_value_per_use()
+{
+    // A list option otherwise takes every word up to the next option: `--plugin a.so kernel
+    // lattice` would swallow the kernel and the lattice.
+    option_->allow_extra_args(false);
+    return *this;
+}
+
 Option Option::hidden()
 {
     option_->group("");

@@ -23,3 +23,12 @@ CASES = [
 @pytest.mark.parametrize("args,code,pattern", [c[1:] for c in CASES], ids=[c[0] for c in CASES])
 def test_typo(args, code, pattern):
     expect(args, code, pattern)
+
+
+def test_a_repeatable_option_takes_one_word_each_time(broken):
+    import os
+    plugin = os.path.join(broken, "changes_folder.so")
+    expect(["eps", "--plugin", plugin, "changes_folder", "fcc", "--k", "1.2"], 0, r"^$")
+    expect(["eps", "--set", "beta=2", "wendland_c2_shape", "fcc", "--k", "1.2"], 0, r"^$")
+    expect(["eps", "wendland_c2_shape", "fcc", "--k", "1.2", "--set", "beta=2", "--plugin", plugin, "--plugin",
+            os.path.join(broken, "closes_descriptors.so")], 0, r"^$")
