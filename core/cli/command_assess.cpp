@@ -18,6 +18,7 @@ struct AssessOptions : CommonOptions {
     std::string kernel, lattice, box, array;
     SettingOptions setting;
     double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
+    std::optional<double> coef_sound;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
 };
@@ -29,7 +30,7 @@ AssessRequest request_from(const AssessOptions& o)
     if (o.setting.k) r.setting.k = {*o.setting.k};
     r.setting.evaluation = evaluation_inputs(o.evaluation);
     r.window_min = o.k_min, r.window_max = o.k_max;
-    r.epsilon = o.epsilon, r.gamma = o.gamma, r.horizon = o.horizon;
+    r.epsilon = o.epsilon, r.gamma = o.gamma, r.horizon = o.horizon, r.coef_sound = o.coef_sound;
     return r;
 }
 
@@ -40,7 +41,8 @@ AssessSources option_sources(const AssessOptions& o)
             ValueSource::option("--kmin/--kmax"),
             ValueSource::option("--epsilon"),
             ValueSource::option("--gamma"),
-            ValueSource::option("--horizon")};
+            ValueSource::option("--horizon"),
+            ValueSource::option("--coef-sound")};
 }
 
 // A code's setting on a particle file: h as `particles --code` sets it, judged on the set.
@@ -83,6 +85,10 @@ Action add_assess_command(Command app)
     command.add_option("--kmax", options->k_max, "Largest k of the window").capture_default_str();
     command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
     command.add_option("--gamma", options->gamma, "Adiabatic index of the stability analysis").capture_default_str();
+    command.add_option("--coef-sound", options->coef_sound,
+                       "With a weakly compressible code (dualsphysics, pysph): its sound speed over sqrt(g H), whose "
+                       "hydrostatic pressure at rest, up to rho c^2 / coef^2, the stability assumes (default the code's: "
+                       "20, 10 sqrt(2))");
     command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
         .capture_default_str();
     add_evaluation_options(command, options->evaluation);

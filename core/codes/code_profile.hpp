@@ -19,6 +19,12 @@ enum class CodeLayout { swift, gadget, pysph, none };
 // the number density: masses do not enter).
 enum class NeighbourCount { mass, number };
 
+// The pressure of the code's particles at rest, which sets the pressure term of the dispersion
+// relation (method.md, section 10): an ideal gas, P0 / rho = c^2 / gamma; or a weakly compressible
+// fluid (Tait), whose pressure at rest is the hydrostatic one, from 0 to rho g H = rho c^2 /
+// CoefSound^2 with c = CoefSound sqrt(g H).
+enum class RestPressure { ideal_gas, tait };
+
 // A kernel as the code names it, the sphkern kernel that is the same function, and the
 // dimensions in which the code has it.
 struct CodeKernel {
@@ -36,6 +42,9 @@ struct CodeProfile {
     bool from_sph_density = false; // h solved from the SPH density (else from the rest spacing)
     NeighbourCount counts = NeighbourCount::mass; // what that solve counts, and where the code says so
     std::string count_source;
+    RestPressure rest_pressure = RestPressure::ideal_gas;
+    double coef_sound = 0;         // Tait: the default c / sqrt(g H), and where the code sets it
+    std::string coef_sound_source;
     std::vector<int> dimensions;   // the dimensions the code runs
     std::vector<CodeKernel> kernels;
     bool user_kernels = false;     // the code takes a kernel it does not ship (a user's own)

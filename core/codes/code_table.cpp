@@ -119,6 +119,28 @@ void require_lattice_volume(const CodeProfile& p, const std::string& what)
                                p.name, what));
 }
 
+StabilityPressure stability_pressure(const CodeProfile* code, double gamma, std::optional<double> coef_sound,
+                                     const ValueSource& source)
+{
+    const bool tait = code && code->rest_pressure == RestPressure::tait;
+    if (coef_sound && !tait) {
+        std::vector<std::string> codes;
+        for (const auto& p : code_profiles())
+            if (p.rest_pressure == RestPressure::tait) codes.push_back(p.name);
+        source.fail(fmt::format("{:g}: the sound speed over sqrt(g H) of a weakly compressible code ({}); expected --code "
+                                "naming one",
+                                *coef_sound, fmt::join(codes, ", ")));
+    }
+    if (!tait) return {gamma, false, 0, fmt::format("an ideal gas at rest, P0 / rho = c^2 / gamma (gamma = {:g})", gamma)};
+    const double c = coef_sound.value_or(code->coef_sound);
+    // P0 / (rho c^2) from 1e-6 (gamma's largest) to 1: a sound speed of 1 to 1000 sqrt(g H).
+    if (!(c >= 1 && c <= 1000)) source.fail(fmt::format("{:g}: expected a number in [1, 1000]", c));
+    return {c * c, true, c,
+            fmt::format("Tait's pressure at rest ({}): hydrostatic, up to rho c^2 / {:.4g} (c = {:.4g} sqrt(g H)), the top "
+                        "of its range deciding",
+                        code->title, c * c, c)};
+}
+
 double code_support_per_h(const CodeProfile& p, const Kernel& kernel, int dim) { return p.support_per_h(kernel, dim); }
 
 double code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, double a_p, double k, double eps_rho)

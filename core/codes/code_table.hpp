@@ -19,6 +19,7 @@
 #include "support/text/value_checks.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,20 @@ double code_volume(const CodeProfile& profile, int dimension, double value);
 // Refuses (Error(input)) a code whose setting fixes the volume where `what` holds the
 // lattice's own volume (a window of k, a particle set, a relaxation).
 void require_lattice_volume(const CodeProfile& profile, const std::string& what);
+
+// The linear stability's pressure at rest as the code has it: gamma for an ideal gas (the
+// user's, P0 / rho = c^2 / gamma), or for a Tait code the gamma = rho c^2 / P0 that its largest
+// hydrostatic pressure at rest gives, CoefSound^2 (`coef_sound`, default the code's): the
+// dispersion relation depends on P0 only through P0 / (rho c^2), its pairing term grows with
+// it, and at P0 = 0 no kernel pairs, so the top of the range decides. Without a code, gamma.
+struct StabilityPressure {
+    double gamma = 5.0 / 3.0;     // the dispersion relation's, 1 / (P0 / (rho c^2))
+    bool tait = false;
+    double coef_sound = 0;        // Tait: c / sqrt(g H)
+    std::string text;             // "an ideal gas at rest (gamma = 1.667)" or Tait's, for a person
+};
+StabilityPressure stability_pressure(const CodeProfile* code, double gamma, std::optional<double> coef_sound,
+                                     const ValueSource& coef_sound_source);
 
 // The code's parameter at k, the lattice's SPH density at rest being rho0 (1 + eps_rho).
 double code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double k,

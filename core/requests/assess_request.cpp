@@ -16,14 +16,14 @@ namespace sphkern {
 
 namespace {
 
-RootsRequest window_request(const AssessRequest& r, const CodeProfile* code)
+RootsRequest window_request(const AssessRequest& r, const CodeProfile* code, double gamma)
 {
     RootsRequest w;
     w.window_min = r.window_min;
     w.window_max = r.window_max;
     w.epsilon = r.epsilon;
     w.stability = true;
-    w.model = {r.gamma, r.horizon, 100, HModel::fixed};
+    w.model = {gamma, r.horizon, 100, HModel::fixed};
     w.code = code;
     w.evaluation = r.setting.evaluation;
     return w;
@@ -34,9 +34,10 @@ RootsSources window_sources(const AssessSources& s)
     return {s.window, s.epsilon, s.gamma, s.horizon, ValueSource::argument("steps"), s.setting.evaluation};
 }
 
-AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, const AssessRequest& r, HModel h)
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, const AssessRequest& r, double gamma,
+                             HModel h)
 {
-    const auto sample = stability_sample(Dispersion(kernel, lattice, k, r.gamma, h), reciprocal_lattice(lattice), 0, 0,
+    const auto sample = stability_sample(Dispersion(kernel, lattice, k, gamma, h), reciprocal_lattice(lattice), 0, 0,
                                          r.horizon);
     AssessStability s{h, sample.verdict, sample.growth_time, ""};
     if (sample.verdict != Verdict::stable) s.mode = mode_kind_name(sample.mode.kind);
@@ -108,8 +109,10 @@ AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, co
     a.at = run_eps_at_k(r.setting, sources.setting, kernel, lattice);
     for (const auto& s : a.at.sites)
         a.worst = std::max({a.worst, std::abs(s.values.eps_rho), std::abs(s.values.eps_gradp)});
-    for (const HModel h : {HModel::fixed, HModel::adaptive}) a.stability.push_back(stability_at(kernel, lattice, a.at.k, r, h));
-    a.window = run_roots(window_request(r, a.code), window_sources(sources), kernel, lattice);
+    a.pressure = stability_pressure(a.code, r.gamma, r.coef_sound, sources.coef_sound);
+    for (const HModel h : {HModel::fixed, HModel::adaptive})
+        a.stability.push_back(stability_at(kernel, lattice, a.at.k, r, a.pressure.gamma, h));
+    a.window = run_roots(window_request(r, a.code, a.pressure.gamma), window_sources(sources), kernel, lattice);
     a.verdict = fmt::format("{} with {} on {}: {}, {}; {}", setting_text(a), a.at.kernel, a.at.lattice,
                             stability_text(own_model(a)), accuracy_text(a, r.epsilon), recommendation_text(a, r));
     return a;
@@ -132,6 +135,11 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
     return {{"eps", eps_document(a.at)},
             {"condition_22", {{"epsilon", r.epsilon}, {"holds", a.accurate(r.epsilon)}, {"margin", r.epsilon - a.worst}}},
             {"stability", stability},
+            {"pressure", a.pressure.tait ? nlohmann::json{{"model", "tait"},
+                                                          {"coef_sound", a.pressure.coef_sound},
+                                                          {"p0_over_rho_c2", 1 / a.pressure.gamma},
+                                                          {"text", a.pressure.text}}
+                                         : nlohmann::json{{"model", "ideal_gas"}, {"gamma", a.pressure.gamma}, {"text", a.pressure.text}}},
             {"window", {r.window_min, r.window_max}},
             {"recommended", recommended},
             {"verdict", a.verdict}};
@@ -142,9 +150,9 @@ void print_assess(const AssessRequest& r, const AssessResult& a)
     print_eps(a.at);
     fmt::print(results_file(), "condition (22), epsilon = {:g}: {} (margin {:.3g}: epsilon less the largest error at any site)\n",
                r.epsilon, a.accurate(r.epsilon) ? "holds at every site" : "fails", r.epsilon - a.worst);
+    const std::string pressure = a.pressure.tait ? a.pressure.text : fmt::format("gamma = {:g}", r.gamma);
     for (const auto& s : a.stability)
-        fmt::print(results_file(), "linear stability, {} h (gamma = {:g}): {}\n", h_model_name(s.h_model), r.gamma,
-                   stability_text(s));
+        fmt::print(results_file(), "linear stability, {} h ({}): {}\n", h_model_name(s.h_model), pressure, stability_text(s));
     fmt::print(results_file(), "{}\n", a.verdict);
 }
 

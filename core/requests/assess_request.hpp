@@ -12,6 +12,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,11 +23,13 @@ struct AssessRequest {
     double window_min = 0.75, window_max = 2.0;  // in k: where a setting is recommended
     double epsilon = 0.01;                       // of condition (22)
     double gamma = 5.0 / 3.0, horizon = default_horizon;
+    std::optional<double> coef_sound; // a Tait code's c / sqrt(g H), default the code's
 };
 
 struct AssessSources {
     EpsSources setting;
     ValueSource window, epsilon, gamma, horizon;
+    ValueSource coef_sound = ValueSource::argument("coef_sound");
 };
 
 struct AssessStability {
@@ -42,6 +45,7 @@ struct AssessResult {
     std::vector<AssessStability> stability; // fixed h, then adaptive h
     RootsResult window;         // condition (22), stability and the recommended k of the window
     const CodeProfile* code = nullptr;
+    StabilityPressure pressure; // the pressure at rest the verdicts assume
     std::string verdict;        // the one line
     bool accurate(double epsilon) const { return worst <= epsilon; }
 };

@@ -39,3 +39,20 @@ def test_gadget_initial_conditions_end_in_hdf5(tmp_path):
     expect(["relax", "cubic_bspline", "poisson", "--count", "300", "--steps", "2", "--code", "gadget2", "--output",
             str(tmp_path / "ic.h5")], 2, r"gadget2: GADGET opens <InitCondFile>\.hdf5 .*expected a name ending in \.hdf5")
     assert not (tmp_path / "ic.h5").exists()
+
+
+def test_weakly_compressible_codes_stability_assumes_their_rest_pressure():
+    import json
+    from conftest import run
+    done = run(["assess", "wendland_c2", "sc", "--code", "dualsphysics", "--coefh", "1.0", "--json"])
+    assert done.returncode == 0, done.stderr
+    pressure = json.loads(done.stdout)["pressure"]
+    assert pressure["model"] == "tait" and pressure["coef_sound"] == 20 and pressure["p0_over_rho_c2"] == 1 / 400
+    done = run(["assess", "wendland_c2", "sc", "--code", "dualsphysics", "--coefh", "1.0", "--coef-sound", "10"])
+    assert done.returncode == 0, done.stderr
+    assert "Tait's pressure at rest (DualSPHysics): hydrostatic, up to rho c^2 / 100" in done.stdout
+    swift = run(["assess", "wendland_c2", "sc", "--code", "swift", "--eta", "1.2", "--json"])
+    assert json.loads(swift.stdout)["pressure"] == {"model": "ideal_gas", "gamma": 5 / 3,
+                                                    "text": "an ideal gas at rest, P0 / rho = c^2 / gamma (gamma = 1.66667)"}
+    expect(["assess", "wendland_c2", "sc", "--code", "swift", "--eta", "1.2", "--coef-sound", "10"], 2,
+           r"^sphkern: error: --coef-sound: 10: the sound speed over sqrt\(g H\) of a weakly compressible code")

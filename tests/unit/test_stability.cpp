@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <map>
 
 using namespace sphkern;
@@ -19,14 +20,30 @@ using namespace sphkern::test;
 
 namespace {
 
-// Accelerations of standard SPH (P = K rho^gamma, c = 1 at the lattice's SPH density) for
+// A pressure P(rho) with c = 1 at the lattice's SPH density rho_eq.
+using Eos = std::function<double(double)>;
+
+// An ideal gas, P = K rho^gamma.
+Eos ideal_gas(double gamma, double rho_eq)
+{
+    const double K = std::pow(rho_eq, 1 - gamma) / gamma;
+    return [=](double rho) { return K * std::pow(rho, gamma); };
+}
+
+// Tait's, as DualSPHysics and PySPH's WCSPH have it: P = B ((rho / rho_eq)^7 - 1) + P0 with
+// B = rho_eq c^2 / 7, and at rest the hydrostatic P0 (here rho c^2 / CoefSound^2).
+Eos tait(double p0, double rho_eq)
+{
+    const double B = rho_eq / 7;
+    return [=](double rho) { return B * (std::pow(rho / rho_eq, 7) - 1) + p0; };
+}
+
+// Accelerations of standard SPH (a_i = -sum_j m (P_i / rho_i^2 + P_j / rho_j^2) grad W) for
 // every particle of a periodic block, by direct summation over the 27 nearest images.
-std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double k, double gamma, double mass,
-                                           double rho_eq, const std::vector<Eigen::Vector3d>& x,
-                                           const Eigen::Matrix3d& box)
+std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double k, const Eos& pressure, double mass,
+                                           const std::vector<Eigen::Vector3d>& x, const Eigen::Matrix3d& box)
 {
     const double h = k, hd = std::pow(h, dim);
-    const double K = std::pow(rho_eq, 1 - gamma) / gamma;
     const std::size_t n = x.size();
     std::vector<Eigen::Vector3d> shifts;
     for (int a = -1; a <= 1; ++a)
@@ -46,8 +63,8 @@ std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double
     each_pair([&](std::size_t i, std::size_t, const Eigen::Vector3d&, double d) { rho[i] += mass * kernel.w(d / h, dim, k) / hd; });
     std::vector<Eigen::Vector3d> a(n, Eigen::Vector3d::Zero());
     each_pair([&](std::size_t i, std::size_t j, const Eigen::Vector3d& r, double d) {
-        const double pi_ = K * std::pow(rho[i], gamma) / (rho[i] * rho[i]);
-        const double pj = K * std::pow(rho[j], gamma) / (rho[j] * rho[j]);
+        const double pi_ = pressure(rho[i]) / (rho[i] * rho[i]);
+        const double pj = pressure(rho[j]) / (rho[j] * rho[j]);
         a[i] -= mass * (pi_ + pj) * (kernel.dw(d / h, dim, k) / (hd * h)) * (r / d);
     });
     return a;
@@ -55,10 +72,13 @@ std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double
 
 // The modes of a commensurate wave vector compared with finite differences of the
 // accelerations of the block displaced by +-eps times each mode.
-void compare_with_block(const Kernel& kernel, const Lattice& lattice, double k, int cells, const Eigen::Vector3d& m)
+// With a Tait pressure at rest p0 (P0 / (rho c^2); 0: an ideal gas of gamma 5/3), the dispersion
+// relation's gamma is 1 / p0: the matrix depends on the pressure only through P0 / (rho c^2).
+void compare_with_block(const Kernel& kernel, const Lattice& lattice, double k, int cells, const Eigen::Vector3d& m,
+                        double p0 = 0)
 {
     const int dim = lattice.dimension;
-    const double gamma = 5.0 / 3.0;
+    const double gamma = p0 > 0 ? 1 / p0 : 5.0 / 3.0;
     const Dispersion dispersion(kernel, lattice, k, gamma);
     const Eigen::Matrix3d b = 2 * M_PI * lattice.basis.inverse().transpose();
     const Eigen::Vector3d kappa = b * m / cells;
@@ -75,7 +95,8 @@ void compare_with_block(const Kernel& kernel, const Lattice& lattice, double k, 
                 }
     const double mass = lattice.volume_per_site(), rho_eq = dispersion.density_ratio() * mass;
     const auto modes = dispersion.modes(kappa);
-    const auto at_rest = accelerations(kernel, dim, k, gamma, mass, rho_eq, x, box);
+    const Eos pressure = p0 > 0 ? tait(p0 * rho_eq, rho_eq) : ideal_gas(gamma, rho_eq);
+    const auto at_rest = accelerations(kernel, dim, k, pressure, mass, x, box);
     double rest = 0;
     for (const auto& v : at_rest) rest = std::max(rest, v.norm());
     CHECK(rest < 1e-12);
@@ -90,7 +111,7 @@ void compare_with_block(const Kernel& kernel, const Lattice& lattice, double k, 
                 const std::complex<double> phase(std::cos(kappa.dot(x[i])), std::sin(kappa.dot(x[i])));
                 for (int a = 0; a < dim; ++a) y[i][a] += sign * eps * (xi[dim * site[i] + a] * phase).real();
             }
-            return accelerations(kernel, dim, k, gamma, mass, rho_eq, y, box);
+            return accelerations(kernel, dim, k, pressure, mass, y, box);
         };
         const auto plus = displaced(1), minus = displaced(-1);
         double worst = 0, scale = 0;
@@ -123,6 +144,16 @@ TEST_CASE("the dispersion matrix matches finite differences of directly summed S
     // Several sites: bcc as a cubic cell with two sites, and hcp.
     compare_with_block(shipped_kernel("wendland_c2"), load_lattice("bcc"), 1.0, 5, {1, 2, 0});
     compare_with_block(shipped_kernel("cubic_bspline"), load_lattice("hcp"), 1.05, 5, {1, 0, 1});
+}
+
+TEST_CASE("with Tait's pressure at rest (DualSPHysics' CoefSound 20) the dispersion matrix, at gamma = rho c^2 / P0, matches directly summed accelerations")
+{
+    // P0 = rho c^2 / 400, the top of DualSPHysics' hydrostatic range by default, and 0.01 rho c^2.
+    for (const double p0 : {1.0 / 400, 0.01}) {
+        CAPTURE(p0);
+        compare_with_block(shipped_kernel("wendland_c2"), load_lattice("sc"), 1.1, 6, {1, 2, 0}, p0);
+        compare_with_block(shipped_kernel("cubic_bspline"), load_lattice("triangular"), 1.2, 8, {2, 3, 0}, p0);
+    }
 }
 
 TEST_CASE("long waves: the sound speed follows from eps_rho, the gradient-error tensor and the stiffness")

@@ -15,6 +15,9 @@ CodeProfile dualsphysics_code()
     p.parameter_help = "DualSPHysics' coefh, h = coefh sqrt(D) dp";
     p.source = "DualSPHysics' user guide: h = coefh sqrt(3 dp^2) (sqrt(2 dp^2) in 2D), support 2h";
     p.dimensions = dims;
+    p.rest_pressure = RestPressure::tait;
+    p.coef_sound = 20;
+    p.coef_sound_source = "its case's CoefSound (default 20): c0 = CoefSound sqrt(g H)";
     p.kernels = {{"Cubic", "cubic_bspline", dims}, {"Wendland", "wendland_c2", dims}};
     p.support_per_h = [](const Kernel&, int) { return 2.0; };
     p.parameter_of = [](const Kernel& kernel, int dim, double k, double spacing) {

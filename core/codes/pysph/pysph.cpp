@@ -1,5 +1,7 @@
 #include "codes/pysph/pysph.hpp"
 
+#include <cmath>
+
 namespace sphkern {
 
 CodeProfile pysph_code()
@@ -17,6 +19,10 @@ CodeProfile pysph_code()
     p.source = "PySPH's examples: h = hdx dx with dx the particle spacing, support radius_scale h; its equations take "
                "W and its gradient at HIJ = (h_i + h_j) / 2 (pysph/sph/equation.py, precomputed_symbols)";
     p.dimensions = all;
+    // Its weakly compressible schemes (WCSPH, TaitEOS); an ideal gas with its gas-dynamics schemes.
+    p.rest_pressure = RestPressure::tait;
+    p.coef_sound = 10 * std::sqrt(2.0);
+    p.coef_sound_source = "its dam-break example's co = 10 sqrt(2 g H) (pysph/examples/dam_break_2d.py)";
     p.kernels = {{"CubicSpline", "cubic_bspline", all},
                  {"WendlandQuintic", "wendland_c2", plane_and_space},
                  {"WendlandQuinticC4", "wendland_c4", plane_and_space},
