@@ -92,6 +92,13 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& error, int
     // Words no option took: an unknown option is named with the nearest one.
     if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
         const auto extras = extras_in_order(app, argc, argv);
+        for (const auto& word : extras) {
+            // sphkern's own options (--log-level) come before the command.
+            const std::string name = word.substr(0, word.find('='));
+            if (name.starts_with("--") && app.get_option_no_throw(name) != nullptr)
+                return fmt::format("{} is sphkern's own option: give it before the command (sphkern {} VALUE {} ...)", name,
+                                   name, command->get_name());
+        }
         for (const auto& word : extras)
             if (word.starts_with("--"))
                 return fmt::format("{}: unknown option \"{}\"{}; `sphkern {} --help` lists them", command->get_name(), word,

@@ -1,4 +1,6 @@
 #include "relax/relaxation.hpp"
+
+#include "particles/engine/neighbour_gather.hpp"
 #include "support/text/setting_names.hpp"
 
 #include "support/process/parallel_for.hpp"
@@ -199,8 +201,20 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
         throw_if_interrupted();
         RelaxStep step;
         step.step = n;
-        const bool settled = settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
-                                                                      : shift_step(kernel, s, settings, step);
+        bool settled = false;
+        try {
+            settled = settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
+                                                               : shift_step(kernel, s, settings, step);
+        } catch (const CoincidentParticles& e) {
+            if (n == 1) throw; // the set as given
+            // The run brought them together: the pairing instability (W' = 0 at r = 0 leaves a pair no force apart).
+            throw RelaxDiverged(fmt::format("{}: at step {} (t = {:.4g} d/c) particles {} and {} met at one position, where "
+                                            "no SPH sum is defined: the pairing instability merged them (the set as given "
+                                            "had them apart); expected a setting where the set is stable (sphkern "
+                                            "stability at this k) or fewer steps",
+                                            s.set.name, n, (n - 1) * result.dt, e.first, e.second),
+                                std::move(result.history));
+        }
         if (!settled) fail_diverged(s, settings, step, result.dt, std::move(result.history));
         step.time = settings.method == RelaxMethod::pressure ? n * result.dt : 0;
         record_errors(s, step);

@@ -32,3 +32,8 @@ def test_a_repeatable_option_takes_one_word_each_time(broken):
     expect(["eps", "--set", "beta=2", "wendland_c2_shape", "fcc", "--k", "1.2"], 0, r"^$")
     expect(["eps", "wendland_c2_shape", "fcc", "--k", "1.2", "--set", "beta=2", "--plugin", plugin, "--plugin",
             os.path.join(broken, "closes_descriptors.so")], 0, r"^$")
+
+
+def test_sphkerns_own_option_after_the_command_is_placed():
+    expect(["relax", "cubic_bspline", "fcc", "--k", "1.2", "--log-level", "warn"], 2,
+           r"^sphkern: error: --log-level is sphkern's own option: give it before the command \(sphkern --log-level VALUE relax")

@@ -227,11 +227,13 @@ AppendWithin append_within_for(CompressPath path)
         if (j == p || dx * dx + dy * dy + dz * dz != 0) continue;
         const auto i = grid.id(p), k = grid.id(j);
         if (dx == 0 && dy == 0 && dz == 0)
-            fail_input(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})", set_name,
-                                   std::min(i, k), std::max(i, k), xi, yi, zi));
-        fail_input(fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance to be a "
-                               "number (it underflows to 0); expected distinct positions",
-                               set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)));
+            throw CoincidentParticles(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})",
+                                                  set_name, std::min(i, k), std::max(i, k), xi, yi, zi),
+                                      std::min(i, k), std::max(i, k));
+        throw CoincidentParticles(fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance "
+                                              "to be a number (it underflows to 0); expected distinct positions",
+                                              set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)),
+                                  std::min(i, k), std::max(i, k));
     }
     throw std::logic_error("a duplicate position that is not there");
 }

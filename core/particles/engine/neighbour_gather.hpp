@@ -3,6 +3,8 @@
 // caller needs), in the grid's fixed order. The loops are written so that they vectorise.
 #pragma once
 
+#include "support/error.hpp"
+
 #include "particles/engine/neighbour_grid.hpp"
 
 #include <cstdint>
@@ -10,6 +12,14 @@
 #include <vector>
 
 namespace sphkern {
+
+// Two particles at one position (or too close for their squared distance to be a number): no
+// sum over them is defined. Its ids let a caller that moved the particles say how they got there.
+class CoincidentParticles : public Error {
+public:
+    CoincidentParticles(const std::string& message, std::uint64_t a, std::uint64_t b) : Error(ExitCode::input, message), first(a), second(b) {}
+    std::uint64_t first, second;
+};
 
 // One point's neighbours (x_j - x_i, r2, r on request, the gathered values a_j and b_j) and
 // room for q, W, W' and 1 / r of a caller.
