@@ -55,13 +55,10 @@ SnapshotPart snapshot_part(const File& f)
         fail_input(fmt::format("{}: /PartType0/Coordinates has shape {}; expected (N, 3)", f.name, File::shape_text(shape)));
     const std::size_t n = static_cast<std::size_t>(shape[0]);
     part.rows = n, part.columns = static_cast<std::size_t>(shape[1]);
-    const auto counts = f.attribute("/Header", "NumPart_Total"), this_file = f.attribute("/Header", "NumPart_ThisFile");
-    const auto files = f.attribute("/Header", "NumFilesPerSnapshot");
+    const auto this_file = f.attribute("/Header", "NumPart_ThisFile");
     if (!this_file.empty() && static_cast<std::size_t>(this_file[0]) != n)
-        fail_input(fmt::format("{}: /Header NumPart_ThisFile[0] is {} but /PartType0/Coordinates has {} rows", f.name, this_file[0], n));
-    if (!counts.empty() && static_cast<std::size_t>(counts[0]) != n && (files.empty() || files[0] <= 1) &&
-        f.attribute("/Header", "NumPart_Total_HighWord").empty())
-        fail_input(fmt::format("{}: /Header NumPart_Total[0] is {} but /PartType0/Coordinates has {} rows", f.name, counts[0], n));
+        fail_input(fmt::format("{}: /Header NumPart_ThisFile[0] is {} but /PartType0/Coordinates has {} rows; expected the two equal",
+                               f.name, this_file[0], n));
     if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
     // A column's dataset under any of its names, checked to hold one number per particle.
     auto column = [&](std::initializer_list<const char*> names) -> std::string {
@@ -118,21 +115,29 @@ void append_rows(const File& f, const SnapshotPart& part, std::size_t begin, std
     if (part.mass.empty() && part.table_mass > 0) set.mass.resize(at + count, part.table_mass);
 }
 
-// The gas particles a snapshot's header declares in all its files (NumPart_Total and its high word).
-double declared_total(const File& f)
+// The gas particles a snapshot's header declares in all its files (NumPart_Total and its high word),
+// none where it has no NumPart_Total.
+std::optional<double> declared_total(const File& f)
 {
     const auto low = f.attribute("/Header", "NumPart_Total"), high = f.attribute("/Header", "NumPart_Total_HighWord");
-    return (low.empty() ? 0.0 : low[0]) + (high.empty() ? 0.0 : high[0] * 4294967296.0);
+    if (low.empty()) return std::nullopt;
+    return low[0] + (high.empty() ? 0.0 : high[0] * 4294967296.0);
 }
 
-// The name of part k of the snapshot whose part is `file` (BASE.K.hdf5), none if it has no such name.
-std::optional<std::filesystem::path> part_name(const std::filesystem::path& file, std::size_t k)
+// A file's name as a part of a snapshot, BASE.K.hdf5 (or .h5); none if it has no such name.
+struct PartName {
+    std::string base, extension;
+    std::size_t k = 0;
+    std::filesystem::path of(std::size_t part) const { return fmt::format("{}.{}.{}", base, part, extension); }
+};
+
+std::optional<PartName> part_name(const std::filesystem::path& file)
 {
-    static const std::regex part(R"((.*)\.(\d+)\.(hdf5|h5))");
+    static const std::regex part(R"((.*)\.(\d{1,9})\.(hdf5|h5))");
     std::smatch m;
     const std::string name = file.string();
     if (!std::regex_match(name, m, part)) return std::nullopt;
-    return std::filesystem::path(fmt::format("{}.{}.{}", m[1].str(), k, m[3].str()));
+    return PartName{m[1].str(), m[3].str(), static_cast<std::size_t>(std::stoul(m[2].str()))};
 }
 
 // Every part's header must be the first's: the parts of one snapshot.
@@ -188,20 +193,37 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
     const auto named = std::make_unique<OpenFile>(file);
     const File& f = named->file();
     const auto files = f.attribute("/Header", "NumFilesPerSnapshot");
-    const double total = declared_total(f);
-    if (files.empty() || files[0] <= 1 || (f.exists(coordinates_path) && static_cast<double>(f.rows(coordinates_path)) >= total)) {
+    const auto total = declared_total(f);
+    const auto name = part_name(f.name);
+    // A file not named as a part that holds the declared rows is the whole snapshot (SWIFT's
+    // virtual file over its parts, or the parts joined), whatever NumFilesPerSnapshot says.
+    const bool whole = files.empty() || files[0] <= 1 ||
+                       (!name && f.exists(coordinates_path) && static_cast<double>(f.rows(coordinates_path)) >= total.value_or(0.0));
+    if (whole) {
         parts.list.push_back({file, 0, snapshot_part(f)});
+        const std::size_t rows = parts.list.back().layout.rows;
+        if (total && static_cast<double>(rows) != *total)
+            fail_input(fmt::format("{}: /Header NumPart_Total declares {:.0f} particles but "
+                                   "/PartType0/Coordinates has {} rows; expected the file's own rows",
+                                   f.name, *total, rows));
     } else {
         const auto count = static_cast<std::size_t>(files[0]);
         if (files[0] != std::floor(files[0]) || files[0] > 1e5)
             fail_input(fmt::format("{}: /Header NumFilesPerSnapshot is {}; expected a whole number of files", f.name, files[0]));
-        if (!part_name(f.name, 0))
+        if (!name)
             fail_input(fmt::format("{}: one of {} files of a snapshot (/Header NumFilesPerSnapshot), but not named BASE.K.hdf5; "
                                    "expected the parts' own names",
                                    f.name, count));
+        // A file beside the parts, its header copied from theirs, would otherwise read as them.
+        if (name->k >= count)
+            fail_input(fmt::format("{}: part {} of a snapshot whose header says {} files (/Header NumFilesPerSnapshot), parts 0 "
+                                   "to {}; expected one of those",
+                                   f.name, name->k, count, count - 1));
+        // Every part is opened and checked, whichever was named: each holds the rows its
+        // NumPart_ThisFile says, and together they hold NumPart_Total.
         std::size_t first = 0;
         for (std::size_t k = 0; k < count; ++k) {
-            const std::filesystem::path path = *part_name(f.name, k);
+            const std::filesystem::path path = name->of(k);
             std::error_code ec;
             if (!std::filesystem::is_regular_file(path, ec))
                 fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, does not exist; expected every part", f.name,
@@ -215,10 +237,10 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
             inputs.push_back(path.lexically_normal().string());
             inputs.insert(inputs.end(), part.linked_files().begin(), part.linked_files().end());
         }
-        if (static_cast<double>(first) != total)
+        if (total && static_cast<double>(first) != *total)
             fail_input(fmt::format("{}: the snapshot's {} files hold {} particles but /Header NumPart_Total declares {:.0f}; "
                                    "expected the parts of one snapshot",
-                                   f.name, count, first, total));
+                                   f.name, count, first, *total));
     }
     inputs.insert(inputs.end(), named->linked_files().begin(), named->linked_files().end());
     parts.total = parts.list.back().first + parts.list.back().layout.rows;
