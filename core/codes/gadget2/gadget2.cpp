@@ -19,14 +19,7 @@ CodeProfile gadget2_code()
     p.count_source = "density.c, density_evaluate: weighted_numngb += NORM_COEFF * wk / hinv3, no masses";
     p.dimensions = dims;
     p.kernels = {{"cubic spline", "cubic_bspline", dims}};
-    p.counts_neighbours = true;
-    p.layout = CodeLayout::gadget;
-    p.hdf5_suffix = ".hdf5";
-    p.hdf5_suffix_reason = "GADGET opens <InitCondFile>.hdf5 for HDF5 initial conditions (ICFormat 3)";
-    p.support_per_h = [](const Kernel&, int) { return 1.0; }; // its SmoothingLength is the support radius
-    p.parameter_of = [](const Kernel& kernel, int dim, double k, double spacing) {
-        return neighbour_number(dim, kernel.support() * k, spacing);
-    };
+    set_neighbour_number(p);
     return p;
 }
 
