@@ -46,7 +46,7 @@ def codes(real):
     return ["i4", "i1", "i2", "i4", "i8", real, "f4", "f8"]
 
 
-def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), fileid=None):
+def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), fileid=None, lower=0.0):
     """A dump as write_fulldump (FT, default real*8) or write_smalldump (ST, every real as
     real*4) writes it: the magic numbers, the file id, the header of 8 typed sections (count,
     tags, values), the number of blocks, the block headers, then the arrays of each block by
@@ -74,7 +74,7 @@ def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), 
         [("gamma", 1.0), ("time", 0.0), ("dtmax", 0.1), ("rhozero", 1.0), ("hfact", HFACT), ("tolh", 1e-4), ("C_cour", 0.3),
          ("C_force", 0.25), ("alpha", 1.0), ("alphau", 1.0), ("alphaB", 1.0)]
         + [("massoftype", m) for m in massoftype] + [("Bextx", 0.0), ("Bexty", 0.0), ("Bextz", 0.0), ("dum", 0.0)]
-        + ([("xmin", 0.0), ("xmax", 1.0), ("ymin", 0.0), ("ymax", 1.0), ("zmin", 0.0), ("zmax", 1.0)] if box else [])
+        + ([(f"{a}{end}", lower + side) for a in "xyz" for end, side in (("min", 0.0), ("max", 1.0))] if box else [])
         + [("get_conserv", 1.0), ("mtot_in", 0.0), ("etot_in", 0.0), ("angtot_in", 0.0), ("totmom_in", 0.0)],
         [],
         [("udist", 1.0), ("umass", 1.0), ("utime", 1.0), ("umagfd", 1.0)],
@@ -178,6 +178,14 @@ def test_only_gas_particles_are_read(tmp_path):
     doc = run(dump)
     assert doc["source"]["particles"] == gas.sum()
     assert results(doc) == results(run(tmp_path / "gas.csv", "--box", "1,1,1"))
+
+
+def test_positions_are_taken_from_the_lower_corner_of_the_box(tmp_path):
+    p = particles()
+    p["x"] = p["x"] - 0.5
+    dump = write_dump(tmp_path / "centred_00000", p, lower=-0.5)
+    write_csv(tmp_path / "same.csv", p["x"] - (-0.5), f32(p["h"]), p["m"])
+    assert results(run(dump)) == results(run(tmp_path / "same.csv", "--box", "1,1,1"))
 
 
 def test_a_dump_without_bounds_is_free(tmp_path):

@@ -23,7 +23,7 @@ namespace {
 namespace phantom {
 
 // dump_utils' data types, in the order every header and every block holds them.
-constexpr int ntypes = 8, i_int1 = 1, i_int8 = 4, i_real = 5;
+constexpr int ntypes = 8, i_real = 5;
 constexpr const char* type_names[ntypes] = {"integer", "int*1", "int*2", "int*4", "int*8", "real", "real*4", "real*8"};
 constexpr std::size_t lentag = 16, lenid = 100;
 constexpr int igas = 1;       // part's igas: itype 1
