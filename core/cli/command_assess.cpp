@@ -78,7 +78,7 @@ Action add_assess_command(Command app)
                                                    "accuracy, stability and the recommended setting");
     auto options = std::make_shared<AssessOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot)")
+    command.add_option("lattice", options->lattice, "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot, a Phantom dump)")
         .required();
     add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
     command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k").capture_default_str();

@@ -20,7 +20,7 @@ namespace sphkern::cli {
 
 void add_source_options(Command c, SourceOptions& o)
 {
-    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot)")
+    c.add_option("source", o.source, "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot, a Phantom dump)")
         .required();
     c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
     c.add_option("--cell", o.cell, "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)");

@@ -36,7 +36,7 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
     if (!(x > 0) || !std::isfinite(x))
         fail_input(fmt::format("{}: the file's smoothing lengths need a convention: {} X, the support radius over the "
-                               "stored h (GADGET 1, SWIFT its kernel gamma, PySPH the kernel's R, "
+                               "stored h (GADGET 1, SWIFT its kernel gamma, PySPH and Phantom the kernel's R, "
                                "DualSPHysics 2), or {}",
                                set.name, sources.support_per_h.name, others));
 }

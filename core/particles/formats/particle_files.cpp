@@ -1,6 +1,7 @@
 #include "particles/formats/particle_files.hpp"
 
 #include "particles/formats/gadget_records.hpp"
+#include "particles/formats/phantom_records.hpp"
 
 #include "support/error.hpp"
 #include "support/text/setting_names.hpp"
@@ -33,6 +34,7 @@ std::optional<ParticleFileFormat> particle_file_format(const std::filesystem::pa
     if (std::memcmp(head, "\x89HDF\r\n\x1a\n", 8) == 0) return ParticleFileFormat::hdf5;
     if (std::memcmp(head, "# vtk DataFile", 14) == 0) return ParticleFileFormat::vtk;
     if (is_gadget_binary(file)) return ParticleFileFormat::gadget_binary;
+    if (is_phantom_dump(file)) return ParticleFileFormat::phantom_dump;
     return std::nullopt;
 }
 
@@ -49,7 +51,7 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
     const auto format = particle_file_format(file);
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv, .vtk "
-                                  "or a GADGET binary snapshot");
+                                  "a GADGET binary snapshot or a Phantom dump");
     if (options.particle_radius && *format != ParticleFileFormat::vtk)
         throw Error(ExitCode::usage, fmt::format("{}: {} is not a VTK file; the radius gives the h of "
                                                  "SPlisHSPlasH's VTK files only",
@@ -57,7 +59,8 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
     ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
                       : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
                       : *format == ParticleFileFormat::vtk ? read_vtk_particles(file, options)
-                                                           : read_gadget_binary_particles(file, options);
+                      : *format == ParticleFileFormat::gadget_binary ? read_gadget_binary_particles(file, options)
+                                                                     : read_phantom_dump_particles(file, options);
     apply_dimension(set, options);
     if (options.max_particles && set.size() > options.max_particles)
         fail_input(fmt::format("{}: {} particles, more than the memory limit of {} ({})", file.string(),

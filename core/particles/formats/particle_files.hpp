@@ -1,5 +1,5 @@
-// Particle sets from files: SWIFT, GADGET and PySPH HDF5, GADGET-2's binary snapshots, CSV with a
-// header line, and legacy VTK (ASCII or big-endian BINARY, POLYDATA or UNSTRUCTURED_GRID). Every error names the
+// Particle sets from files: SWIFT, GADGET and PySPH HDF5, GADGET-2's binary snapshots, Phantom's
+// dumps, CSV with a header line, and legacy VTK (ASCII or big-endian BINARY, POLYDATA or UNSTRUCTURED_GRID). Every error names the
 // file, the dataset, column or array, and the particle id where there is one.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace sphkern {
 
-enum class ParticleFileFormat { hdf5, csv, vtk, gadget_binary };
+enum class ParticleFileFormat { hdf5, csv, vtk, gadget_binary, phantom_dump };
 
 struct ParticleFileOptions {
     // PySPH: the particle array (default: the only one, or "fluid"), or a comma-separated list:
@@ -37,6 +37,7 @@ ParticleSet read_csv_particles(const std::filesystem::path& file, const Particle
 ParticleSet read_vtk_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
 ParticleSet read_hdf5_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
 ParticleSet read_gadget_binary_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
+ParticleSet read_phantom_dump_particles(const std::filesystem::path& file, const ParticleFileOptions& options);
 
 // For readers: keeps x, y, z as read, or turns a 3D set into 2D where asked (`dimension` 2) by
 // dropping its one constant coordinate. Throws Error(input) if no coordinate is constant.
