@@ -97,8 +97,17 @@ Action add_assess_command(Command app)
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
-    return [options] {
-        if (source_kind(options->lattice) == SourceKind::file) return assess_file(*options);
+    return [options, command] {
+        if (source_kind(options->lattice) == SourceKind::file) {
+            // The lattice's options mean nothing on a particle set: said, not ignored.
+            for (const char* name : {"--ap", "--gravity", "--site", "--shells", "--continue-past-support", "--kmin", "--kmax",
+                                     "--gamma", "--coef-sound", "--horizon"})
+                if (command.count(name) > 0)
+                    throw Error(ExitCode::usage, fmt::format("{} is for a lattice; on a particle file ({}) assess judges "
+                                                             "the set's own sums, expected none",
+                                                             name, options->lattice));
+            return assess_file(*options);
+        }
         if (!options->box.empty() || !options->array.empty())
             throw Error(ExitCode::usage, "--box and --array are for a particle file; expected one, not a lattice");
         const auto sources = option_sources(*options);

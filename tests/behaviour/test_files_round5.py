@@ -99,3 +99,12 @@ def test_compound_coordinates_are_not_numbers(tmp_path):
         f["PartType0/Coordinates"] = records
     expect(["particles", "cubic_bspline", str(tmp_path / "compound.h5"), "--nh", "40"], 3,
            r"dataset /PartType0/Coordinates does not hold numbers \(its values are records of several fields\)")
+
+
+def test_options_that_mean_nothing_on_the_file_are_said_not_ignored(tmp_path):
+    swift_file(tmp_path / "c2.hdf5", "Wendland C2")
+    expect(["particles", "wendland_c2", str(tmp_path / "c2.hdf5"), "--code", "swift", "--array", "fluid"], 2,
+           r"--array fluid: names PySPH's particle arrays; .*c2\.hdf5 is a SWIFT or GADGET snapshot")
+    for option, value in (("--ap", "ball"), ("--site", "1"), ("--kmin", "0.9"), ("--gamma", "1.4")):
+        expect(["assess", "wendland_c2", str(tmp_path / "c2.hdf5"), "--code", "swift", option, value], 2,
+               rf"^sphkern: error: {option} is for a lattice; on a particle file .* expected none$")

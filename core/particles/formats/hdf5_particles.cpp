@@ -153,6 +153,10 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     std::vector<std::string> inputs;
     ParticleSet set;
     if (f.exists("/PartType0")) {
+        if (!options.array.empty())
+            throw Error(ExitCode::usage, fmt::format("{} {}: names PySPH's particle arrays; {} is a SWIFT or GADGET snapshot, "
+                                                     "whose gas (PartType0) is the set",
+                                                     setting_named("array"), options.array, name));
         if (!f.exists("/PartType0/Coordinates"))
             fail_input(name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
         const SnapshotRows snapshot(file);

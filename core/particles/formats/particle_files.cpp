@@ -52,6 +52,9 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv, .vtk "
                                   "a GADGET binary snapshot or a Phantom dump");
+    if (!options.array.empty() && *format != ParticleFileFormat::hdf5)
+        throw Error(ExitCode::usage, fmt::format("{} {}: names PySPH's particle arrays; {} holds one set", setting_named("array"),
+                                                 options.array, file.string()));
     if (options.particle_radius && *format != ParticleFileFormat::vtk)
         throw Error(ExitCode::usage, fmt::format("{}: {} is not a VTK file; the radius gives the h of "
                                                  "SPlisHSPlasH's VTK files only",
