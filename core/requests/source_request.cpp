@@ -57,6 +57,11 @@ void set_memory_budget(double gib, const ValueSource& source)
 {
     if (!std::isfinite(gib) || gib < 0 || gib > max_memory_limit_gib)
         throw Error(source.code, fmt::format("{}: expected GiB in [0, 1e6] (0: from the available memory)", source.about(gib)));
+    // A positive budget below one byte would be taken as 0, "from the available memory": the opposite of what was asked.
+    if (gib > 0 && gib * 1073741824.0 < 1)
+        throw Error(source.code, fmt::format("{}: less than one byte; expected 0 (from the available memory) or at least "
+                                             "1e-9 GiB",
+                                             source.about(gib)));
     set_memory_limit_gib(gib);
 }
 

@@ -37,3 +37,8 @@ def test_a_repeatable_option_takes_one_word_each_time(broken):
 def test_sphkerns_own_option_after_the_command_is_placed():
     expect(["relax", "cubic_bspline", "fcc", "--k", "1.2", "--log-level", "warn"], 2,
            r"^sphkern: error: --log-level is sphkern's own option: give it before the command \(sphkern --log-level VALUE relax")
+
+
+def test_a_memory_limit_below_one_byte_is_not_taken_for_none():
+    expect(["particles", "cubic_bspline", "poisson", "--count", "100", "--nh", "40", "--memory-limit", "5e-324"], 2,
+           r"^sphkern: error: --memory-limit 4\.94066e-324: less than one byte; expected 0")
