@@ -110,3 +110,13 @@ def test_swifts_virtual_file_over_the_parts_reads_alone(tmp_path):
                 at += rows
             f.create_virtual_dataset("PartType0/" + dataset, layout)
     expect(particles(str(tmp_path / "snap.hdf5")), 0, r"^$")
+
+
+def test_a_part_that_is_a_folder_is_named_as_one(tmp_path):
+    import os
+    import shutil
+    names = write_parts(tmp_path / "snap", [N // 2, N - N // 2])
+    os.remove(names[1])
+    os.mkdir(names[1])
+    expect(particles(names[0]) + ["--code", "swift"], 3, r"part 1 of the snapshot's 2 files, .*snap\.1\.hdf5, is a folder")
+    shutil.rmtree(names[1])

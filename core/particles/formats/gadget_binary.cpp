@@ -230,8 +230,9 @@ std::vector<GadgetPart> read_parts(const std::filesystem::path& file)
             continue;
         }
         if (!std::filesystem::is_regular_file(path, ec))
-            fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, does not exist; expected every part", named, k,
-                                   h.num_files, path.string()));
+            fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, {}; expected every part", named, k,
+                                   h.num_files, path.string(),
+                                   std::filesystem::is_directory(path, ec) ? "is a folder" : "does not exist"));
         all.push_back(read_part(path));
     }
     const GadgetPart* with_gas = nullptr;

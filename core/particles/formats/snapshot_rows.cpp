@@ -226,8 +226,8 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
             const std::filesystem::path path = name->of(k);
             std::error_code ec;
             if (!std::filesystem::is_regular_file(path, ec))
-                fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, does not exist; expected every part", f.name,
-                                       k, count, path.string()));
+                fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, {}; expected every part", f.name, k, count,
+                                       path.string(), std::filesystem::is_directory(path, ec) ? "is a folder" : "does not exist"));
             const OpenFile part(path);
             check_same_header(f, part.file());
             SnapshotPart layout = snapshot_part(part.file());
