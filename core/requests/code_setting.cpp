@@ -70,8 +70,17 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     require_code_kernel(profile, kernel, dim);
     const double rest_k = rest_h(profile, kernel, dim, evaluation.a_p, setting.value);
     const double k_max = std::min(k_limit, 1.5 * rest_k + 0.5); // the density moves k by far less
-    const HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
-                                   evaluation.mode);
+    // A setting so large that the lattice's sums reach past their limit is the setting's fault: named as given.
+    const HydrostaticErrors errors = [&] {
+        try {
+            return HydrostaticErrors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
+                                     evaluation.mode);
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::input) throw;
+            sources.value.fail(fmt::format("{:g}: its k, about {:.4g}, is more than the lattice's sums can reach ({})",
+                                           setting.value, rest_k, e.what()));
+        }
+    }();
     auto eps_rho = [&](double k) { return errors.at(k).eps_rho; };
     CodeK code{setting, profile.parameter, 0, 0, std::nullopt};
     code.k = k_of_code_parameter(profile, kernel, dim, evaluation.a_p, setting.value, k_max, eps_rho, sources.value);

@@ -202,6 +202,12 @@ void Dispersion::set_coefficients(double Z, double Z2)
     c_cross_ = coefficients_.cross;
     c_hessian_ = coefficients_.hessian;
     // Never a non-finite omega^2 printed as a result: the coefficients of every matrix are finite.
+    const bool alone = std::all_of(neighbours_.begin(), neighbours_.end(), [](const auto& list) { return list.empty(); });
+    if (alone && (!std::isfinite(c_gradient_) || !std::isfinite(c_cross_) || !std::isfinite(c_hessian_)))
+        fail_input(fmt::format("k = {}: no neighbour lies inside the support, so no SPH force holds a particle and the "
+                               "linear stability has no meaning ({} h: Omega = {:.3g}); expected a k whose support reaches "
+                               "the nearest neighbours",
+                               k_, h_model_name(h_model_), coefficients_.omega));
     if (!std::isfinite(c_gradient_) || !std::isfinite(c_cross_) || !std::isfinite(c_hessian_))
         fail_input(fmt::format("gamma = {} and the SPH density {:.6g} at k = {} give pressure coefficients that are not "
                                "finite numbers", gamma_, density_, k_));

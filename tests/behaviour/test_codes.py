@@ -56,3 +56,13 @@ def test_weakly_compressible_codes_stability_assumes_their_rest_pressure():
                                                     "text": "an ideal gas at rest, P0 / rho = c^2 / gamma (gamma = 1.66667)"}
     expect(["assess", "wendland_c2", "sc", "--code", "swift", "--eta", "1.2", "--coef-sound", "10"], 2,
            r"^sphkern: error: --coef-sound: 10: the sound speed over sqrt\(g H\) of a weakly compressible code")
+
+
+def test_a_setting_past_the_lattices_reach_names_the_option():
+    expect(["eps", "wendland_c2", "fcc", "--code", "swift", "--eta", "100"], 2,
+           r"^sphkern: error: --eta: 100: its k, about 86\.\d+, is more than the lattice's sums can reach")
+
+
+def test_a_k_without_neighbours_says_so_in_assess():
+    expect(["assess", "wendland_c2", "fcc", "--k", "0.2"], 3,
+           r"^sphkern: error: k = 0\.2: no neighbour lies inside the support, so no SPH force holds a particle")
