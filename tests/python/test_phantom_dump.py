@@ -200,8 +200,7 @@ def test_a_dump_without_bounds_is_free(tmp_path):
 @pytest.mark.parametrize("small", [False, True])
 def test_splash_reads_the_dump_back_to_the_values_written(tmp_path, small):
     splash = shutil.which("splash")
-    if not splash:
-        pytest.skip("splash is not installed")
+    assert splash, "splash is not installed (the test setup installs it: share/bootstrap.sh)"
     p = particles()
     write_dump(tmp_path / "dump_00000", p, small=small)
     done = subprocess.run([splash, "to", "ascii", "-phantom", "dump_00000"], cwd=tmp_path, stdin=subprocess.DEVNULL,

@@ -17,10 +17,10 @@ using namespace sphkern::test;
 
 namespace {
 
-// rho_i = sum_j m W(|r_ij|, h_i) over every periodic image, the particle itself included.
-double brute_density(const Kernel& kernel, const ParticleSet& set, std::size_t i, double h, double m)
+// sum_j w_j W(|r_ij|, h) over every periodic image, the particle itself included; w_j = 1 without weights.
+double brute_sum(const Kernel& kernel, const ParticleSet& set, std::size_t i, double h, const ParticleValues* weights)
 {
-    const Eigen::Matrix3d& edges = set.box->edges; // columns: the box's edge vectors
+    const Eigen::Matrix3d& edges = set.box->edges;
     double sum = 0;
     for (std::size_t j = 0; j < set.size(); ++j)
         for (int a = -1; a <= 1; ++a)
@@ -28,9 +28,15 @@ double brute_density(const Kernel& kernel, const ParticleSet& set, std::size_t i
                 for (int c = -1; c <= 1; ++c) {
                     const Eigen::Vector3d r = Eigen::Vector3d(set.x[j] - set.x[i], set.y[j] - set.y[i], set.z[j] - set.z[i]) +
                                               edges * Eigen::Vector3d(a, b, c);
-                    sum += kernel.w_truncated(r.norm() / h, 3, h) / (h * h * h);
+                    sum += (weights ? (*weights)[j] : 1.0) * kernel.w_truncated(r.norm() / h, 3, h) / (h * h * h);
                 }
-    return m * sum;
+    return sum;
+}
+
+// rho_i = sum_j m W(|r_ij|, h_i) over every periodic image, the particle itself included.
+double brute_density(const Kernel& kernel, const ParticleSet& set, std::size_t i, double h, double m)
+{
+    return m * brute_sum(kernel, set, i, h, nullptr);
 }
 
 } // namespace
@@ -74,21 +80,6 @@ TEST_CASE("SWIFT's eta on an fcc block gives every particle the k that eps --cod
 
 namespace {
 
-// sum_j w_j W(|r_ij|, h) over every periodic image, the particle itself included; w_j = 1 without weights.
-double brute_sum(const Kernel& kernel, const ParticleSet& set, std::size_t i, double h, const ParticleValues* weights)
-{
-    const Eigen::Matrix3d& edges = set.box->edges;
-    double sum = 0;
-    for (std::size_t j = 0; j < set.size(); ++j)
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b)
-                for (int c = -1; c <= 1; ++c) {
-                    const Eigen::Vector3d r = Eigen::Vector3d(set.x[j] - set.x[i], set.y[j] - set.y[i], set.z[j] - set.z[i]) +
-                                              edges * Eigen::Vector3d(a, b, c);
-                    sum += (weights ? (*weights)[j] : 1.0) * kernel.w_truncated(r.norm() / h, 3, h) / (h * h * h);
-                }
-    return sum;
-}
 
 // Particle i's h by its code's own rule, bisected here on [h0 / 4, 4 h0]: by mass
 // h = c (m_i / sum_j m_j W_ij)^(1/3) (Phantom's rhoh in part.F90; GADGET-4's NumNgb from the
