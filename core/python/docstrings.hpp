@@ -155,7 +155,11 @@ kmax : float, default 2.0
 epsilon : float, default 0.01
     The tolerance of condition (22).
 gamma : float, default 5/3
-    The adiabatic index of the stability analysis.
+    The adiabatic index of the stability analysis (an ideal gas at rest).
+coef_sound : float, optional
+    With a weakly compressible code ("dualsphysics", "pysph"): its sound speed over
+    sqrt(g H), whose hydrostatic pressure at rest, up to rho c^2 / coef_sound^2, the stability
+    assumes; default the code's (20, 10 sqrt(2)).
 horizon : float, default 100
     The growth time, in d/c, that separates weak instabilities from unstable ones.
 a_p : str or float, default "voronoi"
@@ -170,7 +174,8 @@ params : dict, optional
 Returns
 -------
 dict
-    The document of `assess --json`: eps (as `eps --json`, with code), condition_22
+    The document of `assess --json`: eps (as `eps --json`, with code), pressure (the model at
+    rest the stability assumes), condition_22
     (epsilon, holds, margin), stability (per h model: verdict, growth_time and mode where a
     mode grows), window, recommended (found, k, interval, and code), verdict (the line).
 

@@ -417,8 +417,8 @@ void bind_assess(py::module_& m, const Guard& guard)
         "assess",
         [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
            std::optional<std::string> code, std::optional<double> value, double kmin, double kmax, double epsilon,
-           double gamma, double horizon, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
-           const OptionalParams& params) -> py::dict {
+           double gamma, std::optional<double> coef_sound, double horizon, const NameOrNumber& a_p,
+           const OptionalSequence& gravity, int site, const OptionalParams& params) -> py::dict {
             AssessRequest request;
             if (k.has_value() == (code.has_value() || value.has_value()))
                 fail_input("give k, or code and value (a code's own setting)");
@@ -426,7 +426,7 @@ void bind_assess(py::module_& m, const Guard& guard)
             if (k) request.setting.k = {*k};
             if (code) request.setting.code = CodeSetting{*code, *value};
             request.window_min = kmin, request.window_max = kmax;
-            request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon;
+            request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
             AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
                                    ValueSource::argument("code"), ValueSource::argument("value")},
                                   ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
@@ -444,8 +444,9 @@ void bind_assess(py::module_& m, const Guard& guard)
         },
         py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
         py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,
-        py::arg("gamma") = 5.0 / 3.0, py::arg("horizon") = default_horizon, py::arg("a_p") = "voronoi",
-        py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), doc::assess, guard);
+        py::arg("gamma") = 5.0 / 3.0, py::arg("coef_sound") = py::none(), py::arg("horizon") = default_horizon,
+        py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
+        doc::assess, guard);
 }
 
 // Linear stability through the one stability request.

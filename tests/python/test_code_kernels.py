@@ -61,3 +61,14 @@ def test_pysph_takes_a_users_expression_kernel(tmp_path):
     out = run("eps", "mine", "square", "--plugin", str(kernel), "--code", "pysph", "--hdx", "1.2")
     assert out.returncode == 0, out.stderr
     assert "mine: pysph does not ship it" in out.stderr and "taken as a user's kernel, which PySPH accepts" in out.stderr
+
+
+def test_python_assess_takes_the_codes_rest_pressure():
+    # As `assess --code dualsphysics --coef-sound 10`: the same JSON's pressure and verdict.
+    ours = sphkern.assess("wendland_c2", "sc", code="dualsphysics", value=1.0, coef_sound=10)
+    assert ours["pressure"]["model"] == "tait" and ours["pressure"]["p0_over_rho_c2"] == pytest.approx(0.01, rel=1e-15)
+    cli = run("assess", "wendland_c2", "sc", "--code", "dualsphysics", "--coefh", "1.0", "--coef-sound", "10", "--json")
+    import json
+    assert json.loads(cli.stdout)["verdict"] == ours["verdict"]
+    with pytest.raises(ValueError, match="coef_sound: 10: the sound speed over sqrt"):
+        sphkern.assess("wendland_c2", "sc", code="swift", value=1.2, coef_sound=10)
