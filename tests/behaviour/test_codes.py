@@ -66,3 +66,9 @@ def test_a_setting_past_the_lattices_reach_names_the_option():
 def test_a_k_without_neighbours_says_so_in_assess():
     expect(["assess", "wendland_c2", "fcc", "--k", "0.2"], 3,
            r"^sphkern: error: k = 0\.2: no neighbour lies inside the support, so no SPH force holds a particle")
+
+
+def test_coef_sound_out_of_range_names_the_option():
+    for value in ("0.5", "2000", "nan"):
+        expect(["assess", "wendland_c2", "sc", "--code", "dualsphysics", "--coefh", "1.0", "--coef-sound", value], 2,
+               r"^sphkern: error: --coef-sound: .*: expected a number in \[1, 1000\]$")
