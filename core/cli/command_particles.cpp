@@ -2,7 +2,7 @@
 // block, a Poisson set or a file), per particle and as statistics.
 #include "cli/code_options.hpp"
 #include "cli/command.hpp"
-#include "cli/source_options.hpp"
+#include "cli/particles_command.hpp"
 
 #include "codes/code_table.hpp"
 #include "particles/particles_memory.hpp"
@@ -24,17 +24,6 @@
 namespace sphkern::cli {
 
 namespace {
-
-struct ParticlesOptions : CommonOptions, SourceOptions {
-    std::string kernel, gravity, volume, csv, vtk;
-    std::vector<std::string> sets;
-    std::vector<double> h_over_l_range, nh_range, eta_range;
-    double depth = 1, memory_limit = 0;
-    std::optional<double> h_over_l, eta, nh, k, support_per_h, rho0;
-    SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
-    int steps = 10, threads = 0;
-    std::size_t histogram = 0;
-};
 
 std::optional<std::array<double, 2>> range_of(const std::vector<double>& values)
 {
@@ -66,6 +55,10 @@ void add_options(Command c, ParticlesOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
+    c.add_option("more", o.more, "Further snapshots of the run: the files (or folders) are measured as a series, ordered by "
+                                 "the times in their headers");
+    c.add_flag("--keep-going", o.keep_going, "Series: report a snapshot that fails and go on with the rest");
+    c.add_option("--plot", o.plot, "Series: draw the errors against time (median, p1 to p99) as .svg, .png or .pdf");
     c.add_option("--h-over-l", o.h_over_l, "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a "
                                            "file h)");
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
@@ -99,28 +92,54 @@ void add_options(Command c, ParticlesOptions& o)
 
 // A snapshot larger than the memory budget, measured slab by slab: the same statistics and
 // CSV as in memory, the CSV streamed in file order as the slabs' results are merged.
-int measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot, ParticleSources& sources,
-                     const std::vector<OutputTarget>& outputs, FileDigest* digest)
+Measured measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot, ParticleSources& sources,
+                          const std::string& csv, const std::string& vtk, const SetCheck& check)
 {
-    const ParticleSet& set = snapshot.sample();
-    check_output_targets(outputs, set.linked_files); // what the file reached through its links
-    if (!o.vtk.empty())
+    Measured m{snapshot.sample(), {}, arguments_of(o, sources)};
+    if (check) check(m.set);
+    if (!vtk.empty())
         throw Error(ExitCode::input, fmt::format("--vtk {}: {} is measured in slabs (over the memory budget), whose "
                                                  "per-particle values are written as --csv only",
-                                                 o.vtk, set.name));
-    const auto arguments = arguments_of(o, sources);
-    const ParticleRequest request = particle_request(arguments, kernel, set, sources);
-    ParticleAnswer answer;
-    if (o.csv.empty()) answer = analyse_particles_in_slabs(kernel, snapshot, request, {});
+                                                 vtk, m.set.name));
+    const ParticleRequest request = particle_request(m.arguments, kernel, m.set, sources);
+    if (csv.empty()) m.answer = analyse_particles_in_slabs(kernel, snapshot, request, {});
     else
-        write_file_atomically(o.csv, [&](std::ostream& out) {
-            ParticleCsvRows csv(out, set.dimension, worker_threads(o.threads));
-            answer = analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& rows) { csv.write(rows); });
+        write_file_atomically(csv, [&](std::ostream& out) {
+            ParticleCsvRows rows(out, m.set.dimension, worker_threads(o.threads));
+            m.answer = analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& r) { rows.write(r); });
         });
-    if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel, digest));
-    else print_particle_answer(results_file(), kernel, set, answer, arguments);
-    return 0;
+    return m;
 }
+
+} // namespace
+
+// One source measured, in memory or in slabs, its per-particle values written to `csv` and `vtk`
+// (either may be empty).
+Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const std::vector<OutputTarget>& outputs,
+                        const std::string& csv, const std::string& vtk, const SetCheck& check)
+{
+    PhaseTimes phases;
+    auto sources = particle_sources(FrontEnd::command_line);
+    check_threads(o.threads, sources.threads); // the set is read on them
+    if (const auto snapshot = snapshot_in_slabs(source_of(o), source_sources(FrontEnd::command_line))) {
+        check_output_targets(outputs, snapshot->sample().linked_files); // what the file reached through its links
+        return measure_in_slabs(o, kernel, *snapshot, sources, csv, vtk, check);
+    }
+    Measured m{load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads), {}, arguments_of(o, sources)};
+    phases.lap("read");
+    check_output_targets(outputs, m.set.linked_files); // what the file reached through its links
+    if (check) check(m.set);
+    m.answer = analyse_particles(kernel, m.set, particle_request(m.arguments, kernel, m.set, sources));
+    phases.merge(m.answer.phases);
+    phases.restart();
+    if (!csv.empty()) write_file_atomically(csv, [&](std::ostream& out) { write_particle_csv(out, m.set, m.answer); });
+    if (!vtk.empty()) write_file_atomically(vtk, [&](std::ostream& out) { write_particle_vtk(out, m.set, m.answer); });
+    if (!csv.empty() || !vtk.empty()) phases.lap("write");
+    m.answer.phases = phases;
+    return m;
+}
+
+namespace {
 
 } // namespace
 
@@ -136,25 +155,14 @@ Action add_particles_command(Command app)
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
-        PhaseTimes phases;
-        auto sources = particle_sources(FrontEnd::command_line);
-        check_threads(o.threads, sources.threads); // the set is read on them
+        if (!o.more.empty() || std::filesystem::is_directory(o.source))
+            return measure_series(o, kernel, command);
+        if (!o.plot.empty())
+            throw Error(ExitCode::usage, "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
         const auto digest = o.json ? start_source_digest(o) : nullptr;
-        if (const auto snapshot = snapshot_in_slabs(source_of(o), source_sources(FrontEnd::command_line)))
-            return measure_in_slabs(o, kernel, *snapshot, sources, outputs, digest.get());
-        const ParticleSet set = load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads);
-        phases.lap("read");
-        check_output_targets(outputs, set.linked_files); // what the file reached through its links
-        const auto arguments = arguments_of(o, sources);
-        ParticleAnswer answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, sources));
-        phases.merge(answer.phases);
-        phases.restart();
-        if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
-        if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
-        if (!outputs.empty()) phases.lap("write");
-        answer.phases = phases;
-        if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel, digest.get()));
-        else print_particle_answer(results_file(), kernel, set, answer, arguments);
+        const Measured m = measure_source(o, kernel, outputs, o.csv, o.vtk);
+        if (o.json) print_json(particle_answer_json(kernel, m.set, m.answer, m.arguments), source_inputs(o, kernel, digest.get()));
+        else print_particle_answer(results_file(), kernel, m.set, m.answer, m.arguments);
         return 0;
     };
 }

@@ -41,6 +41,9 @@ struct ParticleSet {
     // The kernel that convention belongs to: as the file names it ("Wendland C2") and as
     // sphkern does ("wendland_c2", empty if sphkern ships no such kernel); empty if not said.
     std::string file_kernel, file_kernel_name;
+    // The simulation time the file's header gives (SWIFT and GADGET /Header Time, PySPH's
+    // solver_data t, GADGET's binary header, Phantom's time); none for other sets.
+    std::optional<double> time;
     double spacing = 0;         // a lattice's nearest-neighbour distance d, 0 for other sets
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -1); // the lattice's, else -y (2D) or -z (3D)
 

@@ -61,6 +61,14 @@ std::string terminal(const std::string& format, int width, int height)
     return fmt::format("set terminal svg size {},{} enhanced font 'sans,11' background '#ffffff'", width, height);
 }
 
+std::string last_line(const std::string& text)
+{
+    const auto end = text.find_last_not_of(" \n\r\t");
+    if (end == std::string::npos) return "no message";
+    const auto start = text.find_last_of('\n', end);
+    return text.substr(start == std::string::npos ? 0 : start + 1, end + 1 - (start == std::string::npos ? 0 : start + 1));
+}
+
 } // namespace
 
 // Keeps the script beside the figure and runs gnuplot inside the folder (no shell: an
@@ -83,8 +91,8 @@ void render_figure(const fs::path& folder, const std::string& name, int width, i
             throw Error(ExitCode::output, fmt::format("gnuplot did not finish {} within {} s", script_file.string(),
                                                       gnuplot_timeout_seconds));
         if (run.exit_status != 0) {
-            std::string reason = run.signal ? fmt::format("killed by signal {}", run.signal)
-                                            : run.output.substr(0, run.output.find('\n'));
+            // gnuplot's message starts with a blank line and the line at fault; its reason is last.
+            std::string reason = run.signal ? fmt::format("killed by signal {}", run.signal) : last_line(run.output);
             throw Error(ExitCode::output, "gnuplot failed on " + script_file.string() + " (" + format + "): " + reason);
         }
     }

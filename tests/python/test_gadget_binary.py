@@ -35,11 +35,11 @@ def particles():
     }
 
 
-def header_bytes(npart, mass, npart_total, num_files, box, endian):
+def header_bytes(npart, mass, npart_total, num_files, box, endian, time=0.0):
     """struct io_header of GADGET-2's allvars.h: 256 bytes."""
     total = [n & 0xFFFFFFFF for n in npart_total]
     high = [n >> 32 for n in npart_total]
-    return struct.pack(endian + "6i6d2d2i6I2i4d2i6Ii60x", *npart, *mass, 0.0, 0.0, 0, 0, *total, 0, num_files,
+    return struct.pack(endian + "6i6d2d2i6I2i4d2i6Ii60x", *npart, *mass, time, 0.0, 0, 0, *total, 0, num_files,
                        box, 0.3, 0.7, 0.7, 0, 0, *high, 0)
 
 
@@ -50,7 +50,7 @@ def record(f, payload, endian):
 
 
 def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtype, endian, snap_format,
-                      gas_blocks=("U", "RHO", "HSML")):
+                      gas_blocks=("U", "RHO", "HSML"), time=0.0):
     """One file as write_file writes it: the header, then POS, VEL, ID, MASS (types whose
     MassTable entry is 0), U, RHO, HSML (gas), each block only where it holds particles, the
     types in order 0..5 in every block; SnapFormat 2 puts a labelled 8-byte record before each."""
@@ -70,7 +70,7 @@ def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtyp
         for label in gas_blocks:
             blocks.append((label, types[0][label.lower()].astype(real)))
     with open(path, "wb") as f:
-        head = header_bytes(npart, mass_table, npart_total, num_files, box, endian)
+        head = header_bytes(npart, mass_table, npart_total, num_files, box, endian, time)
         if snap_format == 2:
             record(f, b"HEAD" + struct.pack(endian + "i", len(head) + 8), endian)
         record(f, head, endian)
@@ -81,7 +81,7 @@ def write_gadget_file(path, types, mass_table, npart_total, num_files, box, dtyp
             record(f, data, endian)
 
 
-def write_snapshot(base, p, files=1, dtype="f4", endian="<", snap_format=1, table_mass=False):
+def write_snapshot(base, p, files=1, dtype="f4", endian="<", snap_format=1, table_mass=False, time=0.0):
     """The particles as a snapshot of `files` files (BASE, or BASE.0, BASE.1); returns the path
     of its first file."""
     gas_mass = np.full(N_GAS, p["gas_mass"][0]) if table_mass else p["gas_mass"]
@@ -92,12 +92,13 @@ def write_snapshot(base, p, files=1, dtype="f4", endian="<", snap_format=1, tabl
     dark = {"pos": p["dark_pos"], "vel": p["dark_vel"], "id": ids[N_GAS:], "mass": p["dark_mass"]}
     total = [N_GAS, N_DARK, 0, 0, 0, 0]
     if files == 1:
-        write_gadget_file(base, [gas, dark, None, None, None, None], mass_table, total, 1, L, dtype, endian, snap_format)
+        write_gadget_file(base, [gas, dark, None, None, None, None], mass_table, total, 1, L, dtype, endian, snap_format,
+                          time=time)
         return str(base)
     cuts = ((0, SPLIT[0]), (0, SPLIT[1])), ((SPLIT[0], N_GAS), (SPLIT[1], N_DARK))
     for k, ((g0, g1), (d0, d1)) in enumerate(cuts):
         part = [{key: v[g0:g1] for key, v in gas.items()}, {key: v[d0:d1] for key, v in dark.items()}, None, None, None, None]
-        write_gadget_file(f"{base}.{k}", part, mass_table, total, 2, L, dtype, endian, snap_format)
+        write_gadget_file(f"{base}.{k}", part, mass_table, total, 2, L, dtype, endian, snap_format, time=time)
     return f"{base}.0"
 
 

@@ -46,7 +46,7 @@ def codes(real):
     return ["i4", "i1", "i2", "i4", "i8", real, "f4", "f8"]
 
 
-def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), fileid=None, lower=0.0):
+def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), fileid=None, lower=0.0, time=0.0):
     """A dump as write_fulldump (FT, default real*8) or write_smalldump (ST, every real as
     real*4) writes it: the magic numbers, the file id, the header of 8 typed sections (count,
     tags, values), the number of blocks, the block headers, then the arrays of each block by
@@ -71,7 +71,7 @@ def write_dump(path, p, small=False, endian="<", types=None, box=True, drop=(), 
         [], [],
         [("iexternalforce", 0), ("ieos", 1)],  # write_headeropts_eos then puts gamma first among the reals
         [("nparttot", n), ("ntypes", MAXTYPES)] + [("npartoftype", k) for k in npartoftype],
-        [("gamma", 1.0), ("time", 0.0), ("dtmax", 0.1), ("rhozero", 1.0), ("hfact", HFACT), ("tolh", 1e-4), ("C_cour", 0.3),
+        [("gamma", 1.0), ("time", time), ("dtmax", 0.1), ("rhozero", 1.0), ("hfact", HFACT), ("tolh", 1e-4), ("C_cour", 0.3),
          ("C_force", 0.25), ("alpha", 1.0), ("alphau", 1.0), ("alphaB", 1.0)]
         + [("massoftype", m) for m in massoftype] + [("Bextx", 0.0), ("Bexty", 0.0), ("Bextz", 0.0), ("dum", 0.0)]
         + ([(f"{a}{end}", lower + side) for a in "xyz" for end, side in (("min", 0.0), ("max", 1.0))] if box else [])

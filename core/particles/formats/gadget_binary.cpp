@@ -31,13 +31,13 @@ struct GadgetHeader {
     std::array<double, types> mass{};              // the MassTable: 0 where the MASS block holds the masses
     std::array<std::uint32_t, types> total{}, high{}; // npartTotal and npartTotalHighWord
     std::int32_t num_files = 0;
-    double box = 0;
+    double time = 0, box = 0;
 
     std::uint64_t gas_total() const { return total[0] + (std::uint64_t{high[0]} << 32); }
 };
 
 // Byte offsets in the 256-byte header.
-constexpr std::size_t npart_at = 0, mass_at = 24, total_at = 96, num_files_at = 124, box_at = 128, high_at = 168;
+constexpr std::size_t npart_at = 0, mass_at = 24, time_at = 72, total_at = 96, num_files_at = 124, box_at = 128, high_at = 168;
 
 GadgetHeader read_header(const GadgetRecords& f)
 {
@@ -57,6 +57,7 @@ GadgetHeader read_header(const GadgetRecords& f)
     }
     h.num_files = static_cast<std::int32_t>(f.word(bytes, num_files_at));
     h.box = f.real(bytes, box_at);
+    h.time = f.real(bytes, time_at);
     if (!std::isfinite(h.mass[0]) || h.mass[0] < 0)
         fail_input(fmt::format("{}: its header's MassTable[0] is negative or not a finite number; expected the gas particles' "
                                "mass, or 0 where the MASS block holds them",
@@ -295,6 +296,7 @@ ParticleSet read_gadget_binary_particles(const std::filesystem::path& file, cons
         box.edges = Eigen::Matrix3d::Identity() * h.box;
         set.box = box;
     }
+    if (std::isfinite(h.time)) set.time = h.time;
     // GADGET's HSML is the radius where its kernel reaches zero.
     set.support_per_h = 1;
     if (parts.size() > 1)

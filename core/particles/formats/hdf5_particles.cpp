@@ -173,6 +173,8 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
         inputs = snapshot.sample().linked_files;
     } else if (f.exists("/particles")) {
         set = read_pysph(f, options.array);
+        // PySPH's dump keeps the solver's time as the attribute t of /solver_data.
+        if (const auto t = f.attribute("/solver_data", "t"); !t.empty()) set.time = t[0];
     } else {
         fail_input(name + ": neither /PartType0 (SWIFT, GADGET) nor /particles (PySPH); expected a particle snapshot");
     }

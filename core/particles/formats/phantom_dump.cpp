@@ -287,6 +287,7 @@ ParticleSet read_phantom_dump_particles(const std::filesystem::path& file, const
                                static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
     ParticleSet set;
     set.name = file.string();
+    set.time = header.real("time");
     const bool with_h = std::all_of(blocks.begin(), blocks.end(), [](const HydroBlock& b) { return b.particles == 0 || b.h.record; });
     std::uint64_t row = 0;
     bool skipped = false;

@@ -85,6 +85,7 @@ SnapshotPart snapshot_part(const File& f)
         if (set.dimension == 2) b.edges(2, 2) = 1;
         set.box = b;
     }
+    if (const auto time = f.attribute("/Header", "Time"); !time.empty()) set.time = time[0];
     const auto gamma = f.attribute("/HydroScheme", "Kernel gamma");
     if (!gamma.empty()) set.support_per_h = gamma[0];
     // GADGET's SmoothingLength is the radius where its kernel reaches zero.
