@@ -7,6 +7,7 @@
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -31,6 +32,15 @@ double frobenius_norm(const std::array<double, 6>& E, int dimension)
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Of a symmetric tensor's top-left D x D block: closed forms (Eigen's computeDirect in 3D).
+double smallest_eigenvalue(const Eigen::Matrix3d& T, int dimension)
+{
+    if (dimension == 2) return 0.5 * (T(0, 0) + T(1, 1)) - std::hypot(0.5 * (T(0, 0) - T(1, 1)), T(0, 1));
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(T, Eigen::EigenvaluesOnly);
+    return solver.eigenvalues()(0);
+}
 
 // A per-particle input in the grid's point order, or its one value when every particle has it.
 struct PointInputs {
@@ -210,6 +220,7 @@ struct Sweep {
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
         scalars.eps_gradp = g.dot(T * g);
+        scalars.lambda_min = smallest_eigenvalue(T, dim) + 1;
         const Eigen::Vector3d e1v(out.e1[0], out.e1[1], out.e1[2]);
         scalars.eps_gradp_sum = scalars.eps_gradp + 2 * in.depth * e1v.dot(g);
         scalars.neighbours = static_cast<int>(n);

@@ -48,13 +48,16 @@ struct MeasureInputs {
 struct MeasureRecord {
     double e0, eps_gradp, eps_gradp_sum;
     double e1_norm, m1_norm, E_norm; // |e1|, |m1| and ||E||_F
+    // The smallest eigenvalue of I + E, the first-order correction matrix sum_j V_j r_ij ⊗ ∇_i W_ij:
+    // 1 inside a fluid, about 0.5 on a free surface (Marrone et al. 2010 call <= 0.75 near one).
+    double lambda_min;
     int neighbours;                  // j != i inside the support
 };
 
 // Every array is written by the threads of the sums (first touch), one value per measured
 // particle (ParticleSet::measured: the neighbours-only particles have none; in a slab, only
 // the particles of its own rows have theirs).
-// The statistics need only the scalars (56 bytes a particle without masses); the vectors and
+// The statistics need only the scalars (64 bytes a particle without masses); the vectors and
 // the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {
     FirstTouchVector<MeasureRecord> scalars;

@@ -407,7 +407,12 @@ def test_assess_on_a_file_of_an_fcc_block_gives_the_lattice_verdict(tmp_path):
             assert abs(particles["statistics"][name][stat] - lattice[name]) < 1e-9, (name, stat)
     assert not doc["condition_22"]["holds"]
     assert abs(doc["condition_22"]["margin"] - (0.01 - abs(lattice["eps_gradp"]))) < 1e-9
-    assert doc["verdict"].startswith("swift eta 1.2348 with wendland_c2 on ") and "inaccurate (98% of |eps_gradP|" in doc["verdict"]
+    assert doc["verdict"].startswith("swift eta 1.2348 with wendland_c2 on ")
+    assert "inaccurate (98% of the interior's |eps_gradp|" in doc["verdict"] and "fcc, bcc or sc lattice" in doc["verdict"]
+    # A periodic lattice has no surface: every particle is interior, with I + E = (1 + eps_gradP) I.
+    assert doc["interior"]["particles"] == 500 and doc["surface"]["particles"] == 0
+    for stat in ("min", "max"):
+        assert abs(doc["interior"]["lambda_min"][stat] - (1 + lattice["eps_gradp"])) < 1e-9
     assert doc["stability"] is None
     # A lattice's options on a file, and a file without a code's setting, are refused.
     for args, message in ((["--k", "1.2"], "--k needs a lattice"), ([], "a code's setting is assessed; expected --code")):

@@ -1,0 +1,94 @@
+"""`assess` on a particle file judges each particle against its own density and tells the
+interior from the free surface: lambda_min, the smallest eigenvalue of the first-order
+correction matrix L_i = sum_j V_j r_ij (x) grad_i W_ij (Marrone et al. 2010), above 0.75 is
+interior. Checked against L, e0 and eps_gradp summed here by brute force with the 2D cubic
+spline written out (PySPH's CubicSpline, support 2h), and percentiles as numpy takes them
+(linear between order statistics). Run by ctest with SPHKERN_CLI set."""
+import json
+import os
+import subprocess
+
+import numpy as np
+
+CLI = os.environ["SPHKERN_CLI"]
+H = 1.2  # the stored h, spacing 1
+
+
+def cubic(r, h):
+    """PySPH's 2D CubicSpline: W and dW/dr."""
+    q, s = r / h, 10 / (7 * np.pi * h * h)
+    w = np.where(q < 1, 1 - 1.5 * q**2 + 0.75 * q**3, np.where(q < 2, 0.25 * (2 - q) ** 3, 0))
+    dw = np.where(q < 1, -3 * q + 2.25 * q**2, np.where(q < 2, -0.75 * (2 - q) ** 2, 0))
+    return s * w, s * dw / h
+
+
+def brute(x, volume):
+    """e0, eps_gradp (gravity -y) and lambda_min of every particle of a free set."""
+    e0, gradp, lam = [], [], []
+    for i in range(len(x)):
+        r = x - x[i]  # r_ij = x_j - x_i
+        d = np.hypot(r[:, 0], r[:, 1])
+        w, dw = cubic(d, H)
+        e0.append(np.sum(volume * w) - 1)
+        near = d > 0
+        # grad_i W_ij = -W'(r) r_ij / r
+        grad = -(dw[near] / d[near])[:, None] * r[near]
+        L = np.einsum("j,ja,jb->ab", volume[near], r[near], grad)
+        gradp.append(L[1, 1] - 1)
+        lam.append(np.linalg.eigvalsh(L)[0])
+    return np.array(e0), np.array(gradp), np.array(lam)
+
+
+def write_csv(path, x, m, rho):
+    with open(path, "w") as f:
+        f.write("x,y,h,m,rho\n")
+        for p, mm, r in zip(x, m, rho):
+            f.write(f"{p[0]!r},{p[1]!r},{H!r},{mm!r},{r!r}\n")
+
+
+def assess(path, *args):
+    done = subprocess.run([CLI, "assess", "cubic_bspline", str(path), "--code", "pysph", *args, "--json"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def square_block(n):
+    return np.stack(np.meshgrid(np.arange(n, dtype=float), np.arange(n, dtype=float), indexing="ij"), -1).reshape(-1, 2)
+
+
+def test_interior_and_free_surface_are_told_apart_by_the_correction_matrix(tmp_path):
+    x = square_block(14)
+    write_csv(tmp_path / "block.csv", x, np.ones(len(x)), np.ones(len(x)))
+    doc = assess(tmp_path / "block.csv")
+    e0, gradp, lam = brute(x, np.ones(len(x)))
+    inside = lam > 0.75
+    assert 0 < inside.sum() < len(x)
+    assert doc["interior"]["particles"] == inside.sum() and doc["surface"]["particles"] == (~inside).sum()
+    for region, mask in (("interior", inside), ("surface", ~inside)):
+        for name, values in (("e0", e0), ("eps_gradp", gradp), ("lambda_min", lam)):
+            got = doc[region][name]
+            for stat, q in (("p1", 1), ("p50", 50), ("p99", 99)):
+                assert abs(got[stat] - np.percentile(values[mask], q)) < 1e-12, (region, name, stat)
+            assert abs(got["min"] - values[mask].min()) < 1e-12 and abs(got["max"] - values[mask].max()) < 1e-12
+    # The corners are the surface's lowest; the verdict is the interior's.
+    assert doc["surface"]["lambda_min"]["min"] < 0.5
+    worst = max(abs(np.percentile(v[inside], q)) for v in (e0, gradp) for q in (1, 99))
+    assert abs(doc["condition_22"]["margin"] - (0.01 - worst)) < 1e-12
+
+
+def test_each_particle_is_judged_against_its_own_density(tmp_path):
+    """SWIFT's SquareTest: one lattice, masses 4:1 in a central square, each particle's density
+    m / V. The global mean density is no particle's: eps_rho against it is large, while the
+    verdict (e0, eps_gradp of the interior) is the equal-mass set's."""
+    n = 16
+    x = square_block(n)
+    heavy = (np.abs(x[:, 0] - n / 2 + 0.5) < n / 4) & (np.abs(x[:, 1] - n / 2 + 0.5) < n / 4)
+    m = np.where(heavy, 4.0, 1.0)
+    write_csv(tmp_path / "square.csv", x, m, m)  # V = m / rho = 1
+    write_csv(tmp_path / "equal.csv", x, np.ones(len(x)), np.ones(len(x)))
+    box = ("--box", f"{n},{n}")
+    two, one = assess(tmp_path / "square.csv", *box), assess(tmp_path / "equal.csv", *box)
+    assert two["surface"]["particles"] == 0
+    assert max(abs(two["particles"]["statistics"]["eps_rho"][s]) for s in ("p1", "p99")) > 0.3
+    assert two["condition_22"] == one["condition_22"] and two["interior"] == one["interior"]
