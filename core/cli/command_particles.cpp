@@ -13,6 +13,7 @@
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
+#include "support/io/vtk_format.hpp"
 
 #include <fmt/format.h>
 
@@ -91,7 +92,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--threads", o.threads, "Threads (default: every core)");
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
-    c.add_option("--vtk", o.vtk, "Write the per-particle values as a legacy VTK file (ParaView)");
+    c.add_option("--vtk", o.vtk, "Write the per-particle values for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -134,6 +135,7 @@ Action add_particles_command(Command app)
         set_memory_budget(o.memory_limit, value_named(FrontEnd::command_line, "memory_limit"));
         const auto outputs = given_outputs(command, {{"--csv", o.csv}, {"--vtk", o.vtk}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
+        const auto vtk_format = o.vtk.empty() ? VtkFormat::legacy : vtk_format_of(o.vtk, "--vtk");
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         PhaseTimes phases;
@@ -150,7 +152,11 @@ Action add_particles_command(Command app)
         phases.merge(answer.phases);
         phases.restart();
         if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { write_particle_csv(out, set, answer); });
-        if (!o.vtk.empty()) write_file_atomically(o.vtk, [&](std::ostream& out) { write_particle_vtk(out, set, answer); });
+        if (!o.vtk.empty())
+            write_file_atomically(o.vtk, [&](std::ostream& out) {
+                if (vtk_format == VtkFormat::xml) write_particle_vtu(out, set, answer);
+                else write_particle_vtk(out, set, answer);
+            });
         if (!outputs.empty()) phases.lap("write");
         answer.phases = phases;
         if (o.json) print_json(particle_answer_json(kernel, set, answer, arguments), source_inputs(o, kernel, digest.get()));
