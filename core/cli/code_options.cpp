@@ -117,4 +117,19 @@ std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
     return {ValueSource::option("--code"), ValueSource::option(option_of(parameter))};
 }
 
+void set_neighbour_count(CodeSetting& setting, const std::string& neighbours_by)
+{
+    if (neighbours_by.empty()) return;
+    if (neighbours_by != "number" && neighbours_by != "mass")
+        throw Error(ExitCode::usage, fmt::format("--neighbours-by {}: expected number or mass", neighbours_by));
+    setting.counts = neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+}
+
+void refuse_neighbour_count_without_code(const std::string& neighbours_by)
+{
+    if (!neighbours_by.empty())
+        throw Error(ExitCode::usage, "--neighbours-by chooses what a code's density solve counts; expected --code with its "
+                                     "parameter (h solved on the set)");
+}
+
 } // namespace sphkern::cli

@@ -45,6 +45,11 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& codes, const
 // --eta without --code: refused, naming sphkern's own --h-over-l (SWIFT's eta is a code's setting).
 void refuse_eta_without_code(const SettingOptions& codes, const std::optional<double>& eta);
 
+// --neighbours-by number|mass beside --code with its parameter (the count of the code's
+// density solve); Error(usage) for another word, or without a code's parameter.
+void set_neighbour_count(CodeSetting& setting, const std::string& neighbours_by);
+void refuse_neighbour_count_without_code(const std::string& neighbours_by);
+
 // "--code" and the code's parameter ("--eta"), for the request's errors.
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& options);
 

@@ -15,7 +15,7 @@ namespace sphkern::cli {
 namespace {
 
 struct AssessOptions : CommonOptions {
-    std::string kernel, lattice, box, array;
+    std::string kernel, lattice, box, array, neighbours_by;
     SettingOptions setting;
     double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound;
@@ -64,6 +64,8 @@ int assess_file(const AssessOptions& o)
     ParticleArguments given;
     const auto choice = code_beside_own_eta(o.setting, std::nullopt);
     name_code(given, choice->code, choice->value);
+    if (given.code) set_neighbour_count(*given.code, o.neighbours_by);
+    else refuse_neighbour_count_without_code(o.neighbours_by);
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
     if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));
     else print_particle_assess(results_file(), kernel, set, given, result);
@@ -94,6 +96,8 @@ Action add_assess_command(Command app)
     add_evaluation_options(command, options->evaluation);
     command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
+    command.add_option("--neighbours-by", options->neighbours_by,
+                       "Particle file: what the code's density solve counts, number or mass (default the code's)");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
@@ -108,8 +112,9 @@ Action add_assess_command(Command app)
                                                              name, options->lattice));
             return assess_file(*options);
         }
-        if (!options->box.empty() || !options->array.empty())
-            throw Error(ExitCode::usage, "--box and --array are for a particle file; expected one, not a lattice");
+        if (!options->box.empty() || !options->array.empty() || !options->neighbours_by.empty())
+            throw Error(ExitCode::usage, "--box, --array and --neighbours-by are for a particle file; expected one, not a "
+                                         "lattice");
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);
         check_assess_request(request, sources);

@@ -5,6 +5,7 @@
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
+#include "support/io/vtk_format.hpp"
 
 #include <memory>
 #include <sstream>
@@ -60,7 +61,7 @@ void add_block_options(Command command, BlockCommandOptions& o)
     command.add_option("--form", o.form, "Gradient form: sum, difference or monaghan").capture_default_str();
     command.add_option("--threads", o.threads, "Threads (default: every core)");
     command.add_option("--ap", o.ap, "Volume coefficient: a name or a positive number").capture_default_str();
-    command.add_option("--vtk", o.vtk, "Write per-particle results as a legacy VTK file (ParaView)");
+    command.add_option("--vtk", o.vtk, "Write per-particle results for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
     command.add_option("--csv", o.csv, "Write per-particle results as CSV");
 }
 
@@ -77,6 +78,7 @@ Action add_block_command(Command app)
     return [options, command] {
         check_output_targets(given_outputs(command, {{"--vtk", options->vtk}, {"--csv", options->csv}}),
                              read_inputs(options->lattice, options->kernel, options->plugins));
+        const auto vtk_format = options->vtk.empty() ? VtkFormat::legacy : vtk_format_of(options->vtk, "--vtk");
         const auto request = request_from(*options);
         const BlockSources sources{ValueSource::option("--size " + options->size), ValueSource::option("--threads"),
                                    ValueSource::option("--k")};
@@ -85,7 +87,10 @@ Action add_block_command(Command app)
         const auto run = run_block(request, sources, kernel, lattice);
         const auto& result = run.result;
         if (!options->vtk.empty())
-            write_file_atomically(options->vtk, [&](std::ostream& o) { write_block_vtk(o, result); });
+            write_file_atomically(options->vtk, [&](std::ostream& o) {
+                if (vtk_format == VtkFormat::xml) write_block_vtu(o, result);
+                else write_block_vtk(o, result);
+            });
         if (!options->csv.empty())
             write_file_atomically(options->csv, [&](std::ostream& o) { write_block_csv(o, result); });
         if (options->json) print_json(block_document(run, kernel, lattice), command_inputs(&kernel, &lattice));

@@ -13,6 +13,7 @@
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
+#include "support/io/vtk_format.hpp"
 
 #include <fmt/format.h>
 
@@ -38,6 +39,8 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
         sources.code.value = code_sources(o.codes).second;
         name_code(a, code->code, code->value);
     }
+    if (a.code) set_neighbour_count(*a.code, o.neighbours_by);
+    else refuse_neighbour_count_without_code(o.neighbours_by);
     if (!o.eta_range.empty())
         throw Error(ExitCode::usage, "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");
     a.smoothing = {o.h_over_l, o.nh, o.k, o.support_per_h};
@@ -68,6 +71,8 @@ void add_options(Command c, ParticlesOptions& o)
                                    "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
                                    "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
     add_code_parameters(c, o.codes);
+    c.add_option("--neighbours-by", o.neighbours_by, "With --code: what its density solve counts, number or mass (default the "
+                                                     "code's; SWIFT's use_mass_weighted_num_ngb is mass)");
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--h-over-l-range", o.h_over_l_range, "Sweep h / l over [A, B]").expected(2);
     c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)").expected(2).hidden();
@@ -84,7 +89,7 @@ void add_options(Command c, ParticlesOptions& o)
     c.add_option("--threads", o.threads, "Threads (default: every core)");
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
-    c.add_option("--vtk", o.vtk, "Write the per-particle values as a legacy VTK file (ParaView)");
+    c.add_option("--vtk", o.vtk, "Write the per-particle values for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -133,7 +138,11 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
     phases.merge(m.answer.phases);
     phases.restart();
     if (!csv.empty()) write_file_atomically(csv, [&](std::ostream& out) { write_particle_csv(out, m.set, m.answer); });
-    if (!vtk.empty()) write_file_atomically(vtk, [&](std::ostream& out) { write_particle_vtk(out, m.set, m.answer); });
+    if (!vtk.empty())
+        write_file_atomically(vtk, [&](std::ostream& out) {
+            if (vtk_format_of(vtk, "--vtk") == VtkFormat::xml) write_particle_vtu(out, m.set, m.answer);
+            else write_particle_vtk(out, m.set, m.answer);
+        });
     if (!csv.empty() || !vtk.empty()) phases.lap("write");
     m.answer.phases = phases;
     return m;
@@ -159,6 +168,7 @@ Action add_particles_command(Command app)
             return measure_series(o, kernel, command);
         if (!o.plot.empty())
             throw Error(ExitCode::usage, "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
+        if (!o.vtk.empty()) vtk_format_of(o.vtk, "--vtk"); // before any work
         const auto digest = o.json ? start_source_digest(o) : nullptr;
         const Measured m = measure_source(o, kernel, outputs, o.csv, o.vtk);
         if (o.json) print_json(particle_answer_json(kernel, m.set, m.answer, m.arguments), source_inputs(o, kernel, digest.get()));

@@ -9,9 +9,11 @@
 #include "particles/tiled_set.hpp"
 #include "requests/relax_report.hpp"
 #include "requests/relax_request.hpp"
+#include "requests/relax_series.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
+#include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
 
 #include <fmt/format.h>
@@ -66,7 +68,8 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's) or .csv");
     c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
-    c.add_option("--history", o.history, "Write the history of the run as CSV");
+    c.add_option("--history", o.history, "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
+                                         "at every step as a ParaView series (F_k.vtu beside F.pvd)");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -84,17 +87,34 @@ void require_box_for_output(const ParticleSet& set, const RelaxOptions& o, Parti
     }
 }
 
+// --history: the steps as CSV, or with a series each step's particles as it ends and the
+// collection last.
+void write_history(const RelaxOptions& o, const std::vector<RelaxStep>& steps, RelaxSeries* series)
+{
+    if (series) series->finish();
+    else write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
+}
+
 // The run; where it diverges, the steps before it (all finite) still go to --history, and the
 // error says so. The set itself is not written: its positions are what diverged.
-RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o)
+RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o, RelaxSeries* series)
 {
     try {
-        return relax_particles(kernel, std::move(set), h, o.settings);
+        if (!series) return relax_particles(kernel, std::move(set), h, o.settings);
+        return relax_particles(kernel, std::move(set), h, o.settings,
+                               [series](const RelaxState& state, const RelaxStep& step) { series->write_step(state, step); });
     } catch (const RelaxDiverged& e) {
         if (o.history.empty()) throw;
-        write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, e.history); });
+        write_history(o, e.history, series);
         throw Error(e.code(), fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, o.history));
     }
+}
+
+// The series' .vtu files against what the run reads; their names differ from each other and
+// from --output (.h5 or .csv) by construction, so each is checked alone.
+void check_series_targets(const RelaxSeries& series, const std::vector<std::string>& inputs)
+{
+    for (const auto& file : series.member_files()) check_output_targets({{"--history", file}}, inputs);
 }
 
 } // namespace
@@ -120,6 +140,11 @@ Action add_relax_command(Command app)
         SmoothingSpec spec = smoothing_spec({o.h_over_l, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
+        std::optional<RelaxSeries> series;
+        if (is_pvd_name(o.history)) {
+            series.emplace(o.history, o.settings.steps);
+            check_series_targets(*series, read_inputs(o.source, o.kernel, o.plugins));
+        }
         if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"));
         if (!o.tile.empty() && o.output.empty())
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
@@ -130,12 +155,13 @@ Action add_relax_command(Command app)
         if (code) check_relax_code(*code, o.output, kernel, set.dimension, {code_source, value_source});
         if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, {code_source, value_source});
         check_output_targets(outputs, set.linked_files); // what the file reached through its links
+        if (series) check_series_targets(*series, set.linked_files);
         const double h = relax_h(spec, set, kernel, sources.smoothing);
         // A CSV file holds any rectangular box; an HDF5 file the box of the code's layout.
         if (!o.output.empty())
             require_box_for_output(set, o, o.output.ends_with(".csv") ? ParticleLayout::swift : relax_layout(code));
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
-        const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o);
+        const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o, series ? &*series : nullptr);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
         std::string wrote; // what --output wrote, and where, said beside the results
         nlohmann::json wrote_json;
@@ -151,8 +177,7 @@ Action add_relax_command(Command app)
             wrote = fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout);
             wrote_json = {{"file", where}, {"particles", out.size()}, {"layout", layout}};
         }
-        if (!o.history.empty())
-            write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
+        if (!o.history.empty()) write_history(o, run.history, series ? &*series : nullptr);
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);
             if (code) document["code"] = relax_code_json(*code);

@@ -6,7 +6,9 @@
 #include "requests/particles_report.hpp"
 #include "requests/particles_series.hpp"
 #include "support/error.hpp"
+#include "support/io/atomic_file.hpp"
 #include "support/io/results_output.hpp"
+#include "support/io/vtk_xml.hpp"
 #include "support/process/progress.hpp"
 #include "study/gnuplot.hpp"
 
@@ -63,6 +65,16 @@ void draw_series(const std::string& plot, const std::string& script)
     if (ec) throw Error(ExitCode::output, fmt::format("--plot {}: cannot put the figure in place ({})", plot, ec.message()));
 }
 
+// NAME.pvd: one entry per snapshot measured, at its time (its place in the series without times).
+void write_collection(const std::string& pvd, const std::vector<SeriesSnapshot>& series, bool by_time)
+{
+    std::vector<PvdEntry> entries;
+    for (std::size_t k = 0; k < series.size(); ++k)
+        entries.push_back({by_time ? *series[k].time : static_cast<double>(k),
+                           std::filesystem::path(snapshot_output(pvd, series[k].file, ".vtu")).filename().string()});
+    write_file_atomically(pvd, [&](std::ostream& out) { write_pvd(out, entries); });
+}
+
 std::vector<std::string> checked_series_files(const ParticlesOptions& o)
 {
     std::vector<std::string> named{o.source};
@@ -76,9 +88,9 @@ std::vector<std::string> checked_series_files(const ParticlesOptions& o)
     if (!o.h_over_l_range.empty() || !o.nh_range.empty())
         throw Error(ExitCode::usage, "--h-over-l-range and --nh-range sweep one file; a series measures each snapshot at "
                                      "one h (give --h-over-l, --nh or --code)");
-    if (!o.vtk.empty())
-        throw Error(ExitCode::usage, fmt::format("--vtk {}: a series' per-particle values are written with --csv, one table "
-                                                 "per snapshot",
+    if (!o.vtk.empty() && std::filesystem::path(o.vtk).extension() != ".pvd")
+        throw Error(ExitCode::usage, fmt::format("--vtk {}: a series is written as a ParaView collection; expected "
+                                                 "NAME.pvd (with NAME_<snapshot>.vtu beside it)",
                                                  o.vtk));
     return files;
 }
@@ -89,6 +101,10 @@ std::vector<OutputTarget> series_outputs(const ParticlesOptions& o, const std::v
     std::vector<OutputTarget> outputs;
     if (!o.csv.empty())
         for (const auto& file : files) outputs.push_back({"--csv", snapshot_output(o.csv, file, ".csv")});
+    if (!o.vtk.empty()) {
+        for (const auto& file : files) outputs.push_back({"--vtk", snapshot_output(o.vtk, file, ".vtu")});
+        outputs.push_back({"--vtk", o.vtk});
+    }
     if (!o.plot.empty()) {
         figure_format(o.plot);
         outputs.push_back({"--plot", o.plot});
@@ -145,9 +161,10 @@ int measure_series(const ParticlesOptions& o, const Kernel& kernel, const Comman
                 else first = outline_of(set);
             };
             const std::string csv = o.csv.empty() ? std::string() : snapshot_output(o.csv, file, ".csv");
-            const Measured m = measure_source(one, kernel, outputs, csv, {}, check);
+            const std::string vtu = o.vtk.empty() ? std::string() : snapshot_output(o.vtk, file, ".vtu");
+            const Measured m = measure_source(one, kernel, outputs, csv, vtu, check);
             series.push_back({file, m.set.time, m.answer.particles, m.answer.points.front(),
-                              particle_answer_json(kernel, m.set, m.answer, m.arguments)});
+                              particle_answer_json(kernel, m.set, m.answer, m.arguments).dump()});
         } catch (const Error& e) {
             // A bad snapshot may be skipped; the settings, the outputs and an interrupt stop every one.
             if (!o.keep_going || e.code() != ExitCode::input) throw snapshot_error(e, file, i, files.size());
@@ -160,6 +177,7 @@ int measure_series(const ParticlesOptions& o, const Kernel& kernel, const Comman
         throw Error(ExitCode::input, fmt::format("none of the {} snapshots could be measured; expected at least one", files.size()));
     const bool by_time = order_series(series);
     if (!o.plot.empty()) draw_series(o.plot, series_figure_script(series, by_time));
+    if (!o.vtk.empty()) write_collection(o.vtk, series, by_time);
     if (o.json) {
         nlohmann::json document = {{"kernel", kernel.label()}};
         document.update(series_json(series, by_time));

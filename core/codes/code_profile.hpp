@@ -42,6 +42,7 @@ struct CodeProfile {
     bool from_sph_density = false; // h solved from the SPH density (else from the rest spacing)
     NeighbourCount counts = NeighbourCount::mass; // what that solve counts, and where the code says so
     std::string count_source;
+    std::string count_switch; // the code's setting that makes it count the other way, empty if none
     RestPressure rest_pressure = RestPressure::ideal_gas;
     double coef_sound = 0;         // Tait: the default c / sqrt(g H), and where the code sets it
     std::string coef_sound_source;

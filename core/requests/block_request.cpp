@@ -4,6 +4,7 @@
 #include "support/io/chunked_writer.hpp"
 #include "support/io/results_output.hpp"
 #include "support/io/vtk_points.hpp"
+#include "support/io/vtk_xml.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -89,6 +90,14 @@ void write_block_vtk(std::ostream& out, const BlockResult& r)
     scalars("SCALARS eps_rho double 1\nLOOKUP_TABLE default\n", r.eps_rho);
     scalars("SCALARS eps_gradp double 1\nLOOKUP_TABLE default\n", r.eps_gradp);
     scalars("SCALARS layer int 1\nLOOKUP_TABLE default\n", r.layer);
+}
+
+void write_block_vtu(std::ostream& out, const BlockResult& r)
+{
+    const std::size_t n = r.particles();
+    auto values = [](const auto& array) { return [&array](std::size_t i, int) { return static_cast<double>(array[i]); }; };
+    write_vtu(out, {{r.x.data(), n}, {r.y.data(), n}, {r.z.data(), n}},
+              {{"layer", 1, values(r.layer)}, {"eps_rho", 1, values(r.eps_rho)}, {"eps_gradp", 1, values(r.eps_gradp)}});
 }
 
 void write_block_csv(std::ostream& out, const BlockResult& r)

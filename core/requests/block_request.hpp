@@ -46,8 +46,10 @@ BlockRun run_block(const BlockRequest& request, const BlockSources& sources, con
 nlohmann::json block_document(const BlockRun& run, const Kernel& kernel, const Lattice& lattice);
 // The text `sphkern block` prints, on the results file.
 void print_block(const BlockRun& run, const Kernel& kernel, const Lattice& lattice);
-// Per-particle results: a legacy VTK file (ParaView), CSV.
+// Per-particle results: a legacy VTK file (ParaView), ParaView's XML UnstructuredGrid (.vtu,
+// point data eps_rho, eps_gradp and layer, named as the CSV's columns), CSV.
 void write_block_vtk(std::ostream& out, const BlockResult& result);
+void write_block_vtu(std::ostream& out, const BlockResult& result);
 void write_block_csv(std::ostream& out, const BlockResult& result);
 
 } // namespace sphkern

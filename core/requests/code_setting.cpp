@@ -89,6 +89,25 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     return code;
 }
 
+namespace {
+
+const char* count_name(NeighbourCount counts) { return counts == NeighbourCount::number ? "number" : "mass"; }
+
+// The count asked for, where the code can count that way; else an Error naming the code.
+NeighbourCount counts_of(const CodeProfile& profile, const CodeSetting& setting, const CodeSettingSources& sources)
+{
+    if (!setting.counts) return profile.counts;
+    if (!profile.from_sph_density)
+        sources.code.fail(fmt::format("{}: {} sets h from the mean spacing, with no neighbour count; expected no count", setting.code,
+                                      profile.title));
+    if (*setting.counts != profile.counts && profile.count_switch.empty())
+        sources.code.fail(fmt::format("{}: {} counts neighbours by {} only ({}); expected that count", setting.code, profile.title,
+                                      count_name(profile.counts), profile.count_source));
+    return *setting.counts;
+}
+
+} // namespace
+
 SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
                              int dimension)
 {
@@ -99,7 +118,7 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
     return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile),
-            profile.counts == NeighbourCount::number};
+            counts_of(profile, setting, sources) == NeighbourCount::number};
 }
 
 SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSources& sources, const Kernel& kernel,
@@ -130,7 +149,7 @@ nlohmann::json code_answer_json(const CodeSetting& setting)
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
     nlohmann::json out = {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
                           {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
-    if (profile.from_sph_density) out["counts"] = profile.counts == NeighbourCount::number ? "number" : "mass";
+    if (profile.from_sph_density) out["counts"] = count_name(setting.counts.value_or(profile.counts));
     return out;
 }
 
@@ -139,8 +158,8 @@ std::string code_answer_text(const CodeSetting& setting)
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
     return fmt::format("{} {} = {:.10g}: h from {}", setting.code, profile.parameter, setting.value,
                        !profile.from_sph_density               ? "the mean spacing"
-                       : profile.counts == NeighbourCount::number ? "each particle's neighbour count sum_j W, by number as "
-                                                                    "the code counts (solved for every particle)"
+                       : setting.counts.value_or(profile.counts) == NeighbourCount::number
+                           ? "each particle's neighbour count sum_j W, by number as the code counts (solved for every particle)"
                                                                   : "each particle's SPH density (solved for every particle)");
 }
 

@@ -3,6 +3,7 @@
 // surface, assess) share to check it and to find its k on a lattice.
 #pragma once
 
+#include "codes/code_profile.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "particles/smoothing_lengths.hpp"
@@ -19,6 +20,9 @@ namespace sphkern {
 struct CodeSetting {
     std::string code;
     double value = 0;
+    // On a particle set, what the code's density solve counts where the code lets it be chosen
+    // (SWIFT's SPH:use_mass_weighted_num_ngb); none: the code's default.
+    std::optional<NeighbourCount> counts;
 };
 
 // How the front end names the code and its parameter ("--code", "--eta"; "code", "value").

@@ -2,6 +2,7 @@
 
 #include "support/io/chunked_writer.hpp"
 #include "support/io/vtk_points.hpp"
+#include "support/io/vtk_xml.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -208,6 +209,29 @@ void write_particle_vtk(std::ostream& stream, const ParticleSet& set, const Part
             fmt::format_to(std::back_inserter(row), "{} {} {}\n", v[0], v[1], v[2]);
         });
     }
+}
+
+void write_particle_vtu(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer)
+{
+    const auto& m = *answer.measures;
+    const std::size_t n = set.measured(); // the neighbours-only particles have no measures
+    const bool three = set.dimension == 3;
+    const VtuPoints points{{set.x.data(), n}, {set.y.data(), n}, three ? std::span<const double>(set.z.data(), n) : std::span<const double>{}};
+    auto scalar = [](const char* name, auto value) {
+        return VtuArray{name, 1, [value](std::size_t i, int) { return static_cast<double>(value(i)); }};
+    };
+    // The CSV's e1_x, e1_y[, e1_z] as one vector.
+    auto vector = [three](const char* name, const auto& field) {
+        return VtuArray{name, 3, [&field, three](std::size_t i, int c) { return c < 2 || three ? field[i][c] : 0.0; }};
+    };
+    write_vtu(out, points,
+              {scalar("id", [](std::size_t i) { return i; }), scalar("h", [&](std::size_t i) { return answer.h[i]; }),
+               scalar("volume", [&](std::size_t i) { return answer.volumes[i]; }),
+               scalar("neighbours", [&](std::size_t i) { return m.scalars[i].neighbours; }),
+               scalar("e0", [&](std::size_t i) { return m.scalars[i].e0; }),
+               scalar("eps_rho", [&](std::size_t i) { return m.eps_rho_of(i); }),
+               scalar("eps_gradp", [&](std::size_t i) { return m.scalars[i].eps_gradp; }), vector("e1", m.e1),
+               vector("m1", m.m1)});
 }
 
 } // namespace sphkern

@@ -1,5 +1,5 @@
 // What `sphkern particles` prints and writes: the statistics as a table or JSON, and the
-// per-particle values as CSV or legacy VTK (point data, for ParaView).
+// per-particle values as CSV, legacy VTK or VTK XML (.vtu) (point data, for ParaView).
 #pragma once
 
 #include "particles/particle_analysis.hpp"
@@ -38,5 +38,9 @@ private:
     int threads_;
 };
 void write_particle_vtk(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
+// The same values as ParaView's XML UnstructuredGrid: the points (z = 0 in 2D) and, as point
+// data named as the CSV's columns, id, h, volume, neighbours, e0, eps_rho, eps_gradp and the
+// vectors e1 and m1 (3 components, z = 0 in 2D), each a double written as it is.
+void write_particle_vtu(std::ostream& out, const ParticleSet& set, const ParticleAnswer& answer);
 
 } // namespace sphkern

@@ -4,6 +4,7 @@
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,7 @@ nlohmann::json series_json(const std::vector<SeriesSnapshot>& series, bool by_ti
     nlohmann::json entries = nlohmann::json::array();
     for (const auto& s : series) {
         nlohmann::json entry = {{"file", s.file}, {"time", s.time ? nlohmann::json(*s.time) : nlohmann::json()}};
-        entry.update(s.answer);
+        entry.update(nlohmann::json::parse(s.answer));
         entries.push_back(entry);
     }
     return {{"ordered_by", by_time ? "time" : "file order"}, {"snapshots", series.size()}, {"series", entries}};

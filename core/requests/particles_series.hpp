@@ -4,7 +4,7 @@
 
 #include "particles/particle_analysis.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdio>
 #include <optional>
@@ -20,7 +20,7 @@ struct SeriesSnapshot {
     std::optional<double> time; // as the file's header gives it
     std::size_t particles = 0;
     ParticlePoint point;
-    nlohmann::json answer;
+    std::string answer; // the JSON document of a run on the file alone, as text
 };
 
 // The files named, each folder replaced by the particle files in it (by name): a code's own

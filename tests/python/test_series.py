@@ -208,3 +208,32 @@ def test_the_figure_is_drawn_complete_and_leaves_nothing_beside_it(tmp_path):
         assert label in svg
     refused(files[0], "--h-over-l", "1.3", "--plot", str(out / "one.svg"), code=2)
     refused(*files, "--h-over-l", "1.3", "--plot", str(out / "errors.gif"), code=2)
+
+
+def test_a_series_is_a_paraview_collection(tmp_path):
+    import xml.etree.ElementTree as ET
+    from vtk import vtkXMLUnstructuredGridReader
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    files = [write_swift(tmp_path / f"snap_{k:03d}.hdf5", step, t) for k, (step, t) in enumerate([(1, 0.7), (0, 0.2)])]
+    out = tmp_path / "view"
+    out.mkdir()
+    run(*files, "--h-over-l", "1.3", "--vtk", str(out / "run.pvd"))
+    assert sorted(os.listdir(out)) == ["run.pvd", "run_snap_000.vtu", "run_snap_001.vtu"]
+    sets = ET.parse(out / "run.pvd").getroot().find("Collection").findall("DataSet")
+    assert [(float(d.get("timestep")), d.get("file")) for d in sets] == [(0.2, "run_snap_001.vtu"), (0.7, "run_snap_000.vtu")]
+
+    def arrays(path):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(str(path))
+        reader.Update()
+        data = reader.GetOutput().GetPointData()
+        return {data.GetArrayName(a): vtk_to_numpy(data.GetArray(a)) for a in range(data.GetNumberOfArrays())}
+
+    for k, file in enumerate(files):
+        run(file, "--h-over-l", "1.3", "--vtk", str(tmp_path / "alone.vtu"))
+        series, alone = arrays(out / f"run_snap_{k:03d}.vtu"), arrays(tmp_path / "alone.vtu")
+        assert series.keys() == alone.keys() and "eps_rho" in series
+        for name in series:
+            assert np.array_equal(series[name], alone[name]), name
+    refused(*files, "--h-over-l", "1.3", "--vtk", str(out / "run.vtu"), code=2)

@@ -19,6 +19,8 @@ CodeProfile swift_code()
     p.counts = NeighbourCount::number;
     p.count_source = "runner_ghost.c, runner_do_ghost: h^D sum_j W_ij = eta^D with wcount (hydro_end_density), by "
                      "mass only with SPH:use_mass_weighted_num_ngb";
+    // runner_ghost.c then takes wcount = rho / m_i: h^D sum_j (m_j / m_i) W_ij = eta^D, h = eta (m_i / rho_i)^(1/D).
+    p.count_switch = "SPH:use_mass_weighted_num_ngb: 1";
     p.dimensions = all;
     p.kernels = {{"Cubic spline (M4)", "cubic_bspline", all},  {"Quartic spline (M5)", "quartic_bspline", all},
                  {"Quintic spline (M6)", "morris_quintic", all}, {"Wendland C2", "wendland_c2", plane_and_space},
