@@ -46,7 +46,8 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.codes.code, "The code --output is for: swift, gadget2, gadget4 or pysph, its layout and h; "
+    c.add_option("--code", o.codes.code, "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full "
+                                         "dump), its layout and h; "
                                          "with its parameter (--eta for swift), the run's h and each written h as the "
                                          "code sets it");
     add_code_parameters(c, o.codes);
@@ -66,7 +67,8 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
     c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
-    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's) or .csv");
+    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with "
+                                       "--code phantom any other name (a Phantom full dump, NAME_00000.tmp)");
     c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
     c.add_option("--history", o.history, "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
                                          "at every step as a ParaView series (F_k.vtu beside F.pvd)");
@@ -145,7 +147,7 @@ Action add_relax_command(Command app)
             series.emplace(o.history, o.settings.steps);
             check_series_targets(*series, read_inputs(o.source, o.kernel, o.plugins));
         }
-        if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"));
+        if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"), code);
         if (!o.tile.empty() && o.output.empty())
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
         auto registry = discover_kernels(o);
@@ -170,9 +172,8 @@ Action add_relax_command(Command app)
             const ParticleSet& out = o.tile.empty() ? run.state.set : written;
             write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads),
                                 o.settings.threads);
-            const char* layouts[] = {"SWIFT", "GADGET", "PySPH"};
-            const std::string layout =
-                o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))] + std::string(" HDF5");
+            const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
+            const std::string layout = o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
             const std::string where = std::filesystem::absolute(o.output).lexically_normal().string();
             wrote = fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout);
             wrote_json = {{"file", where}, {"particles", out.size()}, {"layout", layout}};

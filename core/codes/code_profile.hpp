@@ -10,9 +10,10 @@
 
 namespace sphkern {
 
-// The HDF5 layout of the initial conditions a code starts from (relax --code NAME --output):
-// none for a code that starts from files of its own (a .csv output holds its h).
-enum class CodeLayout { swift, gadget, pysph, none };
+// The layout of the initial conditions a code starts from (relax --code NAME --output): HDF5
+// for SWIFT, GADGET and PySPH, Phantom's own full dump; none for a code that starts from files
+// of its own that sphkern does not write (a .csv output holds its h).
+enum class CodeLayout { swift, gadget, pysph, phantom, none };
 
 // What a code's density solve counts: each neighbour's mass (h_i = c (m_i / rho_i)^(1/D) with
 // rho_i = sum_j m_j W_ij) or each neighbour once (h_i = c (1 / n_i)^(1/D) with n_i = sum_j W_ij,

@@ -85,6 +85,7 @@ ParticleLayout relax_layout(const std::optional<RelaxCode>& code)
     switch (code_profile(code->name, ValueSource::argument("code")).layout) {
     case CodeLayout::gadget: return ParticleLayout::gadget;
     case CodeLayout::pysph: return ParticleLayout::pysph;
+    case CodeLayout::phantom: return ParticleLayout::phantom;
     default: return ParticleLayout::swift; // a .csv output (the code's h in a column)
     }
 }
@@ -94,15 +95,15 @@ void check_relax_code(const RelaxCode& code, const std::string& output, const Ke
 {
     const auto& profile = code_profile(code.name, sources.code);
     require_lattice_volume(profile, "a relaxation");
-    const bool hdf5 = !output.empty() && !output.ends_with(".csv");
-    if (hdf5 && profile.layout == CodeLayout::none) {
+    const bool csv = output.ends_with(".csv"), hdf5 = output.ends_with(".h5") || output.ends_with(".hdf5");
+    if (!output.empty() && !csv && profile.layout == CodeLayout::none) {
         std::vector<std::string> hdf5_codes;
         for (const auto& p : code_profiles())
-            if (p.layout != CodeLayout::none) hdf5_codes.push_back(p.name);
+            if (p.layout != CodeLayout::none && p.layout != CodeLayout::phantom) hdf5_codes.push_back(p.name);
         const std::string last = hdf5_codes.back();
         hdf5_codes.pop_back();
-        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for {} and {}; {} starts from files of "
-                                      "its own (a .csv output holds its h)",
+        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for {} and {}, and a Phantom dump for "
+                                      "phantom; {} starts from files of its own (a .csv output holds its h)",
                                       code.name, fmt::join(hdf5_codes, ", "), last, profile.title));
     }
     if (hdf5 && !output.ends_with(profile.hdf5_suffix))
@@ -147,13 +148,20 @@ ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, 
                                                             spec.by_number);
         for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i % run_set.size()] * to_stored;
     }
+    if (profile.layout == CodeLayout::phantom) {
+        // Phantom's h = hfact (m / rho)^(1/3): with its parameter, rho is each particle's SPH
+        // density (the solve above); without, the set's m / V at the run's one h.
+        out.hfact = solved_h(*code) ? *code->value : out.h[0] / std::cbrt(mass / density);
+        out.eos_gamma = eos_gamma;
+        out.sound_speed = 1; // the relaxation's c
+    }
     return out;
 }
 
 nlohmann::json relax_code_json(const RelaxCode& code)
 {
     const auto& profile = code_profile(code.name, ValueSource::argument("code"));
-    const char* layouts[] = {"swift", "gadget", "pysph"};
+    const char* layouts[] = {"swift", "gadget", "pysph", "phantom"};
     nlohmann::json out = {{"name", code.name}, {"parameter", profile.parameter},
                           {"layout", layouts[static_cast<int>(relax_layout(code))]},
                           {"written_h", solved_h(code) ? "sph_density" : "run_h"}};
@@ -170,12 +178,16 @@ std::string relax_code_text(const RelaxCode& code)
                                       : "written with the run's h in the code's convention");
 }
 
-void check_relax_output(const std::string& file, const ValueSource& source)
+void check_relax_output(const std::string& file, const ValueSource& source, const std::optional<RelaxCode>& code)
 {
+    // An unknown code is left to check_relax_code, which names --code.
+    bool phantom = false;
+    for (const auto& p : code_profiles()) phantom = phantom || (code && p.name == code->name && p.layout == CodeLayout::phantom);
     try {
-        check_particle_output_name(file);
+        check_particle_output_name(file, phantom ? ParticleLayout::phantom : ParticleLayout::swift);
     } catch (const Error& e) { // "--output x.txt: expected ...", "output x.txt: expected ..."
-        throw Error(source.code, source.name + " " + e.what());
+        const std::string hint = phantom ? "" : " (with --code phantom, any other name: a Phantom full dump)";
+        throw Error(source.code, source.name + " " + e.what() + hint);
     }
 }
 

@@ -49,12 +49,14 @@ struct RelaxCode {
 };
 
 // A code, a value its parameter can take, a kernel it ships; named alone only beside an
-// output (empty: none); an HDF5 output only for the codes whose initial conditions sphkern
-// writes (the codes with a layout), and a name the code opens (GADGET and PySPH: .hdf5; or .csv).
+// output (empty: none); an output other than .csv only for the codes whose initial conditions
+// sphkern writes (the codes with a layout: HDF5, or Phantom's dump), and a name the code opens
+// (GADGET and PySPH: .hdf5; or .csv).
 void check_relax_code(const RelaxCode& code, const std::string& output, const Kernel& kernel, int dimension,
                       const CodeSettingSources& sources);
 
-// The layout an .h5/.hdf5 output is written in: SWIFT's without a code.
+// The layout an output other than .csv is written in: SWIFT's without a code, a Phantom full
+// dump for phantom.
 ParticleLayout relax_layout(const std::optional<RelaxCode>& code);
 
 // The run's h of a code's parameter: h = c V^(1/D), sphkern's eta = c.
@@ -80,8 +82,9 @@ std::string relax_code_text(const RelaxCode& code);
 // Copies of the relaxed set side by side along each edge of its box ("2,2,2"): whole numbers
 // 1 to 1000, as many as the set's dimensions and within the memory budget (else exit 3), and
 // one copy for an empty text.
-// A name the relaxed set can be written to (.h5, .hdf5 or .csv), named as the front end names it.
-void check_relax_output(const std::string& file, const ValueSource& source);
+// A name the relaxed set can be written to (.h5, .hdf5 or .csv; for Phantom any name but .h5
+// and .hdf5, a full dump unless it ends in .csv), named as the front end names it.
+void check_relax_output(const std::string& file, const ValueSource& source, const std::optional<RelaxCode>& code);
 
 std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, const ValueSource& source);
 

@@ -27,6 +27,22 @@ CASES = [
                                  "--nngb", "5"], 2, r"^sphkern: error: --nngb: 5: expected more than 10\.66\d+, the nngb"),
     ("relax-eta-below-lone", ["relax", "wendland_c2", "poisson", "--count", "500", "--steps", "2", "--code", "swift",
                               "--eta", "0.5", "--output", "/nonexistent-folder/ic.hdf5"], 2, r"--eta: 0\.5: expected more than"),
+    # Phantom starts from its own full dumps (any name but .csv, .h5, .hdf5), only Phantom does.
+    ("relax-phantom-hdf5", ["relax", "cubic_bspline", "poisson", "--count", "300", "--steps", "2", "--code", "phantom",
+                            "--hfact", "1.2", "--output", "/nonexistent-folder/ic.hdf5"], 2,
+     r"^sphkern: error: --output /nonexistent-folder/ic\.hdf5: Phantom starts from its own full dumps, not HDF5; "
+     r"expected a name without \.h5 or \.hdf5 \(NAME_00000\.tmp\) or one ending in \.csv$"),
+    ("relax-dump-name-without-phantom", ["relax", "cubic_bspline", "poisson", "--count", "300", "--steps", "2", "--code",
+                                         "gadget2", "--output", "/nonexistent-folder/ic_00000.tmp"], 2,
+     r"^sphkern: error: --output /nonexistent-folder/ic_00000\.tmp: expected a name ending in \.h5, \.hdf5 or \.csv "
+     r"\(with --code phantom, any other name: a Phantom full dump\)$"),
+    ("relax-phantom-dump-parallelepiped", ["relax", "cubic_bspline", "fcc", "--size", "4,4,4", "--k", "1.2", "--steps", "2",
+                                           "--code", "phantom", "--output", "/nonexistent-folder/ic_00000.tmp"], 3,
+     r"^sphkern: error: fcc: the periodic box is a parallelepiped, not a rectangular box; --output "
+     r"/nonexistent-folder/ic_00000\.tmp stores three sides .*; --cell rectangular cuts the block"),
+    ("relax-phantom-dump-unwritable", ["relax", "cubic_bspline", "poisson", "--count", "300", "--steps", "2", "--code",
+                                       "phantom", "--output", "/nonexistent-folder/ic_00000.tmp"], 5,
+     r"^sphkern: error: /nonexistent-folder/ic_00000\.tmp: cannot be written"),
 ]
 
 

@@ -376,7 +376,10 @@ def test_initial_conditions_a_code_cannot_hold_are_refused(tmp_path):
         return done.returncode, lines[0]
 
     code, line = refused_relax("phantom", "poisson", "--count", "100")
-    assert code == 2 and "phantom: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph" in line
+    assert code == 2 and "ic.hdf5: Phantom starts from its own full dumps, not HDF5; expected a name without .h5" in line
+    code, line = refused_relax("dualsphysics", "poisson", "--count", "100", "--coefh", "1.0")
+    assert code == 2 and ("dualsphysics: sphkern writes HDF5 initial conditions for swift, gadget2, gadget4 and pysph, "
+                          "and a Phantom dump for phantom; DualSPHysics starts from files of its own") in line
     code, line = refused_relax("gadget4", "poisson", "--count", "800", "--box", "1,1,2")
     assert code == 3 and "GADGET's periodic box is a cube of side BoxSize; this box is 1 x 1 x 2" in line
     code, line = refused_relax("pysph", "poisson", "--count", "100", name="ic.h5")

@@ -247,6 +247,7 @@ void require_layout_box(const ParticleSet& set, ParticleLayout layout, const std
 
 void write_hdf5_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output)
 {
+    if (output.layout == ParticleLayout::phantom) throw std::logic_error("a Phantom dump is not an HDF5 file");
     const char* layouts[] = {"SWIFT's", "GADGET's", "PySPH's"};
     require_layout_box(set, output.layout, fmt::format("an HDF5 file in {} layout", layouts[static_cast<int>(output.layout)]));
     if (output.h.size() != set.size()) throw std::logic_error("a particle file needs one h per particle");

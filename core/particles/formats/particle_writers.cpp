@@ -1,4 +1,5 @@
 #include "particles/formats/particle_writers.hpp"
+#include "particles/formats/phantom_dump_writer.hpp"
 
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
@@ -52,19 +53,24 @@ void write_csv_particles(const std::filesystem::path& file, const ParticleSet& s
     });
 }
 
-void check_particle_output_name(const std::filesystem::path& file)
+void check_particle_output_name(const std::filesystem::path& file, ParticleLayout layout)
 {
     const std::string ext = file.extension().string();
-    if (ext != ".h5" && ext != ".hdf5" && ext != ".csv")
+    const bool hdf5 = ext == ".h5" || ext == ".hdf5";
+    if (layout == ParticleLayout::phantom && hdf5)
+        throw Error(ExitCode::usage, file.string() + ": Phantom starts from its own full dumps, not HDF5; expected a "
+                                                     "name without .h5 or .hdf5 (NAME_00000.tmp) or one ending in .csv");
+    if (layout != ParticleLayout::phantom && !hdf5 && ext != ".csv")
         throw Error(ExitCode::usage, file.string() + ": expected a name ending in .h5, .hdf5 or .csv");
 }
 
 void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
                          int threads)
 {
-    check_particle_output_name(file);
+    check_particle_output_name(file, output.layout);
     const std::string ext = file.extension().string();
     if (ext == ".csv") write_csv_particles(file, set, output, threads);
+    else if (output.layout == ParticleLayout::phantom) write_phantom_dump(file, set, output);
     else write_hdf5_particles(file, set, output);
 }
 

@@ -1,6 +1,6 @@
 // Writing a particle set so that `sphkern particles` and the codes can read it back: HDF5 in
-// SWIFT's, GADGET's or PySPH's layout, or CSV with a header line. All need a rectangular
-// periodic box (SWIFT's BoxSize and `--box` hold three sides).
+// SWIFT's, GADGET's or PySPH's layout, a Phantom full dump, or CSV with a header line. All need
+// a rectangular periodic box (SWIFT's BoxSize and `--box` hold three sides).
 #pragma once
 
 #include "particles/particle_set.hpp"
@@ -11,8 +11,9 @@
 
 namespace sphkern {
 
-// The HDF5 layouts a set is written in, each as its code reads initial conditions.
-enum class ParticleLayout { swift, gadget, pysph };
+// The layouts a set is written in, each as its code reads initial conditions: HDF5 for SWIFT,
+// GADGET and PySPH, Phantom's own full dump (phantom_dump_writer.hpp).
+enum class ParticleLayout { swift, gadget, pysph, phantom };
 
 // What is written beside the positions: the stored h of every particle in the layout's
 // convention, the support radius over it (SWIFT's "Kernel gamma"), one mass for all, the
@@ -25,7 +26,11 @@ struct ParticleOutput {
     double density = 0;        // of every particle at rest (PySPH's rho)
     std::string kernel_label;  // SWIFT's "Kernel function", if the kernel is one of SWIFT's
     double internal_energy = 0; // u of every particle (SWIFT's and GADGET's InternalEnergy), at rest
-    ParticleLayout layout = ParticleLayout::swift; // of a .h5 or .hdf5 file
+    ParticleLayout layout = ParticleLayout::swift; // of a .h5 or .hdf5 file, or a Phantom dump
+    // Phantom's dump only: its hfact, h = hfact (m / rho)^(1/D) for the rho the written h is of,
+    // and the gas at rest that u is of (adiabatic index, sound speed).
+    double hfact = 0;
+    double eos_gamma = 0, sound_speed = 0;
 };
 
 // Throws Error(input) unless the set has a box whose edges lie along the axes.
@@ -55,9 +60,11 @@ void write_hdf5_particles(const std::filesystem::path& file, const ParticleSet& 
 void write_csv_particles(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
                          int threads = 1);
 
-// Error(usage) for a name that does not end in .h5, .hdf5 or .csv ("x.txt: expected ...").
-void check_particle_output_name(const std::filesystem::path& file);
-// By extension: .h5/.hdf5 (output.layout) or .csv (its rows formatted on `threads` threads).
+// Error(usage) for a name that does not end in .h5, .hdf5 or .csv ("x.txt: expected ..."); in
+// Phantom's layout, for one that ends in .h5 or .hdf5 (a Phantom dump takes any other name).
+void check_particle_output_name(const std::filesystem::path& file, ParticleLayout layout = ParticleLayout::swift);
+// By extension: .csv (its rows formatted on `threads` threads), else a Phantom dump in
+// Phantom's layout, else .h5/.hdf5 (output.layout).
 void write_particle_file(const std::filesystem::path& file, const ParticleSet& set, const ParticleOutput& output,
                          int threads = 1);
 

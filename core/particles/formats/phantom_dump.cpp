@@ -18,34 +18,9 @@
 
 namespace sphkern {
 
-namespace {
-
 namespace phantom {
 
-// dump_utils' data types, in the order every header and every block holds them.
-constexpr int ntypes = 8, i_real = 5;
-constexpr const char* type_names[ntypes] = {"integer", "int*1", "int*2", "int*4", "int*8", "real", "real*4", "real*8"};
-constexpr std::size_t lentag = 16, lenid = 100;
-constexpr int igas = 1;       // part's igas: itype 1
-constexpr int max_arraylengths = 4; // hydro, sinks, (unused), MHD
-
-bool is_real(int type) { return type >= i_real; }
-
-// A value's bytes: "real" is the dump's default real (8, or 4 in small dumps and single-precision
-// builds), "integer" Phantom's default (4).
-std::size_t width(int type, std::size_t real_width)
-{
-    constexpr std::size_t widths[ntypes] = {4, 1, 2, 4, 8, 0, 4, 8};
-    return type == i_real ? real_width : widths[type];
-}
-
-std::string tag_of(const char* p, std::size_t n)
-{
-    std::string tag(p, n);
-    while (!tag.empty() && (tag.back() == ' ' || tag.back() == '\0')) tag.pop_back();
-    tag.erase(0, std::min(tag.find_first_not_of(' '), tag.size()));
-    return tag;
-}
+namespace {
 
 // The records in file order, taken one at a time; the end of the file names what was expected.
 class Cursor {
@@ -111,11 +86,11 @@ std::size_t read_magic(const PhantomRecords& f, Cursor& c)
     const auto bytes = f.bytes(record);
     const char* p = bytes.data() + 4 + real_width;
     const auto int2 = f.integer(p, 4), version = f.integer(p + 4, 4), int1o = f.integer(p + 8, 4);
-    if ((int2 != 60878 && int2 != 780806) || int1o != 690706)
+    if ((int2 != magic_real && int2 != magic_real_old) || int1o != magic_old)
         fail_input(fmt::format("{}: record 1 holds {} and {} where Phantom's magic numbers 060878 and 690706 stand; "
                                "expected a dump with a {}-byte real and 4-byte integers",
                                f.name(), int2, int1o, real_width));
-    if (version != 1 && version != 690706)
+    if (version != format_version && version != magic_old)
         fail_input(fmt::format("{}: record 1 gives the dump format version {}; expected 1", f.name(), version));
     return real_width;
 }
@@ -255,9 +230,9 @@ std::optional<std::array<double, 6>> bounds(const Header& header)
     return b;
 }
 
-} // namespace phantom
-
 } // namespace
+
+} // namespace phantom
 
 ParticleSet read_phantom_dump_particles(const std::filesystem::path& file, const ParticleFileOptions&)
 {

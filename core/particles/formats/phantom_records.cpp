@@ -13,9 +13,6 @@ namespace sphkern {
 
 namespace {
 
-// dump_utils' int1 and int1o: the first value of every dump, new and old.
-constexpr std::uint32_t phantom_magic = 60769, phantom_magic_old = 690706;
-
 std::uint32_t phantom_word(const char* p, bool swapped)
 {
     std::uint32_t v = 0;
@@ -30,7 +27,8 @@ std::optional<bool> phantom_order(const char* head)
 {
     for (const bool swapped : {false, true}) {
         const std::uint32_t magic = phantom_word(head + 4, swapped);
-        if (phantom_first_record(phantom_word(head, swapped)) && (magic == phantom_magic || magic == phantom_magic_old))
+        if (phantom_first_record(phantom_word(head, swapped)) && (magic == static_cast<std::uint32_t>(phantom::magic) ||
+                                                             magic == static_cast<std::uint32_t>(phantom::magic_old)))
             return swapped;
     }
     return std::nullopt;
@@ -58,7 +56,7 @@ PhantomRecords::PhantomRecords(const std::filesystem::path& file) : name_(file.s
     if (!in || !order)
         fail_input(fmt::format("{}: its first record is not Phantom's magic numbers; expected a 20- or 24-byte record "
                                "opening with {}",
-                               name_, phantom_magic));
+                               name_, phantom::magic));
     swapped_ = *order;
     char marker[4];
     auto read_marker = [&](std::uint64_t at) {
@@ -118,6 +116,18 @@ double PhantomRecords::real(const char* p, std::size_t width) const
     std::uint64_t v = 0;
     std::memcpy(&v, p, sizeof v);
     return std::bit_cast<double>(swapped_ ? __builtin_bswap64(v) : v);
+}
+
+void PhantomRecordWriter::record(const void* data, std::size_t bytes)
+{
+    if (bytes >= 0x80000000u)
+        fail_input(fmt::format("{}: a record of {} bytes; a Phantom dump's records are under 2 GiB (gfortran splits "
+                               "larger ones into subrecords); expected fewer particles",
+                               name_, bytes));
+    const auto marker = static_cast<std::uint32_t>(bytes);
+    out_.write(reinterpret_cast<const char*>(&marker), sizeof marker);
+    out_.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
+    out_.write(reinterpret_cast<const char*>(&marker), sizeof marker);
 }
 
 } // namespace sphkern
