@@ -132,4 +132,29 @@ void refuse_neighbour_count_without_code(const std::string& neighbours_by)
                                      "parameter (h solved on the set)");
 }
 
+void add_parameter_ranges(Command c, std::map<std::string, std::vector<double>>& ranges)
+{
+    for (const auto& p : code_profiles()) {
+        if (ranges.contains(p.parameter)) continue;
+        c.add_option(option_of(p.parameter) + "-range", ranges[p.parameter],
+                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs", p.parameter))
+            .expected(2);
+    }
+}
+
+std::optional<std::pair<std::string, std::vector<double>>> parameter_range(
+    const std::map<std::string, std::vector<double>>& ranges, const std::string& code)
+{
+    const std::string parameter = code.empty() ? "" : code_profile(code, ValueSource::option("--code")).parameter;
+    std::optional<std::pair<std::string, std::vector<double>>> found;
+    for (const auto& [name, values] : ranges) {
+        if (values.empty()) continue;
+        if (name != parameter)
+            throw Error(ExitCode::usage, fmt::format("{}-range sweeps {}; expected --code with that parameter{}", option_of(name),
+                                                     name, code.empty() ? "" : fmt::format(" ({} sets {})", code, parameter)));
+        found = std::pair{option_of(name) + "-range", values};
+    }
+    return found;
+}
+
 } // namespace sphkern::cli

@@ -8,6 +8,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sphkern::cli {
 
@@ -49,6 +51,13 @@ void refuse_eta_without_code(const SettingOptions& codes, const std::optional<do
 // density solve); Error(usage) for another word, or without a code's parameter.
 void set_neighbour_count(CodeSetting& setting, const std::string& neighbours_by);
 void refuse_neighbour_count_without_code(const std::string& neighbours_by);
+
+// Each code's parameter as a sweep, --eta-range A B, --hfact-range A B, ... (`assess` on a file).
+void add_parameter_ranges(Command command, std::map<std::string, std::vector<double>>& ranges);
+// The range given, as its code's parameter (an Error(usage) for another code's): its option and
+// values, or nullopt.
+std::optional<std::pair<std::string, std::vector<double>>> parameter_range(
+    const std::map<std::string, std::vector<double>>& ranges, const std::string& code);
 
 // "--code" and the code's parameter ("--eta"), for the request's errors.
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& options);

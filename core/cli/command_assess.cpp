@@ -4,10 +4,13 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 #include "requests/assess_particles.hpp"
+#include "requests/assess_sweep.hpp"
 #include "requests/assess_request.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
 
+#include <algorithm>
+#include <map>
 #include <memory>
 
 namespace sphkern::cli {
@@ -17,6 +20,8 @@ namespace {
 struct AssessOptions : CommonOptions {
     std::string kernel, lattice, box, array, neighbours_by;
     SettingOptions setting;
+    std::map<std::string, std::vector<double>> ranges; // a code's parameter swept on a file
+    int steps = 10, threads = 0;
     double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound;
     std::vector<std::string> sets;
@@ -53,6 +58,8 @@ int assess_file(const AssessOptions& o)
         throw Error(ExitCode::usage, "on a particle file a code's setting is assessed; expected --code (and its setting, or "
                                      "none for the file's own h)");
     check_epsilon(o.epsilon, ValueSource::option("--epsilon"));
+    const auto range = parameter_range(o.ranges, o.setting.code);
+    check_threads(o.threads, ValueSource::option("--threads"));
     auto registry = discover_kernels(o);
     auto kernel = make_kernel(registry, o.kernel, o.sets);
     SourceOptions source;
@@ -63,9 +70,20 @@ int assess_file(const AssessOptions& o)
     std::tie(sources.code.code, sources.code.value) = code_sources(o.setting);
     ParticleArguments given;
     const auto choice = code_beside_own_eta(o.setting, std::nullopt);
-    name_code(given, choice->code, choice->value);
+    // A sweep gives the parameter's values; a value of its own beside it is refused.
+    if (range && choice->value)
+        throw Error(ExitCode::usage, fmt::format("{} sweeps the parameter; expected no single value beside it", range->first));
+    name_code(given, choice->code, range ? std::optional<double>(range->second[0]) : choice->value);
     if (given.code) set_neighbour_count(*given.code, o.neighbours_by);
     else refuse_neighbour_count_without_code(o.neighbours_by);
+    given.threads = o.threads;
+    if (range) {
+        const auto sweep = sweep_code_setting(kernel, set, given, sources, o.epsilon, range->second[0], range->second[1], o.steps,
+                                              ValueSource::option(range->first), ValueSource::option("--steps"));
+        if (o.json) print_json(code_sweep_json(sweep), source_inputs(source, kernel, digest.get()));
+        else print_code_sweep(results_file(), kernel, set, sweep);
+        return 0;
+    }
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
     if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));
     else print_particle_assess(results_file(), kernel, set, given, result);
@@ -96,6 +114,9 @@ Action add_assess_command(Command app)
     add_evaluation_options(command, options->evaluation);
     command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
+    add_parameter_ranges(command, options->ranges);
+    command.add_option("--steps", options->steps, "Particle file: steps of a parameter's sweep").capture_default_str();
+    command.add_option("--threads", options->threads, "Particle file: threads of the sums (default: every core)");
     command.add_option("--neighbours-by", options->neighbours_by,
                        "Particle file: what the code's density solve counts, number or mass (default the code's)");
     add_set_option(command, options->sets);
@@ -112,9 +133,14 @@ Action add_assess_command(Command app)
                                                              name, options->lattice));
             return assess_file(*options);
         }
-        if (!options->box.empty() || !options->array.empty() || !options->neighbours_by.empty())
-            throw Error(ExitCode::usage, "--box, --array and --neighbours-by are for a particle file; expected one, not a "
-                                         "lattice");
+        for (const char* name : {"--box", "--array", "--neighbours-by", "--steps", "--threads"})
+            if (command.count(name) > 0)
+                throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
+        for (auto [name, values] : options->ranges)
+            if (!values.empty()) {
+                std::replace(name.begin(), name.end(), '_', '-');
+                throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", name));
+            }
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);
         check_assess_request(request, sources);

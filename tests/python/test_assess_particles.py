@@ -92,3 +92,32 @@ def test_each_particle_is_judged_against_its_own_density(tmp_path):
     assert two["surface"]["particles"] == 0
     assert max(abs(two["particles"]["statistics"]["eps_rho"][s]) for s in ("p1", "p99")) > 0.3
     assert two["condition_22"] == one["condition_22"] and two["interior"] == one["interior"]
+
+
+def test_a_sweep_of_the_codes_parameter_finds_the_setting_the_set_needs(tmp_path):
+    """On a perfect periodic square lattice each value's interior errors are the lattice's shell
+    sums (`eps --code pysph --hdx`, an independent route), and the needed hdx the smallest at
+    which both are within epsilon."""
+    n = 12
+    x = square_block(n)
+    write_csv(tmp_path / "square.csv", x, np.ones(len(x)), np.ones(len(x)))
+    doc = assess(tmp_path / "square.csv", "--box", f"{n},{n}", "--hdx-range", "1.0", "1.6", "--steps", "6")
+    assert doc["code"] == "pysph" and doc["parameter"] == "hdx" and len(doc["points"]) == 7
+    holds = []
+    for point in doc["points"]:
+        lattice = json.loads(subprocess.run([CLI, "eps", "cubic_bspline", "square", "--code", "pysph", "--hdx",
+                                             repr(point["value"]), "--json"], capture_output=True, text=True,
+                                            check=True).stdout)
+        for name, mine in (("eps_rho", "e0"), ("eps_gradp", "eps_gradp")):
+            for stat in ("p1", "p99"):
+                assert abs(point["interior"][mine][stat] - lattice[name]) < 1e-9, (point["value"], name)
+        worst = max(abs(lattice["eps_rho"]), abs(lattice["eps_gradp"]))
+        assert point["holds"] == (worst <= 0.01) and abs(point["margin"] - (0.01 - worst)) < 1e-9
+        holds.append(point["holds"])
+    assert any(holds)
+    assert doc["needed"] == doc["points"][holds.index(True)]["value"]
+    # A range where it never holds: one line naming it (exit 2).
+    done = subprocess.run([CLI, "assess", "cubic_bspline", str(tmp_path / "square.csv"), "--box", f"{n},{n}", "--code", "pysph",
+                           "--hdx-range", "0.6", "0.7", "--steps", "2"], capture_output=True, text=True)
+    assert done.returncode == 2 and "--hdx-range: [0.6, 0.7]: condition (22)" in done.stderr, done.stderr
+    assert len(done.stderr.strip().splitlines()) == 1
