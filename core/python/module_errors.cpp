@@ -16,7 +16,7 @@ struct ErrorClasses {
     PyObject* file_error = nullptr;   // FileError(BadValue, FileNotFoundError): an input file that is not there
     PyObject* plugin_error = nullptr; // PluginError(Error, RuntimeError): a plugin that cannot be loaded, validated or run
     PyObject* output_error = nullptr; // OutputError(Error, OSError): results that cannot be written, or exist
-    PyObject* check_failed = nullptr; // CheckFailed(Error): a kernel check failed (check), numbers that differ (run)
+    PyObject* check_failed = nullptr; // CheckFailed(Error): a kernel check failed (check)
 };
 
 ErrorClasses& classes()
@@ -77,8 +77,7 @@ void bind_errors(py::module_& m)
     c.output_error = make_class(m, "OutputError", {c.error, PyExc_OSError},
                                 "Results that cannot be written, or an output that exists (force replaces it).");
     c.check_failed = make_class(m, "CheckFailed", {c.error},
-                                "A kernel check failed (check: its documents are on results), or a study's numbers "
-                                "differ from those recorded.");
+                                "A kernel check failed, or warned with strict; the checks' documents are on results.");
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

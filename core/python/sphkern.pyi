@@ -39,7 +39,7 @@ class OutputError(Error, OSError):
 
 
 class CheckFailed(Error):
-    """A kernel check failed (check: its documents are on results), or a study's numbers differ from those recorded."""
+    """A kernel check failed, or warned with strict; the checks' documents are on results."""
     exit_code: int
     results: list
 
