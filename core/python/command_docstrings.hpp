@@ -257,7 +257,8 @@ Examples
 inline constexpr const char* run = R"doc(Run a study into a results folder, as `sphkern run`.
 
 The folder is complete or not written at all: report.md, results.json, curves.csv and,
-where gnuplot is found and the study asks for them, the figures.
+where gnuplot is found and the study asks for them, the figures (without gnuplot, a
+RuntimeWarning says they were skipped).
 
 Parameters
 ----------

@@ -47,6 +47,9 @@ py::dict run_command(const std::optional<std::string>& study, const std::optiona
         std::lock_guard lock(registry_mutex());
         done = run_study_folder(request, {"format"}, []() -> KernelRegistry& { return registry(); });
     }
+    // As the command line warns: the folder is complete, without the figures.
+    if (done.gnuplot_missing && PyErr_WarnEx(PyExc_RuntimeWarning, "gnuplot not found on PATH: figures skipped", 1) != 0)
+        throw py::error_already_set();
     out["folder"] = std::filesystem::absolute(done.folder).lexically_normal().string();
     out["cases"] = done.cases;
     out["figures"] = done.figures;

@@ -199,3 +199,10 @@ def test_run_keeps_an_existing_folder_unless_forced(tmp_path):
         sphkern.run("design", str(tmp_path / "a"), no_plots=True)
     assert isinstance(caught.value, OSError) and caught.value.exit_code == 5
     assert sphkern.run("design", str(tmp_path / "a"), no_plots=True, force=True)["cases"] > 0
+
+
+def test_run_without_gnuplot_warns_that_the_figures_are_skipped(tmp_path, monkeypatch):
+    monkeypatch.setenv("PATH", str(tmp_path))
+    with pytest.warns(RuntimeWarning, match="gnuplot not found"):
+        r = sphkern.run("design", str(tmp_path / "a"))
+    assert r["figures"] == [] and (tmp_path / "a" / "results.json").is_file()
