@@ -44,7 +44,7 @@ Action add_check_command(Command app)
     command.add_option("--timeout", options->timeout, "Seconds a kernel may take").capture_default_str();
     return [options] {
         auto request = request_from(*options);
-        check_check_request(request, {ValueSource::option("--timeout")});
+        check_check_request(request, check_sources(FrontEnd::command_line));
         request.parameters = parse_sets(options->sets); // after: naming nothing to check is said first
         auto registry = check_registry(request);
         const auto kernels = kernels_to_check(request, registry);

@@ -2,35 +2,18 @@
 #include "cli/command.hpp"
 #include "support/io/results_output.hpp"
 
-#include "study/gnuplot.hpp"
-#include "study/plots.hpp"
-#include "study/report.hpp"
 #include "study/reproduce.hpp"
-#include "study/results_folder.hpp"
-#include "study/study_runner.hpp"
+#include "study/study_run.hpp"
 #include "support/error.hpp"
-#include "support/io/file_spec.hpp"
-#include "support/io/install_paths.hpp"
-#include "support/io/output_folder.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <memory>
+#include <optional>
 
 namespace sphkern::cli {
-
-namespace {
-
-// A study file, or the name of a shipped study (default: the paper's).
-std::filesystem::path study_file(const std::string& study)
-{
-    if (study.empty()) return data_folder("studies") / "potapov2021.json";
-    return looks_like_path(study, ".json") ? std::filesystem::path(study) : data_folder("studies") / (study + ".json");
-}
-
-} // namespace
 
 Action add_run_command(Command app)
 {
@@ -62,30 +45,16 @@ Action add_run_command(Command app)
             fmt::print(results_file(), "{}", outcome.text);
             return outcome.agreed ? 0 : static_cast<int>(ExitCode::check_failed);
         }
-        const std::filesystem::path file = study_file(options->study);
-        const auto formats = parse_figure_formats(options->format, "--format");
-        Study study = read_study(file);
-        std::filesystem::path target =
-            options->output.empty() ? std::filesystem::path("sphkern-results") / study.name : std::filesystem::path(options->output);
-        OutputFolder output(target, options->force);
-
-        auto registry = discover_kernels(*options);
-        StudyResults results = run_study(study, registry);
-
-        std::vector<std::string> figures;
-        if (study.plots && !options->no_plots) {
-            auto gnuplot = find_gnuplot();
-            if (gnuplot.empty()) spdlog::warn("gnuplot not found on PATH: figures skipped");
-            else figures = draw_study_plots(study, results, output.staging() / "plots", gnuplot, formats);
-        }
-        write_results_folder(output, study, results, figures);
-        output.commit();
-
-        std::string summary = replication_markdown(results);
-        fmt::print(results_file(), "{}", summary.empty() ? verdicts_markdown(study, results) : summary);
+        StudyRunRequest request{options->study, options->output, !options->no_plots, options->format, options->force};
+        std::optional<KernelRegistry> registry;
+        const StudyRun run = run_study_folder(request, {"--format"}, [&]() -> KernelRegistry& {
+            return registry.emplace(discover_kernels(*options));
+        });
+        if (run.gnuplot_missing) spdlog::warn("gnuplot not found on PATH: figures skipped");
+        fmt::print(results_file(), "{}", run.summary);
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        spdlog::info("{} cases in {:.3f} s; report, results.json, curves.csv{} in {}", results.cases.size(), seconds,
-                     figures.empty() ? "" : " and figures", target.string());
+        spdlog::info("{} cases in {:.3f} s; report, results.json, curves.csv{} in {}", run.cases, seconds,
+                     run.figures.empty() ? "" : " and figures", run.folder.string());
         return 0;
     };
 }

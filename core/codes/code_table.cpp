@@ -47,7 +47,8 @@ const CodeProfile& code_profile(const std::string& name, const ValueSource& sour
         if (p.name == name) return p;
         names.push_back(p.name);
     }
-    source.fail(fmt::format("\"{}\" is unknown, expected one of {}{}", name, fmt::join(names, ", "), did_you_mean(name, names)));
+    source.fail(fmt::format("\"{}\" is unknown, expected one of {}{}", name, fmt::join(names, ", "), did_you_mean(name, names)),
+                ErrorKind::unknown_name);
 }
 
 namespace {

@@ -25,7 +25,7 @@ Kernel::Kernel(std::shared_ptr<const KernelDefinition> definition, const std::ma
         if (i == names.size()) {
             std::string message =
                 "kernel " + definition_->name + " has no parameter \"" + name + "\"" + did_you_mean(name, names);
-            fail_input(message + (names.empty() ? "; it has no parameters" : ""));
+            fail_unknown(message + (names.empty() ? "; it has no parameters" : ""));
         }
         const auto& p = definition_->parameters[i];
         if (!std::isfinite(value) || value < p.min_value || value > p.max_value) {

@@ -243,7 +243,7 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find_single(const std::s
     std::string message = "unknown kernel \"" + spec + "\"" + did_you_mean(spec, names);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    fail_input(message + "; known kernels: " + (list.empty() ? "none found (no plugin folder)" : list));
+    fail_unknown(message + "; known kernels: " + (list.empty() ? "none found (no plugin folder)" : list));
 }
 
 // The kernel named `spec`, or null. A folder file is taken by its descriptor's name: one whose

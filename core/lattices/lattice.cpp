@@ -173,7 +173,7 @@ double Lattice::volume_coefficient(const std::string& spec) const
     }
     std::string message =
         "lattice " + name + " has no volume coefficient \"" + spec + "\"" + did_you_mean(spec, names);
-    fail_input(message + "; expected one of " + list + " or a positive number");
+    fail_unknown(message + "; expected one of " + list + " or a positive number");
 }
 
 Lattice read_lattice(const fs::path& file) { return parse_lattice(read_json_file(file), file.string()); }
@@ -223,7 +223,7 @@ Lattice load_lattice(const std::string& spec)
     std::string message = "unknown lattice \"" + spec + "\"" + did_you_mean(spec, names);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    fail_input(message + "; shipped lattices: " + list + ", or give a path to a lattice file");
+    fail_unknown(message + "; shipped lattices: " + list + ", or give a path to a lattice file");
 }
 
 Eigen::Vector3d direction_of(const std::vector<double>& components, int dimension, const ValueSource& source)

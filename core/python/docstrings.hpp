@@ -11,8 +11,14 @@ inline constexpr const char* module = R"doc(sphkern: accuracy of SPH smoothing k
 
 Every function returns what the command line's --json prints, as Python objects, with
 numpy arrays where the input is an array. Lengths on a lattice are in units of its
-nearest-neighbour distance d, and k = h / d. Bad input raises ValueError naming the
-argument; a plugin that cannot be loaded or run raises RuntimeError.
+nearest-neighbour distance d, and k = h / d.
+
+Every error is a sphkern.Error with one line naming the argument, what is wrong and what
+was expected, and its exit_code (the command line's for the same error): BadValue (a
+ValueError), UnknownName (a BadValue and a LookupError: a kernel, lattice, study or code
+that is not known), FileError (a BadValue and a FileNotFoundError), PluginError (a
+RuntimeError), OutputError (an OSError) and CheckFailed. A wrong type where pybind11 checks
+the signature raises TypeError; an interruption, KeyboardInterrupt.
 )doc";
 
 inline constexpr const char* kernels = R"doc(Every kernel found, as `sphkern kernels --json` lists them.

@@ -30,6 +30,9 @@ using OptionalSequence = Typed<"Optional[Sequence[float]]">;
 using OptionalParams = Typed<"Optional[Dict[str, float]]">;
 using NameOrNumber = Typed<"Union[str, float]">;
 using VolumeArgument = Typed<"Union[str, numpy.typing.ArrayLike, None]">;
+using OptionalNames = Typed<"Union[str, Sequence[str], None]">;
+using IntSequence = Typed<"Sequence[int]">;
+using OptionalIntSequence = Typed<"Optional[Sequence[int]]">;
 
 } // namespace sphkern
 

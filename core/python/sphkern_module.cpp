@@ -1,14 +1,17 @@
 // `import sphkern`: the core library for Python. Every function returns what the
 // command line's --json prints (as Python objects), or numpy arrays where the input is
-// an array; bad input raises ValueError and a broken plugin RuntimeError, with the
-// command line's one-line message.
+// an array; errors are sphkern.Error by kind (module_errors.hpp), with the command line's
+// one-line message.
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/results_json.hpp"
 #include "kernels/kernel_json.hpp"
 #include "lattices/lattice_json.hpp"
 #include "docstrings.hpp"
+#include "module_errors.hpp"
+#include "module_support.hpp"
 #include "particles_binding.hpp"
+#include "commands_binding.hpp"
 #include "python_arrays.hpp"
 #include "python_types.hpp"
 #include "kernels/kernel.hpp"
@@ -53,53 +56,6 @@ using namespace sphkern;
 #endif
 
 namespace {
-
-std::mutex registry_mutex; // kernels are resolved lazily: one resolution at a time
-
-KernelRegistry& registry()
-{
-    static KernelRegistry r = KernelRegistry::discover({});
-    return r;
-}
-
-py::object to_python(const nlohmann::json& document)
-{
-    return py::module_::import("json").attr("loads")(document.dump());
-}
-
-std::map<std::string, double> parameters_of(const py::object& params)
-{
-    std::map<std::string, double> values;
-    if (params.is_none()) return values;
-    if (!py::isinstance<py::dict>(params)) fail_input("params: expected a dict of parameter names to numbers");
-    for (const auto& [name, value] : params.cast<py::dict>()) {
-        auto key = py::str(name).cast<std::string>();
-        try {
-            values[key] = value.cast<double>();
-        } catch (const py::cast_error&) {
-            fail_input("params: \"" + key + "\" must be a number");
-        }
-    }
-    return values;
-}
-
-Kernel kernel_of(const std::string& spec, const py::object& params)
-{
-    auto values = parameters_of(params);
-    std::lock_guard lock(registry_mutex);
-    return Kernel(registry().find(spec), values);
-}
-
-// a_p as given: a name the lattice offers or a number.
-VolumeCoefficientInput ap_input(const py::object& a_p)
-{
-    if (py::isinstance<py::str>(a_p)) return a_p.cast<std::string>();
-    try {
-        return a_p.cast<double>();
-    } catch (const py::cast_error&) {
-        fail_input("a_p: expected a name the lattice offers or a positive number");
-    }
-}
 
 // Gravity as given: none (the lattice's) or a sequence of `dimension` numbers.
 std::optional<std::vector<double>> gravity_input(const py::object& gravity, int dimension)
@@ -327,33 +283,18 @@ namespace {
 
 using Guard = py::call_guard<InterruptScope>;
 
-// An Error becomes ValueError, a plugin's RuntimeError, an interruption KeyboardInterrupt.
-void translate_errors()
-{
-    py::register_exception_translator([](std::exception_ptr p) {
-        try {
-            if (p) std::rethrow_exception(p);
-        } catch (const Error& e) {
-            const std::string message = one_line(e.what());
-            if (e.code() == ExitCode::plugin) PyErr_SetString(PyExc_RuntimeError, message.c_str());
-            else if (e.code() == ExitCode::interrupted) PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
-            else PyErr_SetString(PyExc_ValueError, message.c_str());
-        }
-    });
-}
-
 // Every kernel and lattice, and files loaded into the module.
 void bind_catalogues(py::module_& m, const Guard& guard)
 {
     m.def("kernels", []() -> py::list {
-        std::lock_guard lock(registry_mutex);
+        std::lock_guard lock(registry_mutex());
         return to_python(kernels_listing(registry()));
     }, doc::kernels, guard);
     m.def("lattices", []() -> py::list {
         return to_python(lattices_listing());
     }, doc::lattices, guard);
     m.def("load_plugin", [](const std::string& path) -> py::dict {
-        std::lock_guard lock(registry_mutex);
+        std::lock_guard lock(registry_mutex());
         return to_python(kernel_json(*registry().find(path)));
     }, py::arg("path"), doc::load_plugin, guard);
     m.def("load_lattice",
@@ -512,7 +453,7 @@ PYBIND11_MODULE(sphkern, m)
     m.attr("__version__") = SPHKERN_VERSION;
     const auto folder = module_folder();
     set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
-    translate_errors();
+    bind_errors(m);
     name_settings_for(FrontEnd::python); // hints from below requests/ name Python's arguments
     // Every call runs with sphkern's signal handlers, Python's own before and after it.
     const Guard guard;
@@ -524,4 +465,7 @@ PYBIND11_MODULE(sphkern, m)
     bind_stability(m, guard);
     bind_design(m, guard);
     bind_kernel(m, guard);
+    bind_kernel_commands(m);
+    bind_relax(m);
+    bind_studies(m);
 }

@@ -15,10 +15,15 @@ bool only_files(const CheckRequest& r) { return r.names.empty() && !r.all; }
 
 } // namespace
 
+CheckSources check_sources(FrontEnd f)
+{
+    return {value_named(f, "timeout"), f == FrontEnd::command_line ? "name a kernel, give --plugin FILE, or use --all"
+                                                                   : "name a kernel, give plugin=FILE, or use all=True"};
+}
+
 void check_check_request(const CheckRequest& r, const CheckSources& sources)
 {
-    if (only_files(r) && r.plugins.empty())
-        throw Error(ExitCode::usage, "check: name a kernel, give --plugin FILE, or use --all");
+    if (only_files(r) && r.plugins.empty()) throw Error(sources.timeout.code, "check: " + sources.choices);
     check_range(r.timeout, 0.1, 3600, sources.timeout);
 }
 

@@ -28,7 +28,9 @@ struct CheckRequest {
 // How the front end names each value in its errors.
 struct CheckSources {
     ValueSource timeout;
+    std::string choices; // how to name something to check: "name a kernel, give --plugin FILE, or use --all"
 };
+CheckSources check_sources(FrontEnd front_end);
 
 // Nothing to check (Error(usage)), or a timeout outside [0.1, 3600] s (named by its source).
 void check_check_request(const CheckRequest& request, const CheckSources& sources);

@@ -2,10 +2,13 @@
 
 #include "particles/formats/particle_arrays.hpp"
 #include "particles/particles_memory.hpp"
+#include "lattices/lattice.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sphkern {
@@ -13,8 +16,80 @@ namespace sphkern {
 SourceSources source_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {n("size"), n("sigma"), n("count"), n("dim"), n("box"), n("array"), n("particle_radius"),
+    return {n("size"), n("sigma"), n("count"), n("dim"), n("box"), n("array"), n("particle_radius"), n("cell"),
             f == FrontEnd::command_line ? "--memory-limit" : ""};
+}
+
+namespace {
+
+// The settings of a file source: its arrays, dimension, box and particle radius.
+void file_source(const SourceArguments& o, const SourceSources& sources, ParticleSource& source)
+{
+    source.file.array = o.array;
+    source.file.particle_radius = o.particle_radius;
+    if (o.dim) source.file.dimension = o.dim;
+    if (!o.box.empty()) {
+        const auto sides = parse_number_list(o.box, sources.box, 2, 3);
+        source.box = Eigen::Vector3d(sides[0], sides[1], sides.size() == 3 ? sides[2] : 1.0);
+    }
+}
+
+} // namespace
+
+ParticleSource particle_source_of(const SourceArguments& o, const SourceSources& sources)
+{
+    ParticleSource source;
+    source.spec = o.spec;
+    source.kind = source_kind(o.spec);
+    auto names = shipped_lattice_names();
+    if (source.kind == SourceKind::lattice && !o.spec.ends_with(".json") && std::find(names.begin(), names.end(), o.spec) == names.end()) {
+        names.push_back("poisson");
+        fail_unknown(fmt::format("unknown source \"{}\"{}; expected poisson, a lattice ({}) or a particle file", o.spec,
+                                 did_you_mean(o.spec, names), fmt::join(names.begin(), names.end() - 1, ", ")));
+    }
+    const auto refuse = [](const ValueSource& setting, const std::string& problem) { throw Error(setting.code, setting.name + problem); };
+    if (source.kind != SourceKind::lattice && !o.size.empty())
+        refuse(sources.size, " cuts a lattice into a block; " + o.spec + " is not a lattice");
+    if (source.kind != SourceKind::lattice && !o.cell.empty())
+        refuse(sources.cell, " is the cell of a lattice block; " + o.spec + " is not a lattice");
+    if (!o.cell.empty() && o.cell != "primitive" && o.cell != "rectangular")
+        refuse(sources.cell, ": \"" + o.cell + "\" is unknown, expected primitive or rectangular");
+    source.block.rectangular = o.cell == "rectangular";
+    if (source.kind != SourceKind::poisson && o.count) refuse(sources.count, " is for poisson sets");
+    if (source.kind == SourceKind::lattice) {
+        if (o.size.empty())
+            throw Error(sources.size.code, "a lattice source needs " + sources.size.name + " N1,N2[,N3] (cells of the periodic block)");
+        const auto cells = parse_number_list(o.size, sources.size, 2, 3);
+        for (std::size_t a = 0; a < cells.size(); ++a) {
+            if (cells[a] != std::floor(cells[a]) || std::abs(cells[a]) > 1e15)
+                refuse(sources.size, " " + o.size + ": expected whole numbers of cells");
+            source.block.cells[a] = static_cast<long long>(cells[a]);
+        }
+        source.cell_counts = cells.size();
+        source.block.sigma = o.sigma;
+        source.block.seed = o.seed;
+    } else if (o.sigma != 0) {
+        refuse(sources.sigma, " disturbs a lattice; " + o.spec + " is not a lattice");
+    }
+    if (source.kind == SourceKind::poisson) {
+        if (!o.count) throw Error(sources.count.code, "a poisson set needs " + sources.count.name + " N");
+        source.poisson.count = static_cast<std::size_t>(o.count);
+        source.poisson.dimension = o.dim ? o.dim : 3;
+        source.poisson.seed = o.seed;
+        if (!o.box.empty()) {
+            const auto sides = parse_number_list(o.box, sources.box, 1, 3);
+            for (int a = 0; a < 3; ++a)
+                source.poisson.box[a] = sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
+            if (sides.size() != 1 && static_cast<int>(sides.size()) != source.poisson.dimension)
+                refuse(sources.box, " " + o.box + ": give one side or one per dimension");
+        }
+    }
+    if (source.kind == SourceKind::file) file_source(o, sources, source);
+    else if (!o.array.empty())
+        refuse(sources.array, " chooses a PySPH particle array; " + o.spec + " is not a file");
+    else if (o.particle_radius)
+        refuse(sources.particle_radius, " gives the h of a SPlisHSPlasH file; " + o.spec + " is not a file");
+    return source;
 }
 
 namespace {

@@ -9,14 +9,30 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace sphkern {
 
 struct SourceSources {
-    ValueSource size, sigma, count, dim, box, array, particle_radius;
+    ValueSource size, sigma, count, dim, box, array, particle_radius, cell;
     std::string budget; // how the front end sets the memory budget, if it can: "--memory-limit"
 };
 SourceSources source_sources(FrontEnd front_end);
+
+// A source as the front end gives it: a lattice (name or file), poisson or a particle file,
+// and the settings of its kind, lists as texts ("4,4,4" cells, "1,1" box sides).
+struct SourceArguments {
+    std::string spec, size, box, array, cell;
+    double sigma = 0;
+    unsigned long long seed = 1, count = 0;
+    int dim = 0;
+    std::optional<double> particle_radius;
+};
+
+// The source: a name that is no lattice refused with the shipped ones (a typo more often than a
+// lattice without its size), and settings that do not fit its kind refused, named by `sources`.
+ParticleSource particle_source_of(const SourceArguments& given, const SourceSources& sources);
 
 // What needs no lattice or file: cells 1 to 1e6, sigma [0, 10] (units of d); a Poisson
 // dimension of 2 or 3, count 2 to 2^40; box sides positive and finite; a file's list of

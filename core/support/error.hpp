@@ -32,17 +32,35 @@ inline std::string one_line(const std::string& message)
     return line;
 }
 
+// What an input error is about, where a front end tells them apart (Python's exception
+// classes): a name that names nothing, a file that is not there, or anything else.
+enum class ErrorKind { general, unknown_name, missing_file };
+
 class Error : public std::runtime_error {
 public:
     // One line from the start: what() is a C string, which a NUL in a file's text would cut.
-    Error(ExitCode code, const std::string& message) : std::runtime_error(one_line(message)), code_(code) {}
+    Error(ExitCode code, const std::string& message, ErrorKind kind = ErrorKind::general)
+        : std::runtime_error(one_line(message)), code_(code), kind_(kind)
+    {
+    }
     ExitCode code() const { return code_; }
+    ErrorKind kind() const { return kind_; }
 
 private:
     ExitCode code_;
+    ErrorKind kind_;
 };
 
 [[noreturn]] inline void fail_input(const std::string& message) { throw Error(ExitCode::input, message); }
+// An input that names nothing known (a kernel, a lattice, a study), and a file that is not there.
+[[noreturn]] inline void fail_unknown(const std::string& message)
+{
+    throw Error(ExitCode::input, message, ErrorKind::unknown_name);
+}
+[[noreturn]] inline void fail_missing(const std::string& message)
+{
+    throw Error(ExitCode::input, message, ErrorKind::missing_file);
+}
 // A value outside its range, named as the command line gives it (exit 2). at_source
 // (support/text/value_checks.hpp) makes it an input error (exit 3) when the value came from a file.
 [[noreturn]] inline void fail_usage(const std::string& message) { throw Error(ExitCode::usage, message); }

@@ -387,10 +387,13 @@ TEST_CASE("spectrum request: the cubic B-spline's 1D transform is sinc^4(kappa h
 
 TEST_CASE("check request: nothing to check is refused, and the verdict is a status, strict counts a warning")
 {
-    const CheckSources sources{ValueSource::option("--timeout")};
+    const CheckSources sources = check_sources(FrontEnd::command_line);
     auto nothing = refusal([&] { check_check_request(CheckRequest{}, sources); });
     CHECK(nothing.first == "check: name a kernel, give --plugin FILE, or use --all");
     CHECK(nothing.second == ExitCode::usage);
+    auto in_python = refusal([&] { check_check_request(CheckRequest{}, check_sources(FrontEnd::python)); });
+    CHECK(in_python.first == "check: name a kernel, give plugin=FILE, or use all=True");
+    CHECK(in_python.second == ExitCode::input);
     CheckRequest slow;
     slow.names = {"cubic_bspline"};
     slow.timeout = 0;

@@ -147,7 +147,8 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     // A snapshot named by its base (snap.hdf5 for snap.0.hdf5 ...): its parts are named instead.
     const std::filesystem::path first = file.parent_path() / (file.stem().string() + ".0" + file.extension().string());
     if (!std::filesystem::exists(file, ec) && std::filesystem::is_regular_file(first, ec))
-        fail_input(fmt::format("{}: no such file; the snapshot is in parts: name one of them, such as {}", name, first.string()));
+        fail_missing(fmt::format("{}: no such file; the snapshot is in parts: name one of them, such as {}", name, first.string()));
+    if (!std::filesystem::exists(file, ec)) fail_missing(name + ": no such file");
     const OpenFile named(file);
     const File& f = named.file();
     std::vector<std::string> inputs;

@@ -49,6 +49,11 @@ std::filesystem::path particle_file_named(const std::filesystem::path& file)
 ParticleSet read_particle_file(const std::filesystem::path& file, const ParticleFileOptions& options)
 {
     const auto format = particle_file_format(file);
+    // A name of a known format that is not there (a GADGET or HDF5 snapshot in parts is named by
+    // its base, which is no file; their readers say so); any other name is no particle file.
+    std::error_code ec;
+    if ((format == ParticleFileFormat::csv || format == ParticleFileFormat::vtk) && !std::filesystem::exists(file, ec))
+        fail_missing(file.string() + ": no such file");
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv, .vtk "
                                   "a GADGET binary snapshot or a Phantom dump");

@@ -58,7 +58,7 @@ std::string read_input_file(const fs::path& file, std::size_t limit, const std::
     // O_NONBLOCK: opening a FIFO without a writer must not hang; cleared again for reading.
     int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        if (errno == ENOENT || errno == ENOTDIR) fail_input(name + ": no such file");
+        if (errno == ENOENT || errno == ENOTDIR) fail_missing(name + ": no such file");
         fail_input(name + ": cannot be read (" + std::strerror(errno) + ")");
     }
     struct Closer {

@@ -14,9 +14,9 @@ std::string ValueSource::about(double value) const
     return fmt::format("{}{}{}", name, name.rfind("-", 0) == 0 ? " " : " = ", value);
 }
 
-void ValueSource::fail(const std::string& problem) const
+void ValueSource::fail(const std::string& problem, ErrorKind kind) const
 {
-    throw Error(code, name.empty() ? problem : name + ": " + problem);
+    throw Error(code, name.empty() ? problem : name + ": " + problem, kind);
 }
 
 ValueSource value_named(FrontEnd front_end, std::string_view key)

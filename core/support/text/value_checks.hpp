@@ -32,7 +32,7 @@ struct ValueSource {
     // "--k -1" for an option, "k = -1" for an argument.
     std::string about(double value) const;
     // Throws the problem, prefixed with the name ("--site: ...") when there is one.
-    [[noreturn]] void fail(const std::string& problem) const;
+    [[noreturn]] void fail(const std::string& problem, ErrorKind kind = ErrorKind::general) const;
 };
 
 // Runs f; an Error it throws is thrown again with the source's name in front, and a value
@@ -43,7 +43,7 @@ decltype(auto) at_source(const ValueSource& source, F&& f)
     try {
         return f();
     } catch (const Error& e) {
-        throw Error(e.code() == ExitCode::usage ? source.code : e.code(), source.name + ": " + e.what());
+        throw Error(e.code() == ExitCode::usage ? source.code : e.code(), source.name + ": " + e.what(), e.kind());
     }
 }
 

@@ -55,7 +55,7 @@ StudyRelax read_relax(const JsonNode& node)
 SourceSources sources_at(const JsonNode& node, const std::string& dim)
 {
     auto at = [&](const std::string& key) { return ValueSource::json(node.file(), node.path() + key); };
-    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), at("/array"), at("/particle_radius"), ""};
+    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), at("/array"), at("/particle_radius"), at("/cell"), ""};
 }
 
 StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)

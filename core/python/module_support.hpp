@@ -1,0 +1,34 @@
+// What every binding file of the module shares: the one kernel registry (the shipped plugins
+// and the files loaded into the module), kernels made from it, and JSON documents as Python objects.
+#pragma once
+
+#include "kernels/kernel.hpp"
+#include "kernels/kernel_registry.hpp"
+#include "requests/evaluation_inputs.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+#include <pybind11/pybind11.h>
+
+#include <map>
+#include <mutex>
+#include <string>
+
+namespace sphkern {
+
+// Kernels are resolved lazily: one resolution at a time, under this lock.
+std::mutex& registry_mutex();
+KernelRegistry& registry(); // with the lock held
+
+// A kernel's parameters as given: None, or a dict of names to numbers.
+std::map<std::string, double> parameters_of(const pybind11::object& params);
+
+// A kernel by name or file, with its parameters (a dict of names to numbers, or None).
+Kernel kernel_of(const std::string& spec, const pybind11::object& params);
+
+// a_p as given: a name the lattice offers or a number.
+VolumeCoefficientInput ap_input(const pybind11::object& a_p);
+
+// A document as Python objects (dicts, lists, numbers, strings, None).
+pybind11::object to_python(const nlohmann::json& document);
+
+} // namespace sphkern

@@ -1,0 +1,210 @@
+// sphkern.relax: a particle set relaxed in its periodic box, through the requests `sphkern
+// relax` runs (the source, h, the settings, the code, the outputs), its --json document as
+// Python objects with the relaxed positions as a numpy array.
+#include "commands_binding.hpp"
+#include "command_docstrings.hpp"
+#include "module_support.hpp"
+#include "python_types.hpp"
+
+#include "particles/formats/particle_writers.hpp"
+#include "particles/tiled_set.hpp"
+#include "requests/relax_report.hpp"
+#include "requests/relax_request.hpp"
+#include "requests/source_request.hpp"
+#include "support/error.hpp"
+#include "support/io/atomic_file.hpp"
+#include "support/io/output_targets.hpp"
+#include "support/process/interruption.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace py = pybind11;
+
+namespace sphkern {
+
+namespace {
+
+ValueSource named(const char* key) { return value_named(FrontEnd::python, key); }
+
+// A sequence of numbers as the list text the source request reads ("4,4,4"), exactly.
+std::string list_text(const py::object& values, const char* what, const char* expected)
+{
+    if (values.is_none()) return {};
+    std::vector<double> numbers;
+    try {
+        numbers = values.cast<std::vector<double>>();
+    } catch (const py::cast_error&) {
+        fail_input(fmt::format("{}: expected {}", what, expected));
+    }
+    std::string text;
+    for (double v : numbers) text += (text.empty() ? "" : ",") + fmt::format("{}", v);
+    return text.empty() ? "," : text; // an empty sequence: refused as a list without numbers
+}
+
+struct SourceGiven {
+    std::string spec;
+    OptionalIntSequence size;
+    std::optional<std::string> cell;
+    double sigma;
+    unsigned long long seed;
+    std::optional<unsigned long long> count;
+    std::optional<int> dim;
+    OptionalSequence box;
+    std::optional<double> particle_radius;
+    std::optional<std::string> array;
+};
+
+ParticleSource source_of(const SourceGiven& g)
+{
+    return particle_source_of({g.spec, list_text(g.size, "size", "whole numbers of cells [N1, N2] or [N1, N2, N3]"),
+                               list_text(g.box, "box", "a sequence of box sides"), g.array.value_or(""),
+                               g.cell.value_or(""), g.sigma, g.seed, g.count.value_or(0), g.dim.value_or(0),
+                               g.particle_radius},
+                              source_sources(FrontEnd::python));
+}
+
+py::array_t<double> positions_of(const ParticleSet& set)
+{
+    const std::size_t n = set.size(), d = static_cast<std::size_t>(set.dimension);
+    py::array_t<double> out({n, d});
+    auto view = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < n; ++i) {
+        view(i, 0) = set.x[i], view(i, 1) = set.y[i];
+        if (d == 3) view(i, 2) = set.z[i];
+    }
+    return out;
+}
+
+// The run; where it diverges, the steps before it still go to `history`, and the error says so.
+RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
+                                 const std::optional<std::string>& history)
+{
+    try {
+        return relax_particles(kernel, std::move(set), h, settings);
+    } catch (const RelaxDiverged& e) {
+        if (!history) throw;
+        write_file_atomically(*history, [&](std::ostream& out) { write_relax_history_csv(out, e.history); });
+        throw Error(e.code(), fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, *history));
+    }
+}
+
+struct RelaxGiven {
+    std::optional<double> h_over_l, nh, k;
+    std::optional<std::string> code;
+    std::optional<double> value;
+    std::string method;
+    RelaxSettings settings;
+    double rdf_max;
+    std::size_t rdf_bins;
+    double memory_limit;
+    std::optional<std::string> output, tile, history;
+};
+
+py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g, const OptionalParams& params)
+{
+    set_memory_budget(g.memory_limit, named("memory_limit"));
+    const auto sources = relax_sources(FrontEnd::python);
+    g.settings.method = relax_method_of(g.method, sources.method);
+    check_relax_settings(g.settings, sources);
+    check_rdf(g.rdf_max, g.rdf_bins, sources);
+    const CodeSettingSources code_sources{named("code"), named("value")};
+    if (g.value && !g.code) fail_input("value: the parameter of a code; expected code too");
+    std::optional<RelaxCode> code;
+    if (g.code) code = RelaxCode{*g.code, g.value};
+    if (code && code->value && (g.h_over_l || g.nh || g.k))
+        fail_input(fmt::format("code {} sets h with value; expected no h_over_l, nh or k beside it", code->name));
+    if (source_given.particle_radius && (g.h_over_l || g.nh || g.k))
+        fail_input("particle_radius gives a SPlisHSPlasH file's h; expected no h_over_l, nh or k beside it");
+    SmoothingSpec spec = smoothing_spec({g.h_over_l, g.nh, g.k, std::nullopt}, sources.smoothing);
+    std::vector<OutputTarget> outputs;
+    if (g.output) outputs.push_back({"output", *g.output});
+    if (g.history) outputs.push_back({"history", *g.history});
+    std::vector<std::string> inputs;
+    for (const auto& spec_text : {source_given.spec, kernel_spec})
+        if (std::filesystem::exists(spec_text)) inputs.push_back(spec_text);
+    check_output_targets(outputs, inputs);
+    if (g.output) check_relax_output(*g.output, named("output"));
+    if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
+    const ParticleSource source = source_of(source_given);
+    const auto kernel = kernel_of(kernel_spec, params);
+    nlohmann::json document;
+    RelaxResult run;
+    {
+        py::gil_scoped_release unlocked;
+        ParticleSet set = load_source(source, source_sources(FrontEnd::python), g.settings.threads);
+        if (code) check_relax_code(*code, g.output.value_or(""), kernel, set.dimension, code_sources);
+        if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, code_sources);
+        check_output_targets(outputs, set.linked_files);
+        const double h = relax_h(spec, set, kernel, sources.smoothing);
+        const bool csv = g.output && g.output->ends_with(".csv");
+        if (g.output) require_layout_box(set, csv ? ParticleLayout::swift : relax_layout(code), "output " + *g.output);
+        const auto tiles = tiles_of(g.tile.value_or(""), set, named("tile"));
+        run = relax_until_diverged(kernel, std::move(set), h, g.settings, g.history);
+        const RelaxedSet judged = judge_relaxed(kernel, run, g.settings.threads, g.rdf_max, g.rdf_bins);
+        document = relax_json(kernel, g.settings, run, judged);
+        if (code) document["code"] = relax_code_json(*code);
+        if (g.output) {
+            const ParticleSet tiled = g.tile ? tiled_set(run.state.set, tiles, g.settings.threads) : ParticleSet{};
+            const ParticleSet& out = g.tile ? tiled : run.state.set;
+            write_particle_file(*g.output, out,
+                                initial_conditions(kernel, out, run, g.settings.gamma, code, g.settings.threads),
+                                g.settings.threads);
+            const char* layouts[] = {"SWIFT", "GADGET", "PySPH"};
+            const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))] + std::string(" HDF5");
+            document["output"] = {{"file", std::filesystem::absolute(*g.output).lexically_normal().string()},
+                                  {"particles", out.size()},
+                                  {"layout", layout}};
+        }
+        if (g.history)
+            write_file_atomically(*g.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
+    }
+    py::dict out = to_python(document);
+    out["positions"] = positions_of(run.state.set);
+    return out;
+}
+
+} // namespace
+
+void bind_relax(py::module_& m)
+{
+    const RelaxSettings d;
+    m.def(
+        "relax",
+        [](const std::string& kernel, const std::string& source, const OptionalIntSequence& size,
+           const std::optional<std::string>& cell, double sigma, unsigned long long seed,
+           std::optional<unsigned long long> count, std::optional<int> dim, const OptionalSequence& box,
+           std::optional<double> particle_radius, const std::optional<std::string>& array,
+           std::optional<double> h_over_l, std::optional<double> nh, std::optional<double> k,
+           const std::optional<std::string>& code, std::optional<double> value, const std::string& method, int steps,
+           double tolerance, double gamma, double dt, double damping, double alpha, double max_move, int threads,
+           double rdf_max, std::size_t rdf_bins, double memory_limit, const std::optional<std::string>& output,
+           const OptionalIntSequence& tile, const std::optional<std::string>& history, const OptionalParams& params) {
+            const RelaxSettings settings{RelaxMethod::pressure, steps, tolerance, gamma, dt, damping, alpha, max_move, threads};
+            std::optional<std::string> tiles;
+            if (!tile.is_none()) tiles = list_text(tile, "tile", "whole numbers of copies [N1, N2] or [N1, N2, N3]");
+            return relax_command(kernel, {source, size, cell, sigma, seed, count, dim, box, particle_radius, array},
+                         {h_over_l, nh, k, code, value, method, settings, rdf_max, rdf_bins, memory_limit, output,
+                          tiles, history},
+                         params);
+        },
+        py::arg("kernel"), py::arg("source"), py::kw_only(), py::arg("size") = py::none(), py::arg("cell") = py::none(),
+        py::arg("sigma") = 0.0, py::arg("seed") = 1, py::arg("count") = py::none(), py::arg("dim") = py::none(),
+        py::arg("box") = py::none(), py::arg("particle_radius") = py::none(), py::arg("array") = py::none(),
+        py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(), py::arg("k") = py::none(),
+        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("method") = "pressure",
+        py::arg("steps") = d.steps, py::arg("tolerance") = d.tolerance, py::arg("gamma") = d.gamma,
+        py::arg("dt") = d.time_step, py::arg("damping") = d.damping, py::arg("alpha") = d.alpha,
+        py::arg("max_move") = d.max_move, py::arg("threads") = d.threads, py::arg("rdf_max") = 3.0,
+        py::arg("rdf_bins") = 60, py::arg("memory_limit") = 0.0, py::arg("output") = py::none(),
+        py::arg("tile") = py::none(), py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax,
+        py::call_guard<InterruptScope>());
+}
+
+} // namespace sphkern
