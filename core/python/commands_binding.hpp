@@ -10,5 +10,6 @@ namespace sphkern {
 void bind_kernel_commands(pybind11::module_& m);
 void bind_relax(pybind11::module_& m);
 void bind_studies(pybind11::module_& m);
+void bind_read_particles(pybind11::module_& m);
 
 } // namespace sphkern

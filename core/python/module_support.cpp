@@ -60,4 +60,16 @@ py::object to_python(const nlohmann::json& document)
     return py::module_::import("json").attr("loads")(document.dump());
 }
 
+pybind11::array_t<double> positions_array(const ParticleSet& set)
+{
+    const std::size_t n = set.size(), d = static_cast<std::size_t>(set.dimension);
+    pybind11::array_t<double> out({n, d});
+    auto view = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < n; ++i) {
+        view(i, 0) = set.x[i], view(i, 1) = set.y[i];
+        if (d == 3) view(i, 2) = set.z[i];
+    }
+    return out;
+}
+
 } // namespace sphkern

@@ -4,9 +4,11 @@
 
 #include "kernels/kernel.hpp"
 #include "kernels/kernel_registry.hpp"
+#include "particles/particle_set.hpp"
 #include "requests/evaluation_inputs.hpp"
 
 #include <nlohmann/json_fwd.hpp>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <map>
@@ -27,6 +29,9 @@ Kernel kernel_of(const std::string& spec, const pybind11::object& params);
 
 // a_p as given: a name the lattice offers or a number.
 VolumeCoefficientInput ap_input(const pybind11::object& a_p);
+
+// A set's positions as an (N, D) array.
+pybind11::array_t<double> positions_array(const ParticleSet& set);
 
 // A document as Python objects (dicts, lists, numbers, strings, None).
 pybind11::object to_python(const nlohmann::json& document);

@@ -70,18 +70,6 @@ ParticleSource source_of(const SourceGiven& g)
                               source_sources(FrontEnd::python));
 }
 
-py::array_t<double> positions_of(const ParticleSet& set)
-{
-    const std::size_t n = set.size(), d = static_cast<std::size_t>(set.dimension);
-    py::array_t<double> out({n, d});
-    auto view = out.mutable_unchecked<2>();
-    for (std::size_t i = 0; i < n; ++i) {
-        view(i, 0) = set.x[i], view(i, 1) = set.y[i];
-        if (d == 3) view(i, 2) = set.z[i];
-    }
-    return out;
-}
-
 // The run; where it diverges, the steps before it still go to `history`, and the error says so.
 RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
                                  const std::optional<std::string>& history)
@@ -166,7 +154,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
             write_file_atomically(*g.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
     }
     py::dict out = to_python(document);
-    out["positions"] = positions_of(run.state.set);
+    out["positions"] = positions_array(run.state.set);
     return out;
 }
 

@@ -166,6 +166,11 @@ def stability(kernel: str, lattice: str, k: Optional[float]=..., *, gamma: float
     ...
 
 
+def read_particles(path: str, *, array: Optional[str]=..., box: Optional[Sequence[float]]=..., dim: Optional[int]=..., particle_radius: Optional[float]=...) -> dict:
+    """A particle file's arrays and header as sphkern reads them."""
+    ...
+
+
 def studies() -> list:
     """The shipped studies, as `sphkern studies --json` lists them."""
     ...

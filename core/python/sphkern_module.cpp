@@ -468,4 +468,5 @@ PYBIND11_MODULE(sphkern, m)
     bind_kernel_commands(m);
     bind_relax(m);
     bind_studies(m);
+    bind_read_particles(m);
 }

@@ -1,0 +1,34 @@
+"""sphkern.read_particles gives a file's arrays and header as the readers see them: the values
+written here by h5py (SWIFT's layout, with its Time) and as CSV, the box, the time, and one
+error kind for a missing file. Run by ctest with the module on PYTHONPATH."""
+import numpy as np
+import pytest
+
+import sphkern
+
+h5py = pytest.importorskip("h5py")
+
+
+def test_a_swift_snapshot_reads_as_written(tmp_path):
+    rng = np.random.default_rng(3)
+    x, h, m, rho = rng.uniform(0, 2, (50, 3)), rng.uniform(0.1, 0.2, 50), rng.uniform(1, 2, 50), rng.uniform(0.5, 1, 50)
+    with h5py.File(tmp_path / "s.hdf5", "w") as f:
+        f.create_group("Header").attrs.update({"BoxSize": [2.0, 2.0, 2.0], "NumPart_Total": [50, 0, 0, 0, 0, 0],
+                                               "MassTable": [0.0] * 6, "Time": [1.25]})
+        f.create_group("HydroScheme").attrs["Kernel gamma"] = 1.825742
+        part = f.create_group("PartType0")
+        part["Coordinates"], part["SmoothingLengths"], part["Masses"], part["Densities"] = x, h, m, rho
+    d = sphkern.read_particles(str(tmp_path / "s.hdf5"))
+    assert d["dimension"] == 3 and d["time"] == 1.25 and d["support_per_h"] == 1.825742
+    for name, want in (("positions", x), ("h", h), ("masses", m), ("densities", rho)):
+        assert np.array_equal(d[name], want), name
+    assert np.array_equal(d["box"], 2 * np.eye(3))
+
+
+def test_a_csv_takes_a_box_and_has_no_time(tmp_path):
+    (tmp_path / "p.csv").write_text("x,y\n0.25,0.5\n1.75,0.5\n")
+    d = sphkern.read_particles(str(tmp_path / "p.csv"), box=[1.5, 1])
+    assert d["time"] is None and d["h"] is None and d["box"].tolist() == [[1.5, 0], [0, 1]]
+    assert d["positions"].tolist() == [[0.25, 0.5], [0.25, 0.5]]  # wrapped into the box, as the measures see it
+    with pytest.raises(FileNotFoundError):
+        sphkern.read_particles(str(tmp_path / "none.csv"))
