@@ -1,8 +1,19 @@
-"""The first hour's typos get the right word (item 3 of the first-hour issue): an unknown command
-or option is named with the nearest one, a value that is not a number with the form expected,
-the extra words in the order typed, a misspelt source with the sources there are."""
+"""The first hour (the first-hour issue). Typos get the right word: an unknown command or option
+is named with the nearest one, a value that is not a number with the form expected, the extra
+words in the order typed, a misspelt source with the sources there are. Then what a newcomer
+meets next: a study's paths, read from the study's folder, and `run --reproduce` from any
+folder; the guide's own study outside the repository; relax's density and internal energy;
+the words of the shipped studies; check's columns; the options a budget names; a SWIFT file
+without /HydroScheme; a particle source too sparse for its N_H refused before any section."""
+import json
+import re
+import sys
+from pathlib import Path
+
+import h5py
+import numpy as np
 import pytest
-from conftest import expect
+from conftest import expect, run
 
 CASES = [
     ("command", ["rots"], 2, r'^sphkern: error: unknown command "rots" \(did you mean "roots"\?\); the commands are run, '),
@@ -42,3 +53,51 @@ def test_sphkerns_own_option_after_the_command_is_placed():
 def test_a_memory_limit_below_one_byte_is_not_taken_for_none():
     expect(["particles", "cubic_bspline", "poisson", "--count", "100", "--nh", "40", "--memory-limit", "5e-324"], 2,
            r"^sphkern: error: --memory-limit 5e-324: less than one byte; expected 0")
+
+
+ROOT = Path(__file__).resolve().parents[2]
+
+POWER_KERNEL = {"name": "power_c2", "support": 2, "dimensions": [2, 3], "normalise": True,
+                "parameters": [{"name": "p", "default": 4, "min": 3, "max": 8}],
+                "w": "q < 2 ? (1 - q/2)^p * (1 + p*q/2) : 0"}
+STRETCHED = {"name": "stretched", "dimension": 3, "basis": [[1, 0, 0], [0.5, 0.8660254037844386, 0], [0, 0, 1.7]],
+             "motif": [[0, 0, 0], [0.3333333333333333, 0.3333333333333333, 0.5]]}
+
+
+def write_study_tree(top):
+    """top/plugin/power.json, top/mine/stretched.json, top/mine/grains.csv and top/mine/s.json naming
+    them as they sit beside it; returns the study file."""
+    (top / "plugin").mkdir(parents=True)
+    (top / "mine").mkdir()
+    (top / "plugin" / "power.json").write_text(json.dumps(POWER_KERNEL))
+    (top / "mine" / "stretched.json").write_text(json.dumps(STRETCHED))
+    rng = np.random.default_rng(4)
+    rows = "\n".join(f"{x!r},{y!r},{z!r}" for x, y, z in rng.random((400, 3)))
+    (top / "mine" / "grains.csv").write_text("x,y,z\n" + rows + "\n")
+    study = {"name": "paths", "kernels": ["wendland_c2", {"kernel": "../plugin/power.json", "set": {"p": 5}}],
+             "lattices": ["fcc", "stretched.json"], "k": {"min": 1.0, "max": 2.0, "samples": 11},
+             "particles": {"sources": [{"lattice": "stretched.json", "size": [6, 6, 4]},
+                                       {"file": "grains.csv", "box": [1, 1, 1]}],
+                           "nh": {"min": 60, "max": 80, "steps": 1}}}
+    (top / "mine" / "s.json").write_text(json.dumps(study))
+    return top / "mine" / "s.json"
+
+
+def test_a_study_runs_and_reproduces_from_any_folder(tmp_path):
+    write_study_tree(tmp_path / "files")
+    for folder in ("elsewhere", "third/deeper"):
+        (tmp_path / folder).mkdir(parents=True)
+    out = run(["run", "../files/mine/s.json", "--no-plots", "-o", "out"], cwd=tmp_path / "elsewhere")
+    assert out.returncode == 0, out.stderr
+    results = json.loads((tmp_path / "elsewhere" / "out" / "results.json").read_text())
+    assert results["study_file"] == str(tmp_path / "files" / "mine" / "s.json")
+    again = run(["run", "--reproduce", "../../elsewhere/out/results.json"], cwd=tmp_path / "third" / "deeper")
+    assert again.returncode == 0, again.stderr
+    assert again.stdout.startswith("reproduced: all "), again.stdout
+
+
+def test_a_missing_file_of_a_study_is_named_as_tried(tmp_path):
+    study = write_study_tree(tmp_path / "files")
+    (tmp_path / "files" / "plugin" / "power.json").unlink()
+    tried = re.escape(str(tmp_path / "files" / "plugin" / "power.json"))
+    expect(["run", str(study), "--no-plots", "-o", str(tmp_path / "out")], 3, rf"/kernels/1: .*{tried}")
