@@ -101,3 +101,26 @@ def test_a_missing_file_of_a_study_is_named_as_tried(tmp_path):
     (tmp_path / "files" / "plugin" / "power.json").unlink()
     tried = re.escape(str(tmp_path / "files" / "plugin" / "power.json"))
     expect(["run", str(study), "--no-plots", "-o", str(tmp_path / "out")], 3, rf"/kernels/1: .*{tried}")
+
+
+def test_the_guides_own_study_runs_outside_the_repository(tmp_path):
+    sys.path.insert(0, str(ROOT / "tests" / "cli"))
+    from markdown_docs import blocks
+    text = (ROOT / "share" / "docs" / "guide-lattices-and-studies.md").read_text()
+    found = blocks(text)
+    files = [(w[5:], body) for info, _, body in found for w in info if w.startswith("file=")]
+    names = [name for name, _ in files]
+    assert {"stretched-hcp.json", "my-study.json"} <= set(names), names
+    for name, body in files[:names.index("my-study.json") + 1]:
+        (tmp_path / name).write_text("\n".join(body) + "\n")
+    # The paths are what is checked here: the stability section, most of the run's time, is left out.
+    study = json.loads((tmp_path / "my-study.json").read_text())
+    del study["stability"]
+    (tmp_path / "my-study.json").write_text(json.dumps(study))
+    body = next(body for info, _, body in found if info == ["sh"] and any("my-study.json" in line for line in body))
+    for line in body:
+        argv = line.split()
+        assert argv[0] == "sphkern", line
+        out = run(argv[1:], cwd=tmp_path)
+        assert out.returncode == 0, f"{line}: {out.stderr}"
+    assert (tmp_path / "my-study-results" / "results.json").is_file()
