@@ -122,10 +122,13 @@ SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, 
     return {SmoothingRule::eta, spec.value, 0};
 }
 
-ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run, double eos_gamma,
-                                  const std::optional<RelaxCode>& code, int threads)
+ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run,
+                                  const InitialState& state, const std::optional<RelaxCode>& code, int threads)
 {
-    const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0, mass = run.state.model.mass;
+    const double gamma_eos = state.eos_gamma;
+    const double u = state.u ? *state.u : gamma_eos > 1 ? 1 / (gamma_eos * (gamma_eos - 1)) : 0;
+    // The run's mass is its mean volume (unit density): rho0 times it is rho0 V.
+    const double mass = state.rho0 * run.state.model.mass;
     const double volume = mean_volume(set), density = mass / volume;
     const std::size_t n = set.size();
     if (!code) {

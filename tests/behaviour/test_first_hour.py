@@ -124,3 +124,44 @@ def test_the_guides_own_study_runs_outside_the_repository(tmp_path):
         out = run(argv[1:], cwd=tmp_path)
         assert out.returncode == 0, f"{line}: {out.stderr}"
     assert (tmp_path / "my-study-results" / "results.json").is_file()
+
+
+def relaxed(tmp_path, name, *extra):
+    out = run(["relax", "wendland_c2", "poisson", "--count", "300", "--nh", "60", "--steps", "2", "--output",
+               str(tmp_path / name), *extra])
+    assert out.returncode == 0, out.stderr
+    return tmp_path / name
+
+
+def test_relax_writes_the_density_and_internal_energy_asked_for(tmp_path):
+    with h5py.File(relaxed(tmp_path, "ic.h5", "--rho0", "2.5", "--u", "3.25"), "r") as f:
+        masses, u = f["/PartType0/Masses"][:], f["/PartType0/InternalEnergy"][:]
+        volume = np.prod(f["/Header"].attrs["BoxSize"])
+    assert np.allclose(masses.sum(), 2.5 * volume, rtol=1e-12)
+    assert np.all(u == 3.25)
+    with h5py.File(relaxed(tmp_path, "default.h5"), "r") as f:
+        assert np.allclose(f["/PartType0/Masses"][:].sum(), 1.0 * np.prod(f["/Header"].attrs["BoxSize"]), rtol=1e-12)
+        assert np.allclose(f["/PartType0/InternalEnergy"][:], 0.9, rtol=1e-12)  # c^2 / (gamma (gamma - 1)), gamma 5/3
+    with h5py.File(relaxed(tmp_path, "ic.hdf5", "--code", "pysph", "--rho0", "4"), "r") as f:
+        assert np.all(f["/particles/fluid/arrays/rho"][:] == 4)
+    csv = relaxed(tmp_path, "ic.csv", "--rho0", "0.5").read_text().splitlines()
+    masses = [float(line.split(",")[-1]) for line in csv if line and not line.startswith("#") and line[0] not in "xX"]
+    assert len(masses) == 300 and np.isclose(sum(masses), 0.5, rtol=1e-12)  # the unit box of the Poisson source
+
+
+RELAX = ["relax", "wendland_c2", "poisson", "--count", "300", "--nh", "60", "--steps", "2"]
+INITIAL_STATE_CASES = [
+    ("rho0-zero", [*RELAX, "--output", "x.h5", "--rho0", "0"], 2, r"^sphkern: error: --rho0 0: expected a positive finite number"),
+    ("u-negative", [*RELAX, "--output", "x.h5", "--u", "-1"], 2, r"^sphkern: error: --u -1: expected a positive finite number"),
+    ("u-infinite", [*RELAX, "--output", "x.h5", "--u", "inf"], 2, r"^sphkern: error: --u inf: expected a positive finite number"),
+    ("rho0-without-output", [*RELAX, "--rho0", "2"], 2, r"^sphkern: error: --rho0 sets what --output writes; expected --output too$"),
+    ("u-in-csv", [*RELAX, "--output", "x.csv", "--u", "2"], 2, r"^sphkern: error: --u: x.csv holds x, y\[, z\], h and m, no internal energy; expected an .h5 or .hdf5 --output$"),
+]
+
+
+@pytest.mark.parametrize("args,code,pattern", [c[1:] for c in INITIAL_STATE_CASES], ids=[c[0] for c in INITIAL_STATE_CASES])
+def test_relax_initial_state_is_checked(args, code, pattern, tmp_path):
+    out = run(args, cwd=tmp_path)
+    lines = [line for line in out.stderr.splitlines() if line]
+    assert out.returncode == code and len(lines) == 1 and re.search(pattern, lines[0]), out.stderr
+    assert not list(tmp_path.iterdir())
