@@ -165,3 +165,8 @@ def test_relax_initial_state_is_checked(args, code, pattern, tmp_path):
     lines = [line for line in out.stderr.splitlines() if line]
     assert out.returncode == code and len(lines) == 1 and re.search(pattern, lines[0]), out.stderr
     assert not list(tmp_path.iterdir())
+
+
+def test_the_lattices_3d_title_says_h_over_l_not_eta():
+    title = json.loads((ROOT / "share" / "studies" / "lattices-3d.json").read_text())["title"]
+    assert "eta" not in title and "h/l" in title, title
