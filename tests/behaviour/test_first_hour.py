@@ -170,3 +170,14 @@ def test_relax_initial_state_is_checked(args, code, pattern, tmp_path):
 def test_the_lattices_3d_title_says_h_over_l_not_eta():
     title = json.loads((ROOT / "share" / "studies" / "lattices-3d.json").read_text())["title"]
     assert "eta" not in title and "h/l" in title, title
+
+
+def test_checks_columns_start_alike():
+    out = run(["check", "cubic_bspline"])
+    assert out.returncode == 0, out.stderr
+    rows = [line for line in out.stdout.splitlines() if re.match(r"^  \dD ", line)]
+    names = {re.match(r"^  \dD (\S+)", line).group(1) for line in rows}
+    assert {"gradient_moment", "second_derivative", "normalization"} <= names, names
+    status = {re.match(r"^  \dD \S+ +", line).end() for line in rows}
+    detail = {re.match(r"^  \dD \S+ +\S+ +", line).end() for line in rows}
+    assert len(status) == 1 and len(detail) == 1, out.stdout
