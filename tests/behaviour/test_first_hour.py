@@ -181,3 +181,9 @@ def test_checks_columns_start_alike():
     status = {re.match(r"^  \dD \S+ +", line).end() for line in rows}
     detail = {re.match(r"^  \dD \S+ +\S+ +", line).end() for line in rows}
     assert len(status) == 1 and len(detail) == 1, out.stdout
+
+
+def test_the_zone_scan_budget_names_its_options():
+    expect(["stability", "cubic_bspline", "fcc", "--k", "1.2", "--grid", "400"], 3,
+           r"^sphkern: error: the stability zone scan asks for neighbours x wave vectors = \d+, more than the limit of "
+           r"500000000; make it smaller: a smaller --k or --grid$")
