@@ -187,3 +187,19 @@ def test_the_zone_scan_budget_names_its_options():
     expect(["stability", "cubic_bspline", "fcc", "--k", "1.2", "--grid", "400"], 3,
            r"^sphkern: error: the stability zone scan asks for neighbours x wave vectors = \d+, more than the limit of "
            r"500000000; make it smaller: a smaller --k or --grid$")
+
+
+def test_a_file_without_hydroscheme_is_told_of_code_swift(tmp_path):
+    path = tmp_path / "noscheme.h5"
+    g = (np.arange(6) + 0.5) / 6
+    x = np.array(np.meshgrid(g, g, g, indexing="ij")).reshape(3, -1).T
+    with h5py.File(path, "w") as f:
+        f.create_group("Header").attrs["BoxSize"] = [1.0, 1.0, 1.0]
+        part = f.create_group("PartType0")
+        part["Coordinates"] = x
+        part["SmoothingLengths"] = np.full(len(x), 0.2)
+    expect(["particles", "wendland_c2", str(path)], 3,
+           r"the file's smoothing lengths need a convention: --support-per-h X, .*--code NAME, the code that wrote it "
+           r"\(--code swift: SWIFT's kernel gamma of the kernel\), or give --h-over-l E or --nh N$")
+    out = run(["particles", "wendland_c2", str(path), "--code", "swift"])
+    assert out.returncode == 0, out.stderr
