@@ -203,3 +203,17 @@ def test_a_file_without_hydroscheme_is_told_of_code_swift(tmp_path):
            r"\(--code swift: SWIFT's kernel gamma of the kernel\), or give --h-over-l E or --nh N$")
     out = run(["particles", "wendland_c2", str(path), "--code", "swift"])
     assert out.returncode == 0, out.stderr
+
+
+def test_a_poisson_source_too_sparse_for_its_nh_fails_before_any_section(tmp_path):
+    study = {"name": "sparse", "kernels": ["wendland_c2"], "lattices": ["fcc"], "k": {"samples": 11},
+             "stability": {"k": {"min": 1.0, "max": 2.0, "steps": 4}},
+             "particles": {"sources": [{"poisson": 3, "count": 2000}], "nh": {"min": 1, "max": 60, "steps": 2}}}
+    (tmp_path / "s.json").write_text(json.dumps(study))
+    out = run(["--log-level", "info", "run", "s.json", "--no-plots", "-o", "out"], cwd=tmp_path)
+    lines = [line for line in out.stderr.splitlines() if line]
+    assert out.returncode == 3, out.stderr
+    assert re.search(r"^sphkern: error: s.json: /particles/sources/0: .*particle \d+ has no neighbour inside its support",
+                     lines[-1]), out.stderr
+    assert not any("stability" in line for line in lines), out.stderr  # no section ran before the refusal
+    assert not (tmp_path / "out").exists()
