@@ -217,3 +217,11 @@ def test_a_poisson_source_too_sparse_for_its_nh_fails_before_any_section(tmp_pat
                      lines[-1]), out.stderr
     assert not any("stability" in line for line in lines), out.stderr  # no section ran before the refusal
     assert not (tmp_path / "out").exists()
+
+
+def test_a_code_setting_is_left_to_the_run_where_a_kernel_the_code_lacks_is_left_out(tmp_path):
+    study = {"name": "code", "kernels": ["cubic_bspline", "wendland_c2"], "lattices": ["fcc"], "k": {"samples": 11},
+             "particles": {"sources": [{"poisson": 3, "count": 2000}], "code": {"name": "gadget2", "nngb": 58}}}
+    (tmp_path / "s.json").write_text(json.dumps(study))
+    expect(["--log-level", "warn", "run", "s.json", "--no-plots", "-o", "out"], 0,
+           r"^sphkern: warning: particles: gadget2 does not ship wendland_c2; it is left out of poisson", cwd=tmp_path)

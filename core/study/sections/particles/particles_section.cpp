@@ -144,6 +144,7 @@ ResolvedSources resolve_sources(const StudyParticles& particles, const Study& st
 // section's whole work, and a relaxed source is known only once relaxed: both are left to the run.
 void check_smallest_h(const StudyParticles& p, const Study& study, const StudyInputs& inputs, const ResolvedSources& r)
 {
+    if (p.code) return;
     for (std::size_t i = 0; i < p.sources.size(); ++i) {
         if (p.sources[i].relax) continue;
         const ParticleSet& set = r.sets[i];
