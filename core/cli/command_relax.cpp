@@ -12,6 +12,7 @@
 #include "requests/relax_series.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
+#include "support/text/value_checks.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
@@ -32,6 +33,7 @@ struct RelaxOptions : CommonOptions, SourceOptions {
     std::string kernel, method = "pressure", output, history, tile;
     std::vector<std::string> sets;
     std::optional<double> h_over_l, eta, nh, k;
+    std::optional<double> rho0, u; // of the written initial conditions
     SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
     RelaxSettings settings;
     double memory_limit = 0, rdf_max = 3;
@@ -69,6 +71,9 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with "
                                        "--code phantom any other name (a Phantom full dump, NAME_00000.tmp)");
+    c.add_option("--rho0", o.rho0, "With --output: the density written, masses rho0 V (default 1)");
+    c.add_option("--u", o.u, "With an HDF5 or Phantom --output: the internal energy written (default c^2 / (gamma (gamma - 1)), "
+                             "0.9 for gamma 5/3)");
     c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
     c.add_option("--history", o.history, "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
                                          "at every step as a ParaView series (F_k.vtu beside F.pvd)");
@@ -95,6 +100,21 @@ void write_history(const RelaxOptions& o, const std::vector<RelaxStep>& steps, R
 {
     if (series) series->finish();
     else write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
+}
+
+// --rho0 and --u: positive and finite, for an output that holds them (a .csv holds m, not u).
+void check_initial_state(const RelaxOptions& o)
+{
+    for (const auto& [value, name] : {std::pair{o.rho0, "--rho0"}, std::pair{o.u, "--u"}}) {
+        if (!value) continue;
+        check_positive(*value, ValueSource::option(name));
+        if (o.output.empty())
+            throw Error(ExitCode::usage, fmt::format("{} sets what --output writes; expected --output too", name));
+    }
+    if (o.u && o.output.ends_with(".csv"))
+        throw Error(ExitCode::usage, fmt::format("--u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 "
+                                                 "or .hdf5 --output (or a Phantom dump)",
+                                                 o.output));
 }
 
 // The run; where it diverges, the steps before it (all finite) still go to --history, and the
@@ -150,6 +170,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"), code);
         if (!o.tile.empty() && o.output.empty())
             throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
+        check_initial_state(o);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const auto digest = o.json ? start_source_digest(o) : nullptr;
@@ -170,7 +191,9 @@ Action add_relax_command(Command app)
         if (!o.output.empty()) {
             const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
             const ParticleSet& out = o.tile.empty() ? run.state.set : written;
-            write_particle_file(o.output, out, initial_conditions(kernel, out, run, o.settings.gamma, code, o.settings.threads),
+            write_particle_file(o.output, out,
+                                initial_conditions(kernel, out, run, {o.settings.gamma, o.rho0.value_or(1), o.u}, code,
+                                                   o.settings.threads),
                                 o.settings.threads);
             const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
             const std::string layout = o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace sphkern {
 
 namespace {
@@ -58,9 +60,16 @@ void print_check(const KernelCheck& check)
     const auto& d = check.document;
     fmt::print(results_file(), "{} ({}): {}\n", check.kernel->label(), check.kernel->definition().source,
                check_status_name(check.verdict));
+    // Each column as wide as its longest entry, so that every row's columns start alike (the
+    // status at least as wide as "warn" and "fail", the same for a kernel whose checks are all ok).
+    std::size_t name_width = 0, status_width = 4;
+    for (const auto& c : d["checks"]) {
+        name_width = std::max(name_width, c["check"].get<std::string>().size());
+        status_width = std::max(status_width, c["status"].get<std::string>().size());
+    }
     for (const auto& c : d["checks"])
-        fmt::print(results_file(), "  {}D {:<14} {:<5} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
-                   c["status"].get<std::string>(), c["detail"].get<std::string>());
+        fmt::print(results_file(), "  {}D {:<{}} {:<{}} {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
+                   name_width, c["status"].get<std::string>(), status_width, c["detail"].get<std::string>());
     for (const auto& c : d["checks"])
         if (c.contains("hint"))
             fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),

@@ -123,10 +123,13 @@ SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, 
     return {SmoothingRule::eta, spec.value, 0};
 }
 
-ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run, double eos_gamma,
-                                  const std::optional<RelaxCode>& code, int threads)
+ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, const RelaxResult& run,
+                                  const InitialState& state, const std::optional<RelaxCode>& code, int threads)
 {
-    const double u = eos_gamma > 1 ? 1 / (eos_gamma * (eos_gamma - 1)) : 0, mass = run.state.model.mass;
+    const double gamma_eos = state.eos_gamma;
+    const double u = state.u ? *state.u : gamma_eos > 1 ? 1 / (gamma_eos * (gamma_eos - 1)) : 0;
+    // The run's mass is its mean volume (unit density): rho0 times it is rho0 V.
+    const double mass = state.rho0 * run.state.model.mass;
     const double volume = mean_volume(set), density = mass / volume;
     const std::size_t n = set.size();
     if (!code) {
@@ -152,7 +155,7 @@ ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, 
         // Phantom's h = hfact (m / rho)^(1/3): with its parameter, rho is each particle's SPH
         // density (the solve above); without, the set's m / V at the run's one h.
         out.hfact = solved_h(*code) ? *code->value : out.h[0] / std::cbrt(mass / density);
-        out.eos_gamma = eos_gamma;
+        out.eos_gamma = gamma_eos;
         out.sound_speed = 1; // the relaxation's c
     }
     return out;

@@ -63,16 +63,24 @@ ParticleLayout relax_layout(const std::optional<RelaxCode>& code);
 SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension,
                                    const CodeSettingSources& sources);
 
-// The relaxed set as initial conditions, with the internal energy of an ideal gas whose sound
-// speed is the relaxation's c = 1, u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no ideal
-// gas has that sound speed). Without a code: SWIFT's layout for its own kernels, h = H / gamma
+// What the initial conditions hold beside positions and h: the density rho0 (masses rho0 V,
+// V the mean volume) and the internal energy u, by default that of an ideal gas whose sound
+// speed is the relaxation's c = 1, u = c^2 / (gamma (gamma - 1)) (0 where gamma <= 1: no
+// ideal gas has that sound speed).
+struct InitialState {
+    double eos_gamma = 5.0 / 3;
+    double rho0 = 1;
+    std::optional<double> u;
+};
+
+// The relaxed set as initial conditions (InitialState). Without a code: SWIFT's layout for its own kernels, h = H / gamma
 // with SWIFT's gamma and the kernel's name, and sphkern's h and R for a kernel SWIFT lacks.
 // With a code: its layout and its stored h (code_support_per_h), solved per particle on the
 // run's set (each copy takes the original's) where the code's parameter is given and the code
 // solves h with its density.
 // `written`: the run's set, or copies of it side by side (tiled_set).
 ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
-                                  double eos_gamma, const std::optional<RelaxCode>& code, int threads);
+                                  const InitialState& state, const std::optional<RelaxCode>& code, int threads);
 
 // {"name", "parameter", "value" (if given), "layout", "written_h": "sph_density" or "run_h"}
 // and its line.

@@ -10,7 +10,8 @@ namespace sphkern {
 
 SmoothingSources smoothing_sources(FrontEnd f)
 {
-    return {value_named(f, "h_over_l"), value_named(f, "nh"), value_named(f, "k"), value_named(f, "support_per_h")};
+    return {value_named(f, "h_over_l"), value_named(f, "nh"), value_named(f, "k"), value_named(f, "support_per_h"),
+            value_named(f, "code")};
 }
 
 SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSources& sources, SmoothingSpec fallback)
@@ -34,11 +35,17 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
     if (spec.rule != SmoothingRule::file) return;
     if (set.h.empty()) fail_input(fmt::format("{}: the file has no smoothing lengths; {}", set.name, others));
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
+    // A SWIFT file without /HydroScheme holds no kernel gamma: the code's name gives it.
+    const std::string code = sources.code.name.empty()
+                                 ? ""
+                                 : fmt::format(", {} NAME, the code that wrote it ({} swift: SWIFT's kernel gamma of "
+                                               "the kernel)",
+                                               sources.code.name, sources.code.name);
     if (!(x > 0) || !std::isfinite(x))
         fail_input(fmt::format("{}: the file's smoothing lengths need a convention: {} X, the support radius over the "
                                "stored h (GADGET 1, SWIFT its kernel gamma, PySPH and Phantom the kernel's R, "
-                               "DualSPHysics 2), or {}",
-                               set.name, sources.support_per_h.name, others));
+                               "DualSPHysics 2){}, or {}",
+                               set.name, sources.support_per_h.name, code, others));
 }
 
 void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const std::string& kernel,

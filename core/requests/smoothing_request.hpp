@@ -18,6 +18,7 @@ struct SmoothingArguments {
 
 struct SmoothingSources {
     ValueSource eta, nh, k, support_per_h;
+    ValueSource code; // the code whose convention a file's h is read in; unnamed where there is none
 };
 SmoothingSources smoothing_sources(FrontEnd front_end);
 

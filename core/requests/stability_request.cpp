@@ -2,6 +2,7 @@
 
 #include "analysis/hydrostatic_errors.hpp"
 #include "stability/dispersion.hpp"
+#include "stability/stability_budget.hpp"
 #include "stability/stability_json.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
@@ -85,14 +86,24 @@ nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& 
 {
     const int threads = worker_threads(r.threads);
     const int grid = r.grid.value_or(0);
+    // The work each mode asks for, refused naming the options that make it smaller (the same
+    // limits the computations check once more).
+    const std::string k = bare_name(sources.k), k_max = bare_name(sources.k_max), steps = bare_name(sources.steps),
+                      grid_name = bare_name(sources.grid), path = bare_name(sources.path);
     switch (stability_mode(r)) {
     case StabilityMode::path:
+        check_dispersion_work("the dispersion path", kernel, lattice, *r.k, *r.path_points,
+                              fmt::format("a smaller {} or {}", k, path));
         return dispersion_path_document(kernel, lattice, *r.k, r.gamma, *r.path_points, r.h_model);
     case StabilityMode::wavevector: {
         const auto kappa = checked_wavevector(*r.wavevector, lattice.dimension, sources.wavevector.name);
         return dispersion_document(kernel, lattice, *r.k, r.gamma, kappa, r.h_model);
     }
     case StabilityMode::over_k: {
+        check_stability_budget("the stability scan over k", r.steps, grid, lattice.dimension,
+                               fmt::format("a smaller {} or {}", steps, grid_name));
+        check_stability_work("the stability scan over k", kernel, lattice, *r.k_min, *r.k_max, r.steps, grid,
+                             fmt::format("a smaller {}, {} or {}", k_max, steps, grid_name));
         auto document = stability_over_k_document(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid, threads,
                                                   r.horizon, r.h_model);
         if (r.code) document["code"] = intervals_in_code(*r.code, kernel, lattice, *r.k_max, document);
@@ -100,6 +111,8 @@ nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& 
     }
     case StabilityMode::zone_scan: break;
     }
+    check_stability_work("the stability zone scan", kernel, lattice, *r.k, *r.k, 0, grid,
+                         fmt::format("a smaller {} or {}", k, grid_name));
     return stability_document(kernel, lattice, *r.k, r.gamma, grid, threads, r.horizon, r.h_model);
 }
 

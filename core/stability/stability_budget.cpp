@@ -17,10 +17,10 @@ double stability_wave_vectors(int steps, int grid, int dimension)
     return (steps + 1.0) * zone;
 }
 
-void check_stability_budget(const char* who, int steps, int grid, int dimension)
+void check_stability_budget(const char* who, int steps, int grid, int dimension, const std::string& how)
 {
     check_work_budget(who, "k samples x wave vectors", stability_wave_vectors(steps, grid, dimension),
-                      max_stability_points);
+                      max_stability_points, how);
 }
 
 double dispersion_neighbours(const Kernel& kernel, const Lattice& lattice, double k)
@@ -48,17 +48,18 @@ double stability_neighbour_terms(const Kernel& kernel, const Lattice& lattice, d
 }
 
 void check_stability_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                          int steps, int grid)
+                          int steps, int grid, const std::string& how)
 {
     check_work_budget(who, "neighbours x wave vectors",
                       stability_neighbour_terms(kernel, lattice, k_min, k_max, steps, grid),
-                      max_stability_neighbour_terms);
+                      max_stability_neighbour_terms, how);
 }
 
-void check_dispersion_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k, double wave_vectors)
+void check_dispersion_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k, double wave_vectors,
+                           const std::string& how)
 {
     check_work_budget(who, "neighbours x wave vectors", dispersion_neighbours(kernel, lattice, k) * wave_vectors,
-                      max_stability_neighbour_terms);
+                      max_stability_neighbour_terms, how);
 }
 
 } // namespace sphkern

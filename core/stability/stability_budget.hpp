@@ -5,6 +5,8 @@
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 
+#include <string>
+
 namespace sphkern {
 
 inline constexpr double max_stability_points = 1e8;          // wave vectors over all k samples
@@ -15,8 +17,9 @@ inline constexpr double max_dispersion_neighbours = 4e6;     // neighbours kept 
 // default, 8 in 3D and 32 in 2D); `dimension` 0 counts the larger of 2D and 3D.
 double stability_wave_vectors(int steps, int grid, int dimension);
 
-// Throws Error(input), naming `who` (e.g. "stability --kmin/--kmax"), if over the limit.
-void check_stability_budget(const char* who, int steps, int grid, int dimension);
+// Throws Error(input), naming `who` (e.g. "stability --kmin/--kmax"), if over the limit; `how`
+// (work_budget.hpp) names the options that make the work smaller.
+void check_stability_budget(const char* who, int steps, int grid, int dimension, const std::string& how = "");
 
 // The neighbours of every site within the kernel's support at k: the ball of radius R k d over
 // the volume per site, times the sites (each wave vector sums over all of them).
@@ -31,8 +34,9 @@ void check_dispersion_neighbours(const Kernel& kernel, const Lattice& lattice, d
 double stability_neighbour_terms(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,
                                  int grid);
 void check_stability_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                          int steps, int grid);
+                          int steps, int grid, const std::string& how = "");
 // The same limit for `wave_vectors` wave vectors at one k (a dispersion path).
-void check_dispersion_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k, double wave_vectors);
+void check_dispersion_work(const char* who, const Kernel& kernel, const Lattice& lattice, double k, double wave_vectors,
+                           const std::string& how = "");
 
 } // namespace sphkern

@@ -288,14 +288,17 @@ std::vector<std::string> study_keys()
 Study parse_study(nlohmann::json document, const fs::path& file, std::optional<StudyOrigin> origin)
 {
     Study study;
-    study.file = file.string();
-    study.origin = origin ? *origin : StudyOrigin{study.file, ""};
+    // Relative paths in the study are read from its folder: anchored on the absolute file, they
+    // are absolute, and so is the study_file results.json records (run --reproduce from anywhere).
+    const fs::path anchor = fs::absolute(file).lexically_normal();
+    study.file = anchor.string();
+    study.origin = origin ? *origin : StudyOrigin{file.string(), ""};
     study.document = std::move(document);
     JsonNode root(study.document, study.origin.file, study.origin.pointer);
     root.expect_keys(study_keys());
     study.name = read_name(root.at("name"));
     study.title = root.find("title") ? printable_text(root.at("title").string()) : study.name;
-    read_cases(root, file, study);
+    read_cases(root, anchor, study);
     if (auto k = root.find("k")) read_window(*k, study);
     if (auto e = root.find("epsilon")) {
         study.epsilon = e->number();
@@ -305,9 +308,9 @@ Study parse_study(nlohmann::json document, const fs::path& file, std::optional<S
     if (auto lateral = root.find("lateral")) study.lateral = lateral->boolean();
     if (auto modes = root.find("modes")) study.modes = read_modes(*modes);
     else study.modes.push_back({"default", {}, false, {}, "/modes"});
-    if (auto c = root.find("compare_with")) study.reference = read_compare_with(*c, file);
+    if (auto c = root.find("compare_with")) study.reference = read_compare_with(*c, anchor);
     if (auto p = root.find("plots")) study.plots = p->boolean();
-    read_sections(root, file, study);
+    read_sections(root, anchor, study);
     check_study_budget(study, root);
     return study;
 }

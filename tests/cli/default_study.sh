@@ -126,7 +126,7 @@ for s in d['solutions']: print(repr(s['k']), repr(s['parameter']))
     done
 done
 # The particles section: an unperturbed fcc block gives the lattice's eps_rho at the same k
-# (h = eta V^(1/3), V = a_p d^3), a disturbed one does not.
+# (h = (h/l) V^(1/3), V = a_p d^3), a disturbed one does not.
 cat >"$work/particles.json" <<'STUDY'
 {"name": "p", "kernels": ["cubic_bspline", "wendland_c2"], "lattices": ["fcc"], "k": {"samples": 11},
  "particles": {"sources": [{"lattice": "fcc", "size": [10, 10, 10]}, {"lattice": "fcc", "size": [10, 10, 10], "sigma": 0.1},

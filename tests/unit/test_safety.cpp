@@ -207,4 +207,6 @@ TEST_CASE("a budget message writes whole numbers, never 2e+06 against 2e+06")
     CHECK(over_budget("n", 2000000.5, 2e6) == "asks for n = 2000001, more than the limit of 2000000; make it smaller");
     CHECK(over_budget("k samples x wave vectors", 2001.0 * 400 * 400 * 400, 1e8) ==
           "asks for k samples x wave vectors = 128064000000, more than the limit of 100000000; make it smaller");
+    CHECK(over_budget("n", 3, 2, "a smaller --k or --grid") ==
+          "asks for n = 3, more than the limit of 2; make it smaller: a smaller --k or --grid");
 }

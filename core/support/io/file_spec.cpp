@@ -18,7 +18,7 @@ std::string resolve_beside(const std::string& spec, const fs::path& file, const 
     const fs::path path(spec);
     std::error_code ec;
     if (path.is_absolute()) return spec;
-    const fs::path beside = file.parent_path() / path;
+    const fs::path beside = (file.parent_path() / path).lexically_normal();
     if (fs::is_regular_file(beside, ec)) return beside.string();
     if (spec.find('+') != std::string::npos) {
         std::string joined;

@@ -41,7 +41,7 @@ StudyRelax read_relax(const JsonNode& node)
     if (node.find("nh") && node.find("h_over_l")) node.error("expected one of \"nh\" and \"h_over_l\"");
     auto source = [&](const char* key) { return ValueSource::json(node.file(), node.path() + "/" + key); };
     RelaxSources sources = relax_sources(FrontEnd::python);
-    sources.smoothing = {source("h_over_l"), source("nh"), source("k"), source("support_per_h")};
+    sources.smoothing = {source("h_over_l"), source("nh"), source("k"), source("support_per_h"), ValueSource{}};
     sources.steps = source("steps");
     auto number = [&](const char* key) { const auto n = node.find(key); return n ? std::optional(n->number()) : std::nullopt; };
     r.smoothing = smoothing_spec({number("h_over_l"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);

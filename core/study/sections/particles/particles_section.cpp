@@ -138,6 +138,30 @@ ResolvedSources resolve_sources(const StudyParticles& particles, const Study& st
     return r;
 }
 
+// A sweep's smallest h is its sparsest point: a particle without a neighbour there is refused
+// now, with the error the run would give, not after the sections before this one have run.
+// Only that point is measured, per source and kernel. A code's setting is one point, the
+// section's whole work, and a relaxed source is known only once relaxed: both are left to the run.
+void check_smallest_h(const StudyParticles& p, const Study& study, const StudyInputs& inputs, const ResolvedSources& r)
+{
+    if (p.code) return;
+    for (std::size_t i = 0; i < p.sources.size(); ++i) {
+        if (p.sources[i].relax) continue;
+        const ParticleSet& set = r.sets[i];
+        for (const auto& kernel : inputs.kernels) {
+            if (!kernel.supports(set.dimension)) continue;
+            at_source(study_source(study, p.sources[i].json_path), [&] {
+                ParticleRequest request = particle_request_of(p, study, kernel, set);
+                if (!request.sweep) return;
+                request.smoothing = {request.sweep->rule, std::min(request.sweep->from, request.sweep->to), 0};
+                request.sweep.reset();
+                request.vectors = false;
+                analyse_particles(kernel, set, request);
+            });
+        }
+    }
+}
+
 class ParticlesSection : public StudySection {
 public:
     explicit ParticlesSection(StudyParticles particles) : particles_(std::move(particles)) {}
@@ -153,6 +177,7 @@ public:
     SectionRun resolve(const Study& study, KernelRegistry&, StudyInputs& inputs) const override
     {
         auto sources = std::make_shared<const ResolvedSources>(resolve_sources(particles_, study, inputs));
+        check_smallest_h(particles_, study, inputs, *sources);
         return [p = particles_, sources](const Study& study, const StudyInputs& inputs, const StudyResults&) {
             auto results = std::make_shared<ParticlesResults>();
             for (std::size_t i = 0; i < p.sources.size(); ++i) {
