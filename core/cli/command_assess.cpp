@@ -136,10 +136,11 @@ Action add_assess_command(Command app)
         for (const char* name : {"--box", "--array", "--neighbours-by", "--steps", "--threads"})
             if (command.count(name) > 0)
                 throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
-        for (auto [name, values] : options->ranges)
+        for (const auto& [name, values] : options->ranges)
             if (!values.empty()) {
-                std::replace(name.begin(), name.end(), '_', '-');
-                throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", name));
+                std::string option = name;
+                std::replace(option.begin(), option.end(), '_', '-');
+                throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", option));
             }
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);

@@ -118,7 +118,11 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
     // Newton steps on g (g' from drho / dh, as SWIFT and GADGET step), a step that leaves
     // [h / 2, 2 h] or a g' that is not positive falling back to the fixed point's step. A
     // particle is done once its own residual is below the tolerance, at the h it was measured at.
-    PerParticle h = PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(i, 1.0); }));
+    // The first guess takes the set's mean density, whatever the masses' units.
+    double total_mass = 0;
+    for (std::size_t i = 0; i < n; ++i) total_mass += mass(i);
+    const double mean_density = total_mass / (static_cast<double>(n) * mean_volume);
+    PerParticle h = PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(i, mean_density); }));
     std::vector<double> rho, drho;
     std::vector<std::uint8_t> solving(n, 1);
     DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), threads);

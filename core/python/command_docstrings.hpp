@@ -232,7 +232,12 @@ rdf_bins : int, default 60
 memory_limit : float, default 0.0
     The memory budget in GiB (0: three quarters of the available memory).
 output : str, optional
-    Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or code's) or .csv.
+    Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or code's), .csv, or with code "phantom"
+    any other name (a Phantom full dump).
+rho0 : float, optional
+    With output: the density written, masses rho0 V (default 1).
+u : float, optional
+    With an HDF5 or Phantom output: the internal energy written (default c^2 / (gamma (gamma - 1))).
 tile : sequence of int, optional
     With output: write [N1, N2] or [N1, N2, N3] copies of the relaxed set side by side.
 history : str, optional

@@ -564,6 +564,9 @@ code : str, optional
     support_per_h. The document carries it under "code".
 value : float, optional
     The code's parameter, with code.
+neighbours_by : str, optional
+    With code and value: what the code's density solve counts, "number" or "mass" (default
+    the code's; SWIFT's use_mass_weighted_num_ngb is "mass").
 masses : float or array_like, optional
     The masses m_j, one number or one per particle: eps_rho is computed with them.
 densities : float or array_like, optional

@@ -159,7 +159,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         [kernel_of, to_python](const std::string& kernel_spec, const ArrayLike& positions, const OptionalSequence& box,
                                const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
                                const OptionalFloat& nh, const std::optional<std::string>& code,
-                               const OptionalFloat& value, const OptionalArrayLike& masses,
+                               const OptionalFloat& value, const std::optional<std::string>& neighbours_by,
+                               const OptionalArrayLike& masses,
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
                                const OptionalParams& params) {
@@ -174,6 +175,12 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                 // The code's support over h, not the default of a given h (sphkern's own).
                 if (support_per_h.is_none()) arguments.smoothing.support_per_h.reset();
             } else arguments.code = code_setting_of(code, code_value, particle_sources(FrontEnd::python).code);
+            if (neighbours_by) {
+                if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
+                if (*neighbours_by != "number" && *neighbours_by != "mass")
+                    fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *neighbours_by));
+                arguments.code->counts = *neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+            }
             arguments.rho0 = number_of(rho0, "rho0");
             arguments.depth = depth;
             arguments.threads = threads;
@@ -208,7 +215,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
-        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
+        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("neighbours_by") = py::none(),
+        py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
         py::arg("params") = py::none(), doc::particles,
         py::call_guard<InterruptScope>());

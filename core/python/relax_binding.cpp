@@ -15,6 +15,7 @@
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/process/interruption.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -93,6 +94,7 @@ struct RelaxGiven {
     std::size_t rdf_bins;
     double memory_limit;
     std::optional<std::string> output, tile, history;
+    std::optional<double> rho0, u;
 };
 
 py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g, const OptionalParams& params)
@@ -118,7 +120,16 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
     for (const auto& spec_text : {source_given.spec, kernel_spec})
         if (std::filesystem::exists(spec_text)) inputs.push_back(spec_text);
     check_output_targets(outputs, inputs);
-    if (g.output) check_relax_output(*g.output, named("output"));
+    if (g.output) check_relax_output(*g.output, named("output"), code);
+    for (const auto& [value, key] : {std::pair{g.rho0, "rho0"}, std::pair{g.u, "u"}})
+        if (value) {
+            check_positive(*value, named(key));
+            if (!g.output) fail_input(fmt::format("{}: sets what output writes; expected output too", key));
+        }
+    if (g.u && g.output->ends_with(".csv"))
+        fail_input(fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
+                               "Phantom dump)",
+                               *g.output));
     if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
     const ParticleSource source = source_of(source_given);
     const auto kernel = kernel_of(kernel_spec, params);
@@ -142,10 +153,11 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
             const ParticleSet tiled = g.tile ? tiled_set(run.state.set, tiles, g.settings.threads) : ParticleSet{};
             const ParticleSet& out = g.tile ? tiled : run.state.set;
             write_particle_file(*g.output, out,
-                                initial_conditions(kernel, out, run, g.settings.gamma, code, g.settings.threads),
+                                initial_conditions(kernel, out, run, {g.settings.gamma, g.rho0.value_or(1), g.u}, code,
+                                                   g.settings.threads),
                                 g.settings.threads);
-            const char* layouts[] = {"SWIFT", "GADGET", "PySPH"};
-            const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))] + std::string(" HDF5");
+            const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
+            const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
             document["output"] = {{"file", std::filesystem::absolute(*g.output).lexically_normal().string()},
                                   {"particles", out.size()},
                                   {"layout", layout}};
@@ -173,13 +185,14 @@ void bind_relax(py::module_& m)
            const std::optional<std::string>& code, std::optional<double> value, const std::string& method, int steps,
            double tolerance, double gamma, double dt, double damping, double alpha, double max_move, int threads,
            double rdf_max, std::size_t rdf_bins, double memory_limit, const std::optional<std::string>& output,
-           const OptionalIntSequence& tile, const std::optional<std::string>& history, const OptionalParams& params) {
+           std::optional<double> rho0, std::optional<double> u, const OptionalIntSequence& tile,
+           const std::optional<std::string>& history, const OptionalParams& params) {
             const RelaxSettings settings{RelaxMethod::pressure, steps, tolerance, gamma, dt, damping, alpha, max_move, threads};
             std::optional<std::string> tiles;
             if (!tile.is_none()) tiles = list_text(tile, "tile", "whole numbers of copies [N1, N2] or [N1, N2, N3]");
             return relax_command(kernel, {source, size, cell, sigma, seed, count, dim, box, particle_radius, array},
                          {h_over_l, nh, k, code, value, method, settings, rdf_max, rdf_bins, memory_limit, output,
-                          tiles, history},
+                          tiles, history, rho0, u},
                          params);
         },
         py::arg("kernel"), py::arg("source"), py::kw_only(), py::arg("size") = py::none(), py::arg("cell") = py::none(),
@@ -191,7 +204,7 @@ void bind_relax(py::module_& m)
         py::arg("dt") = d.time_step, py::arg("damping") = d.damping, py::arg("alpha") = d.alpha,
         py::arg("max_move") = d.max_move, py::arg("threads") = d.threads, py::arg("rdf_max") = 3.0,
         py::arg("rdf_bins") = 60, py::arg("memory_limit") = 0.0, py::arg("output") = py::none(),
-        py::arg("tile") = py::none(), py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax,
+        py::arg("rho0") = py::none(), py::arg("u") = py::none(), py::arg("tile") = py::none(), py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax,
         py::call_guard<InterruptScope>());
 }
 

@@ -14,10 +14,13 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace sphkern {
 
 struct CodeSetting {
+    CodeSetting(std::string code_name = {}, double parameter = 0, std::optional<NeighbourCount> count = std::nullopt)
+        : code(std::move(code_name)), value(parameter), counts(count) {}
     std::string code;
     double value = 0;
     // On a particle set, what the code's density solve counts where the code lets it be chosen

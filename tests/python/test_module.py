@@ -233,8 +233,11 @@ def test_bad_input_raises_value_error_with_the_command_lines_message(call, args)
     assert code == (2 if "--gravity" in args else 3)  # a zero direction is an option out of its range; the rest, inputs
     with pytest.raises(ValueError) as raised:
         call()
-    # The same line, but for the option's name: the module's keyword is "gravity", the command line's "--gravity".
-    assert str(raised.value) == message.replace("--gravity", "gravity")
+    # The same line, but for the options' names: the module's keywords are "gravity", "steps" and "grid", the
+    # command line's "--gravity", "--steps" and "--grid".
+    for option in ("gravity", "steps", "grid"):
+        message = message.replace("--" + option, option)
+    assert str(raised.value) == message
 
 
 def test_bad_numbers_and_types_raise_instead_of_crashing():

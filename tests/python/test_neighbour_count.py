@@ -3,7 +3,7 @@
 --code swift --neighbours-by mass` solves h_i^3 sum_j (m_j / m_i) W(r_ij, h_i) = eta^3, the
 default h_i^3 sum_j W(r_ij, h_i) = eta^3. Both checked against a bisection of each rule here,
 with SWIFT's 3D Wendland C2 written out (kernel_hydro.h: w(q) = 21/(2 pi) (1 - q)^4 (1 + 4q),
-H = gamma h, gamma = 1.936492). A code without the switch refuses the other count (exit 2).
+H = gamma h, gamma = sqrt(15/4), which SWIFT writes to 7 digits). A code without the switch refuses the other count (exit 2).
 Run by ctest with SPHKERN_CLI set."""
 import csv
 import json
@@ -16,7 +16,7 @@ import pytest
 h5py = pytest.importorskip("h5py")
 
 CLI = os.environ["SPHKERN_CLI"]
-N, ETA, GAMMA = 300, 1.2348, 1.936492
+N, ETA, GAMMA = 300, 1.2348, (15 / 4) ** 0.5  # kernel_hydro.h rounds it to 1.936492
 
 
 def points():
@@ -83,3 +83,12 @@ def test_a_code_without_the_switch_refuses_the_other_count(tmp_path):
     done = subprocess.run([CLI, "particles", "cubic_bspline", str(tmp_path / "set.hdf5"), "--h-over-l", "1.2",
                            "--neighbours-by", "mass"], capture_output=True, text=True)
     assert done.returncode == 2 and "--neighbours-by chooses what a code's density solve counts" in done.stderr
+
+
+def test_python_counts_as_the_command_line(tmp_path):
+    import sphkern
+    x, m = points()
+    got, _ = sphkern_h(tmp_path, "--neighbours-by", "mass")
+    doc = sphkern.particles("wendland_c2", x, box=[1, 1, 1], masses=m, code="swift", value=ETA, neighbours_by="mass")
+    assert doc["code"]["counts"] == "mass"
+    assert np.array_equal(doc["h"] * doc["support"] / GAMMA, got)

@@ -36,7 +36,12 @@ BY_COMMAND = {
                "--shells": NOT_YET + ": sums over given shell radii",
                "--continue-past-support": NOT_YET + ": a kernel's formula past its support",
                "--box": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--array": NOT_YET + ": assess takes a lattice, not a particle file"},
+               "--array": NOT_YET + ": assess takes a lattice, not a particle file",
+               **{f"--{name}-range": NOT_YET + ": assess takes a lattice, not a particle file" for name in
+                  ("eta", "hfact", "nngb", "hdx", "coefh", "particle-radius")},
+               "--steps": NOT_YET + ": assess takes a lattice, not a particle file",
+               "--threads": NOT_YET + ": assess takes a lattice, not a particle file",
+               "--neighbours-by": NOT_YET + ": assess takes a lattice, not a particle file"},
     "roots": {"--ap": "a_p, as every function names it",
               "--shells": NOT_YET + ": sums over given shell radii",
               "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
@@ -49,13 +54,16 @@ BY_COMMAND = {
                   "--k": "particles takes positions, not a lattice (h = k d needs one)",
                   "--h-over-l-range": NOT_YET + ": a sweep of h", "--nh-range": NOT_YET + ": a sweep of h",
                   "--steps": NOT_YET + ": a sweep of h", "--histogram": NOT_YET + ": histograms (the arrays are returned)",
-                  "--memory-limit": "the positions given are in memory already"},
+                  "--memory-limit": "the positions given are in memory already",
+                  "--keep-going": NOT_YET + ": a series of files (read_particles reads each)",
+                  "--plot": NOT_YET + ": a series of files (read_particles reads each)"},
     "relax": {"--eta": "value with code=\"swift\" (SWIFT's eta); sphkern's own ratio is h_over_l"},
 }
 # Positionals the function takes under another name.
 POSITIONALS = {
     "lattices": {"lattice": "lattices() lists the shipped lattices; load_lattice(path) reads one file"},
-    "particles": {"source": "positions, an array of shape (N, 2) or (N, 3)"},
+    "particles": {"source": "positions, an array of shape (N, 2) or (N, 3)",
+                  "more": "a series of files: read_particles(path) reads each, particles measures its arrays"},
 }
 
 
@@ -139,6 +147,7 @@ def test_the_count_of_options_without_a_keyword():
 
 # --json (16 commands), --plugin (15), --set (12), the codes' parameters by their own names (34,
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
-# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 14 gaps.
-EXPECTED_WITHOUT_KEYWORD = 111
-EXPECTED_GAPS = 14
+# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 25 gaps
+# (assess on a particle file, 11 with its sweep; particles' series, 2).
+EXPECTED_WITHOUT_KEYWORD = 122
+EXPECTED_GAPS = 25
