@@ -537,11 +537,14 @@ Parameters
 ----------
 kernel : str
     A kernel name, a plugin or expression file, or a blend "A+B".
-positions : array_like
-    The positions, shape (N, 2) or (N, 3).
+positions : array_like, str, os.PathLike or sequence of str
+    The positions, shape (N, 2) or (N, 3); or a particle file, read as `sphkern particles
+    FILE` reads it (its h, masses, densities and box as the file has them); or a run's files,
+    measured one by one and returned as a list of documents, each with the file's "time", in
+    the order of those times (the order given where a file has none).
 box : sequence of float, optional
     The sides of a periodic box with a corner at the origin, one per dimension.
-    Default: no box (free particles).
+    Default: no box (free particles), or a file's own.
 h : float or array_like, optional
     The smoothing lengths, one number or one per particle, as stored: the support radius
     is support_per_h times h.

@@ -1,7 +1,9 @@
 #include "module_support.hpp"
 
+#include "requests/source_request.hpp"
 #include "support/error.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <map>
@@ -70,6 +72,21 @@ pybind11::array_t<double> positions_array(const ParticleSet& set)
         if (d == 3) view(i, 2) = set.z[i];
     }
     return out;
+}
+
+ParticleSet load_particle_file(const std::string& path, const std::optional<std::vector<double>>& box,
+                               const std::optional<std::string>& array, const std::optional<int>& dim,
+                               const std::optional<double>& particle_radius)
+{
+    std::string box_text;
+    if (box)
+        for (double side : *box) box_text += (box_text.empty() ? "" : ",") + fmt::format("{}", side);
+    if (box && box_text.empty()) box_text = ","; // an empty sequence: refused as a list without numbers
+    const ParticleSource source = particle_source_of(
+        {path, "", box_text, array.value_or(""), "", 0, 1, 0, dim.value_or(0), particle_radius}, source_sources(FrontEnd::python));
+    if (source.kind != SourceKind::file)
+        fail_input(fmt::format("path: \"{}\" is a lattice or poisson source; expected a particle file", path));
+    return load_source(source, source_sources(FrontEnd::python), 0);
 }
 
 } // namespace sphkern

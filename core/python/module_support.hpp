@@ -13,6 +13,8 @@
 
 #include <map>
 #include <mutex>
+#include <optional>
+#include <vector>
 #include <string>
 
 namespace sphkern {
@@ -29,6 +31,12 @@ Kernel kernel_of(const std::string& spec, const pybind11::object& params);
 
 // a_p as given: a name the lattice offers or a number.
 VolumeCoefficientInput ap_input(const pybind11::object& a_p);
+
+// A particle file as the command line reads it (`box` as --box, `array` as --array, ...),
+// checked and named as Python names them. Call without the GIL.
+ParticleSet load_particle_file(const std::string& path, const std::optional<std::vector<double>>& box,
+                               const std::optional<std::string>& array, const std::optional<int>& dim,
+                               const std::optional<double>& particle_radius);
 
 // A set's positions as an (N, D) array.
 pybind11::array_t<double> positions_array(const ParticleSet& set);

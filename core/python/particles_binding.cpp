@@ -4,6 +4,7 @@
 #include "docstrings.hpp"
 #include "python_arrays.hpp"
 #include "python_types.hpp"
+#include "module_support.hpp"
 
 #include "requests/particles_report.hpp"
 #include "particles/particle_set.hpp"
@@ -16,6 +17,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -150,13 +152,99 @@ py::array_t<double> tensors(std::span<const std::array<double, 6>> E, int dim)
     return out;
 }
 
+// The keywords of one measure, as given.
+struct Given {
+    py::object h, support_per_h, h_over_l, nh;
+    std::optional<std::string> code;
+    py::object value;
+    std::optional<std::string> neighbours_by;
+    py::object masses, densities, rho0, volume, gravity;
+    double depth;
+    int threads;
+};
+
+py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python)
+{
+    ParticleArguments arguments = arguments_of(set, kernel, {g.h, g.support_per_h, g.masses, g.densities}, g.h_over_l,
+                                               g.nh, g.volume, g.gravity);
+    // A code alone: the h given, as that code stores it.
+    const auto code_value = number_of(g.value, "value");
+    if (g.code && !code_value) {
+        arguments.stored_h_code = g.code;
+        // The code's support over h, not the default of a given h (sphkern's own).
+        if (g.support_per_h.is_none()) arguments.smoothing.support_per_h.reset();
+    } else arguments.code = code_setting_of(g.code, code_value, particle_sources(FrontEnd::python).code);
+    if (g.neighbours_by) {
+        if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
+        if (*g.neighbours_by != "number" && *g.neighbours_by != "mass")
+            fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *g.neighbours_by));
+        arguments.code->counts = *g.neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+    }
+    arguments.rho0 = number_of(g.rho0, "rho0");
+    arguments.depth = g.depth;
+    arguments.threads = g.threads;
+    ParticleAnswer answer;
+    {
+        py::gil_scoped_release unlocked;
+        validate_particle_set(set);
+        answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
+    }
+    const auto& m = *answer.measures;
+    const std::size_t d = static_cast<std::size_t>(set.dimension);
+    py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
+    out["h"] = column(answer.h);
+    out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
+    out["volume"] = column(answer.volumes);
+    auto scalar = [&](auto value) {
+        py::array_t<double> values(m.size());
+        for (std::size_t i = 0; i < m.size(); ++i) values.mutable_at(i) = value(i);
+        return values;
+    };
+    out["e0"] = scalar([&](std::size_t i) { return m.scalars[i].e0; });
+    out["eps_rho"] = scalar([&](std::size_t i) { return m.eps_rho_of(i); });
+    out["eps_gradp"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp; });
+    out["eps_gradp_sum"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp_sum; });
+    out["e1"] = rows<3>(m.e1, d);
+    out["m1"] = rows<3>(m.m1, d);
+    out["E"] = tensors(m.E, set.dimension);
+    py::array_t<int> neighbours(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) neighbours.mutable_at(i) = m.scalars[i].neighbours;
+    out["neighbours"] = neighbours;
+    return out;
+}
+
+// A str, an os.PathLike, or a list or tuple of them: files, not positions.
+bool is_paths(const py::object& positions)
+{
+    auto path = [](const py::handle& p) { return py::isinstance<py::str>(p) || py::hasattr(p, "__fspath__"); };
+    if (path(positions)) return true;
+    if (!py::isinstance<py::list>(positions) && !py::isinstance<py::tuple>(positions)) return false;
+    const auto items = py::reinterpret_borrow<py::sequence>(positions);
+    return py::len(items) > 0 && std::all_of(items.begin(), items.end(), path);
+}
+
+std::string path_of(const py::object& p) { return py::str(py::module_::import("os").attr("fspath")(p)).cast<std::string>(); }
+
+// A particle file as `particles FILE` reads it, `box` as --box.
+ParticleSet read_file(const std::string& path, const py::object& box)
+{
+    std::optional<std::vector<double>> sides;
+    if (!box.is_none()) sides = box.cast<std::vector<double>>();
+    ParticleSet set;
+    {
+        py::gil_scoped_release unlocked;
+        set = load_particle_file(path, sides, std::nullopt, std::nullopt, std::nullopt);
+    }
+    return set;
+}
+
 } // namespace
 
 void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {
     m.def(
         "particles",
-        [kernel_of, to_python](const std::string& kernel_spec, const ArrayLike& positions, const OptionalSequence& box,
+        [kernel_of, to_python](const std::string& kernel_spec, const PositionsOrFiles& positions, const OptionalSequence& box,
                                const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
                                const OptionalFloat& nh, const std::optional<std::string>& code,
                                const OptionalFloat& value, const std::optional<std::string>& neighbours_by,
@@ -165,53 +253,27 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
                                const OptionalParams& params) {
             auto kernel = kernel_of(kernel_spec, params);
-            ParticleSet set = set_of(positions, box);
-            ParticleArguments arguments =
-                arguments_of(set, kernel, {h, support_per_h, masses, densities}, h_over_l, nh, volume, gravity);
-            // A code alone: the h given, as that code stores it.
-            const auto code_value = number_of(value, "value");
-            if (code && !code_value) {
-                arguments.stored_h_code = code;
-                // The code's support over h, not the default of a given h (sphkern's own).
-                if (support_per_h.is_none()) arguments.smoothing.support_per_h.reset();
-            } else arguments.code = code_setting_of(code, code_value, particle_sources(FrontEnd::python).code);
-            if (neighbours_by) {
-                if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
-                if (*neighbours_by != "number" && *neighbours_by != "mass")
-                    fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *neighbours_by));
-                arguments.code->counts = *neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+            const Given given{h, support_per_h, h_over_l, nh, code, value, neighbours_by, masses, densities, rho0, volume,
+                              gravity, depth, threads};
+            // A file, or a run's files: each read as the command line reads it, a series in the
+            // order of the times in the files' headers (the order given where one has none).
+            auto typed = [](py::object result) { return py::reinterpret_steal<DictOrList>(result.release()); };
+            if (!is_paths(positions)) return typed(measure(kernel, set_of(positions, box), given, to_python));
+            if (py::isinstance<py::str>(positions) || py::hasattr(positions, "__fspath__"))
+                return typed(measure(kernel, read_file(path_of(positions), box), given, to_python));
+            std::vector<std::pair<std::optional<double>, py::dict>> series;
+            for (const auto& item : positions) {
+                ParticleSet set = read_file(path_of(py::reinterpret_borrow<py::object>(item)), box);
+                const auto time = set.time;
+                py::dict one = measure(kernel, std::move(set), given, to_python);
+                one["time"] = time ? py::object(py::float_(*time)) : py::none();
+                series.emplace_back(time, one);
             }
-            arguments.rho0 = number_of(rho0, "rho0");
-            arguments.depth = depth;
-            arguments.threads = threads;
-            ParticleAnswer answer;
-            {
-                py::gil_scoped_release unlocked;
-                validate_particle_set(set);
-                answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
-            }
-            const auto& m = *answer.measures;
-            const std::size_t d = static_cast<std::size_t>(set.dimension);
-            py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
-            out["h"] = column(answer.h);
-            out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
-            out["volume"] = column(answer.volumes);
-            auto scalar = [&](auto value) {
-                py::array_t<double> values(m.size());
-                for (std::size_t i = 0; i < m.size(); ++i) values.mutable_at(i) = value(i);
-                return values;
-            };
-            out["e0"] = scalar([&](std::size_t i) { return m.scalars[i].e0; });
-            out["eps_rho"] = scalar([&](std::size_t i) { return m.eps_rho_of(i); });
-            out["eps_gradp"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp; });
-            out["eps_gradp_sum"] = scalar([&](std::size_t i) { return m.scalars[i].eps_gradp_sum; });
-            out["e1"] = rows<3>(m.e1, d);
-            out["m1"] = rows<3>(m.m1, d);
-            out["E"] = tensors(m.E, set.dimension);
-            py::array_t<int> neighbours(m.size());
-            for (std::size_t i = 0; i < m.size(); ++i) neighbours.mutable_at(i) = m.scalars[i].neighbours;
-            out["neighbours"] = neighbours;
-            return out;
+            if (std::all_of(series.begin(), series.end(), [](const auto& s) { return s.first.has_value(); }))
+                std::stable_sort(series.begin(), series.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
+            py::list out;
+            for (auto& [time, one] : series) out.append(one);
+            return typed(std::move(out));
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),

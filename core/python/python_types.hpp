@@ -24,6 +24,8 @@ public:
 };
 
 using ArrayLike = Typed<"numpy.typing.ArrayLike">;
+using PositionsOrFiles = Typed<"Union[numpy.typing.ArrayLike, str, os.PathLike, Sequence[str]]">;
+using DictOrList = Typed<"Union[dict, list]">;
 using OptionalArrayLike = Typed<"Optional[numpy.typing.ArrayLike]">;
 using OptionalFloat = Typed<"Optional[float]">;
 using OptionalSequence = Typed<"Optional[Sequence[float]]">;

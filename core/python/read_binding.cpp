@@ -3,7 +3,6 @@
 #include "commands_binding.hpp"
 #include "module_support.hpp"
 
-#include "requests/source_request.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -27,18 +26,10 @@ py::object column(const ParticleValues& values)
 py::dict read_particles(const std::string& path, const std::optional<std::string>& array, const std::optional<std::vector<double>>& box,
                         const std::optional<int>& dim, const std::optional<double>& particle_radius)
 {
-    std::string box_text;
-    if (box)
-        for (double side : *box) box_text += (box_text.empty() ? "" : ",") + fmt::format("{}", side);
-    const ParticleSource source = particle_source_of({path, "", box && box_text.empty() ? "," : box_text, array.value_or(""), "", 0, 1,
-                                                      0, dim.value_or(0), particle_radius},
-                                                     source_sources(FrontEnd::python));
-    if (source.kind != SourceKind::file)
-        fail_input(fmt::format("path: \"{}\" is a lattice or poisson source; expected a particle file", path));
     ParticleSet set;
     {
         py::gil_scoped_release unlocked;
-        set = load_source(source, source_sources(FrontEnd::python), 0);
+        set = load_particle_file(path, box, array, dim, particle_radius);
     }
     py::dict out;
     out["file"] = set.name;

@@ -55,15 +55,15 @@ BY_COMMAND = {
                   "--h-over-l-range": NOT_YET + ": a sweep of h", "--nh-range": NOT_YET + ": a sweep of h",
                   "--steps": NOT_YET + ": a sweep of h", "--histogram": NOT_YET + ": histograms (the arrays are returned)",
                   "--memory-limit": "the positions given are in memory already",
-                  "--keep-going": NOT_YET + ": a series of files (read_particles reads each)",
-                  "--plot": NOT_YET + ": a series of files (read_particles reads each)"},
+                  "--keep-going": NOT_YET + ": a series stops at the first snapshot that fails",
+                  "--plot": NOT_YET + ": a series' figure (the documents hold its numbers)"},
     "relax": {"--eta": "value with code=\"swift\" (SWIFT's eta); sphkern's own ratio is h_over_l"},
 }
 # Positionals the function takes under another name.
 POSITIONALS = {
     "lattices": {"lattice": "lattices() lists the shipped lattices; load_lattice(path) reads one file"},
-    "particles": {"source": "positions, an array of shape (N, 2) or (N, 3)",
-                  "more": "a series of files: read_particles(path) reads each, particles measures its arrays"},
+    "particles": {"source": "positions, an array of shape (N, 2) or (N, 3), a file or a list of files",
+                  "more": "positions takes a file or a list of a run's files"},
 }
 
 

@@ -33,3 +33,28 @@ def test_a_csv_takes_a_box_and_has_no_time(tmp_path):
     assert np.allclose(d["positions"], [[0.25, 0.5], [0.25, 0.5]], rtol=0, atol=1e-15)
     with pytest.raises(FileNotFoundError):
         sphkern.read_particles(str(tmp_path / "none.csv"))
+
+
+def test_particles_takes_a_file_or_a_runs_files_as_the_command_line(tmp_path):
+    import json
+    import os
+    import subprocess
+    cli = os.environ.get("SPHKERN_CLI") or os.path.join(os.path.dirname(sphkern.__file__), "..", "sphkern")
+    rng = np.random.default_rng(9)
+    files = []
+    for k, t in enumerate([0.4, 0.1]):
+        path = tmp_path / f"snap_{k}.hdf5"
+        with h5py.File(path, "w") as f:
+            f.create_group("Header").attrs.update({"BoxSize": [1.0, 1.0, 1.0], "NumPart_Total": [400, 0, 0, 0, 0, 0],
+                                                   "MassTable": [0.0] * 6, "Time": [t]})
+            part = f.create_group("PartType0")
+            part["Coordinates"], part["Masses"] = rng.uniform(0, 1, (400, 3)), np.full(400, 1 / 400)
+        files.append(str(path))
+    one = sphkern.particles("cubic_bspline", files[0], h_over_l=1.3)
+    series = sphkern.particles("cubic_bspline", files, h_over_l=1.3)
+    assert [s["time"] for s in series] == [0.1, 0.4] and series[1]["statistics"] == one["statistics"]
+    assert np.array_equal(series[1]["e0"], one["e0"])
+    if os.path.exists(cli):
+        doc = json.loads(subprocess.run([cli, "particles", "cubic_bspline", files[0], "--h-over-l", "1.3", "--json"],
+                                        capture_output=True, text=True, check=True).stdout)
+        assert doc["statistics"] == one["statistics"]
