@@ -133,6 +133,7 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
     Measured m{load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads), {}, arguments_of(o, sources)};
     phases.lap("read");
     check_output_targets(outputs, m.set.linked_files); // what the file reached through its links
+    if (!vtk.empty()) vtk_format_of(vtk, "--vtk");     // before any work
     if (check) check(m.set);
     m.answer = analyse_particles(kernel, m.set, particle_request(m.arguments, kernel, m.set, sources));
     phases.merge(m.answer.phases);
@@ -168,7 +169,6 @@ Action add_particles_command(Command app)
             return measure_series(o, kernel, command);
         if (!o.plot.empty())
             throw Error(ExitCode::usage, "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
-        if (!o.vtk.empty()) vtk_format_of(o.vtk, "--vtk"); // before any work
         const auto digest = o.json ? start_source_digest(o) : nullptr;
         const Measured m = measure_source(o, kernel, outputs, o.csv, o.vtk);
         if (o.json) print_json(particle_answer_json(kernel, m.set, m.answer, m.arguments), source_inputs(o, kernel, digest.get()));

@@ -65,7 +65,7 @@ TEST_CASE("vtk xml: a .vtu's appended blocks hold the points, the arrays and one
     CHECK(file.ends_with("\n  </AppendedData>\n</VTKFile>\n"));
 }
 
-TEST_CASE("vtk xml: a .pvd lists its files in order, with their times; a series' names sort")
+TEST_CASE("vtk xml: a .pvd lists its files in order with their times, and a series' names sort")
 {
     std::ostringstream out;
     write_pvd(out, {{0, "a_0.vtu"}, {0.25, "a&b_1.vtu"}});
