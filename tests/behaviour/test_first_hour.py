@@ -225,3 +225,15 @@ def test_a_code_setting_is_left_to_the_run_where_a_kernel_the_code_lacks_is_left
     (tmp_path / "s.json").write_text(json.dumps(study))
     expect(["--log-level", "warn", "run", "s.json", "--no-plots", "-o", "out"], 0,
            r"^sphkern: warning: particles: gadget2 does not ship wendland_c2; it is left out of poisson", cwd=tmp_path)
+
+
+def test_particle_figures_are_named_after_their_sources_and_label_their_sweep(tmp_path):
+    study = write_study_tree(tmp_path / "files")
+    out = run(["run", str(study), "-o", str(tmp_path / "out")])
+    assert out.returncode == 0, out.stderr
+    figures = sorted(p.name for p in (tmp_path / "out" / "plots").glob("particles-*.svg"))
+    # The file source by its own name, not its path; the lattice source by its label.
+    assert "particles-grains.svg" in figures and not any("files" in f or "tmp" in f for f in figures), figures
+    script = (tmp_path / "out" / "plots" / "particles-grains.gp").read_text()
+    assert "set xtics ('60' 60, '80' 80)" in script  # N_H 60 to 80: labelled at the sweep's values
+    assert script.count("unset key") == 1  # one legend for the figure

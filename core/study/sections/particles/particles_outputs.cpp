@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <set>
 
 namespace sphkern {
 
@@ -24,16 +26,37 @@ std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source
     return groups;
 }
 
-std::string file_name(const std::string& label)
+// A figure's name from its source's: a file by its own name without its folders and particle
+// extension ("../files/dam-break-2d-0.hdf5" is particles-dam-break-2d-0), each once (-2, -3, ...
+// where two sources would share one).
+std::string file_name(const std::string& label, std::set<std::string>& taken)
 {
+    std::string base = label.substr(label.find_last_of('/') == std::string::npos ? 0 : label.find_last_of('/') + 1);
+    for (const char* ext : {".hdf5", ".h5", ".csv", ".vtk"})
+        if (base.size() > std::strlen(ext) && base.ends_with(ext)) base.resize(base.size() - std::strlen(ext));
     std::string name = "particles-";
-    for (char c : label) {
+    for (char c : base) {
         const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.';
         if (keep) name += c;
         else if (name.back() != '-') name += '-';
     }
     while (name.back() == '-') name.pop_back();
-    return name;
+    std::string unique = name;
+    for (int k = 2; !taken.insert(unique).second; ++k) unique = fmt::format("{}-{}", name, k);
+    return unique;
+}
+
+// gnuplot labels a logarithmic axis at its decades only: a sweep within two decades is labelled
+// at its own values instead.
+std::string neighbour_tics(const std::vector<const ParticlesCase*>& group, double lo, double hi)
+{
+    if (!(hi < 100 * lo)) return {};
+    std::set<double> values;
+    for (const auto* c : group)
+        for (const auto& p : c->points) values.insert(std::stod(fmt::format("{:.3g}", p.nh)));
+    std::string tics;
+    for (double v : values) tics += fmt::format("{}'{:g}' {:.10g}", tics.empty() ? "" : ", ", v, v);
+    return "set xtics (" + tics + ")\n";
 }
 
 } // namespace
@@ -67,6 +90,7 @@ std::string ParticlesResults::markdown(const Study&) const
 void ParticlesResults::draw(const Study&, Canvas& canvas) const
 {
     static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+    std::set<std::string> taken;
     for (const auto& [source, group] : by_source(cases)) {
         std::string data, e0_plot, gradp_plot;
         for (std::size_t i = 0; i < group.size(); ++i) {
@@ -89,14 +113,15 @@ void ParticlesResults::draw(const Study&, Canvas& canvas) const
             for (const auto& p : c->points) lo = std::min(lo, p.nh), hi = std::max(hi, p.nh);
         const std::string body = fmt::format(
             "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
-            "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\nset xlabel 'neighbour number N_H (dimensionless)'\n"
+            "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\n{}set xlabel 'neighbour number N_H (dimensionless)'\n"
             "set key outside right top noenhanced\n"
             "set title 'density of a constant field (dashed: a Poisson set of as many particles)'\n"
             "set ylabel 'RMS of e0 (relative)'\nplot {}\n"
+            "unset key\n" // one legend for the figure: the kernels are the same in both panels
             "set title 'hydrostatic pressure gradient'\nset ylabel 'RMS of eps_gradp (relative)' noenhanced\nplot {}\n"
             "unset multiplot\n",
-            data, source, lo / 1.1, hi * 1.1, e0_plot, gradp_plot);
-        canvas.draw(file_name(source), 1400, 560, body);
+            data, source, lo / 1.1, hi * 1.1, neighbour_tics(group, lo, hi), e0_plot, gradp_plot);
+        canvas.draw(file_name(source, taken), 1400, 560, body);
     }
 }
 
