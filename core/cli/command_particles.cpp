@@ -166,7 +166,7 @@ Action add_particles_command(Command app)
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         if (!o.more.empty() || std::filesystem::is_directory(o.source))
-            return measure_series(o, kernel, command);
+            return measure_series(o, kernel);
         if (!o.plot.empty())
             throw Error(ExitCode::usage, "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
         const auto digest = o.json ? start_source_digest(o) : nullptr;

@@ -43,6 +43,6 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
                         const std::string& csv, const std::string& vtk, const SetCheck& check = {});
 
 // The source and `o.more` (files and folders) as one run's series.
-int measure_series(const ParticlesOptions& o, const Kernel& kernel, const Command& command);
+int measure_series(const ParticlesOptions& o, const Kernel& kernel);
 
 } // namespace sphkern::cli

@@ -142,7 +142,7 @@ nlohmann::json series_inputs(const ParticlesOptions& o, const Kernel& kernel, co
 
 } // namespace
 
-int measure_series(const ParticlesOptions& o, const Kernel& kernel, const Command&)
+int measure_series(const ParticlesOptions& o, const Kernel& kernel)
 {
     const auto files = checked_series_files(o);
     const auto outputs = series_outputs(o, files);

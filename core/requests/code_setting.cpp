@@ -17,6 +17,21 @@ namespace {
 
 PairSmoothing pair_smoothing(const CodeProfile& profile) { return profile.pair_mean ? PairSmoothing::mean : PairSmoothing::own; }
 
+const char* count_name(NeighbourCount counts) { return counts == NeighbourCount::number ? "number" : "mass"; }
+
+// The count asked for, where the code can count that way; else an Error naming the code.
+NeighbourCount counts_of(const CodeProfile& profile, const CodeSetting& setting, const CodeSettingSources& sources)
+{
+    if (!setting.counts) return profile.counts;
+    if (!profile.from_sph_density)
+        sources.code.fail(fmt::format("{}: {} sets h from the mean spacing, with no neighbour count; expected no count", setting.code,
+                                      profile.title));
+    if (*setting.counts != profile.counts && profile.count_switch.empty())
+        sources.code.fail(fmt::format("{}: {} counts neighbours by {} only ({}); expected that count", setting.code, profile.title,
+                                      count_name(profile.counts), profile.count_source));
+    return *setting.counts;
+}
+
 // The h (in d) that gives the code's parameter `value` at rest where m / rho = a_p d^D: the
 // parameter is linear in h, or in h^D for a neighbour number.
 double rest_h(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double value)
@@ -88,25 +103,6 @@ CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& so
     if (profile.sets_volume) code.a_p = code_volume(profile, dim, setting.value);
     return code;
 }
-
-namespace {
-
-const char* count_name(NeighbourCount counts) { return counts == NeighbourCount::number ? "number" : "mass"; }
-
-// The count asked for, where the code can count that way; else an Error naming the code.
-NeighbourCount counts_of(const CodeProfile& profile, const CodeSetting& setting, const CodeSettingSources& sources)
-{
-    if (!setting.counts) return profile.counts;
-    if (!profile.from_sph_density)
-        sources.code.fail(fmt::format("{}: {} sets h from the mean spacing, with no neighbour count; expected no count", setting.code,
-                                      profile.title));
-    if (*setting.counts != profile.counts && profile.count_switch.empty())
-        sources.code.fail(fmt::format("{}: {} counts neighbours by {} only ({}); expected that count", setting.code, profile.title,
-                                      count_name(profile.counts), profile.count_source));
-    return *setting.counts;
-}
-
-} // namespace
 
 SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,
                              int dimension)
