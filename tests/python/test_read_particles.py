@@ -58,3 +58,16 @@ def test_particles_takes_a_file_or_a_runs_files_as_the_command_line(tmp_path):
         doc = json.loads(subprocess.run([cli, "particles", "cubic_bspline", files[0], "--h-over-l", "1.3", "--json"],
                                         capture_output=True, text=True, check=True).stdout)
         assert doc["statistics"] == one["statistics"]
+
+
+def test_bad_arguments_name_the_keyword(tmp_path):
+    (tmp_path / "p.csv").write_text("x,y\n0.25,0.5\n0.75,0.5\n")
+    with pytest.raises(sphkern.BadValue, match=r"^neighbours_by: \"weight\", expected \"number\" or \"mass\"$"):
+        sphkern.particles("cubic_bspline", str(tmp_path / "p.csv"), box=[1, 1], code="swift", value=1.2,
+                          neighbours_by="weight")
+    with pytest.raises(sphkern.BadValue, match=r"^neighbours_by: what a code's density solve counts"):
+        sphkern.particles("cubic_bspline", str(tmp_path / "p.csv"), box=[1, 1], h_over_l=1.2, neighbours_by="mass")
+    with pytest.raises(FileNotFoundError):
+        sphkern.particles("cubic_bspline", [str(tmp_path / "none.csv"), str(tmp_path / "p.csv")], box=[1, 1], h_over_l=1.2)
+    with pytest.raises(sphkern.BadValue, match="box"):
+        sphkern.read_particles(str(tmp_path / "p.csv"), box=[1, -1])
