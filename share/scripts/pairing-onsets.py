@@ -7,7 +7,8 @@ a one-site lattice's modes are longitudinal or transverse by symmetry). The onse
 first of 25 N_H from 20 to 600 (geometric) with pairing, bisected to 1e-4 in k against the
 sample before it. Also the N_H where no mode at all grows faster than 100 d/c, from
 `sphkern stability KERNEL fcc --kmin A --kmax B --steps 40 --h-model M --json`.
-Usage: PYTHONPATH=build/python python3 share/scripts/pairing-onsets.py [build/sphkern] > table.md"""
+Usage: PYTHONPATH=build/python python3 share/scripts/pairing-onsets.py [build/sphkern [KERNEL]] > table.md
+(with KERNEL, that kernel's row only: the documentation's test runs one kernel at a time)."""
 import json
 import math
 import subprocess
@@ -18,6 +19,7 @@ import sphkern
 
 cli = sys.argv[1] if len(sys.argv) > 1 else "build/sphkern"
 kernels = ["cubic_bspline", "quartic_bspline", "morris_quintic", "wendland_c2", "wendland_c4", "wendland_c6"]
+kernels = sys.argv[2:3] or kernels
 nh_min, nh_max = 20.0, 600.0
 volume = 1 / math.sqrt(2)  # fcc with nearest neighbours at d = 1: the volume per particle in d^3
 support = {k["name"]: k["support"] for k in sphkern.kernels()}

@@ -4,7 +4,7 @@ import re
 import unicodedata
 from pathlib import Path
 
-FENCE = re.compile(r"^(```+|~~~+)\s*(.*)$")
+FENCE = re.compile(r"^( *)(```+|~~~+)\s*(.*)$")  # indented inside a list item too
 
 
 def documents(root):
@@ -20,10 +20,10 @@ def blocks(text):
         if not match:
             i += 1
             continue
-        fence, info, start, body = match.group(1), match.group(2).split(), i + 1, []
+        indent, fence, info, start, body = match.group(1), match.group(2), match.group(3).split(), i + 1, []
         i += 1
-        while i < len(lines) and not lines[i].startswith(fence):
-            body.append(lines[i])
+        while i < len(lines) and not lines[i].startswith(indent + fence):
+            body.append(lines[i].removeprefix(indent))
             i += 1
         out.append((info, start + 1, body))
         i += 1
@@ -36,7 +36,7 @@ def outside_fences(text):
     for number, line in enumerate(text.splitlines(), 1):
         match = FENCE.match(line)
         if inside is None and match:
-            inside = match.group(1)
+            inside = match.group(1) + match.group(2)
         elif inside is not None and line.startswith(inside):
             inside = None
         elif inside is None:
@@ -44,9 +44,13 @@ def outside_fences(text):
 
 
 def prose(text):
-    """The lines outside fenced blocks, with inline code spans blanked; (number, line)."""
-    return [(number, re.sub(r"(`+)(?:(?!\1).)+\1", lambda m: " " * len(m.group(0)), line))
-            for number, line in outside_fences(text)]
+    """The lines outside fenced blocks, with inline code spans blanked (a span may go on over
+    line breaks, not over a blank line); (number, line)."""
+    kept = dict(outside_fences(text))
+    whole = "\n".join(kept.get(n, "") for n in range(1, len(text.splitlines()) + 1))
+    blanked = re.sub(r"(`+)(?:(?!\1)(?!\n[ \t]*\n)[^`]|(?!\1)`)+\1",
+                     lambda m: re.sub(r"[^\n]", " ", m.group(0)), whole).split("\n")
+    return [(number, blanked[number - 1]) for number in kept]
 
 
 def slug(heading):
@@ -84,3 +88,41 @@ LINK = re.compile(r"!?\[(?:[^\]\\]|\\.)*\]\(\s*<?([^)\s>]*)>?(?:\s+\"[^\"]*\")?\
 def links(text):
     """(line number, target) of every inline link and image outside code."""
     return [(number, m.group(1)) for number, line in prose(text) for m in LINK.finditer(line)]
+
+
+FIGURE = re.compile(r"(?<![\w.])-?(?:\d+\.\d+(?:e[-+]?\d+)?|\d+e[-+]?\d+)(?![\w]|\.\d)")
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def digits(figure):
+    """The significant digits a figure is written with (0.130: 3; 6.4e-04: 2)."""
+    mantissa = re.split(r"e", figure.lstrip("-"))[0].replace(".", "").lstrip("0")
+    return len(mantissa)
+
+
+def unchecked_figures(text, printed, typed):
+    """(line, figure) of every figure of two or more significant digits in the prose and tables
+    that no command of the document printed (rounded as written, sign aside) and that is not
+    typed on one of its command lines. Inline code is not prose: a value in `code` is a setting."""
+    values = {}
+    for number in NUMBER.findall(printed):
+        try:
+            value = abs(float(number))
+        except ValueError:
+            continue
+        for n in range(1, 8):
+            values.setdefault(n, set()).add(float(f"{value:.{n}g}"))
+    missing, made_by_script = [], False
+    for line, content in prose(text):
+        # A table after <!-- table: python3 share/scripts/... --> is the script's: docs_table.py
+        # runs it again and compares every row.
+        made_by_script = made_by_script and content.startswith("|") or "<!-- table: python3 share/scripts/" in content
+        if made_by_script:
+            continue
+        for figure in FIGURE.findall(content):
+            n = digits(figure)
+            if n < 2 or figure.lstrip("-") in typed:
+                continue
+            if abs(float(figure)) not in values.get(n, set()):
+                missing.append((line, figure))
+    return missing
