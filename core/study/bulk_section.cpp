@@ -103,8 +103,9 @@ StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey
 
 void run_bulk_section(const Study& study, const StudyInputs& inputs, StudyResults& results)
 {
-    Progress progress("study " + study.name, inputs.lattices.size() * inputs.kernels.size() *
-                                                 study.volume_coefficients.size() * study.modes.size());
+    Progress progress("study " + study.name + ", accuracy",
+                      inputs.lattices.size() * inputs.kernels.size() * study.volume_coefficients.size() * study.modes.size(),
+                      part_scope(inputs, "accuracy"));
     for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
         const Lattice& lattice = inputs.lattices[l];
         const int site = inputs.sites[l][0];

@@ -2,8 +2,11 @@
 
 #include "analysis/resolution_axis.hpp"
 #include "analysis/site_errors.hpp"
+#include "study/sections/section_table.hpp"
 #include "support/error.hpp"
 #include "support/text/value_checks.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <sstream>
@@ -125,8 +128,22 @@ StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry)
             for (double a_p : inputs.a_p[l]) resolve_window(study, inputs, l, k, inputs.sites[l].front(), a_p);
     for (const auto& section : study.sections)
         inputs.sections.push_back(section ? section->resolve(study, registry, inputs) : SectionRun());
+    inputs.parts = {"accuracy"};
+    for (std::size_t i = 0; i < inputs.sections.size(); ++i)
+        if (inputs.sections[i]) inputs.parts.emplace_back(section_table()[i].key);
     resolve_reference(study, inputs);
     return inputs;
+}
+
+std::string part_scope(const StudyInputs& inputs, const std::string& part)
+{
+    const auto& parts = inputs.parts;
+    const auto at = std::find(parts.begin(), parts.end(), part);
+    if (parts.size() < 2 || at == parts.end()) return "";
+    std::string scope = fmt::format(" in this part ({} of {})", at - parts.begin() + 1, parts.size());
+    for (auto next = at + 1; next != parts.end(); ++next)
+        scope += (next == at + 1 ? ", then " : next + 1 == parts.end() ? " and " : ", ") + *next;
+    return scope;
 }
 
 std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site, double a_p)

@@ -11,6 +11,7 @@
 
 #include <map>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -25,6 +26,7 @@ struct StudyInputs {
     std::vector<std::vector<EvaluationMode>> evaluation; // [mode][kernel]
     std::vector<SectionRun> sections;                    // [section_table()]: empty where the study has none
     std::optional<ReferenceTable> reference;             // matched to the study's cases
+    std::vector<std::string> parts; // "accuracy", then each section's key the study has, in the order they run
 
     // The study's window in k for kernel `kernel` (an index into `kernels`) on lattice
     // `lattice`, at a site and a_p, as resolve_window worked it out.
@@ -33,6 +35,10 @@ struct StudyInputs {
     using WindowKey = std::tuple<std::size_t, std::size_t, int, double>; // lattice, kernel, site, a_p
     std::map<WindowKey, std::pair<double, double>> windows; // every window the sections use
 };
+
+// What a part's progress estimate covers: " in this part (2 of 3), then particles" (the parts
+// to come are named, not timed: their cost is not known until they run).
+std::string part_scope(const StudyInputs& inputs, const std::string& part);
 
 // Loads and checks every input; nothing is computed before this returns.
 StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry);

@@ -113,10 +113,6 @@ def test_the_guides_own_study_runs_outside_the_repository(tmp_path):
     assert {"stretched-hcp.json", "my-study.json"} <= set(names), names
     for name, body in files[:names.index("my-study.json") + 1]:
         (tmp_path / name).write_text("\n".join(body) + "\n")
-    # The paths are what is checked here: the stability section, most of the run's time, is left out.
-    study = json.loads((tmp_path / "my-study.json").read_text())
-    del study["stability"]
-    (tmp_path / "my-study.json").write_text(json.dumps(study))
     body = next(body for info, _, body in found if info == ["sh"] and any("my-study.json" in line for line in body))
     for line in body:
         argv = line.split()
@@ -237,3 +233,22 @@ def test_particle_figures_are_named_after_their_sources_and_label_their_sweep(tm
     script = (tmp_path / "out" / "plots" / "particles-grains.gp").read_text()
     assert "set xtics ('60' 60, '80' 80)" in script  # N_H 60 to 80: labelled at the sweep's values
     assert script.count("unset key") == 1  # one legend for the figure
+
+
+def test_a_studys_progress_says_which_part_it_estimates_and_what_follows(tmp_path):
+    # An estimate covers the part that runs: the parts after it are named, not timed, since
+    # their cost is not known until they run (a stability part of seconds before a particle
+    # part of minutes made "about 6 s left" read as the study's end).
+    (tmp_path / "parts.json").write_text(json.dumps({
+        "name": "parts", "kernels": ["cubic_bspline", "wendland_c2"], "lattices": ["fcc"],
+        "k": {"min": 1.2, "max": 1.4, "samples": 5},
+        "stability": {"k": {"min": 1.2, "max": 1.4, "steps": 2}, "grid": 4},
+        "particles": {"sources": [{"poisson": 3, "count": 500, "seed": 1}], "nh": {"min": 40, "max": 60, "steps": 1}}}))
+    out = run(["run", "parts.json", "--no-plots", "-o", "out"], cwd=tmp_path, env_extra={"SPHKERN_PROGRESS_SECONDS": "0"})
+    assert out.returncode == 0, out.stderr
+    lines = out.stderr.splitlines()
+    for part, scope in [("study parts, accuracy: 1/2", "in this part (1 of 3), then stability and particles"),
+                        ("stability: 1/2", "in this part (2 of 3), then particles"),
+                        ("particles: 1/2", "in this part (3 of 3)")]:
+        line = next(line for line in lines if part in line)
+        assert re.search(r"about \d+ s left " + re.escape(scope) + "$", line), line

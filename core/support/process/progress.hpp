@@ -12,7 +12,8 @@ namespace sphkern {
 
 class Progress {
 public:
-    Progress(std::string what, std::size_t total);
+    // `scope` follows the estimate: what its "left" covers (" in this part ...").
+    Progress(std::string what, std::size_t total, std::string scope = "");
     ~Progress();
     void step(const std::string& item) { reach(done_ + 1, item); }
     // `done` of the total finished (work shared out among threads, told by one of them).
@@ -20,7 +21,7 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
-    std::string what_;
+    std::string what_, scope_;
     std::size_t total_, done_ = 0;
     bool terminal_;
     double first_after_ = 2, every_ = 5; // seconds

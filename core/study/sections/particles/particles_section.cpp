@@ -11,6 +11,7 @@
 #include "study/study_inputs.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/progress.hpp"
 #include "support/process/work_budget.hpp"
 
 #include <spdlog/spdlog.h>
@@ -63,37 +64,44 @@ ParticleRequest particle_request_of(const StudyParticles& p, const Study& study,
     return particle_request(given, kernel, set, sources);
 }
 
+// One kernel on one source (left out, with a warning, where the study's code does not ship it).
+void analyse_case(const StudyParticles& p, const Study& study, const StudyParticleSource& s, const ParticleSet& set,
+                  const Kernel& kernel, ParticlesResults& results)
+{
+    const CodeProfile* code = p.code ? &code_profile(p.code->name, ValueSource::argument("code")) : nullptr;
+    if (code && !code->user_kernels && !code_ships(*code, kernel, set.dimension)) {
+        spdlog::warn("particles: {} does not ship {}; it is left out of {}", p.code->name, kernel.label(), s.label);
+        return;
+    }
+    throw_if_interrupted();
+    spdlog::info("particles: {} on {}", kernel.label(), s.label);
+    ParticlesCase c;
+    c.source = s.label;
+    c.kernel_label = kernel.label();
+    c.dimension = set.dimension;
+    c.particles = set.measured(); // a PySPH file's first array: its others are neighbours only
+    at_source(study_source(study, s.json_path), [&] {
+        auto answer = analyse_particles(kernel, set, particle_request_of(p, study, kernel, set));
+        c.volume = answer.volume;
+        if (p.code) {
+            const auto given = arguments_of(p);
+            c.code = given.code ? code_answer_text(*given.code)
+                                : stored_code_text(*given.stored_h_code, kernel, set.dimension);
+        }
+        c.points = std::move(answer.points);
+        for (const auto& p : c.points)
+            c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.measured()));
+    });
+    results.cases.push_back(std::move(c));
+}
+
 // Every kernel of the study that supports the set's dimension, on one source.
 void analyse_source(const StudyParticles& p, const Study& study, const StudyInputs& inputs, const StudyParticleSource& s,
-                    const ParticleSet& set, ParticlesResults& results)
+                    const ParticleSet& set, ParticlesResults& results, Progress& progress)
 {
     for (const auto& kernel : inputs.kernels) {
-        if (!kernel.supports(set.dimension)) continue;
-        const CodeProfile* code = p.code ? &code_profile(p.code->name, ValueSource::argument("code")) : nullptr;
-        if (code && !code->user_kernels && !code_ships(*code, kernel, set.dimension)) {
-            spdlog::warn("particles: {} does not ship {}; it is left out of {}", p.code->name, kernel.label(), s.label);
-            continue;
-        }
-        throw_if_interrupted();
-        spdlog::info("particles: {} on {}", kernel.label(), s.label);
-        ParticlesCase c;
-        c.source = s.label;
-        c.kernel_label = kernel.label();
-        c.dimension = set.dimension;
-        c.particles = set.measured(); // a PySPH file's first array: its others are neighbours only
-        at_source(study_source(study, s.json_path), [&] {
-            auto answer = analyse_particles(kernel, set, particle_request_of(p, study, kernel, set));
-            c.volume = answer.volume;
-            if (p.code) {
-                const auto given = arguments_of(p);
-                c.code = given.code ? code_answer_text(*given.code)
-                                    : stored_code_text(*given.stored_h_code, kernel, set.dimension);
-            }
-            c.points = std::move(answer.points);
-            for (const auto& p : c.points)
-                c.poisson_rms_e0.push_back(poisson_rms_e0(kernel, set.dimension, p.eta, p.eta, set.measured()));
-        });
-        results.cases.push_back(std::move(c));
+        if (kernel.supports(set.dimension)) analyse_case(p, study, s, set, kernel, results);
+        progress.step(kernel.label() + " on " + s.label);
     }
 }
 
@@ -180,13 +188,14 @@ public:
         check_smallest_h(particles_, study, inputs, *sources);
         return [p = particles_, sources](const Study& study, const StudyInputs& inputs, const StudyResults&) {
             auto results = std::make_shared<ParticlesResults>();
+            Progress progress("particles", p.sources.size() * inputs.kernels.size(), part_scope(inputs, "particles"));
             for (std::size_t i = 0; i < p.sources.size(); ++i) {
                 const ParticleSet& set = sources->sets[i];
                 if (const auto kernel = sources->relax_kernel[i])
                     analyse_source(p, study, inputs, p.sources[i], relaxed(study, inputs.kernels[*kernel], p.sources[i], set),
-                                   *results);
+                                   *results, progress);
                 else
-                    analyse_source(p, study, inputs, p.sources[i], set, *results);
+                    analyse_source(p, study, inputs, p.sources[i], set, *results, progress);
             }
             return std::shared_ptr<const SectionResults>(results);
         };

@@ -111,7 +111,7 @@ std::shared_ptr<const SectionResults> run_stability(const StabilitySpec& spec, c
 {
     const std::size_t kernels = inputs.kernels.size();
     std::vector<StabilityCase> cases(inputs.lattices.size() * kernels);
-    Progress progress("stability", cases.size());
+    Progress progress("stability", cases.size(), part_scope(inputs, "stability"));
     std::mutex progress_mutex;
     auto run_case = [&](std::size_t index) {
         cases[index] = stability_case(spec, study, inputs, results, index / kernels, index % kernels);
