@@ -1,29 +1,73 @@
 """The behaviour tables: each case is a command line, the exit code and the one line expected
 on standard error (a regular expression), its own pytest id. SPHKERN_CLI names the program,
-SPHKERN_BROKEN_PLUGINS the folder of the test plugins."""
+SPHKERN_BROKEN_PLUGINS the folder of the test plugins.
+
+In a table's arguments "{w}" is the case's own folder (a fresh tmp_path, or the module's folder
+where the cases share their input files), "{broken}" the test plugins' folder, "{examples}" the
+example lattices, "{lattices}" the shipped lattices and "{data}" tests/data."""
 import os
 import re
 import subprocess
+from pathlib import Path
 
 import pytest
 
 CLI = os.environ["SPHKERN_CLI"]
 BROKEN = os.environ["SPHKERN_BROKEN_PLUGINS"]
+ROOT = Path(__file__).resolve().parents[2]
+DATA = ROOT / "tests" / "data"
+LATTICES = ROOT / "lattices"
+EXAMPLES = LATTICES / "examples"
 
 
-def run(args, cwd=None, env_extra=None):
+def run(args, cwd=None, env_extra=None, **kwargs):
+    """Runs sphkern; bytes that are not UTF-8 in its output come back escaped (\\xff)."""
     env = dict(os.environ, SPHKERN_PLUGIN_TIMEOUT="2", **(env_extra or {}))
-    return subprocess.run([CLI, *args], capture_output=True, text=True, cwd=cwd, env=env, timeout=60)
+    kwargs.setdefault("timeout", 60)
+    return subprocess.run([CLI, *args], capture_output=True, text=True, errors="backslashreplace", cwd=cwd, env=env,
+                          **kwargs)
 
 
-def expect(args, code, pattern, cwd=None):
+def expect(args, code, pattern, cwd=None, env_extra=None):
     """The command exits with `code` and writes one line matching `pattern` (or nothing, for '^$')."""
-    out = run(args, cwd)
+    out = run(args, cwd, env_extra)
     lines = [line for line in out.stderr.splitlines() if line]
     assert out.returncode == code, f"exit {out.returncode}, stderr: {out.stderr}"
     assert len(lines) <= 1, f"more than one line: {out.stderr}"
     assert re.search(pattern, lines[0] if lines else ""), f"stderr: {out.stderr!r}, expected /{pattern}/"
     return out
+
+
+def fill(args, work=None):
+    """The arguments with the folders of the module docstring put in."""
+    names = {"{broken}": BROKEN, "{examples}": str(EXAMPLES), "{lattices}": str(LATTICES), "{data}": str(DATA)}
+    if work is not None:
+        names["{w}"] = str(work)
+    out = []
+    for arg in args:
+        for name, value in names.items():
+            arg = arg.replace(name, value)
+        out.append(arg)
+    return out
+
+
+def table(cases):
+    """parametrize over rows (id, args, code, pattern), each row its own pytest id."""
+    return pytest.mark.parametrize("args,code,pattern", [c[1:] for c in cases], ids=[c[0] for c in cases])
+
+
+def write(folder, files):
+    """Writes {name: text} into folder (text with "{w}" etc. filled in); returns the folder."""
+    for name, text in files.items():
+        path = Path(folder) / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(fill([text], folder)[0])
+    return folder
+
+
+def study(kernels='["cubic_bspline"]', lattices='["fcc"]', rest=""):
+    """A study's JSON text: name "s", its kernels and lattices, then `rest` (more keys, or nothing)."""
+    return '{"name": "s", "kernels": ' + kernels + ', "lattices": ' + lattices + (", " + rest if rest else "") + "}"
 
 
 @pytest.fixture
