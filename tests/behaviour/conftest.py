@@ -22,7 +22,7 @@ EXAMPLES = LATTICES / "examples"
 
 def run(args, cwd=None, env_extra=None, **kwargs):
     """Runs sphkern; bytes that are not UTF-8 in its output come back escaped (\\xff)."""
-    env = dict(os.environ, SPHKERN_PLUGIN_TIMEOUT="2", **(env_extra or {}))
+    env = {**os.environ, "SPHKERN_PLUGIN_TIMEOUT": "2", **(env_extra or {})}
     kwargs.setdefault("timeout", 60)
     return subprocess.run([CLI, *args], capture_output=True, text=True, errors="backslashreplace", cwd=cwd, env=env,
                           **kwargs)
@@ -73,3 +73,39 @@ def study(kernels='["cubic_bspline"]', lattices='["fcc"]', rest=""):
 @pytest.fixture
 def broken():
     return BROKEN
+
+
+def signal_when(ready, signals, args, work, env_extra=None):
+    """Starts sphkern with debug logs, waits (up to 20 s) for a line of its log matching `ready`,
+    then sends the signals. Returns the exit code, the milliseconds from the signal to the exit,
+    standard error without its debug lines, and standard error whole."""
+    import signal as signals_module
+    import time
+    # A signal sent before sphkern installs its handlers is lost or kills it with the default
+    # action: wait for the log line that says the work has begun.
+    err_path, out_path = Path(work) / "signal.err", Path(work) / "signal.out"
+    env = {**os.environ, "SPHKERN_PLUGIN_TIMEOUT": "2", **(env_extra or {})}
+    with open(out_path, "w") as out, open(err_path, "w") as err:
+        process = subprocess.Popen([CLI, "--log-level", "debug", *args], stdout=out, stderr=err, env=env)
+    try:
+        for _ in range(400):
+            if re.search(ready, err_path.read_text(errors="replace"), re.M) or process.poll() is not None:
+                break
+            time.sleep(0.05)
+        for name in signals:
+            if process.poll() is None:
+                process.send_signal(getattr(signals_module, "SIG" + name))
+        start = time.monotonic()
+        code = process.wait(timeout=120)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    elapsed = int((time.monotonic() - start) * 1000)
+    whole = err_path.read_text(errors="replace")
+    return code, elapsed, "\n".join(line for line in whole.splitlines() if "debug:" not in line), whole
+
+
+def leftovers(work, name):
+    """What a run into `name` left in `work`: the folder itself or its staging folder."""
+    return [entry for entry in os.listdir(work) if re.match(r"^\.?" + re.escape(name) + r"(\.partial|$)", entry)]
