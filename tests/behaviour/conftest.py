@@ -65,11 +65,6 @@ def write(folder, files):
     return folder
 
 
-def study(kernels='["cubic_bspline"]', lattices='["fcc"]', rest=""):
-    """A study's JSON text: name "s", its kernels and lattices, then `rest` (more keys, or nothing)."""
-    return '{"name": "s", "kernels": ' + kernels + ', "lattices": ' + lattices + (", " + rest if rest else "") + "}"
-
-
 @pytest.fixture
 def broken():
     return BROKEN
@@ -77,7 +72,7 @@ def broken():
 
 def signal_when(ready, signals, args, work, env_extra=None):
     """Starts sphkern with debug logs, waits (up to 20 s) for a line of its log matching `ready`,
-    then sends the signals. Returns the exit code, the milliseconds from the signal to the exit,
+    then sends the signals. Returns the exit status, the milliseconds from the signal to the exit,
     standard error without its debug lines, and standard error whole."""
     import signal as signals_module
     import time
@@ -102,6 +97,8 @@ def signal_when(ready, signals, args, work, env_extra=None):
             process.kill()
             process.wait()
     elapsed = int((time.monotonic() - start) * 1000)
+    if code < 0:
+        code = 128 - code  # ended by the signal itself: its status as a shell reports it (SIGINT: 130)
     whole = err_path.read_text(errors="replace")
     return code, elapsed, "\n".join(line for line in whole.splitlines() if "debug:" not in line), whole
 

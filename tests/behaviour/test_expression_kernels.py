@@ -4,46 +4,46 @@ by check in the file's own terms."""
 import math
 
 import pytest
-from conftest import expect, fill, run, write
+from conftest import expect, fill, write
 
 # Each case writes its kernel file into its own folder.
 FILE_CASES = [
-    ("x_syntax", {'x_syntax.json': '{"name": "x", "support": 2, "dimensions": [2], "w": "q <= 1 ? (1 - q"}'}, 
-         ['check', '--plugin', '{w}/x_syntax.json'],
-         3, 'x_syntax.json: /w: not a valid expression'),
-    ("x_var", {'x_var.json': '{"name": "x", "support": 2, "dimensions": [2], "w": "1 - q * beta"}'}, 
-         ['eps', '{w}/x_var.json', 'triangular', '--k', '1'],
-         3, 'x_var.json: /w: not a valid expression.*beta'),
-    ("x_zero", {'x_zero.json': '{"name": "x", "support": 2, "dimensions": [2], "w": "0"}'}, 
-         ['eps', '{w}/x_zero.json', 'triangular', '--k', '1'],
-         3, 'x_zero.json: /w: the integral of w over 2D space is not a positive finite number'),
-    ("x_inf", {'x_inf.json': '{"name": "x", "support": 2, "dimensions": [2], "w": "1 / (1 - q)"}'}, 
-         ['eps', '{w}/x_inf.json', 'triangular', '--k', '1'],
-         3, 'x_inf.json: /w: '),
-    ("x_missing", {'x_missing.json': '{"name": "x", "support": 2, "dimensions": [2]}'}, 
-         ['eps', '{w}/x_missing.json', 'triangular', '--k', '1'],
-         3, 'x_missing.json: /: missing required key "w"'),
-    ("x_dim", {'x_dim.json': '{"name": "x", "support": 2, "dimensions": [4], "w": "1"}'}, 
-         ['eps', '{w}/x_dim.json', 'triangular', '--k', '1'],
-         3, 'x_dim.json: /dimensions/0: value 4 is out of range'),
-    ("x_param", {'x_param.json': '{"name": "x", "support": 2, "dimensions": [2], "parameters": [{"name": "a", "default": 5, "min": 0, "max": 1}], "w": "1 - a*q"}'}, 
-         ['eps', '{w}/x_param.json', 'triangular', '--k', '1'],
-         3, 'x_param.json: /parameters/0: expected min <= default <= max'),
-    ("x_key", {'x_key.json': '{"name": "x", "support": 2, "dimensions": [2], "w": "1", "derivative": "0"}'}, 
-         ['eps', '{w}/x_key.json', 'triangular', '--k', '1'],
-         3, 'x_key.json: /: unknown key "derivative"'),
-    ("x_ok-check", {'x_ok.json': '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "normalise": true, "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'}, 
-         ['check', '--plugin', '{w}/x_ok.json'],
-         0, '^$'),
-    ("x_ok-no-parameter-beta", {'x_ok.json': '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "normalise": true, "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'}, 
-         ['design', '{w}/x_ok.json', 'triangular', '--param', 'beta'],
-         3, 'x_ok has no parameter "beta"'),
-    ("composite-and-1d", {'x_1d.json': '{"name": "x_1d", "support": 1, "dimensions": [1], "w": "q < 1 ? 1 - q : 0"}'}, 
-         ['eps', 'composite+{w}/x_1d.json', 'triangular', '--k', '1'],
-         3, 'share no dimension'),
-    ("design-range-reversed", {}, 
-         ['design', 'cubic_bspline+wendland_c2', 'triangular', '--param', 'alpha', '--range', '5', '1'],
-         3, r'parameter range \[5, 1\] is not allowed'),
+    ("x_syntax", {"x_syntax.json": '{"name": "x", "support": 2, "dimensions": [2], "w": "q <= 1 ? (1 - q"}'},
+     ["check", "--plugin", "{w}/x_syntax.json"],
+     3, "x_syntax.json: /w: not a valid expression"),
+    ("x_var", {"x_var.json": '{"name": "x", "support": 2, "dimensions": [2], "w": "1 - q * beta"}'},
+     ["eps", "{w}/x_var.json", "triangular", "--k", "1"],
+     3, "x_var.json: /w: not a valid expression.*beta"),
+    ("x_zero", {"x_zero.json": '{"name": "x", "support": 2, "dimensions": [2], "w": "0"}'},
+     ["eps", "{w}/x_zero.json", "triangular", "--k", "1"],
+     3, "x_zero.json: /w: the integral of w over 2D space is not a positive finite number"),
+    ("x_inf", {"x_inf.json": '{"name": "x", "support": 2, "dimensions": [2], "w": "1 / (1 - q)"}'},
+     ["eps", "{w}/x_inf.json", "triangular", "--k", "1"],
+     3, "x_inf.json: /w: "),
+    ("x_missing", {"x_missing.json": '{"name": "x", "support": 2, "dimensions": [2]}'},
+     ["eps", "{w}/x_missing.json", "triangular", "--k", "1"],
+     3, 'x_missing.json: /: missing required key "w"'),
+    ("x_dim", {"x_dim.json": '{"name": "x", "support": 2, "dimensions": [4], "w": "1"}'},
+     ["eps", "{w}/x_dim.json", "triangular", "--k", "1"],
+     3, "x_dim.json: /dimensions/0: value 4 is out of range"),
+    ("x_param", {"x_param.json": '{"name": "x", "support": 2, "dimensions": [2], "parameters": [{"name": "a", "default": 5, "min": 0, "max": 1}], "w": "1 - a*q"}'},
+     ["eps", "{w}/x_param.json", "triangular", "--k", "1"],
+     3, "x_param.json: /parameters/0: expected min <= default <= max"),
+    ("x_key", {"x_key.json": '{"name": "x", "support": 2, "dimensions": [2], "w": "1", "derivative": "0"}'},
+     ["eps", "{w}/x_key.json", "triangular", "--k", "1"],
+     3, 'x_key.json: /: unknown key "derivative"'),
+    ("x_ok-check", {"x_ok.json": '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "normalise": true, "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'},
+     ["check", "--plugin", "{w}/x_ok.json"],
+     0, "^$"),
+    ("x_ok-no-parameter-beta", {"x_ok.json": '{"name": "x_ok", "support": 2, "dimensions": [2, 3], "normalise": true, "w": "q < 2 ? (1 - q/2)^4 * (1 + 2*q) : 0"}'},
+     ["design", "{w}/x_ok.json", "triangular", "--param", "beta"],
+     3, 'x_ok has no parameter "beta"'),
+    ("composite-and-1d", {"x_1d.json": '{"name": "x_1d", "support": 1, "dimensions": [1], "w": "q < 1 ? 1 - q : 0"}'},
+     ["eps", "composite+{w}/x_1d.json", "triangular", "--k", "1"],
+     3, "share no dimension"),
+    ("design-range-reversed", {},
+     ["design", "cubic_bspline+wendland_c2", "triangular", "--param", "alpha", "--range", "5", "1"],
+     3, r"parameter range \[5, 1\] is not allowed"),
 ]
 
 
@@ -65,9 +65,9 @@ def test_reference_must_be_text(tmp_path):
 # the constant), then the same with "normalise": true.
 def c4(folder, name, constant, keys="", dw_factor="14/3"):
     path = folder / f"{name}.json"
-    path.write_text('{"name": "' + name + '", "support": 2, "dimensions": [3], ' + keys + '\n'
+    path.write_text('{"name": "' + name + '", "support": 2, "dimensions": [3], ' + keys + "\n"
                     '  "w": "q < 2 ? ' + constant + ' * (1 - q/2)^6 * (1 + 3*q + 35/12*q^2) : 0",\n'
-                    '  "dw": "q < 2 ? -' + constant + ' * ' + dw_factor + ' * q * (1 - q/2)^5 * (1 + 2.5*q) : 0"}')
+                    '  "dw": "q < 2 ? -' + constant + " * " + dw_factor + ' * q * (1 - q/2)^5 * (1 + 2.5*q) : 0"}')
     return str(path)
 
 

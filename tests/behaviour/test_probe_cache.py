@@ -6,10 +6,8 @@ import json
 import os
 import re
 import shutil
-import subprocess
 
-import pytest
-from conftest import BROKEN, CLI, expect, run
+from conftest import BROKEN, expect, run
 
 
 def probes(cache, *args):
