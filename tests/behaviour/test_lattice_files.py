@@ -2,10 +2,9 @@
 key, a degenerate basis, a duplicate, a size or depth over the limit, a device, a folder): exit 3
 with the file and the JSON pointer named; the shell fuzzer's slow and crashing inputs."""
 import os
-import subprocess
 
 import pytest
-from conftest import CLI, DATA, expect, fill, table, write
+from conftest import DATA, expect, fill, run, table, write
 
 # Each case writes its lattice file into its own folder.
 FILE_CASES = [
@@ -141,7 +140,7 @@ def test_shells_value(args, code, pattern):
 # only catches a hang.
 @pytest.mark.parametrize("path", sorted(DATA.glob("fuzz-slow-*.json")), ids=lambda p: p.stem)
 def test_fuzz_slow(path):
-    out = subprocess.run([CLI, "shells", str(path), "--radius", "3"], capture_output=True, timeout=120)
+    out = run(["shells", str(path), "--radius", "3"], timeout=120)
     assert out.returncode <= 3, f"exit {out.returncode}"
 
 
