@@ -117,19 +117,20 @@ std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
     return {ValueSource::option("--code"), ValueSource::option(option_of(parameter))};
 }
 
-void set_neighbour_count(CodeSetting& setting, const std::string& neighbours_by)
+void set_density_solve(CodeSetting* setting, const std::string& neighbours_by, bool bias_correction)
 {
+    if (!setting && !neighbours_by.empty())
+        throw Error(ExitCode::usage, "--neighbours-by chooses what a code's density solve counts; expected --code with its "
+                                     "parameter (h solved on the set)");
+    if (!setting && bias_correction)
+        throw Error(ExitCode::usage, "--bias-correction is the code's correction of its density solve; expected --code with "
+                                     "its parameter (h solved on the set)");
+    if (!setting) return;
+    setting->bias_correction = bias_correction;
     if (neighbours_by.empty()) return;
     if (neighbours_by != "number" && neighbours_by != "mass")
         throw Error(ExitCode::usage, fmt::format("--neighbours-by {}: expected number or mass", neighbours_by));
-    setting.counts = neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
-}
-
-void refuse_neighbour_count_without_code(const std::string& neighbours_by)
-{
-    if (!neighbours_by.empty())
-        throw Error(ExitCode::usage, "--neighbours-by chooses what a code's density solve counts; expected --code with its "
-                                     "parameter (h solved on the set)");
+    setting->counts = neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
 }
 
 void add_parameter_ranges(Command c, std::map<std::string, std::vector<double>>& ranges)

@@ -47,10 +47,10 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& codes, const
 // --eta without --code: refused, naming sphkern's own --h-over-l (SWIFT's eta is a code's setting).
 void refuse_eta_without_code(const SettingOptions& codes, const std::optional<double>& eta);
 
-// --neighbours-by number|mass beside --code with its parameter (the count of the code's
-// density solve); Error(usage) for another word, or without a code's parameter.
-void set_neighbour_count(CodeSetting& setting, const std::string& neighbours_by);
-void refuse_neighbour_count_without_code(const std::string& neighbours_by);
+// --neighbours-by number|mass and --bias-correction beside --code with its parameter (what the
+// code's density solve counts, and the bias it subtracts); Error(usage) for another word, or
+// without a code's parameter (`setting` null).
+void set_density_solve(CodeSetting* setting, const std::string& neighbours_by, bool bias_correction);
 
 // Each code's parameter as a sweep, --eta-range A B, --hfact-range A B, ... (`assess` on a file).
 void add_parameter_ranges(Command command, std::map<std::string, std::vector<double>>& ranges);

@@ -19,6 +19,7 @@ namespace {
 
 struct AssessOptions : CommonOptions {
     std::string kernel, lattice, box, array, neighbours_by;
+    bool bias_correction = false;
     SettingOptions setting;
     std::map<std::string, std::vector<double>> ranges; // a code's parameter swept on a file
     int steps = 10, threads = 0;
@@ -74,8 +75,7 @@ int assess_file(const AssessOptions& o)
     if (range && choice->value)
         throw Error(ExitCode::usage, fmt::format("{} sweeps the parameter; expected no single value beside it", range->first));
     name_code(given, choice->code, range ? std::optional<double>(range->second[0]) : choice->value);
-    if (given.code) set_neighbour_count(*given.code, o.neighbours_by);
-    else refuse_neighbour_count_without_code(o.neighbours_by);
+    set_density_solve(given.code ? &*given.code : nullptr, o.neighbours_by, o.bias_correction);
     given.threads = o.threads;
     if (range) {
         const auto sweep = sweep_code_setting(kernel, set, given, sources, o.epsilon, range->second[0], range->second[1], o.steps,
@@ -119,6 +119,8 @@ Action add_assess_command(Command app)
     command.add_option("--threads", options->threads, "Particle file: threads of the sums (default: every core)");
     command.add_option("--neighbours-by", options->neighbours_by,
                        "Particle file: what the code's density solve counts, number or mass (default the code's)");
+    command.add_flag("--bias-correction", options->bias_correction,
+                     "Particle file: the density bias the code subtracts when built so (gadget4: WENDLAND_BIAS_CORRECTION)");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
@@ -133,7 +135,7 @@ Action add_assess_command(Command app)
                                                              name, options->lattice));
             return assess_file(*options);
         }
-        for (const char* name : {"--box", "--array", "--neighbours-by", "--steps", "--threads"})
+        for (const char* name : {"--box", "--array", "--neighbours-by", "--bias-correction", "--steps", "--threads"})
             if (command.count(name) > 0)
                 throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
         for (const auto& [name, values] : options->ranges)

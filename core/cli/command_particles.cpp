@@ -39,8 +39,7 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
         sources.code.value = code_sources(o.codes).second;
         name_code(a, code->code, code->value);
     }
-    if (a.code) set_neighbour_count(*a.code, o.neighbours_by);
-    else refuse_neighbour_count_without_code(o.neighbours_by);
+    set_density_solve(a.code ? &*a.code : nullptr, o.neighbours_by, o.bias_correction);
     if (!o.eta_range.empty())
         throw Error(ExitCode::usage, "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");
     a.smoothing = {o.h_over_l, o.nh, o.k, o.support_per_h};
@@ -73,6 +72,8 @@ void add_options(Command c, ParticlesOptions& o)
     add_code_parameters(c, o.codes);
     c.add_option("--neighbours-by", o.neighbours_by, "With --code: what its density solve counts, number or mass (default the "
                                                      "code's; SWIFT's use_mass_weighted_num_ngb is mass)");
+    c.add_flag("--bias-correction", o.bias_correction, "With --code: the density bias the code subtracts when built so "
+                                                       "(gadget4: WENDLAND_BIAS_CORRECTION, Wendland kernels in 3D)");
     c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--h-over-l-range", o.h_over_l_range, "Sweep h / l over [A, B]").expected(2);
     c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)").expected(2).hidden();

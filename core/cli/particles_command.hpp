@@ -17,6 +17,7 @@ namespace sphkern::cli {
 
 struct ParticlesOptions : CommonOptions, SourceOptions {
     std::string kernel, gravity, volume, csv, vtk, plot, neighbours_by;
+    bool bias_correction = false;
     std::vector<std::string> sets, more; // more: a series' further files or folders
     std::vector<double> h_over_l_range, nh_range, eta_range;
     double depth = 1, memory_limit = 0;

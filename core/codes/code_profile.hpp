@@ -10,6 +10,8 @@
 
 namespace sphkern {
 
+struct ValueSource;
+
 // The layout of the initial conditions a code starts from (relax --code NAME --output): HDF5
 // for SWIFT, GADGET and PySPH, Phantom's own full dump; none for a code that starts from files
 // of its own that sphkern does not write (a .csv output holds its h).
@@ -44,6 +46,11 @@ struct CodeProfile {
     NeighbourCount counts = NeighbourCount::mass; // what that solve counts, and where the code says so
     std::string count_source;
     std::string count_switch; // the code's setting that makes it count the other way, empty if none
+    // A bias the code subtracts from each particle's density, as a fraction of its own term
+    // m_i W(0, h_i), for a kernel, dimension and parameter value; nullptr where it has none.
+    // The switch that turns it on and where the code says so; the fraction's Error names `source`.
+    std::string bias_switch, bias_source;
+    double (*self_bias)(const Kernel& kernel, int dimension, double value, const ValueSource& source) = nullptr;
     RestPressure rest_pressure = RestPressure::ideal_gas;
     double coef_sound = 0;         // Tait: the default c / sqrt(g H), and where the code sets it
     std::string coef_sound_source;

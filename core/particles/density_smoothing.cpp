@@ -36,8 +36,9 @@ SPHKERN_ENGINE_CLONES void weighted_sums(const double* __restrict w, const doubl
 // solved are visited: in the gather form a particle's density depends on its own h alone.
 class DensityPass {
 public:
-    DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing, int threads)
-        : kernel_(kernel), set_(set), mass_(mass), spacing_(spacing), threads_(threads)
+    DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing, double self_weight,
+                int threads)
+        : kernel_(kernel), set_(set), mass_(mass), spacing_(spacing), self_weight_(self_weight), threads_(threads)
     {
     }
 
@@ -75,7 +76,7 @@ public:
                 const std::size_t i = grid.source(p);
                 double mw = 0, mqdw = 0;
                 weighted_sums(nb.w.data(), nb.dw.data(), nb.q.data(), nb.a.data(), nb.count, mw, mqdw);
-                mw += mass_[i] * kernel_.w(0, dim, k);
+                mw += self_weight_ * mass_[i] * kernel_.w(0, dim, k); // q = 0: nothing in mqdw
                 const double hd = dim == 3 ? h_p * h_p * h_p : h_p * h_p;
                 // W = w(q) / h^D: dW / dh = -(D w + q w') / h^(D+1).
                 rho[i] = mw / hd, drho[i] = -(dim * mw + mqdw) / (hd * h_p);
@@ -90,7 +91,7 @@ private:
     const Kernel& kernel_;
     const ParticleSet& set_;
     std::span<const double> mass_;
-    double spacing_;
+    double spacing_, self_weight_;
     int threads_;
     std::optional<NeighbourGrid> grid_;
     double grid_reach_ = 0;
@@ -100,7 +101,7 @@ private:
 } // namespace
 
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
-                                      double mean_volume, int threads, bool by_number)
+                                      double mean_volume, int threads, bool by_number, double self_weight)
 {
     if (set.neighbours_only > 0)
         fail_input(fmt::format("{}: h from the SPH density is solved for every particle; the set has {} neighbours-only "
@@ -125,7 +126,7 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
     PerParticle h = PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(i, mean_density); }));
     std::vector<double> rho, drho;
     std::vector<std::uint8_t> solving(n, 1);
-    DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), threads);
+    DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), self_weight, threads);
     constexpr int max_passes = 100;
     constexpr double tolerance = 1e-12;
     double residual = INFINITY;

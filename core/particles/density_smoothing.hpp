@@ -15,8 +15,10 @@ namespace sphkern {
 // h_i = c (m_i / rho_i)^(1/D), until every residual is below a relative 1e-12 (the fixed
 // point the codes' own Newton steps reach too); Error(input) if 100 passes do not get there. The masses are the set's,
 // or the mean volume (rho0 = 1) where it has none or the solve counts by number. Every particle is measured: a set with
-// neighbours-only particles is refused (their h is not the solve's).
+// neighbours-only particles is refused (their h is not the solve's). `self_weight` scales each
+// particle's own term m_i W(0, h_i) in rho_i: below 1 where a code subtracts a bias from it
+// (GADGET-4's WENDLAND_BIAS_CORRECTION).
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
-                                      double mean_volume, int threads, bool by_number = false);
+                                      double mean_volume, int threads, bool by_number = false, double self_weight = 1);
 
 } // namespace sphkern

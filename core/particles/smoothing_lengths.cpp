@@ -36,7 +36,8 @@ PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, cons
     case SmoothingRule::k:
         if (set.spacing <= 0) throw std::logic_error("smoothing_lengths: k without a lattice spacing");
         return uniform(spec.value * set.spacing);
-    case SmoothingRule::density: return density_smoothing_lengths(kernel, set, spec.value, mean_volume, threads, spec.by_number);
+    case SmoothingRule::density:
+        return density_smoothing_lengths(kernel, set, spec.value, mean_volume, threads, spec.by_number, spec.self_weight);
     case SmoothingRule::file: break;
     }
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;

@@ -23,6 +23,7 @@ struct SmoothingSpec {
     double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
     PairSmoothing pair = PairSmoothing::own;
     bool by_number = false;    // `density`: the solve counts each neighbour once, not its mass (SWIFT, GADGET-2)
+    double self_weight = 1;    // `density`: the weight of a particle's own term in its density (GADGET-4's bias correction)
 };
 
 // N_H = c_D (R eta)^D, the mean number of neighbours inside the support at uniform density

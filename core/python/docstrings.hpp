@@ -570,6 +570,9 @@ value : float, optional
 neighbours_by : str, optional
     With code and value: what the code's density solve counts, "number" or "mass" (default
     the code's; SWIFT's use_mass_weighted_num_ngb is "mass").
+bias_correction : bool, optional
+    With code and value: the bias the code subtracts from each density when built so
+    ("gadget4": WENDLAND_BIAS_CORRECTION, its Wendland kernels in 3D, a whole nngb).
 masses : float or array_like, optional
     The masses m_j, one number or one per particle: eps_rho is computed with them.
 densities : float or array_like, optional

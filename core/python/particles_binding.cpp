@@ -158,6 +158,7 @@ struct Given {
     std::optional<std::string> code;
     py::object value;
     std::optional<std::string> neighbours_by;
+    bool bias_correction;
     py::object masses, densities, rho0, volume, gravity;
     double depth;
     int threads;
@@ -179,6 +180,10 @@ py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython
         if (*g.neighbours_by != "number" && *g.neighbours_by != "mass")
             fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *g.neighbours_by));
         arguments.code->counts = *g.neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+    }
+    if (g.bias_correction) {
+        if (!arguments.code) fail_input("bias_correction: the code's correction of its density solve; expected code and value too");
+        arguments.code->bias_correction = true;
     }
     arguments.rho0 = number_of(g.rho0, "rho0");
     arguments.depth = g.depth;
@@ -248,13 +253,13 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                                const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
                                const OptionalFloat& nh, const std::optional<std::string>& code,
                                const OptionalFloat& value, const std::optional<std::string>& neighbours_by,
-                               const OptionalArrayLike& masses,
+                               bool bias_correction, const OptionalArrayLike& masses,
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
                                const OptionalParams& params) {
             auto kernel = kernel_of(kernel_spec, params);
-            const Given given{h, support_per_h, h_over_l, nh, code, value, neighbours_by, masses, densities, rho0, volume,
-                              gravity, depth, threads};
+            const Given given{h,         support_per_h, h_over_l, nh,     code,   value,   neighbours_by, bias_correction,
+                              masses,    densities,     rho0,     volume, gravity, depth, threads};
             // A file, or a run's files: each read as the command line reads it, a series in the
             // order of the times in the files' headers (the order given where one has none).
             auto typed = [](py::object result) { return py::reinterpret_steal<DictOrList>(result.release()); };
@@ -278,7 +283,7 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
         py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("neighbours_by") = py::none(),
-        py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
+        py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
         py::arg("params") = py::none(), doc::particles,
         py::call_guard<InterruptScope>());

@@ -6,6 +6,7 @@
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -53,6 +54,21 @@ void require_neighbour_reach(const CodeProfile& profile, const Kernel& kernel, i
         source.fail(fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support, "
                                 "below which {}'s density solve has no h",
                                 value, lone, profile.parameter, profile.title));
+}
+
+// The fraction of a particle's own density term the code subtracts; an Error naming the code
+// where it has no such correction.
+double self_bias(const CodeProfile& profile, const Kernel& kernel, int dimension, double value,
+                 const CodeSettingSources& sources)
+{
+    if (!profile.self_bias) {
+        std::vector<std::string> codes;
+        for (const auto& p : code_profiles())
+            if (p.self_bias) codes.push_back(fmt::format("{} ({})", p.name, p.bias_switch));
+        sources.code.fail(fmt::format("{}: {} subtracts no bias from the density; expected a code that does: {}", profile.name,
+                                      profile.title, fmt::join(codes, ", ")));
+    }
+    return profile.self_bias(kernel, dimension, value, sources.value);
 }
 
 } // namespace
@@ -113,8 +129,10 @@ SmoothingSpec code_smoothing(const CodeSetting& setting, const CodeSettingSource
     require_neighbour_reach(profile, kernel, dimension, setting.value, sources.value);
     // h = c (m / rho)^(1/D): c is the h at rest for m / rho = 1.
     const double c = rest_h(profile, kernel, dimension, 1, setting.value);
-    return {profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0, pair_smoothing(profile),
-            counts_of(profile, setting, sources) == NeighbourCount::number};
+    SmoothingSpec spec{profile.from_sph_density ? SmoothingRule::density : SmoothingRule::eta, c, 0,
+                       pair_smoothing(profile), counts_of(profile, setting, sources) == NeighbourCount::number};
+    if (setting.bias_correction) spec.self_weight = 1 - self_bias(profile, kernel, dimension, setting.value, sources);
+    return spec;
 }
 
 SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSources& sources, const Kernel& kernel,
@@ -146,17 +164,19 @@ nlohmann::json code_answer_json(const CodeSetting& setting)
     nlohmann::json out = {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
                           {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
     if (profile.from_sph_density) out["counts"] = count_name(setting.counts.value_or(profile.counts));
+    if (setting.bias_correction) out["bias_correction"] = profile.bias_switch;
     return out;
 }
 
 std::string code_answer_text(const CodeSetting& setting)
 {
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
-    return fmt::format("{} {} = {:.10g}: h from {}", setting.code, profile.parameter, setting.value,
+    return fmt::format("{} {} = {:.10g}: h from {}{}", setting.code, profile.parameter, setting.value,
                        !profile.from_sph_density               ? "the mean spacing"
                        : setting.counts.value_or(profile.counts) == NeighbourCount::number
                            ? "each particle's neighbour count sum_j W, by number as the code counts (solved for every particle)"
-                                                                  : "each particle's SPH density (solved for every particle)");
+                                                                  : "each particle's SPH density (solved for every particle)",
+                       setting.bias_correction ? ", less the code's bias (" + profile.bias_switch + ")" : "");
 }
 
 nlohmann::json stored_code_json(const std::string& code, const Kernel& kernel, int dimension)

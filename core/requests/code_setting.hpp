@@ -26,6 +26,9 @@ struct CodeSetting {
     // On a particle set, what the code's density solve counts where the code lets it be chosen
     // (SWIFT's SPH:use_mass_weighted_num_ngb); none: the code's default.
     std::optional<NeighbourCount> counts;
+    // On a particle set, the code's density bias correction where it has one (GADGET-4's
+    // WENDLAND_BIAS_CORRECTION); off by default, as in the code.
+    bool bias_correction = false;
 };
 
 // How the front end names the code and its parameter ("--code", "--eta"; "code", "value").
