@@ -75,7 +75,9 @@ def test_lattice_file(tmp_path, files, args, code, pattern):
 
 def test_invalid_utf8(tmp_path):
     (tmp_path / "utf8.json").write_bytes(b'{"name": "\xff\xfe"}')
-    expect(["shells", str(tmp_path / "utf8.json"), "--radius", "2"], 3, r"utf8.json: not valid JSON.*UTF-8")
+    out = expect(["shells", str(tmp_path / "utf8.json"), "--radius", "2"], 3, r"utf8.json: not valid JSON.*UTF-8")
+    # The parser's quote of the bytes it read is made printable: no raw byte reaches the terminal.
+    assert "\\xff" not in out.stderr and "\ufffd" in out.stderr, repr(out.stderr)
 
 
 def test_nested_too_deep(tmp_path):

@@ -2,6 +2,7 @@
 
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/text/printable_text.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <algorithm>
@@ -161,7 +162,8 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& name)
     try {
         return nlohmann::json::parse(text, callback);
     } catch (const nlohmann::json::exception& e) {
-        fail_input(name + ": not valid JSON: " + strip_exception_prefix(e.what()));
+        // The parser quotes the bytes it last read: the file's, so made printable like any file text.
+        fail_input(name + ": not valid JSON: " + printable_text(strip_exception_prefix(e.what())));
     }
 }
 
