@@ -34,16 +34,6 @@ RootsSources window_sources(const AssessSources& s)
     return {s.window, s.epsilon, s.gamma, s.horizon, ValueSource::argument("steps"), s.setting.evaluation};
 }
 
-AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, const AssessRequest& r, double gamma,
-                             HModel h)
-{
-    const auto sample = stability_sample(Dispersion(kernel, lattice, k, gamma, h), reciprocal_lattice(lattice), 0, 0,
-                                         r.horizon);
-    AssessStability s{h, sample.verdict, sample.growth_time, ""};
-    if (sample.verdict != Verdict::stable) s.mode = mode_kind_name(sample.mode.kind);
-    return s;
-}
-
 // "SWIFT eta 1.2348" or "k = 1.2".
 std::string setting_text(const AssessResult& a)
 {
@@ -58,12 +48,16 @@ const AssessStability& own_model(const AssessResult& a)
     return a.stability[adaptive ? 1 : 0];
 }
 
+} // namespace
+
 std::string stability_text(const AssessStability& s)
 {
     if (s.verdict == Verdict::stable) return "stable";
     return fmt::format("{} ({} mode growing in {:.3g} d/c)", s.verdict == Verdict::weak ? "weakly unstable" : "unstable",
                        s.mode, s.growth_time);
 }
+
+namespace {
 
 std::string accuracy_text(const AssessResult& a, double epsilon)
 {
@@ -86,6 +80,14 @@ std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
 }
 
 } // namespace
+
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h, double horizon)
+{
+    const auto sample = stability_sample(Dispersion(kernel, lattice, k, gamma, h), reciprocal_lattice(lattice), 0, 0, horizon);
+    AssessStability s{h, sample.verdict, sample.growth_time, ""};
+    if (sample.verdict != Verdict::stable) s.mode = mode_kind_name(sample.mode.kind);
+    return s;
+}
 
 void check_epsilon(double epsilon, const ValueSource& source)
 {
@@ -111,7 +113,7 @@ AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, co
         a.worst = std::max({a.worst, std::abs(s.values.eps_rho), std::abs(s.values.eps_gradp)});
     a.pressure = stability_pressure(a.code, r.gamma, r.coef_sound, sources.coef_sound);
     for (const HModel h : {HModel::fixed, HModel::adaptive})
-        a.stability.push_back(stability_at(kernel, lattice, a.at.k, r, a.pressure.gamma, h));
+        a.stability.push_back(stability_at(kernel, lattice, a.at.k, a.pressure.gamma, h, r.horizon));
     a.window = run_roots(window_request(r, a.code, a.pressure.gamma), window_sources(sources), kernel, lattice);
     a.verdict = fmt::format("{} with {} on {}: {}, {}; {}", setting_text(a), a.at.kernel, a.at.lattice,
                             stability_text(own_model(a)), accuracy_text(a, r.epsilon), recommendation_text(a, r));

@@ -39,6 +39,11 @@ struct AssessStability {
     std::string mode;       // its kind ("longitudinal", "transverse", "optical"), where one grows
 };
 
+// The linear verdict at one k for an h model (the fastest mode's kind and growth time where
+// unstable), and it in words: "stable", "unstable (transverse mode growing in 9.75 d/c)".
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h, double horizon);
+std::string stability_text(const AssessStability& s);
+
 struct AssessResult {
     EpsAtK at;                  // k and the errors at every site
     double worst = 0;           // the largest |eps_rho| or |eps_gradP| over the sites

@@ -121,3 +121,46 @@ def test_a_sweep_of_the_codes_parameter_finds_the_setting_the_set_needs(tmp_path
                            "--hdx-range", "0.6", "0.7", "--steps", "2"], capture_output=True, text=True)
     assert done.returncode == 2 and "--hdx-range: [0.6, 0.7]: condition (22)" in done.stderr, done.stderr
     assert len(done.stderr.strip().splitlines()) == 1
+
+
+def run_json(*args):
+    done = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_stability_of_the_same_setting_on_every_lattice_of_the_sets_dimension(tmp_path):
+    # A 3D glass-like set: each shipped 3D lattice at the code's own setting (SWIFT: k from eta with
+    # the lattice's SPH density, as `eps --code swift` finds it) under SWIFT's model (an ideal gas,
+    # adaptive h), each verdict as `stability` gives it at that k.
+    rng = np.random.default_rng(3)
+    x = rng.uniform(0, 1, (2000, 3))
+    with open(tmp_path / "set.csv", "w") as f:
+        f.write("x,y,z\n" + "".join(f"{p[0]!r},{p[1]!r},{p[2]!r}\n" for p in x))
+    doc = run_json("assess", "wendland_c2", str(tmp_path / "set.csv"), "--box", "1,1,1", "--code", "swift", "--eta", "1.2348")
+    lattices = doc["stability"]["lattices"]
+    assert [l["lattice"] for l in lattices] == ["bcc", "fcc", "hcp", "hex_prism", "sc"]
+    assert "an ideal gas" in doc["stability"]["pressure"]
+    for l in lattices:
+        k = run_json("eps", "wendland_c2", l["lattice"], "--code", "swift", "--eta", "1.2348")["k"]
+        assert abs(l["k"] / k - 1) < 1e-12 and l["h_model"] == "adaptive"
+        alone = run_json("stability", "wendland_c2", l["lattice"], "--k", repr(l["k"]), "--h-model", "adaptive")
+        assert l["verdict"] == alone["verdict"], (l, alone["verdict"])
+    stable = [l["lattice"] for l in lattices if l["verdict"] == "stable"]
+    assert stable and len(stable) < len(lattices)  # the lattices disagree at this setting: a real choice
+    assert f"stable on {', '.join(stable)}, not on" in doc["verdict"]
+
+
+def test_a_stored_h_is_carried_to_each_lattice_at_the_same_h_over_l_and_a_tait_codes_pressure(tmp_path):
+    # 2D, PySPH (a weakly compressible code: Tait's pressure at rest): the set's mean h over the mean
+    # spacing on square and triangular, k = (h/l) a_p^(1/2) with each lattice's Voronoi a_p.
+    x = square_block(14)
+    write_csv(tmp_path / "block.csv", x, np.ones(len(x)), np.ones(len(x)))
+    doc = assess(tmp_path / "block.csv")
+    h_over_l = doc["particles"]["h_over_l"]
+    lattices = {l["lattice"]: l for l in doc["stability"]["lattices"]}
+    assert sorted(lattices) == ["square", "triangular"]
+    assert "Tait" in doc["stability"]["pressure"]
+    assert abs(lattices["square"]["k"] / h_over_l - 1) < 1e-12
+    assert abs(lattices["triangular"]["k"] / (h_over_l * (3**0.5 / 2) ** 0.5) - 1) < 1e-12
+    assert all(l["h_model"] == "fixed" for l in lattices.values())

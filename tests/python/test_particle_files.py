@@ -411,12 +411,14 @@ def test_assess_on_a_file_of_an_fcc_block_gives_the_lattice_verdict(tmp_path):
     assert not doc["condition_22"]["holds"]
     assert abs(doc["condition_22"]["margin"] - (0.01 - abs(lattice["eps_gradp"]))) < 1e-9
     assert doc["verdict"].startswith("swift eta 1.2348 with wendland_c2 on ")
-    assert "inaccurate (98% of the interior's |eps_gradp|" in doc["verdict"] and "fcc, bcc or sc lattice" in doc["verdict"]
+    assert "inaccurate (98% of the interior's |eps_gradp|" in doc["verdict"]
+    # The block's own lattice at the same setting: the k and the verdict of `assess` on fcc.
+    fcc = next(l for l in doc["stability"]["lattices"] if l["lattice"] == "fcc")
+    assert abs(fcc["k"] - lattice["k"]) < 1e-12 and fcc["verdict"] == "stable" and "stable on bcc, fcc, hcp" in doc["verdict"]
     # A periodic lattice has no surface: every particle is interior, with I + E = (1 + eps_gradP) I.
     assert doc["interior"]["particles"] == 500 and doc["surface"]["particles"] == 0
     for stat in ("min", "max"):
         assert abs(doc["interior"]["lambda_min"][stat] - (1 + lattice["eps_gradp"])) < 1e-9
-    assert doc["stability"] is None
     # A lattice's options on a file, and a file without a code's setting, are refused.
     for args, message in ((["--k", "1.2"], "--k needs a lattice"), ([], "a code's setting is assessed; expected --code")):
         done = subprocess.run([CLI, "assess", "wendland_c2", str(tmp_path / "fcc.csv"), "--box", side, *args],
