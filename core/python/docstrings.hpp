@@ -135,18 +135,22 @@ Examples
 True
 )doc";
 
-inline constexpr const char* assess = R"doc(One verdict on a setting, k or an SPH code's own, on a lattice.
+inline constexpr const char* assess = R"doc(One verdict on a setting, k or an SPH code's own, on a lattice or a particle file.
 
 As `sphkern assess`: the errors at every site against condition (22) with the margin, the
 linear verdict for fixed and adaptive h, the recommended setting of a window of k, and one
-line a person can act on.
+line a person can act on. On a particle file, a code's setting judged on the set: its
+interior and free surface told apart, condition (22) on the interior, the same setting's
+linear stability on every lattice of the set's dimension; or the code's parameter swept
+over a range, and the value the set needs.
 
 Parameters
 ----------
 kernel : str
     A kernel's name, or a plugin or expression file.
-lattice : str
-    A lattice's name or file.
+lattice : str or os.PathLike
+    A lattice's name or file, or a particle file (SWIFT, GADGET, PySPH, CSV, VTK, a GADGET
+    binary snapshot, a Phantom dump).
 k : float, optional
     The setting as sphkern's k = h / d; else code and value.
 code : str, optional
@@ -176,11 +180,29 @@ site : int, default 0
     The motif site reported first.
 params : dict, optional
     Parameter values of a kernel family.
+box : sequence of float, optional
+    Particle file: a periodic box from the origin.
+array : str, optional
+    PySPH file: the particle array, or several ("fluid,solid"; the first is measured).
+neighbours_by : str, optional
+    Particle file: what the code's density solve counts, "number" or "mass".
+bias_correction : bool, default False
+    Particle file: the density bias the code subtracts when built so ("gadget4":
+    WENDLAND_BIAS_CORRECTION).
+threads : int, default 0
+    Particle file: threads of the sums (0: every core).
+steps : int, default 10
+    Particle file: steps of a parameter's sweep.
+eta_range, hfact_range, nngb_range, hdx_range, coefh_range, particle_radius_range : sequence of float, optional
+    Particle file: the code's parameter swept over [A, B] in steps, without value (the
+    keyword of code's own parameter).
 
 Returns
 -------
 dict
-    The document of `assess --json`: eps (as `eps --json`, with code), pressure (the model at
+    On a particle file, the document of `assess FILE --json` (particles, interior, surface,
+    condition_22, stability per lattice, verdict), or of its sweep (points, needed). On a
+    lattice, the document of `assess --json`: eps (as `eps --json`, with code), pressure (the model at
     rest the stability assumes), condition_22
     (epsilon, holds, margin), stability (per h model: verdict, growth_time and mode where a
     mode grows), window, recommended (found, k, interval, and code), verdict (the line).

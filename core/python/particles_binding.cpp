@@ -6,6 +6,9 @@
 #include "python_types.hpp"
 #include "module_support.hpp"
 
+#include "codes/code_table.hpp"
+#include "requests/assess_particles.hpp"
+#include "requests/assess_sweep.hpp"
 #include "requests/particles_report.hpp"
 #include "particles/particle_set.hpp"
 #include "requests/particles_request.hpp"
@@ -244,6 +247,44 @@ ParticleSet read_file(const std::string& path, const py::object& box)
 }
 
 } // namespace
+
+py::object assess_particle_file(const Kernel& kernel, const std::string& path, const FileAssess& f, ToPython to_python)
+{
+    if (!f.code) fail_input("on a particle file a code's setting is assessed; expected code (and value, or none for the file's own h)");
+    const CodeProfile& profile = code_profile(*f.code, ValueSource::argument("code"));
+    for (const auto& [parameter, range] : f.ranges)
+        if (parameter != profile.parameter)
+            fail_input(fmt::format("{}_range: sweeps the {} of {}; expected code naming it, or {}_range", parameter, parameter,
+                                   f.code == profile.name ? "another code" : *f.code, profile.parameter));
+    const auto range = f.ranges.find(profile.parameter);
+    const bool sweep = range != f.ranges.end();
+    if (sweep && f.value) fail_input(fmt::format("{}_range: sweeps the parameter; expected no value beside it", profile.parameter));
+    if (sweep && range->second.size() != 2)
+        fail_input(fmt::format("{}_range: expected two numbers, [A, B]", profile.parameter));
+    check_epsilon(f.epsilon, ValueSource::argument("epsilon"));
+    const ParticleSet set = load_particle_file(path, f.box, f.array, std::nullopt, std::nullopt);
+    ParticleSources sources = particle_sources(FrontEnd::python);
+    ParticleArguments given;
+    name_code(given, *f.code, sweep ? std::optional<double>(range->second[0]) : f.value);
+    if (f.neighbours_by || f.bias_correction) {
+        if (!given.code) fail_input("neighbours_by and bias_correction: the code's density solve; expected value too");
+        if (f.neighbours_by && *f.neighbours_by != "number" && *f.neighbours_by != "mass")
+            fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *f.neighbours_by));
+        if (f.neighbours_by) given.code->counts = *f.neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+        given.code->bias_correction = f.bias_correction;
+    }
+    given.threads = f.threads;
+    nlohmann::json document;
+    {
+        py::gil_scoped_release unlocked;
+        document = sweep ? code_sweep_json(sweep_code_setting(kernel, set, given, sources, f.epsilon, range->second[0],
+                                                              range->second[1], f.steps,
+                                                              ValueSource::argument(profile.parameter + "_range"),
+                                                              ValueSource::argument("steps")))
+                         : particle_assess_document(kernel, set, given, assess_particles(kernel, set, given, sources, f.epsilon));
+    }
+    return to_python(document);
+}
 
 void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {

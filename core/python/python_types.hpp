@@ -31,6 +31,7 @@ using OptionalFloat = Typed<"Optional[float]">;
 using OptionalSequence = Typed<"Optional[Sequence[float]]">;
 using OptionalParams = Typed<"Optional[Dict[str, float]]">;
 using NameOrNumber = Typed<"Union[str, float]">;
+using NameOrPath = Typed<"Union[str, os.PathLike]">;
 using VolumeArgument = Typed<"Union[str, numpy.typing.ArrayLike, None]">;
 using OptionalNames = Typed<"Union[str, Sequence[str], None]">;
 using IntSequence = Typed<"Sequence[int]">;

@@ -72,7 +72,7 @@ class Kernel:
         ...
 
 
-def assess(kernel: str, lattice: str, *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def assess(kernel: str, lattice: Union[str, os.PathLike], *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., box: Optional[Sequence[float]]=..., array: Optional[str]=..., neighbours_by: Optional[str]=..., bias_correction: bool=..., threads: int=..., steps: int=..., eta_range: Optional[Sequence[float]]=..., hfact_range: Optional[Sequence[float]]=..., nngb_range: Optional[Sequence[float]]=..., hdx_range: Optional[Sequence[float]]=..., coefh_range: Optional[Sequence[float]]=..., particle_radius_range: Optional[Sequence[float]]=...) -> dict:
     """One verdict on a setting, k or an SPH code's own, on a lattice."""
     ...
 

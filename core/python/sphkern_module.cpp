@@ -18,6 +18,7 @@
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
 #include "lattices/numeric_inputs.hpp"
+#include "particles/sources/particle_source.hpp"
 #include "stability/stability_scan.hpp"
 #include "requests/kernels_request.hpp"
 #include "requests/lattices_request.hpp"
@@ -356,10 +357,39 @@ void bind_assess(py::module_& m, const Guard& guard)
 {
     m.def(
         "assess",
-        [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
+        [](const std::string& kernel_spec, const NameOrPath& lattice_or_file, std::optional<double> k,
            std::optional<std::string> code, std::optional<double> value, double kmin, double kmax, double epsilon,
            double gamma, std::optional<double> coef_sound, double horizon, const NameOrNumber& a_p,
-           const OptionalSequence& gravity, int site, const OptionalParams& params) -> py::dict {
+           const OptionalSequence& gravity, int site, const OptionalParams& params, const OptionalSequence& box,
+           std::optional<std::string> array, std::optional<std::string> neighbours_by, bool bias_correction, int threads,
+           int steps, const OptionalSequence& eta_range, const OptionalSequence& hfact_range,
+           const OptionalSequence& nngb_range, const OptionalSequence& hdx_range, const OptionalSequence& coefh_range,
+           const OptionalSequence& particle_radius_range) -> py::dict {
+            const auto lattice_spec = py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
+            if (source_kind(lattice_spec) == SourceKind::file) {
+                // The lattice's keywords mean nothing on a particle set: said, not ignored.
+                const bool lattice_keywords = k || coef_sound || !gravity.is_none() || kmin != 0.75 || kmax != 2.0 ||
+                                              gamma != 5.0 / 3.0 || horizon != default_horizon || site != 0 ||
+                                              !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == "voronoi");
+                if (lattice_keywords)
+                    fail_input(fmt::format("k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity and site are for a "
+                                           "lattice; on a particle file ({}) assess judges the set's own sums, expected none",
+                                           lattice_spec));
+                FileAssess f{code, value, epsilon, {}, array, neighbours_by, bias_correction, threads, steps, {}};
+                if (!box.is_none()) f.box = box.cast<std::vector<double>>();
+                const std::pair<const char*, const OptionalSequence*> ranges[] = {
+                    {"eta", &eta_range},  {"hfact", &hfact_range}, {"nngb", &nngb_range},
+                    {"hdx", &hdx_range}, {"coefh", &coefh_range}, {"particle_radius", &particle_radius_range}};
+                for (const auto& [name, range] : ranges)
+                    if (!range->is_none()) f.ranges[name] = range->cast<std::vector<double>>();
+                return assess_particle_file(kernel_of(kernel_spec, params), lattice_spec, f, &to_python);
+            }
+            if (!box.is_none() || array || neighbours_by || bias_correction || threads != 0 || steps != 10 ||
+                !eta_range.is_none() || !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() ||
+                !coefh_range.is_none() || !particle_radius_range.is_none())
+                fail_input(fmt::format("box, array, neighbours_by, bias_correction, threads, steps and the parameter ranges "
+                                       "are for a particle file; {} is a lattice, expected none",
+                                       lattice_spec));
             AssessRequest request;
             if (k.has_value() == (code.has_value() || value.has_value()))
                 fail_input("give k, or code and value (a code's own setting)");
@@ -387,6 +417,10 @@ void bind_assess(py::module_& m, const Guard& guard)
         py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,
         py::arg("gamma") = 5.0 / 3.0, py::arg("coef_sound") = py::none(), py::arg("horizon") = default_horizon,
         py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
+        py::arg("box") = py::none(), py::arg("array") = py::none(), py::arg("neighbours_by") = py::none(),
+        py::arg("bias_correction") = false, py::arg("threads") = 0, py::arg("steps") = 10, py::arg("eta_range") = py::none(),
+        py::arg("hfact_range") = py::none(), py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(),
+        py::arg("coefh_range") = py::none(), py::arg("particle_radius_range") = py::none(),
         doc::assess, guard);
 }
 

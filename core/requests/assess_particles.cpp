@@ -95,7 +95,7 @@ std::string stable_lattices_text(const std::vector<LatticeStability>& lattices)
 } // namespace
 
 ParticleAssessResult assess_particles(const Kernel& kernel, const ParticleSet& set, const ParticleArguments& given,
-                                      const ParticleSources& sources, double epsilon)
+                                      const ParticleSources& sources, double epsilon, bool with_lattices)
 {
     if (!given.code && !given.stored_h_code)
         sources.code.code.fail("on a particle set, a code's setting is assessed; expected " + sources.code.code.name);
@@ -113,7 +113,7 @@ ParticleAssessResult assess_particles(const Kernel& kernel, const ParticleSet& s
     const CodeProfile& code = code_profile(given.code ? given.code->code : *given.stored_h_code, sources.code.code);
     const StabilityPressure pressure = stability_pressure(&code, 5.0 / 3.0, std::nullopt, ValueSource::argument("coef_sound"));
     a.pressure = pressure.text;
-    for (const auto& name : shipped_lattice_names())
+    for (const auto& name : with_lattices ? shipped_lattice_names() : std::vector<std::string>())
         if (load_lattice(name).dimension == set.dimension)
             a.lattices.push_back(lattice_stability(kernel, name, given, a, code, pressure));
     a.verdict = fmt::format("{} with {} on {} ({} particles, {} interior): {} (98% of the interior's |{}| within {:.3g} {} "

@@ -50,9 +50,10 @@ struct ParticleAssessResult {
     bool accurate() const { return worst <= epsilon; }
 };
 
-// `given` holds the code (with its parameter, or alone for a stored h); Error naming the source otherwise.
+// `given` holds the code (with its parameter, or alone for a stored h); Error naming the source
+// otherwise. Without `lattice_stability` (a sweep's values) no lattice is judged.
 ParticleAssessResult assess_particles(const Kernel& kernel, const ParticleSet& set, const ParticleArguments& given,
-                                      const ParticleSources& sources, double epsilon);
+                                      const ParticleSources& sources, double epsilon, bool lattice_stability = true);
 nlohmann::json particle_assess_document(const Kernel& kernel, const ParticleSet& set, const ParticleArguments& given,
                                         const ParticleAssessResult& result);
 void print_particle_assess(std::FILE* out, const Kernel& kernel, const ParticleSet& set, const ParticleArguments& given,

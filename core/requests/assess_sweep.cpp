@@ -29,7 +29,7 @@ CodeSweepResult sweep_code_setting(const Kernel& kernel, const ParticleSet& set,
     for (int s = 0; s <= steps; ++s) {
         const double value = from + (to - from) * s / steps;
         given.code->value = value;
-        const ParticleAssessResult a = assess_particles(kernel, set, given, sources, epsilon);
+        const ParticleAssessResult a = assess_particles(kernel, set, given, sources, epsilon, false);
         r.points.push_back({value, a.answer.points.front().mean_neighbours, a.interior, epsilon - a.worst, a.accurate()});
         if (a.accurate() && !r.needed) r.needed = value;
         progress.step(fmt::format("{} {:g}", r.parameter, value));

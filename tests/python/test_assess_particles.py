@@ -9,6 +9,7 @@ import os
 import subprocess
 
 import numpy as np
+import pytest
 
 CLI = os.environ["SPHKERN_CLI"]
 H = 1.2  # the stored h, spacing 1
@@ -164,3 +165,42 @@ def test_a_stored_h_is_carried_to_each_lattice_at_the_same_h_over_l_and_a_tait_c
     assert abs(lattices["square"]["k"] / h_over_l - 1) < 1e-12
     assert abs(lattices["triangular"]["k"] / (h_over_l * (3**0.5 / 2) ** 0.5) - 1) < 1e-12
     assert all(l["h_model"] == "fixed" for l in lattices.values())
+
+
+def without_timings(value):
+    """A document with its timings and thread counts left out (they differ run to run)."""
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items() if k not in ("seconds", "cpu_seconds", "phases", "threads")}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def test_python_assesses_a_file_and_sweeps_as_the_command_line(tmp_path):
+    import sphkern
+    n = 12
+    x = square_block(n)
+    write_csv(tmp_path / "square.csv", x, np.ones(len(x)), np.ones(len(x)))
+    one = sphkern.assess("cubic_bspline", str(tmp_path / "square.csv"), box=[n, n], code="pysph", value=1.3)
+    cli = assess(tmp_path / "square.csv", "--box", f"{n},{n}", "--hdx", "1.3")
+    del cli["inputs"], cli["provenance"]
+    assert without_timings(one) == without_timings(cli)
+    sweep = sphkern.assess("cubic_bspline", tmp_path / "square.csv", box=[n, n], code="pysph", hdx_range=[1.0, 1.6], steps=6)
+    cli = assess(tmp_path / "square.csv", "--box", f"{n},{n}", "--hdx-range", "1.0", "1.6", "--steps", "6")
+    del cli["inputs"], cli["provenance"]
+    assert without_timings(sweep) == without_timings(cli)
+
+
+def test_python_refuses_what_a_file_or_a_lattice_cannot_take(tmp_path):
+    import sphkern
+    x = square_block(6)
+    write_csv(tmp_path / "square.csv", x, np.ones(len(x)), np.ones(len(x)))
+    path = str(tmp_path / "square.csv")
+    for kwargs, message in ((dict(code="pysph", k=1.2), "are for a lattice; on a particle file"),
+                            (dict(code="pysph", eta_range=[1, 2]), "eta_range: sweeps the eta of another code"),
+                            (dict(code="pysph", value=1.2, hdx_range=[1, 2]), "hdx_range: sweeps the parameter; expected no value"),
+                            (dict(value=1.2), "a code's setting is assessed; expected code")):
+        with pytest.raises(sphkern.BadValue, match=message):
+            sphkern.assess("cubic_bspline", path, **kwargs)
+    with pytest.raises(sphkern.BadValue, match="are for a particle file; fcc is a lattice"):
+        sphkern.assess("cubic_bspline", "fcc", k=1.2, box=[1, 1, 1])

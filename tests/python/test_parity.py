@@ -34,15 +34,7 @@ BY_COMMAND = {
             "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
     "assess": {"--ap": "a_p, as every function names it",
                "--shells": NOT_YET + ": sums over given shell radii",
-               "--continue-past-support": NOT_YET + ": a kernel's formula past its support",
-               "--box": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--array": NOT_YET + ": assess takes a lattice, not a particle file",
-               **{f"--{name}-range": NOT_YET + ": assess takes a lattice, not a particle file" for name in
-                  ("eta", "hfact", "nngb", "hdx", "coefh", "particle-radius")},
-               "--steps": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--threads": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--neighbours-by": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--bias-correction": NOT_YET + ": assess takes a lattice, not a particle file"},
+               "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
     "roots": {"--ap": "a_p, as every function names it",
               "--shells": NOT_YET + ": sums over given shell radii",
               "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
@@ -150,5 +142,5 @@ def test_the_count_of_options_without_a_keyword():
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
 # arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 25 gaps
 # (assess on a particle file, 11 with its sweep; particles' series, 2).
-EXPECTED_WITHOUT_KEYWORD = 123
-EXPECTED_GAPS = 26
+EXPECTED_WITHOUT_KEYWORD = 111
+EXPECTED_GAPS = 14
