@@ -615,6 +615,12 @@ threads : int, default 0
     Threads (0: every core).
 params : dict of str to float, optional
     The kernel's parameters.
+h_over_l_range, nh_range : sequence of float, optional
+    A sweep of h / l or of N_H over [A, B] in steps, one h for every particle at each value.
+steps : int, default 10
+    Steps of a sweep.
+histogram : int, default 0
+    Bins of the histograms of e0, eps_rho, eps_gradp and eps_gradp_sum (0: none).
 
 Returns
 -------
@@ -623,7 +629,8 @@ dict
     mean_neighbours, source, ...) with per-particle numpy arrays in its place: e0, eps_rho,
     eps_gradp, eps_gradp_sum (N), e1 and m1 (N, D), E (N, D, D), neighbours (N, int),
     h (N, sphkern's own h: the support is R h) and volume (N); the volume model the
-    document names ("uniform", "file", "voronoi") is under volume_model.
+    document names ("uniform", "file", "voronoi") is under volume_model. A sweep gives
+    the document alone, with its points.
 
 Examples
 --------

@@ -165,7 +165,19 @@ struct Given {
     py::object masses, densities, rho0, volume, gravity;
     double depth;
     int threads;
+    py::object h_over_l_range, nh_range; // sweeps over [A, B]
+    int steps;
+    long long histogram;
 };
+
+// A sweep's [A, B], as given.
+std::optional<std::array<double, 2>> range_of(const py::object& range, const char* what)
+{
+    if (range.is_none()) return std::nullopt;
+    const auto values = range.cast<std::vector<double>>();
+    if (values.size() != 2) fail_input(fmt::format("{}: expected two numbers, [A, B]", what));
+    return std::array<double, 2>{values[0], values[1]};
+}
 
 py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python)
 {
@@ -191,15 +203,19 @@ py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython
     arguments.rho0 = number_of(g.rho0, "rho0");
     arguments.depth = g.depth;
     arguments.threads = g.threads;
+    arguments.eta_range = range_of(g.h_over_l_range, "h_over_l_range"), arguments.nh_range = range_of(g.nh_range, "nh_range");
+    arguments.steps = g.steps, arguments.histogram = g.histogram;
+    if (arguments.eta_range || arguments.nh_range) arguments.per_particle_files = false; // a sweep returns no arrays
     ParticleAnswer answer;
     {
         py::gil_scoped_release unlocked;
         validate_particle_set(set);
         answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
     }
+    py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
+    if (!answer.measures) return out; // a sweep: its points, no per-particle arrays
     const auto& m = *answer.measures;
     const std::size_t d = static_cast<std::size_t>(set.dimension);
-    py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
     out["h"] = column(answer.h);
     out["volume_model"] = out["volume"]; // the document's model name, before its place takes the array
     out["volume"] = column(answer.volumes);
@@ -297,10 +313,12 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                                bool bias_correction, const OptionalArrayLike& masses,
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
-                               const OptionalParams& params) {
+                               const OptionalParams& params, const OptionalSequence& h_over_l_range,
+                               const OptionalSequence& nh_range, int steps, long long histogram) {
             auto kernel = kernel_of(kernel_spec, params);
-            const Given given{h,         support_per_h, h_over_l, nh,     code,   value,   neighbours_by, bias_correction,
-                              masses,    densities,     rho0,     volume, gravity, depth, threads};
+            const Given given{h,      support_per_h, h_over_l, nh,       code,           value,    neighbours_by,
+                              bias_correction, masses,   densities, rho0,     volume,         gravity,  depth,
+                              threads, h_over_l_range, nh_range, steps,   histogram};
             // A file, or a run's files: each read as the command line reads it, a series in the
             // order of the times in the files' headers (the order given where one has none).
             auto typed = [](py::object result) { return py::reinterpret_steal<DictOrList>(result.release()); };
@@ -326,7 +344,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("neighbours_by") = py::none(),
         py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
-        py::arg("params") = py::none(), doc::particles,
+        py::arg("params") = py::none(), py::arg("h_over_l_range") = py::none(), py::arg("nh_range") = py::none(),
+        py::arg("steps") = 10, py::arg("histogram") = 0, doc::particles,
         py::call_guard<InterruptScope>());
 }
 

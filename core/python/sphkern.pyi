@@ -132,7 +132,7 @@ def pairing(kernel: str, lattice: str, k: Optional[float]=..., *, code: Optional
     ...
 
 
-def particles(kernel: str, positions: Union[numpy.typing.ArrayLike, str, os.PathLike, Sequence[str]], *, box: Optional[Sequence[float]]=..., h: Optional[numpy.typing.ArrayLike]=..., support_per_h: Optional[float]=..., h_over_l: Optional[float]=..., nh: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., neighbours_by: Optional[str]=..., bias_correction: bool=..., masses: Optional[numpy.typing.ArrayLike]=..., densities: Optional[numpy.typing.ArrayLike]=..., rho0: Optional[float]=..., volume: Union[str, numpy.typing.ArrayLike, None]=..., gravity: Optional[Sequence[float]]=..., depth: float=..., threads: int=..., params: Optional[Dict[str, float]]=...) -> Union[dict, list]:
+def particles(kernel: str, positions: Union[numpy.typing.ArrayLike, str, os.PathLike, Sequence[str]], *, box: Optional[Sequence[float]]=..., h: Optional[numpy.typing.ArrayLike]=..., support_per_h: Optional[float]=..., h_over_l: Optional[float]=..., nh: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., neighbours_by: Optional[str]=..., bias_correction: bool=..., masses: Optional[numpy.typing.ArrayLike]=..., densities: Optional[numpy.typing.ArrayLike]=..., rho0: Optional[float]=..., volume: Union[str, numpy.typing.ArrayLike, None]=..., gravity: Optional[Sequence[float]]=..., depth: float=..., threads: int=..., params: Optional[Dict[str, float]]=..., h_over_l_range: Optional[Sequence[float]]=..., nh_range: Optional[Sequence[float]]=..., steps: int=..., histogram: int=...) -> Union[dict, list]:
     """The consistency errors of a kernel on any particle set, as `sphkern particles --json`."""
     ...
 

@@ -224,3 +224,33 @@ def test_a_code_alone_takes_the_h_given_as_that_code_stores_it(tmp_path):
 def test_complex_k_is_refused():
     with pytest.raises(ValueError, match="k: complex numbers; expected real numbers"):
         sphkern.eps("cubic_bspline", "fcc", 1.2 + 0.1j)
+
+
+def without_timings(value):
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items()
+                if k not in ("seconds", "cpu_seconds", "phases", "threads", "inputs", "provenance")}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+@pytest.mark.parametrize("args, kwargs", [(["--nh-range", "30", "90", "--steps", "2"], dict(nh_range=[30, 90], steps=2)),
+                                          (["--h-over-l-range", "1.0", "1.4", "--steps", "3", "--histogram", "6"],
+                                           dict(h_over_l_range=(1.0, 1.4), steps=3, histogram=6)),
+                                          (["--nh", "40", "--histogram", "4"], dict(nh=40, histogram=4))])
+def test_sweeps_and_histograms_as_the_command_line(tmp_path, args, kwargs):
+    x = np.random.default_rng(4).uniform(0, 1, (1500, 3))
+    np.savetxt(tmp_path / "set.csv", x, delimiter=",", header="x,y,z", comments="")
+    cli = json.loads(subprocess.run([CLI, "particles", "cubic_bspline", str(tmp_path / "set.csv"), "--box", "1,1,1", *args,
+                                     "--json"], capture_output=True, text=True, check=True).stdout)
+    doc = sphkern.particles("cubic_bspline", tmp_path / "set.csv", box=[1, 1, 1], **kwargs)
+    if "sweep" in cli:  # a sweep: the document alone, its points those of the command line
+        assert without_timings(doc) == without_timings(cli) and len(cli["sweep"]) == kwargs["steps"] + 1
+    else:
+        assert without_timings(doc["histograms"]) == without_timings(cli["histograms"]) and doc["e0"].shape == (1500,)
+
+
+def test_a_sweep_range_needs_two_numbers():
+    with pytest.raises(sphkern.BadValue, match="nh_range: expected two numbers"):
+        sphkern.particles("cubic_bspline", np.random.default_rng(1).uniform(0, 1, (200, 3)), box=[1, 1, 1], nh_range=[30])
