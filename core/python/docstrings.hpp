@@ -119,6 +119,13 @@ site : int, default 0
     The motif site the errors are computed at.
 params : dict of str to float, optional
     The kernel's parameters, as `--set NAME=VALUE`.
+axis : str, default "k"
+    The scale of k: "k" (h / d) or "h_over_l" (h / V^(1/D)).
+shells : sequence of float, optional
+    Sum over these shell radii only (in d), as the paper does; default every shell inside
+    the support.
+continue_past_support : bool, default False
+    With shells: the kernel's formula evaluated past q = R instead of truncated.
 
 Returns
 -------
@@ -196,6 +203,11 @@ steps : int, default 10
 eta_range, hfact_range, nngb_range, hdx_range, coefh_range, particle_radius_range : sequence of float, optional
     Particle file: the code's parameter swept over [A, B] in steps, without value (the
     keyword of code's own parameter).
+shells : sequence of float, optional
+    Sum over these shell radii only (in d), as the paper does; default every shell inside
+    the support.
+continue_past_support : bool, default False
+    With shells: the kernel's formula evaluated past q = R instead of truncated.
 
 Returns
 -------
@@ -369,6 +381,11 @@ code : str, optional
     Add "code": every k of the answer as a code's own setting, with its own SPH density
     ("swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics"), as
     `roots --code`.
+shells : sequence of float, optional
+    Sum over these shell radii only (in d), as the paper does; default every shell inside
+    the support.
+continue_past_support : bool, default False
+    With shells: the kernel's formula evaluated past q = R instead of truncated.
 
 Returns
 -------

@@ -72,7 +72,7 @@ class Kernel:
         ...
 
 
-def assess(kernel: str, lattice: Union[str, os.PathLike], *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., box: Optional[Sequence[float]]=..., array: Optional[str]=..., neighbours_by: Optional[str]=..., bias_correction: bool=..., threads: int=..., steps: int=..., eta_range: Optional[Sequence[float]]=..., hfact_range: Optional[Sequence[float]]=..., nngb_range: Optional[Sequence[float]]=..., hdx_range: Optional[Sequence[float]]=..., coefh_range: Optional[Sequence[float]]=..., particle_radius_range: Optional[Sequence[float]]=...) -> dict:
+def assess(kernel: str, lattice: Union[str, os.PathLike], *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., box: Optional[Sequence[float]]=..., array: Optional[str]=..., neighbours_by: Optional[str]=..., bias_correction: bool=..., threads: int=..., steps: int=..., eta_range: Optional[Sequence[float]]=..., hfact_range: Optional[Sequence[float]]=..., nngb_range: Optional[Sequence[float]]=..., hdx_range: Optional[Sequence[float]]=..., coefh_range: Optional[Sequence[float]]=..., particle_radius_range: Optional[Sequence[float]]=..., shells: Optional[Sequence[float]]=..., continue_past_support: bool=...) -> dict:
     """One verdict on a setting, k or an SPH code's own, on a lattice."""
     ...
 
@@ -97,7 +97,7 @@ def design(kernel: str, lattice: str, param: str, *, range: Optional[Sequence[fl
     ...
 
 
-def eps(kernel: str, lattice: str, k: numpy.typing.ArrayLike, *, a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def eps(kernel: str, lattice: str, k: numpy.typing.ArrayLike, *, a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., axis: str=..., shells: Optional[Sequence[float]]=..., continue_past_support: bool=...) -> dict:
     """The hydrostatic errors of a kernel on a lattice at one or many k."""
     ...
 
@@ -142,7 +142,7 @@ def relax(kernel: str, source: str, *, size: Optional[Sequence[int]]=..., cell: 
     ...
 
 
-def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=...) -> dict:
+def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=..., shells: Optional[Sequence[float]]=..., continue_past_support: bool=...) -> dict:
     """The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k."""
     ...
 

@@ -74,24 +74,34 @@ EvaluationSources argument_sources()
     return {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")};
 }
 
-EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, const py::object& gravity, int site)
+// `shells`: the radii summed over (in d; none: every shell inside the support), and the
+// kernel's formula past its support with them, as --shells and --continue-past-support.
+EvaluationInputs evaluation_of(const Lattice& lattice, const py::object& a_p, const py::object& gravity, int site,
+                               const py::object& shells = py::none(), bool continue_past_support = false)
 {
     EvaluationInputs inputs;
     inputs.a_p = ap_input(a_p);
     inputs.gravity = gravity_input(gravity, lattice.dimension);
     inputs.site = site;
+    if (!shells.is_none()) {
+        const DoubleArray radii = real_array(shells, "shells", "a sequence of shell radii");
+        inputs.shell_radii.assign(radii.data(), radii.data() + radii.size());
+    }
+    inputs.continue_past_support = continue_past_support;
     return inputs;
 }
 
 py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, const ArrayLike& k_values,
-             const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params)
+             const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params,
+             const std::string& axis, const OptionalSequence& shells, bool continue_past_support)
 {
     const DoubleArray k = real_array(k_values, "k", "a number or an array of numbers");
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     EpsRequest request;
     request.k.assign(k.data(), k.data() + k.size());
-    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    request.axis = parse_axis(axis, "axis");
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
     const EpsSources sources{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
                              ValueSource::argument("code"), ValueSource::argument("value")};
     check_eps_request(request, sources);
@@ -166,7 +176,7 @@ py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, 
                const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params,
                double epsilon, bool lateral, const std::string& axis, bool stability, double gamma, int steps,
                double horizon, const std::string& h_model, const std::optional<std::string>& convention,
-               const std::optional<std::string>& code)
+               const std::optional<std::string>& code, const OptionalSequence& shells, bool continue_past_support)
 {
     auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
                                  convention, code);
@@ -176,7 +186,7 @@ py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, 
     check_roots_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
-    request.evaluation = evaluation_of(lattice, a_p, gravity, site);
+    request.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
     sources.evaluation = argument_sources();
     nlohmann::json document;
     {
@@ -307,7 +317,8 @@ void bind_catalogues(py::module_& m, const Guard& guard)
 void bind_accuracy(py::module_& m, const Guard& guard)
 {
     m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
-          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), doc::eps, guard);
+          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), py::arg("axis") = "k",
+          py::arg("shells") = py::none(), py::arg("continue_past_support") = false, doc::eps, guard);
     m.def(
         "code_k",
         [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& code, double value,
@@ -349,7 +360,8 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
           py::arg("axis") = "k", py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
           py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
-          py::arg("code") = py::none(), doc::roots, guard);
+          py::arg("code") = py::none(), py::arg("shells") = py::none(), py::arg("continue_past_support") = false,
+          doc::roots, guard);
 }
 
 // One verdict on a setting: k, or a code's own (`sphkern assess`).
@@ -364,15 +376,17 @@ void bind_assess(py::module_& m, const Guard& guard)
            std::optional<std::string> array, std::optional<std::string> neighbours_by, bool bias_correction, int threads,
            int steps, const OptionalSequence& eta_range, const OptionalSequence& hfact_range,
            const OptionalSequence& nngb_range, const OptionalSequence& hdx_range, const OptionalSequence& coefh_range,
-           const OptionalSequence& particle_radius_range) -> py::dict {
+           const OptionalSequence& particle_radius_range, const OptionalSequence& shells,
+           bool continue_past_support) -> py::dict {
             const auto lattice_spec = py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
             if (source_kind(lattice_spec) == SourceKind::file) {
                 // The lattice's keywords mean nothing on a particle set: said, not ignored.
-                const bool lattice_keywords = k || coef_sound || !gravity.is_none() || kmin != 0.75 || kmax != 2.0 ||
+                const bool lattice_keywords = k || coef_sound || !gravity.is_none() || !shells.is_none() ||
+                                              continue_past_support || kmin != 0.75 || kmax != 2.0 ||
                                               gamma != 5.0 / 3.0 || horizon != default_horizon || site != 0 ||
                                               !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == "voronoi");
                 if (lattice_keywords)
-                    fail_input(fmt::format("k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity and site are for a "
+                    fail_input(fmt::format("k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site and shells are for a "
                                            "lattice; on a particle file ({}) assess judges the set's own sums, expected none",
                                            lattice_spec));
                 FileAssess f{code, value, epsilon, {}, array, neighbours_by, bias_correction, threads, steps, {}};
@@ -404,7 +418,7 @@ void bind_assess(py::module_& m, const Guard& guard)
                                   ValueSource::argument("gamma"), ValueSource::argument("horizon")};
             auto lattice = load_lattice(lattice_spec);
             auto kernel = kernel_of(kernel_spec, params);
-            request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site);
+            request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
             check_assess_request(request, sources);
             nlohmann::json document;
             {
@@ -420,7 +434,8 @@ void bind_assess(py::module_& m, const Guard& guard)
         py::arg("box") = py::none(), py::arg("array") = py::none(), py::arg("neighbours_by") = py::none(),
         py::arg("bias_correction") = false, py::arg("threads") = 0, py::arg("steps") = 10, py::arg("eta_range") = py::none(),
         py::arg("hfact_range") = py::none(), py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(),
-        py::arg("coefh_range") = py::none(), py::arg("particle_radius_range") = py::none(),
+        py::arg("coefh_range") = py::none(), py::arg("particle_radius_range") = py::none(), py::arg("shells") = py::none(),
+        py::arg("continue_past_support") = false,
         doc::assess, guard);
 }
 

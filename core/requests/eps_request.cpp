@@ -60,11 +60,19 @@ std::vector<ErrorValues> run_eps_series(const EpsRequest& r, const EpsSources& s
                                         const Lattice& lattice)
 {
     const auto evaluation = resolve_evaluation(r.evaluation, sources.evaluation, lattice);
-    const double k_max = *std::max_element(r.k.begin(), r.k.end());
+    // Each value on the request's axis, as k (h_over_l: k = h_over_l a_p^(1/D)).
+    std::vector<double> k = r.k;
+    if (r.axis == Axis::eta)
+        for (double& value : k) {
+            const double given = value;
+            value = k_of_eta(given, evaluation.a_p, lattice.dimension);
+            check_k(value, ValueSource::argument("k"), fmt::format(" ({} on the h_over_l axis)", sources.k.about(given)));
+        }
+    const double k_max = *std::max_element(k.begin(), k.end());
     HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max, evaluation.mode);
     std::vector<ErrorValues> values;
-    values.reserve(r.k.size());
-    for (double k : r.k) values.push_back(errors.at(k));
+    values.reserve(k.size());
+    for (double one : k) values.push_back(errors.at(one));
     return values;
 }
 

@@ -28,16 +28,9 @@ CODE_PARAMETERS = {name: "value, the code's parameter beside code" for name in
 NOT_YET = "not yet in the module"
 BY_COMMAND = {
     "lattices": {"--radius": "shells(lattice, radius) gives a lattice's shells up to a radius"},
-    "eps": {"--ap": "a_p, as every function names it", "--code": "code_k(kernel, lattice, code, value) gives a code's k",
-            "--axis": NOT_YET + ": eps takes k only (h_over_l = k d / l)",
-            "--shells": NOT_YET + ": sums over given shell radii",
-            "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
-    "assess": {"--ap": "a_p, as every function names it",
-               "--shells": NOT_YET + ": sums over given shell radii",
-               "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
-    "roots": {"--ap": "a_p, as every function names it",
-              "--shells": NOT_YET + ": sums over given shell radii",
-              "--continue-past-support": NOT_YET + ": a kernel's formula past its support"},
+    "eps": {"--ap": "a_p, as every function names it", "--code": "code_k(kernel, lattice, code, value) gives a code's k"},
+    "assess": {"--ap": "a_p, as every function names it"},
+    "roots": {"--ap": "a_p, as every function names it"},
     "surface": {"--ap": "a_p, as every function names it", "--termination": NOT_YET + ": a surface's termination"},
     "design": {"--ap": "a_p, as every function names it"},
     "block": {"--ap": "a_p, as every function names it"},
@@ -140,5 +133,5 @@ def test_the_count_of_options_without_a_keyword():
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
 # arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 25 gaps
 # (assess on a particle file, 11 with its sweep; particles' series, 2).
-EXPECTED_WITHOUT_KEYWORD = 107
-EXPECTED_GAPS = 10
+EXPECTED_WITHOUT_KEYWORD = 100
+EXPECTED_GAPS = 3
