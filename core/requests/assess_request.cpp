@@ -23,7 +23,8 @@ RootsRequest window_request(const AssessRequest& r, const CodeProfile* code, dou
     w.window_max = r.window_max;
     w.epsilon = r.epsilon;
     w.stability = true;
-    w.model = {gamma, r.horizon, 100, HModel::fixed};
+    // The code's own h model: SWIFT, Phantom and GADGET set h from each particle's density.
+    w.model = {gamma, r.horizon, 100, code && code->from_sph_density ? HModel::adaptive : HModel::fixed};
     w.code = code;
     w.evaluation = r.setting.evaluation;
     return w;
@@ -68,15 +69,56 @@ std::string accuracy_text(const AssessResult& a, double epsilon)
                        rho ? "eps_rho" : "eps_gradP", worst, a.accurate(epsilon) ? "<=" : ">", epsilon);
 }
 
+// "eta 1.25 to 1.31" or "k 1.02 to 1.07".
+std::string window_text(const AssessResult& a, const AssessWindow& w)
+{
+    if (w.code) return fmt::format("{} {:.3g} to {:.3g}", a.code->parameter, w.code->from, w.code->to);
+    return fmt::format("k {:.3g} to {:.3g}", w.k.from, w.k.to);
+}
+
+// "; narrow: +-0.8% in h, less than a relaxed glass's +-2%", where it is.
+std::string narrow_text(double relative_half_width)
+{
+    if (relative_half_width >= robust_half_width) return "";
+    return fmt::format("; narrow: +-{:.2g}% in h, less than the +-{:g}% a relaxed glass's h spans", 100 * relative_half_width,
+                       100 * robust_half_width);
+}
+
 std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
 {
     const auto& rec = a.window.stability.recommended;
     if (!rec.found) return fmt::format("no setting of k in [{:g}, {:g}] is both accurate and stable", r.window_min, r.window_max);
     const std::string edge = rec.at_window_edge ? ", at the window's edge: widen it" : "";
+    const std::string nh = fmt::format(", N_H {} to {}", rec.neighbours_from, rec.neighbours_to);
+    const std::string narrow = narrow_text(rec.margin / rec.k);
+    std::string text;
     if (const auto& c = a.window.in_code; c && c->recommended)
-        return fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g}{})", a.code->parameter, c->recommended_value,
-                           c->recommended->from, c->recommended->to, edge);
-    return fmt::format("recommended k {:.3g} ({:.3g} to {:.3g}{})", rec.k, rec.widest.from, rec.widest.to, edge);
+        text = fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g}{}{}{})", a.code->parameter, c->recommended_value,
+                           c->recommended->from, c->recommended->to, nh, edge, narrow);
+    else text = fmt::format("recommended k {:.3g} ({:.3g} to {:.3g}{}{}{})", rec.k, rec.widest.from, rec.widest.to, nh, edge, narrow);
+    // The window of the setting given, or the nearest to it, where it is another.
+    if (a.nearest && !(a.windows[*a.nearest].k.from == rec.widest.from && a.windows[*a.nearest].k.to == rec.widest.to)) {
+        const auto& w = a.windows[*a.nearest];
+        const bool holds = a.at.k >= w.k.from && a.at.k <= w.k.to;
+        text += fmt::format("; {} the setting: {}{}", holds ? "the window holding" : "nearest to", window_text(a, w),
+                            narrow_text(w.relative_half_width));
+    }
+    if (a.windows.size() > 1) text += fmt::format(" ({} windows in all)", a.windows.size());
+    return text;
+}
+
+// Every interval both accurate and stable, and the one holding or nearest to the setting's k.
+void find_windows(AssessResult& a)
+{
+    const auto& both = a.window.stability.both;
+    double nearest = INFINITY;
+    for (std::size_t i = 0; i < both.size(); ++i) {
+        AssessWindow w{both[i], std::nullopt, (both[i].to - both[i].from) / (both[i].to + both[i].from)};
+        if (a.window.in_code && i < a.window.in_code->both.size()) w.code = a.window.in_code->both[i];
+        const double distance = std::max({0.0, w.k.from - a.at.k, a.at.k - w.k.to});
+        if (distance < nearest) nearest = distance, a.nearest = i;
+        a.windows.push_back(w);
+    }
 }
 
 } // namespace
@@ -115,6 +157,7 @@ AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, co
     for (const HModel h : {HModel::fixed, HModel::adaptive})
         a.stability.push_back(stability_at(kernel, lattice, a.at.k, a.pressure.gamma, h, r.horizon));
     a.window = run_roots(window_request(r, a.code, a.pressure.gamma), window_sources(sources), kernel, lattice);
+    find_windows(a);
     a.verdict = fmt::format("{} with {} on {}: {}, {}; {}", setting_text(a), a.at.kernel, a.at.lattice,
                             stability_text(own_model(a)), accuracy_text(a, r.epsilon), recommendation_text(a, r));
     return a;
@@ -130,7 +173,18 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
     }
     const auto& rec = a.window.stability.recommended;
     nlohmann::json recommended = {{"found", rec.found}};
-    if (rec.found) recommended.update({{"k", rec.k}, {"interval", {rec.widest.from, rec.widest.to}}});
+    if (rec.found)
+        recommended.update({{"k", rec.k},
+                            {"interval", {rec.widest.from, rec.widest.to}},
+                            {"nh", {rec.neighbours_from, rec.neighbours_to}},
+                            {"relative_half_width", rec.margin / rec.k},
+                            {"robust", rec.margin / rec.k >= robust_half_width}});
+    nlohmann::json windows = nlohmann::json::array();
+    for (const auto& w : a.windows) {
+        nlohmann::json one = {{"k", {w.k.from, w.k.to}}, {"relative_half_width", w.relative_half_width}, {"robust", w.robust()}};
+        if (w.code) one["code"] = {w.code->from, w.code->to};
+        windows.push_back(one);
+    }
     if (const auto& c = a.window.in_code; c && c->recommended)
         recommended["code"] = {{"parameter", a.code->parameter}, {"value", c->recommended_value},
                                {"interval", {c->recommended->from, c->recommended->to}}};
@@ -144,6 +198,9 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
                                          : nlohmann::json{{"model", "ideal_gas"}, {"gamma", a.pressure.gamma}, {"text", a.pressure.text}}},
             {"window", {r.window_min, r.window_max}},
             {"recommended", recommended},
+            {"windows", windows},
+            {"nearest_window", a.nearest ? nlohmann::json(*a.nearest) : nlohmann::json()},
+            {"robust_half_width", robust_half_width},
             {"verdict", a.verdict}};
 }
 

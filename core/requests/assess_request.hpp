@@ -44,11 +44,26 @@ struct AssessStability {
 AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h, double horizon);
 std::string stability_text(const AssessStability& s);
 
+// A window narrower than this, half its width over its centre in h, is no setting for real
+// particles: a relaxed glass's own h spans about +-2% (p1 to p99 of SWIFT's solve on a glass
+// that `relax` makes; a test measures it). Such a window is flagged, not recommended silently.
+inline constexpr double robust_half_width = 0.02;
+
+// One interval of k where the setting is both accurate and stable, and it in the code's setting.
+struct AssessWindow {
+    KInterval k{0, 0};
+    std::optional<KInterval> code;
+    double relative_half_width = 0; // in h: (to - from) / (to + from)
+    bool robust() const { return relative_half_width >= robust_half_width; }
+};
+
 struct AssessResult {
     EpsAtK at;                  // k and the errors at every site
     double worst = 0;           // the largest |eps_rho| or |eps_gradP| over the sites
     std::vector<AssessStability> stability; // fixed h, then adaptive h
     RootsResult window;         // condition (22), stability and the recommended k of the window
+    std::vector<AssessWindow> windows; // every interval both accurate and stable, in k order
+    std::optional<std::size_t> nearest; // the window that holds the setting, or the nearest to it
     const CodeProfile* code = nullptr;
     StabilityPressure pressure; // the pressure at rest the verdicts assume
     std::string verdict;        // the one line

@@ -38,6 +38,7 @@ RootsInCode in_code(const CodeProfile& profile, const RootsResult& result, const
     RootsInCode c;
     c.best = value(result.analysis.all_along.best_k);
     for (const auto& i : result.analysis.all_along.intervals) c.accurate.push_back({value(i.from), value(i.to)});
+    for (const auto& i : result.stability.both) c.both.push_back({value(i.from), value(i.to)});
     if (const auto& r = result.stability.recommended; r.found) {
         c.recommended = KInterval{value(r.widest.from), value(r.widest.to)};
         c.recommended_value = value(r.k);

@@ -45,6 +45,7 @@ struct RootsInCode {
     double best = 0;                      // the best k of condition (22)
     std::vector<KInterval> accurate;      // where condition (22) holds
     std::optional<KInterval> recommended; // the recommended interval, if stability found one
+    std::vector<KInterval> both;          // each interval both accurate and stable, with stability
     double recommended_value = 0;         // at the recommended k
 };
 

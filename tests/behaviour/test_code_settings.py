@@ -129,7 +129,7 @@ def test_splishsplash_radius_sets_k_and_volume():
 def test_assess_ends_with_one_line_a_person_can_act_on():
     last = text_of("assess", *SETTING).splitlines()[-1]
     assert last == ("swift eta 1.2348 with wendland_c2 on fcc: stable, inaccurate (|eps_gradP| 0.0205 > 0.01); "
-                    "recommended eta 1.7 (1.68 to 1.71)"), last
+                    "recommended eta 1.7 (1.68 to 1.71, N_H 140 to 140; narrow: +-0.81% in h, less than the +-2% a relaxed glass's h spans)"), last
 
 
 def test_stability_intervals_in_swifts_eta():

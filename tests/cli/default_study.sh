@@ -8,7 +8,7 @@ trap 'rm -rf "$work"' EXIT
 SPHKERN_PROGRESS_SECONDS=0 "$sphkern" run -o "$work/out" >"$work/stdout" 2>"$work/stderr"
 for f in report.md results.json curves.csv method.md; do test -s "$work/out/$f"; done
 # Progress as plain lines when stderr is a file (here at every step: SPHKERN_PROGRESS_SECONDS=0).
-grep -Eq '^sphkern: info: study potapov2021: 1/[0-9]+ done .*s so far, about [0-9]+ (s|min) left$' "$work/stderr"
+grep -Eq '^sphkern: info: study potapov2021, accuracy: 1/[0-9]+ done .*s so far, about [0-9]+ (s|min) left in this part \(1 of [0-9]\), then .*$' "$work/stderr"
 # The report links the method document copied beside it, never a path of this machine.
 grep -q '\[method.md\](method.md)' "$work/out/report.md"
 if grep -q "$root" "$work/out/report.md"; then echo "report.md names a path of this machine" >&2; exit 1; fi
