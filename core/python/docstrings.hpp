@@ -176,6 +176,9 @@ site : int, default 0
     The motif site reported first.
 params : dict, optional
     Parameter values of a kernel family.
+threads : int, default 0
+    Threads of the window's stability scan over k; 0: every core. The answer is the same on
+    any number.
 
 Returns
 -------
@@ -347,6 +350,9 @@ code : str, optional
     Add "code": every k of the answer as a code's own setting, with its own SPH density
     ("swift", "phantom", "gadget2", "gadget4", "pysph" or "dualsphysics"), as
     `roots --code`.
+threads : int, default 0
+    With stability: threads of the scan over k; 0: every core. The answer is the same on
+    any number.
 
 Returns
 -------
@@ -445,6 +451,9 @@ site : int, default 0
     The motif site.
 params : dict of str to float, optional
     The kernel's other parameters.
+threads : int, default 0
+    Threads of the scan along the parameter; 0: every core. The answer is the same on any
+    number.
 
 Returns
 -------

@@ -72,7 +72,7 @@ class Kernel:
         ...
 
 
-def assess(kernel: str, lattice: str, *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def assess(kernel: str, lattice: str, *, k: Optional[float]=..., code: Optional[str]=..., value: Optional[float]=..., kmin: float=..., kmax: float=..., epsilon: float=..., gamma: float=..., coef_sound: Optional[float]=..., horizon: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., threads: int=...) -> dict:
     """One verdict on a setting, k or an SPH code's own, on a lattice."""
     ...
 
@@ -92,7 +92,7 @@ def code_k(kernel: str, lattice: str, code: str, value: float, *, a_p: Union[str
     ...
 
 
-def design(kernel: str, lattice: str, param: str, *, range: Optional[Sequence[float]]=..., kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def design(kernel: str, lattice: str, param: str, *, range: Optional[Sequence[float]]=..., kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., threads: int=...) -> dict:
     """Every (k, parameter) where both errors vanish, as `sphkern design --json`."""
     ...
 
@@ -142,7 +142,7 @@ def relax(kernel: str, source: str, *, size: Optional[Sequence[int]]=..., cell: 
     ...
 
 
-def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=...) -> dict:
+def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=..., threads: int=...) -> dict:
     """The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k."""
     ...
 

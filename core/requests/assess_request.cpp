@@ -23,7 +23,7 @@ RootsRequest window_request(const AssessRequest& r, const CodeProfile* code, dou
     w.window_max = r.window_max;
     w.epsilon = r.epsilon;
     w.stability = true;
-    w.model = {gamma, r.horizon, 100, HModel::fixed};
+    w.model = {gamma, r.horizon, 100, HModel::fixed, r.threads};
     w.code = code;
     w.evaluation = r.setting.evaluation;
     return w;

@@ -3,13 +3,18 @@
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion_jumps.hpp"
 #include "stability/verdict_span.hpp"
+#include "support/error.hpp"
+
+#include "support/process/parallel_for.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <utility>
 
 namespace sphkern {
 
@@ -19,9 +24,11 @@ constexpr StabilityRule rules[] = {StabilityRule::strict, StabilityRule::horizon
 
 class Cover {
 public:
+    // `taken` counts the samples against the limit: this cover's own unless told.
     Cover(const Kernel& kernel, const Lattice& lattice, const CoverModel& model,
-          const std::function<StabilitySample(double)>& at)
-        : kernel_(kernel), lattice_(lattice), model_(model), at_(at), reciprocal_(reciprocal_lattice(lattice))
+          const std::function<StabilitySample(double)>& at, std::function<int()> taken = {})
+        : kernel_(kernel), lattice_(lattice), model_(model), at_(at), taken_(std::move(taken)),
+          reciprocal_(reciprocal_lattice(lattice))
     {
     }
 
@@ -34,7 +41,7 @@ public:
         if (agree(sa, sb)) {
             if (covered(sa, sb)) return;
             // Past the limit only changes of verdict are still looked for.
-            if (static_cast<int>(seen_.size()) >= cover_sample_limit) return void(certain_ = false);
+            if ((taken_ ? taken_() : static_cast<int>(seen_.size())) >= cover_sample_limit) return void(certain_ = false);
         }
         const double m = 0.5 * (a + b);
         refine(a, m);
@@ -82,6 +89,7 @@ private:
     const Lattice& lattice_;
     const CoverModel& model_;
     const std::function<StabilitySample(double)>& at_;
+    const std::function<int()> taken_;
     const ReciprocalLattice reciprocal_;
     std::map<double, StabilitySample> seen_;
     std::optional<RateGrid> grid_;
@@ -123,6 +131,35 @@ std::vector<KInterval> intervals_of(const std::vector<StabilitySample>& points, 
 }
 
 } // namespace
+
+void prefetch_cover(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, const CoverModel& model,
+                    const std::function<StabilitySample(double)>& at, int threads)
+{
+    const auto ends = cell_ends(kernel, lattice, k_min, k_max);
+    // The cells' ends first, then each cell's halving on its own (the cover's own rates grid
+    // may differ, and the sample limit is shared loosely: this only guesses what it will ask).
+    std::atomic<int> taken{0};
+    const std::function<StabilitySample(double)> counted = [&](double k) {
+        taken.fetch_add(1, std::memory_order_relaxed);
+        return at(k);
+    };
+    // A k refused here may be one the cover never asks for: it asks again itself if it does.
+    auto guessing = [](const auto& work) {
+        try {
+            work();
+        } catch (const Error& e) {
+            if (e.code() == ExitCode::interrupted) throw;
+        }
+    };
+    ParallelFor ends_pass;
+    ends_pass.run_blocks(ends.size(), 1, threads,
+                         [&](std::size_t i, std::size_t, std::size_t) { guessing([&] { counted(ends[i]); }); });
+    ParallelFor cells_pass;
+    cells_pass.run_blocks(ends.size() - 1, 1, threads, [&](std::size_t i, std::size_t, std::size_t) {
+        Cover cell(kernel, lattice, model, counted, [&] { return taken.load(std::memory_order_relaxed); });
+        guessing([&] { cell.refine(ends[i], ends[i + 1]); });
+    });
+}
 
 VerdictCover cover_verdicts(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
                             const CoverModel& model, const std::function<StabilitySample(double)>& at)

@@ -39,4 +39,11 @@ struct CoverModel {
 VerdictCover cover_verdicts(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
                             const CoverModel& model, const std::function<StabilitySample(double)>& at);
 
+// Asks `at`, on `threads` threads, for the samples cover_verdicts will most likely ask for: the
+// cells' ends, then each cell halved on its own, as far as the sample limit. `at` must be safe
+// to call from several threads and should keep what it finds; the cover that follows asks for
+// what it needs in its own order, so its answer does not depend on what this took.
+void prefetch_cover(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, const CoverModel& model,
+                    const std::function<StabilitySample(double)>& at, int threads);
+
 } // namespace sphkern

@@ -40,7 +40,6 @@ BY_COMMAND = {
                **{f"--{name}-range": NOT_YET + ": assess takes a lattice, not a particle file" for name in
                   ("eta", "hfact", "nngb", "hdx", "coefh", "particle-radius")},
                "--steps": NOT_YET + ": assess takes a lattice, not a particle file",
-               "--threads": NOT_YET + ": assess takes a lattice, not a particle file",
                "--neighbours-by": NOT_YET + ": assess takes a lattice, not a particle file"},
     "roots": {"--ap": "a_p, as every function names it",
               "--shells": NOT_YET + ": sums over given shell radii",
@@ -147,7 +146,7 @@ def test_the_count_of_options_without_a_keyword():
 
 # --json (16 commands), --plugin (15), --set (12), the codes' parameters by their own names (34,
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
-# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 25 gaps
-# (assess on a particle file, 11 with its sweep; particles' series, 2).
-EXPECTED_WITHOUT_KEYWORD = 122
-EXPECTED_GAPS = 25
+# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 24 gaps
+# (assess on a particle file, 10 with its sweep; particles' series, 2).
+EXPECTED_WITHOUT_KEYWORD = 121
+EXPECTED_GAPS = 24
