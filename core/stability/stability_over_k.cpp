@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <utility>
 
@@ -58,11 +59,12 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
     };
     auto curve_k = [&](int i) { return k_min + (k_max - k_min) * i / steps; };
     const CoverModel model{gamma, horizon, h_model, grid};
+    std::shared_ptr<const CoverRates> ahead;
     if (over_k) {
         ParallelFor curve;
         curve.run_blocks(static_cast<std::size_t>(steps) + 1, 1, threads,
                          [&](std::size_t i, std::size_t, std::size_t) { at(curve_k(static_cast<int>(i))); });
-        prefetch_cover(kernel, lattice, k_min, k_max, model, at, threads);
+        ahead = prefetch_cover(kernel, lattice, k_min, k_max, model, at, threads);
     }
     StabilityOverK result;
     result.bravais = reciprocal.bravais;
@@ -70,7 +72,7 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
     // The curve's samples; the intervals come from a cover of k of their own, which
     // shares a sample only where a k is the same.
     for (int i = 0; i <= steps; ++i) result.samples.push_back(at(curve_k(i)));
-    const auto cover = cover_verdicts(kernel, lattice, k_min, k_max, model, at);
+    const auto cover = cover_verdicts(kernel, lattice, k_min, k_max, model, at, ahead.get());
     for (const auto& s : cover.looked_at)
         if (std::none_of(result.samples.begin(), result.samples.end(), [&](const StabilitySample& c) { return c.k == s.k; }))
             result.between.push_back(s);
