@@ -7,6 +7,8 @@
 #include "support/process/interruption.hpp"
 #include "support/process/parallel_for.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -73,6 +75,8 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
     // shares a sample only where a k is the same.
     for (int i = 0; i <= steps; ++i) result.samples.push_back(at(curve_k(i)));
     const auto cover = cover_verdicts(kernel, lattice, k_min, k_max, model, at, ahead.get());
+    spdlog::debug("stability over k: {} samples for the curve, {} for the intervals", result.samples.size(),
+                  cover.looked_at.size());
     for (const auto& s : cover.looked_at)
         if (std::none_of(result.samples.begin(), result.samples.end(), [&](const StabilitySample& c) { return c.k == s.k; }))
             result.between.push_back(s);

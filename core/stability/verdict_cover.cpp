@@ -194,8 +194,8 @@ std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lat
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) round.emplace_back(ends[i], ends[i + 1]);
     std::map<double, StabilitySample> known;
     if (ends.size() == 1) known.emplace(ends[0], at(ends[0]));
-    int taken = 0;
-    while (!round.empty()) {
+    int taken = 0, rounds = 0;
+    for (; !round.empty(); ++rounds) {
         std::vector<double> wanted;
         for (const auto& [a, b] : round)
             for (double k : {a, b})
@@ -235,6 +235,8 @@ std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lat
         }
         round = std::move(next);
     }
+    spdlog::debug("stability over k: {} samples and {} rates taken ahead in {} rounds{}", known.size(), rates->at.size(),
+                  rounds, rates->grid ? "" : " (no rate grid)");
     return rates;
 }
 
