@@ -3,6 +3,7 @@
 #include "analysis/roots.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <Eigen/SVD>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -137,11 +138,13 @@ std::vector<std::pair<double, double>> solve_by_newton(const Kernel& kernel, con
     // solution, which Newton's method then refines in (k, parameter).
     const int steps = 80;
     std::vector<RootScan> scans(steps + 1);
-    for (int i = 0; i <= steps; ++i) {
+    ParallelFor pass;
+    pass.run_blocks(scans.size(), 1, p.threads, [&](std::size_t b, std::size_t, std::size_t) {
+        const int i = static_cast<int>(b);
         double value = p.parameter_min + (p.parameter_max - p.parameter_min) * i / steps;
         HydrostaticErrors errors(with_parameter(kernel, p.parameter, value), *p.lattice, p.site, a_p, p.gravity, p.k_max);
-        scans[static_cast<std::size_t>(i)] = find_roots(errors, p.k_min, p.k_max, 200);
-    }
+        scans[b] = find_roots(errors, p.k_min, p.k_max, 200);
+    });
     std::vector<std::pair<double, double>> found;
     for (auto function : {ErrorFunction::rho, ErrorFunction::gradp}) {
         auto other = [&](const Root& r) { return function == ErrorFunction::rho ? r.values.eps_gradp : r.values.eps_rho; };

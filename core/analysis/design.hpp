@@ -18,6 +18,7 @@ struct DesignProblem {
     double k_min = 0.75, k_max = 1.25;
     std::string parameter;
     double parameter_min = 0, parameter_max = 1;
+    int threads = 1; // of the scan along the parameter; the answer is the same on any number
 };
 
 // The parameter range when none is given: [-1, 2] for a blend's alpha, else the declared range.

@@ -37,6 +37,7 @@ AssessRequest request_from(const AssessOptions& o)
     r.setting.evaluation = evaluation_inputs(o.evaluation);
     r.window_min = o.k_min, r.window_max = o.k_max;
     r.epsilon = o.epsilon, r.gamma = o.gamma, r.horizon = o.horizon, r.coef_sound = o.coef_sound;
+    r.threads = o.threads;
     return r;
 }
 
@@ -116,7 +117,8 @@ Action add_assess_command(Command app)
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
     add_parameter_ranges(command, options->ranges);
     command.add_option("--steps", options->steps, "Particle file: steps of a parameter's sweep").capture_default_str();
-    command.add_option("--threads", options->threads, "Particle file: threads of the sums (default: every core)");
+    command.add_option("--threads", options->threads,
+                       "Threads of a particle file's sums, or of a lattice's stability scan over k (default: every core)");
     command.add_option("--neighbours-by", options->neighbours_by,
                        "Particle file: what the code's density solve counts, number or mass (default the code's)");
     command.add_flag("--bias-correction", options->bias_correction,
@@ -135,7 +137,7 @@ Action add_assess_command(Command app)
                                                              name, options->lattice));
             return assess_file(*options);
         }
-        for (const char* name : {"--box", "--array", "--neighbours-by", "--bias-correction", "--steps", "--threads"})
+        for (const char* name : {"--box", "--array", "--neighbours-by", "--bias-correction", "--steps"})
             if (command.count(name) > 0)
                 throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
         for (const auto& [name, values] : options->ranges)
@@ -147,6 +149,7 @@ Action add_assess_command(Command app)
         const auto sources = option_sources(*options);
         const auto request = request_from(*options);
         check_assess_request(request, sources);
+        check_threads(options->threads, ValueSource::option("--threads"));
         const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
         const auto result = run_assess(request, sources, kernel, lattice);
         if (options->json) print_json(assess_document(request, result), command_inputs(&kernel, &lattice));

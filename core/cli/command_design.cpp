@@ -14,6 +14,7 @@ struct DesignOptions : CommonOptions {
     std::string kernel, lattice, parameter;
     std::vector<double> range;
     double k_min = 0.75, k_max = 1.25;
+    int threads = 0;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
 };
@@ -26,6 +27,7 @@ DesignRequest request_from(const DesignOptions& o)
     r.k_min = o.k_min;
     r.k_max = o.k_max;
     r.evaluation = evaluation_inputs(o.evaluation);
+    r.threads = o.threads;
     return r;
 }
 
@@ -48,6 +50,8 @@ Action add_design_command(Command app)
         .expected(2);
     command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
     command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
+    command.add_option("--threads", options->threads, "Threads of the scan along the parameter (default: every core)")
+        .check_range(0, 1024);
     add_point_options(command, options->evaluation, "Gravity x,y[,z] (default: the lattice's)", "Motif site");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

@@ -21,7 +21,7 @@ struct RootsOptions : CommonOptions {
     EvaluationOptions evaluation;
     bool stability = false;
     double gamma = 5.0 / 3.0, horizon = default_horizon;
-    int steps = 100;
+    int steps = 100, threads = 0;
     std::string convention, code;
     std::string h_model = "fixed";
 };
@@ -36,7 +36,7 @@ RootsRequest request_from(const RootsOptions& o)
     r.epsilon = o.epsilon;
     r.lateral = o.lateral;
     r.stability = o.stability;
-    r.model = {o.gamma, o.horizon, o.steps, parse_h_model(o.h_model, "--h-model")};
+    r.model = {o.gamma, o.horizon, o.steps, parse_h_model(o.h_model, "--h-model"), o.threads};
     // --convention is the old name of --code: the same answer, with the code's own density.
     if (!o.convention.empty() && !o.code.empty()) throw Error(ExitCode::usage, "give one of --code and --convention (its old name)");
     const std::string& code = o.code.empty() ? o.convention : o.code;
@@ -91,6 +91,8 @@ Action add_roots_command(Command app)
                                                         "stability) and where condition (22) holds there");
     command.add_option("--gamma", options->gamma, "With --stability: adiabatic index").capture_default_str();
     command.add_option("--steps", options->steps, "With --stability: k intervals of the scan").capture_default_str();
+    command.add_option("--threads", options->threads, "With --stability: threads of the scan over k (default: every core)")
+        .check_range(0, 1024);
     command.add_option("--convention", options->convention, "The old name of --code, kept as its alias");
     command.add_option("--code", options->code, "Also give every k as an SPH code's own setting, with its own SPH "
                                                  "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");

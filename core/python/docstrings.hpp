@@ -197,7 +197,8 @@ bias_correction : bool, default False
     Particle file: the density bias the code subtracts when built so ("gadget4":
     WENDLAND_BIAS_CORRECTION).
 threads : int, default 0
-    Particle file: threads of the sums (0: every core).
+    Threads of a particle file's sums, or of a lattice's window's stability scan over k; 0:
+    every core. The answer is the same on any number.
 steps : int, default 10
     Particle file: steps of a parameter's sweep.
 eta_range, hfact_range, nngb_range, hdx_range, coefh_range, particle_radius_range : sequence of float, optional
@@ -386,6 +387,9 @@ shells : sequence of float, optional
     the support.
 continue_past_support : bool, default False
     With shells: the kernel's formula evaluated past q = R instead of truncated.
+threads : int, default 0
+    With stability: threads of the scan over k; 0: every core. The answer is the same on
+    any number.
 
 Returns
 -------
@@ -484,6 +488,9 @@ site : int, default 0
     The motif site.
 params : dict of str to float, optional
     The kernel's other parameters.
+threads : int, default 0
+    Threads of the scan along the parameter; 0: every core. The answer is the same on any
+    number.
 
 Returns
 -------

@@ -92,7 +92,7 @@ def code_k(kernel: str, lattice: str, code: str, value: float, *, a_p: Union[str
     ...
 
 
-def design(kernel: str, lattice: str, param: str, *, range: Optional[Sequence[float]]=..., kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def design(kernel: str, lattice: str, param: str, *, range: Optional[Sequence[float]]=..., kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., threads: int=...) -> dict:
     """Every (k, parameter) where both errors vanish, as `sphkern design --json`."""
     ...
 
@@ -142,7 +142,7 @@ def relax(kernel: str, source: str, *, size: Optional[Sequence[int]]=..., cell: 
     ...
 
 
-def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=..., shells: Optional[Sequence[float]]=..., continue_past_support: bool=...) -> dict:
+def roots(kernel: str, lattice: str, *, kmin: float=..., kmax: float=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., epsilon: float=..., lateral: bool=..., axis: str=..., stability: bool=..., gamma: float=..., steps: int=..., horizon: float=..., h_model: str=..., convention: Optional[str]=..., code: Optional[str]=..., shells: Optional[Sequence[float]]=..., continue_past_support: bool=..., threads: int=...) -> dict:
     """The roots in k of eps_rho and eps_gradp, and condition (22) in a window of k."""
     ...
 

@@ -25,6 +25,7 @@
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/assess_request.hpp"
+#include "requests/particles_request.hpp"
 #include "requests/roots_request.hpp"
 #include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
@@ -155,7 +156,8 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
 // The roots request from its arguments: the texts as types, the stability model checked with or without `stability`.
 RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis, bool stability,
                            double gamma, int steps, double horizon, const std::string& h_model,
-                           const std::optional<std::string>& convention, const std::optional<std::string>& code)
+                           const std::optional<std::string>& convention, const std::optional<std::string>& code,
+                           int threads)
 {
     RootsRequest r;
     r.window_min = kmin;
@@ -164,7 +166,8 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.epsilon = epsilon;
     r.lateral = lateral;
     r.stability = stability;
-    r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model")};
+    check_threads(threads, ValueSource::argument("threads"));
+    r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model"), threads};
     // convention is the old name of code: the same answer, with the code's own density.
     if (convention && code) throw Error(ExitCode::input, "give one of code and convention (its old name)");
     if (code || convention) r.code = &code_profile(code ? *code : *convention, ValueSource::argument(code ? "code" : "convention"));
@@ -176,10 +179,11 @@ py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, 
                const NameOrNumber& a_p, const OptionalSequence& gravity, int site, const OptionalParams& params,
                double epsilon, bool lateral, const std::string& axis, bool stability, double gamma, int steps,
                double horizon, const std::string& h_model, const std::optional<std::string>& convention,
-               const std::optional<std::string>& code, const OptionalSequence& shells, bool continue_past_support)
+               const std::optional<std::string>& code, const OptionalSequence& shells, bool continue_past_support,
+               int threads)
 {
     auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
-                                 convention, code);
+                                 convention, code, threads);
     RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
                          ValueSource::argument("gamma"), ValueSource::argument("horizon"),
                          ValueSource::argument("steps"), argument_sources()};
@@ -199,10 +203,12 @@ py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, 
 
 py::dict design(const std::string& kernel_spec, const std::string& lattice_spec, const std::string& param,
                 const OptionalSequence& range, double kmin, double kmax, const NameOrNumber& a_p,
-                const OptionalSequence& gravity, int site, const OptionalParams& params)
+                const OptionalSequence& gravity, int site, const OptionalParams& params, int threads)
 {
     DesignRequest request;
     request.parameter = param;
+    check_threads(threads, ValueSource::argument("threads"));
+    request.threads = threads;
     request.k_min = kmin;
     request.k_max = kmax;
     DesignSources sources{ValueSource::argument("kmin/kmax"), argument_sources()};
@@ -361,7 +367,7 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("axis") = "k", py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
           py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
           py::arg("code") = py::none(), py::arg("shells") = py::none(), py::arg("continue_past_support") = false,
-          doc::roots, guard);
+          py::arg("threads") = 0, doc::roots, guard);
 }
 
 // One verdict on a setting: k, or a code's own (`sphkern assess`).
@@ -398,10 +404,10 @@ void bind_assess(py::module_& m, const Guard& guard)
                     if (!range->is_none()) f.ranges[name] = range->cast<std::vector<double>>();
                 return assess_particle_file(kernel_of(kernel_spec, params), lattice_spec, f, &to_python);
             }
-            if (!box.is_none() || array || neighbours_by || bias_correction || threads != 0 || steps != 10 ||
+            if (!box.is_none() || array || neighbours_by || bias_correction || steps != 10 ||
                 !eta_range.is_none() || !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() ||
                 !coefh_range.is_none() || !particle_radius_range.is_none())
-                fail_input(fmt::format("box, array, neighbours_by, bias_correction, threads, steps and the parameter ranges "
+                fail_input(fmt::format("box, array, neighbours_by, bias_correction, steps and the parameter ranges "
                                        "are for a particle file; {} is a lattice, expected none",
                                        lattice_spec));
             AssessRequest request;
@@ -412,6 +418,8 @@ void bind_assess(py::module_& m, const Guard& guard)
             if (code) request.setting.code = CodeSetting{*code, *value};
             request.window_min = kmin, request.window_max = kmax;
             request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
+            check_threads(threads, ValueSource::argument("threads"));
+            request.threads = threads;
             AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
                                    ValueSource::argument("code"), ValueSource::argument("value")},
                                   ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
@@ -477,7 +485,7 @@ void bind_design(py::module_& m, const Guard& guard)
     m.def("design", &design,
           py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
           py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
-          py::arg("site") = 0, py::arg("params") = py::none(), doc::design, guard);
+          py::arg("site") = 0, py::arg("params") = py::none(), py::arg("threads") = 0, doc::design, guard);
 }
 
 // A kernel as an object, its functions vectorised over q.

@@ -24,7 +24,7 @@ RootsRequest window_request(const AssessRequest& r, const CodeProfile* code, dou
     w.epsilon = r.epsilon;
     w.stability = true;
     // The code's own h model: SWIFT, Phantom and GADGET set h from each particle's density.
-    w.model = {gamma, r.horizon, 100, code && code->from_sph_density ? HModel::adaptive : HModel::fixed};
+    w.model = {gamma, r.horizon, 100, code && code->from_sph_density ? HModel::adaptive : HModel::fixed, r.threads};
     w.code = code;
     w.evaluation = r.setting.evaluation;
     return w;

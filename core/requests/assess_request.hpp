@@ -24,6 +24,7 @@ struct AssessRequest {
     double epsilon = 0.01;                       // of condition (22)
     double gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound; // a Tait code's c / sqrt(g H), default the code's
+    int threads = 0;                  // of the window's scan over k (0: every core)
 };
 
 struct AssessSources {

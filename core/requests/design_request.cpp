@@ -1,6 +1,7 @@
 #include "requests/design_request.hpp"
 
 #include "support/io/results_output.hpp"
+#include "support/process/parallel_for.hpp"
 
 #include <fmt/format.h>
 
@@ -27,6 +28,7 @@ DesignOutcome run_design(const DesignRequest& r, const DesignSources& sources, c
     problem.k_min = r.k_min;
     problem.k_max = r.k_max;
     problem.parameter = r.parameter;
+    problem.threads = worker_threads(r.threads);
     std::tie(problem.parameter_min, problem.parameter_max) =
         r.range ? *r.range : default_parameter_range(kernel, r.parameter);
     outcome.result = design_kernel(kernel, problem);

@@ -19,6 +19,7 @@ struct DesignRequest {
     std::optional<std::pair<double, double>> range; // none: the kernel's default range
     double k_min = 0.75, k_max = 1.25;
     EvaluationInputs evaluation; // a_p, gravity and the site (every shell)
+    int threads = 0;             // of the scan along the parameter (0: every core)
 };
 
 // How the front end names each value in its errors.

@@ -3,6 +3,7 @@
 #include "analysis/results_json.hpp"
 #include "stability/stability_over_k.hpp"
 #include "support/error.hpp"
+#include "support/process/parallel_for.hpp"
 
 namespace sphkern {
 
@@ -13,7 +14,8 @@ RootsStability roots_stability(const Kernel& kernel, const Lattice& lattice, dou
     RootsStability r;
     const std::string model = h_model_name(options.h_model);
     try {
-        const auto scan = stability_over_k(kernel, lattice, k_min, k_max, options.steps, options.gamma, 0, 1,
+        const auto scan = stability_over_k(kernel, lattice, k_min, k_max, options.steps, options.gamma, 0,
+                                           worker_threads(options.threads),
                                            options.horizon, options.h_model);
         r.stable = scan.usable;
         r.both = accurate_and_stable(accurate, scan);

@@ -19,6 +19,7 @@ struct RootsStabilityOptions {
     double gamma = 5.0 / 3.0, horizon = 100;
     int steps = 100;
     HModel h_model = HModel::fixed;
+    int threads = 0; // of the scan over k (0: every core); the answers are the same on any number
 };
 
 struct RootsStability {

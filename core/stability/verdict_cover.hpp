@@ -13,6 +13,7 @@
 #include "stability/stability_over_k.hpp"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace sphkern {
@@ -35,8 +36,22 @@ struct CoverModel {
     int grid = 0; // the first zone grid per axis (0: the default)
 };
 
-// `at` gives the sample at k (the zone scan, as every mode computes it).
+// The rates over k (k_change_bound.hpp) measured ahead of a cover, on one rate grid.
+struct CoverRates;
+
+// `at` gives the sample at k (the zone scan, as every mode computes it); `known` rates measured
+// ahead, used where the cover's own rate grid is theirs (the same values it would measure).
 VerdictCover cover_verdicts(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                            const CoverModel& model, const std::function<StabilitySample(double)>& at);
+                            const CoverModel& model, const std::function<StabilitySample(double)>& at,
+                            const CoverRates* known = nullptr);
+
+// Asks `at`, on `threads` threads, for the samples cover_verdicts will most likely ask for, and
+// measures the rates it will most likely need: every cell halved as the cover halves it, a round
+// of halvings at a time, each round's samples and rates side by side. `at` must be safe to call
+// from several threads and should keep what it finds; the cover that follows asks for what it
+// needs in its own order, so its answer does not depend on what was taken here.
+std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lattice& lattice, double k_min,
+                                                 double k_max, const CoverModel& model,
+                                                 const std::function<StabilitySample(double)>& at, int threads);
 
 } // namespace sphkern

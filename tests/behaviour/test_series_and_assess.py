@@ -1,5 +1,6 @@
 """Bad input to a run's series (`particles FILE FILE ...`, a folder), to `assess` on a particle
-file (its sweep of a code's parameter, --threads, --neighbours-by) and to the count options:
+file (its sweep of a code's parameter, --threads, --neighbours-by), to the threads of assess,
+roots and design on a lattice, and to the count options:
 one line, the README's exit code (2 an option, 3 an input, 5 an output)."""
 import pytest
 from conftest import expect
@@ -26,8 +27,12 @@ CASES = [
      r"^sphkern: error: --hdx-range sweeps the parameter; expected no single value beside it$"),
     ("range-on-lattice", ["assess", "cubic_bspline", "square", "--code", "pysph", "--hdx-range", "1.0", "1.6"], 2,
      r"^sphkern: error: --hdx-range is for a particle file; expected one, not a lattice$"),
-    ("threads-on-lattice", ["assess", "cubic_bspline", "square", "--k", "1.2", "--threads", "2"], 2,
-     r"^sphkern: error: --threads is for a particle file; expected one, not a lattice$"),
+    ("threads-on-lattice-negative", ["assess", "cubic_bspline", "square", "--k", "1.2", "--threads", "-1"], 2,
+     r"^sphkern: error: --threads -1, expected 0 to 1024$"),
+    ("roots-threads-negative", ["roots", "cubic_bspline", "square", "--stability", "--threads", "-1"], 2,
+     r"^sphkern: error: --threads: Value -1 not in range 0 to 1024 "),
+    ("design-threads-too-many", ["design", "wendland_c2_shape", "fcc", "--param", "beta", "--threads", "2000"], 2,
+     r"^sphkern: error: --threads: Value 2000 not in range 0 to 1024 "),
     ("threads-negative", [*ASSESS, "--hdx", "1.2", "--threads", "-1"], 2, r"^sphkern: error: --threads -1, expected 0 to 1024$"),
     ("neighbours-by-word", [*PARTICLES, "--code", "swift", "--eta", "1.2", "--neighbours-by", "weight"], 2,
      r"^sphkern: error: --neighbours-by weight: expected number or mass$"),

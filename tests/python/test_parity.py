@@ -131,7 +131,7 @@ def test_the_count_of_options_without_a_keyword():
 
 # --json (16 commands), --plugin (15), --set (12), the codes' parameters by their own names (34,
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
-# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 25 gaps
-# (assess on a particle file, 11 with its sweep; particles' series, 2).
+# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 3 gaps
+# (particles' series: --keep-going and --plot; surface --termination).
 EXPECTED_WITHOUT_KEYWORD = 100
 EXPECTED_GAPS = 3
