@@ -5,6 +5,7 @@ SPHKERN_BROKEN_PLUGINS the folder of the test plugins.
 In a table's arguments "{w}" is the case's own folder (a fresh tmp_path, or the module's folder
 where the cases share their input files), "{broken}" the test plugins' folder, "{examples}" the
 example lattices, "{lattices}" the shipped lattices and "{data}" tests/data."""
+import json
 import os
 import re
 import subprocess
@@ -36,6 +37,18 @@ def expect(args, code, pattern, cwd=None, env_extra=None):
     assert len(lines) <= 1, f"more than one line: {out.stderr}"
     assert re.search(pattern, lines[0] if lines else ""), f"stderr: {out.stderr!r}, expected /{pattern}/"
     return out
+
+
+def text_of(*args):
+    """What the command prints on stdout; it must exit 0."""
+    out = run(list(args))
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def json_of(*args):
+    """The command's JSON document (give --json among the arguments)."""
+    return json.loads(text_of(*args))
 
 
 def fill(args, work=None):

@@ -1,24 +1,13 @@
 """A code's own setting (--code with --eta, --hfact, --nngb, --hdx, --particle-radius): given
 only with --code, alone, for a kernel the code ships, refused as eps refuses it in every command;
 the k it gives is the k eps --code finds, in surface, particles, pairing, stability and roots."""
-import json
 
 import pytest
-from conftest import expect, fill, run, table
+from conftest import expect, fill, json_of, table, text_of
 
 SETTING = ["wendland_c2", "fcc", "--code", "swift", "--eta", "1.2348"]
 
 
-def json_of(*args):
-    out = run(list(args))
-    assert out.returncode == 0, out.stderr
-    return json.loads(out.stdout)
-
-
-def text_of(*args):
-    out = run(list(args))
-    assert out.returncode == 0, out.stderr
-    return out.stdout
 
 
 def test_surface_runs_at_eps_k():

@@ -1,7 +1,6 @@
 """Particle files that lie or surprise (round 5, items 2, 3, 5, 7, 8, 16): each written here as
 the code or h5py writes it, with the exit code and the one line expected."""
 import json
-import os
 
 import h5py
 import numpy as np

@@ -5,7 +5,7 @@ import re
 
 import h5py
 import pytest
-from conftest import expect, fill, run, write
+from conftest import expect, fill, text_of, write
 
 COMMON = {"free.csv": "x,y\n0.1,0.2\n0.5,0.7\n0.9,0.3\n"}
 
@@ -122,11 +122,6 @@ def test_relax_or_pairing_setting(tmp_path, files, args, code, pattern):
     write(tmp_path, {**COMMON, **files})
     expect(fill(args, tmp_path), code, pattern)
 
-
-def text_of(*args):
-    out = run(list(args))
-    assert out.returncode == 0, out.stderr
-    return out.stdout
 
 
 def test_a_glass_in_swifts_layout(tmp_path):

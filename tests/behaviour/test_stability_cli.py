@@ -2,11 +2,10 @@
 stability over k; stability --k agrees with each sampled k; the dispersion path, the adaptive
 smoothing length, a best k on the window's edge, --convention as --code's old name, and the
 texts of stability, spectrum and check."""
-import json
 import os
 
 import pytest
-from conftest import BROKEN, expect, fill, run, table, write
+from conftest import BROKEN, expect, fill, json_of, run, table, text_of, write
 
 CASES = [
     ("stability-wavevector-0-0-0", ["stability", "cubic_bspline", "fcc", "--k", "1.2", "--wavevector", "0,0,0"],
@@ -76,22 +75,12 @@ def test_stability_section_of_a_study(tmp_path, files, args, code, pattern):
     assert sorted(os.listdir(tmp_path)) == sorted(files)
 
 
-def json_of(*args):
-    out = run([*args, "--json"])
-    assert out.returncode == 0, out.stderr
-    return json.loads(out.stdout)
-
-
-def text_of(*args):
-    out = run(list(args))
-    assert out.returncode == 0, out.stderr
-    return out.stdout
 
 
 def test_roots_stability_is_stability_over_k_and_its_overlap_with_the_accuracy():
     # roots --stability: the stable intervals of stability --kmin/--kmax, and their overlap with (22).
-    r = json_of("roots", "cubic_bspline", "fcc", "--stability", "--steps", "50")[0]
-    s = json_of("stability", "cubic_bspline", "fcc", "--kmin", "0.75", "--kmax", "1.25", "--steps", "50")
+    r = json_of("roots", "cubic_bspline", "fcc", "--stability", "--steps", "50", "--json")[0]
+    s = json_of("stability", "cubic_bspline", "fcc", "--kmin", "0.75", "--kmax", "1.25", "--steps", "50", "--json")
     assert r["stability"]["stable_intervals"] == s["stable_intervals"], (r["stability"], s["stable_intervals"])
     assert r["stability"]["stable_at_horizon"] == s["stable_at_horizon"], (r["stability"], s["stable_at_horizon"])
 
@@ -108,27 +97,27 @@ def test_roots_stability_is_stability_over_k_and_its_overlap_with_the_accuracy()
 
 
 def test_adaptive_h_gives_h_over_l_and_the_grad_h_factor():
-    d = json_of("stability", "cubic_bspline", "fcc", "--k", "1.2", "--h-model", "adaptive")
+    d = json_of("stability", "cubic_bspline", "fcc", "--k", "1.2", "--h-model", "adaptive", "--json")
     assert (d["h_model"], d["h_over_l"] > 0, d["grad_h_factor"] > 0) == ("adaptive", True, True), d
 
 
 def test_stability_k_gives_each_sampled_k_the_same_verdict():
-    s = json_of("stability", "wendland_c2", "hcp", "--kmin", "1.8965", "--kmax", "1.8975", "--steps", "4")
+    s = json_of("stability", "wendland_c2", "hcp", "--kmin", "1.8965", "--kmax", "1.8975", "--steps", "4", "--json")
     for p in s["samples"]:
-        one = json_of("stability", "wendland_c2", "hcp", "--k", repr(p["k"]))
+        one = json_of("stability", "wendland_c2", "hcp", "--k", repr(p["k"]), "--json")
         assert (one["verdict"], one["stable"], one["min_omega2"]) == (p["verdict"], p["stable"], p["min_omega2"]), (p, one["verdict"])
     assert not s["stable_intervals"] and all(not p["stable"] for p in s["samples"])
 
 
 def test_a_best_k_on_the_windows_edge_is_flagged():
     assert "at the window edge; widen the k window" in text_of("roots", "wendland_c2", "hcp")
-    d = json_of("roots", "wendland_c2", "hcp")[0]
+    d = json_of("roots", "wendland_c2", "hcp", "--json")[0]
     assert d["best_k_note"] == "at the window edge; widen the k window", d.get("best_k_note")
 
 
 def test_convention_is_codes_old_name():
     # roots --convention is --code by its old name: the same document.
-    a, b = (json_of("roots", "cubic_bspline", "sc", "--stability", "--steps", "20", *x)[0]
+    a, b = (json_of("roots", "cubic_bspline", "sc", "--stability", "--steps", "20", *x, "--json")[0]
             for x in (("--convention", "gadget2"), ("--code", "gadget2")))
     for d in (a, b):
         d.pop("provenance", None)
@@ -137,7 +126,7 @@ def test_convention_is_codes_old_name():
 
 def test_the_dispersion_path():
     # stability --path starts at Γ with omega^2 = 0 and ends at R.
-    d = json_of("stability", "cubic_bspline", "sc", "--k", "1.2", "--path", "40")["path"]
+    d = json_of("stability", "cubic_bspline", "sc", "--k", "1.2", "--path", "40", "--json")["path"]
     assert [p["label"] for p in d["points"]] == ["Γ", "X", "M", "Γ", "R"], d["points"]
     assert all(abs(w) < 1e-12 for w in d["omega2"][0]) and abs(d["position"][-1] - d["points"][-1]["at"]) < 1e-12
 
@@ -151,7 +140,7 @@ def test_the_texts_of_stability_spectrum_and_check():
     # The 3D B-spline first vanishes at 2 pi.
     assert "first zero at kappa h = 6.283" in text_of("spectrum", "cubic_bspline", "--dim", "3")
     # check --json: an array, with the spectrum.
-    d = json_of("check", "cubic_bspline")
+    d = json_of("check", "cubic_bspline", "--json")
     assert isinstance(d, list) and "fourier" in d[0]
     # check names the likely cause of a wrong derivative.
     assert "hint (1D derivative)" in run(["check", "--plugin", os.path.join(BROKEN, "wrong_derivative.so")]).stdout
