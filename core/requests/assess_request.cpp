@@ -76,7 +76,7 @@ std::string window_text(const AssessResult& a, const AssessWindow& w)
     return fmt::format("k {:.3g} to {:.3g}", w.k.from, w.k.to);
 }
 
-// "; narrow: +-0.8% in h, less than a relaxed glass's +-2%", where it is.
+// "; narrow: +-0.81% in h, less than the +-2% a relaxed glass's h spans", where it is.
 std::string narrow_text(double relative_half_width)
 {
     if (relative_half_width >= robust_half_width) return "";
