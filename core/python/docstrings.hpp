@@ -317,6 +317,9 @@ site : int, default 0
     The site on the top plane.
 params : dict of str to float, optional
     The kernel's parameters.
+termination : int, optional
+    Which plane type is on top: an index of the document's terminations (default: the
+    site's), as `--termination`.
 
 Returns
 -------

@@ -177,7 +177,7 @@ def studies() -> list:
     ...
 
 
-def surface(kernel: str, lattice: str, k: Optional[float]=..., *, code: Optional[str]=..., value: Optional[float]=..., form: str=..., layers: int=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=...) -> dict:
+def surface(kernel: str, lattice: str, k: Optional[float]=..., *, code: Optional[str]=..., value: Optional[float]=..., form: str=..., layers: int=..., a_p: Union[str, float]=..., gravity: Optional[Sequence[float]]=..., site: int=..., params: Optional[Dict[str, float]]=..., termination: Optional[int]=...) -> dict:
     """The errors layer by layer below a free surface, as `sphkern surface --json`."""
     ...
 

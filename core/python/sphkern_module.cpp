@@ -133,7 +133,7 @@ py::dict eps(const std::string& kernel_spec, const std::string& lattice_spec, co
 py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
                  const std::optional<std::string>& code, std::optional<double> value, const std::string& form,
                  int layers, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
-                 const OptionalParams& params)
+                 const OptionalParams& params, std::optional<int> termination)
 {
     const CodeSettingSources code_sources{ValueSource::argument("code"), ValueSource::argument("value")};
     SurfaceRequest request;
@@ -146,6 +146,8 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
+    if (termination && *termination < 0) fail_input(fmt::format("termination: {}: expected an index, 0 or more", *termination));
+    request.termination = termination;
     const SurfaceSources sources{ValueSource::argument("k"), argument_sources(), ValueSource::argument("layers"),
                                  code_sources.code, code_sources.value};
     check_surface_request(request, sources);
@@ -354,7 +356,7 @@ void bind_accuracy(py::module_& m, const Guard& guard)
           py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(), py::arg("code") = py::none(),
           py::arg("value") = py::none(), py::arg("form") = "sum",
           py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), doc::surface, guard);
+          py::arg("params") = py::none(), py::arg("termination") = py::none(), doc::surface, guard);
 }
 
 // The roots in k of both errors, with stability and a code's convention on request.

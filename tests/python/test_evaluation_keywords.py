@@ -49,3 +49,12 @@ def test_roots_and_assess_over_given_shells():
     want = cli("assess", "super_gaussian", "triangular", "--k", "0.95", "--shells", shells)
     got = sphkern.assess("super_gaussian", "triangular", k=0.95, shells=SHELLS)
     assert got["eps"]["eps_rho"] == want["eps"]["eps_rho"] and got["verdict"] == want["verdict"]
+
+
+def test_surface_with_the_other_termination_on_top():
+    want = cli("surface", "cubic_bspline", "bcc", "--k", "1.2", "--termination", "1")
+    got = sphkern.surface("cubic_bspline", "bcc", 1.2, termination=1)
+    assert got["termination"] == want["termination"] and got["layers"] == want["layers"]
+    assert got["layers"] != sphkern.surface("cubic_bspline", "bcc", 1.2)["layers"]
+    with pytest.raises(sphkern.BadValue, match="termination: -1: expected an index"):
+        sphkern.surface("cubic_bspline", "bcc", 1.2, termination=-1)

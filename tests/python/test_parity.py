@@ -31,7 +31,7 @@ BY_COMMAND = {
     "eps": {"--ap": "a_p, as every function names it", "--code": "code_k(kernel, lattice, code, value) gives a code's k"},
     "assess": {"--ap": "a_p, as every function names it"},
     "roots": {"--ap": "a_p, as every function names it"},
-    "surface": {"--ap": "a_p, as every function names it", "--termination": NOT_YET + ": a surface's termination"},
+    "surface": {"--ap": "a_p, as every function names it"},
     "design": {"--ap": "a_p, as every function names it"},
     "block": {"--ap": "a_p, as every function names it"},
     "particles": {**{o: "particles takes positions (and box) as arrays; relax takes a source by name" for o in
@@ -131,7 +131,7 @@ def test_the_count_of_options_without_a_keyword():
 
 # --json (16 commands), --plugin (15), --set (12), the codes' parameters by their own names (34,
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
-# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 3 gaps
-# (particles' series: --keep-going and --plot; surface --termination).
-EXPECTED_WITHOUT_KEYWORD = 100
-EXPECTED_GAPS = 3
+# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 2 gaps
+# (particles' series: --keep-going and --plot).
+EXPECTED_WITHOUT_KEYWORD = 99
+EXPECTED_GAPS = 2
