@@ -155,6 +155,22 @@ py::array_t<double> tensors(std::span<const std::array<double, 6>> E, int dim)
     return out;
 }
 
+// neighbours_by and bias_correction: what the code's density solve counts and the bias it
+// subtracts, given with code and value (the command line's --neighbours-by, --bias-correction).
+void set_density_solve(ParticleArguments& arguments, const std::optional<std::string>& neighbours_by, bool bias_correction)
+{
+    if (neighbours_by) {
+        if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
+        if (*neighbours_by != "number" && *neighbours_by != "mass")
+            fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *neighbours_by));
+        arguments.code->counts = *neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
+    }
+    if (bias_correction) {
+        if (!arguments.code) fail_input("bias_correction: the code's correction of its density solve; expected code and value too");
+        arguments.code->bias_correction = true;
+    }
+}
+
 // The keywords of one measure, as given.
 struct Given {
     py::object h, support_per_h, h_over_l, nh;
@@ -190,16 +206,7 @@ py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython
         // The code's support over h, not the default of a given h (sphkern's own).
         if (g.support_per_h.is_none()) arguments.smoothing.support_per_h.reset();
     } else arguments.code = code_setting_of(g.code, code_value, particle_sources(FrontEnd::python).code);
-    if (g.neighbours_by) {
-        if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
-        if (*g.neighbours_by != "number" && *g.neighbours_by != "mass")
-            fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *g.neighbours_by));
-        arguments.code->counts = *g.neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
-    }
-    if (g.bias_correction) {
-        if (!arguments.code) fail_input("bias_correction: the code's correction of its density solve; expected code and value too");
-        arguments.code->bias_correction = true;
-    }
+    set_density_solve(arguments, g.neighbours_by, g.bias_correction);
     arguments.rho0 = number_of(g.rho0, "rho0");
     arguments.depth = g.depth;
     arguments.threads = g.threads;
@@ -282,13 +289,7 @@ py::object assess_particle_file(const Kernel& kernel, const std::string& path, c
     ParticleSources sources = particle_sources(FrontEnd::python);
     ParticleArguments given;
     name_code(given, *f.code, sweep ? std::optional<double>(range->second[0]) : f.value);
-    if (f.neighbours_by || f.bias_correction) {
-        if (!given.code) fail_input("neighbours_by and bias_correction: the code's density solve; expected value too");
-        if (f.neighbours_by && *f.neighbours_by != "number" && *f.neighbours_by != "mass")
-            fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *f.neighbours_by));
-        if (f.neighbours_by) given.code->counts = *f.neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
-        given.code->bias_correction = f.bias_correction;
-    }
+    set_density_solve(given, f.neighbours_by, f.bias_correction);
     given.threads = f.threads;
     nlohmann::json document;
     {
