@@ -58,3 +58,20 @@ def test_surface_with_the_other_termination_on_top():
     assert got["layers"] != sphkern.surface("cubic_bspline", "bcc", 1.2)["layers"]
     with pytest.raises(sphkern.BadValue, match="termination: -1: expected an index"):
         sphkern.surface("cubic_bspline", "bcc", 1.2, termination=-1)
+
+
+def test_a_bad_axis_or_shell_list_is_refused():
+    with pytest.raises(sphkern.BadValue, match="nh names a window, not one value"):
+        sphkern.eps("cubic_bspline", "fcc", 1.2, axis="nh")
+    with pytest.raises(sphkern.BadValue, match="axis"):
+        sphkern.eps("cubic_bspline", "fcc", 1.2, axis="eta_over_d")
+    with pytest.raises(sphkern.BadValue, match="shells"):
+        sphkern.eps("cubic_bspline", "fcc", 1.2, shells=["one"])
+
+
+def test_python_refuses_a_density_solve_without_the_codes_value(tmp_path):
+    x = [[0.1 * i, 0.05 * i] for i in range(10)]
+    path = tmp_path / "set.csv"
+    path.write_text("x,y\n" + "".join(f"{a},{b}\n" for a, b in x))
+    with pytest.raises(sphkern.BadValue, match="bias_correction: the code's correction of its density solve; expected code"):
+        sphkern.assess("wendland_c2", path, box=[1, 1], code="gadget4", bias_correction=True)
