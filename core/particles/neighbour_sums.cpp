@@ -1,29 +1,13 @@
 #include "particles/neighbour_sums.hpp"
 
+#include "particles/engine/lane_sums.hpp"
 #include "support/vector_clones.hpp"
 
 namespace sphkern {
 
 namespace {
 
-// Eight lanes of partial sums per quantity, as two vectors of four in GCC's vector type:
-// the accumulators stay in registers (an array of them was kept in memory, a load and a store
-// per term; a vector of eight is split badly where registers hold four), and every lane adds
-// in the same order on every instruction set, so the sums are the same bits on any machine. A
-// pass takes only as many quantities as sixteen AVX2 registers hold.
-using Quad = double __attribute__((vector_size(4 * sizeof(double))));
-using UnalignedQuad = double __attribute__((vector_size(4 * sizeof(double)), aligned(alignof(double))));
-static_assert(neighbour_lanes == 8);
-struct Partial {
-    Quad lo = {}, hi = {};
-};
-const UnalignedQuad* as_quads(const double* p) { return reinterpret_cast<const UnalignedQuad*>(p); }
-
-double total_of(const Partial& p)
-{
-    return p.lo[0] + p.lo[1] + p.lo[2] + p.lo[3] + p.hi[0] + p.hi[1] + p.hi[2] + p.hi[3];
-}
-
+// A pass takes only as many quantities as sixteen AVX2 registers hold.
 // The gathered arrays of one particle's neighbours, padded to a multiple of the lanes.
 struct PairArrays {
     const double *dx, *dy, *dz, *inv_r, *v, *m, *w, *dw;
@@ -43,34 +27,32 @@ SPHKERN_ENGINE_CLONES void sums_over(const PairArrays& in, double* __restrict to
     const Quad v_all = {in.v_all, in.v_all, in.v_all, in.v_all};
     const std::size_t quads = in.n / 4;
     Partial a0, a1, a2, a3, a4;
-    // Quad q of the neighbours adds to lanes 0 to 3 when q is even, 4 to 7 when it is odd.
-    auto add = [](Partial& p, std::size_t q, const Quad& term) { (q % 2 ? p.hi : p.lo) += term; };
     for (std::size_t q = 0; q < quads; ++q) { // the values and their first moments
         const Quad vw = (uniform_volume ? v_all : v[q]) * w[q];
-        add(a0, q, vw), add(a2, q, vw * dx[q]), add(a3, q, vw * dy[q]), add(a4, q, vw * dz[q]);
-        if constexpr (with_mass) add(a1, q, m[q] * w[q]);
+        a0.add(q, vw), a2.add(q, vw * dx[q]), a3.add(q, vw * dy[q]), a4.add(q, vw * dz[q]);
+        if constexpr (with_mass) a1.add(q, m[q] * w[q]);
     }
-    total[s0] = total_of(a0), total[sm] = total_of(a1);
-    total[m1x] = total_of(a2), total[m1y] = total_of(a3), total[m1z] = total_of(a4);
+    total[s0] = a0.total(), total[sm] = a1.total();
+    total[m1x] = a2.total(), total[m1y] = a3.total(), total[m1z] = a4.total();
     // grad_i W_ij = -W'(r) r_ij / r: g collects -V_j W' / r.
     a0 = a1 = a2 = Partial{};
     for (std::size_t q = 0; q < quads; ++q) { // the gradient of a constant
         const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q];
-        add(a0, q, g * dx[q]), add(a1, q, g * dy[q]), add(a2, q, g * dz[q]);
+        a0.add(q, g * dx[q]), a1.add(q, g * dy[q]), a2.add(q, g * dz[q]);
     }
-    total[e1x] = total_of(a0), total[e1y] = total_of(a1), total[e1z] = total_of(a2);
+    total[e1x] = a0.total(), total[e1y] = a1.total(), total[e1z] = a2.total();
     a0 = a1 = a2 = Partial{};
     for (std::size_t q = 0; q < quads; ++q) { // E in the plane of x and y
         const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q], x = dx[q], y = dy[q];
-        add(a0, q, g * x * x), add(a1, q, g * y * y), add(a2, q, g * x * y);
+        a0.add(q, g * x * x), a1.add(q, g * y * y), a2.add(q, g * x * y);
     }
-    total[exx] = total_of(a0), total[eyy] = total_of(a1), total[exy] = total_of(a2);
+    total[exx] = a0.total(), total[eyy] = a1.total(), total[exy] = a2.total();
     a0 = a1 = a2 = Partial{};
     for (std::size_t q = 0; in.with_z && q < quads; ++q) { // E's terms with z, zero in 2D
         const Quad g = -(uniform_volume ? v_all : v[q]) * dw[q] * inv_r[q], z = dz[q];
-        add(a0, q, g * z * z), add(a1, q, g * dx[q] * z), add(a2, q, g * dy[q] * z);
+        a0.add(q, g * z * z), a1.add(q, g * dx[q] * z), a2.add(q, g * dy[q] * z);
     }
-    total[ezz] = total_of(a0), total[exz] = total_of(a1), total[eyz] = total_of(a2);
+    total[ezz] = a0.total(), total[exz] = a1.total(), total[eyz] = a2.total();
 }
 
 } // namespace
