@@ -10,12 +10,10 @@
 #include "support/io/results_output.hpp"
 #include "support/io/vtk_xml.hpp"
 #include "support/process/progress.hpp"
-#include "study/gnuplot.hpp"
+#include "study/series_figure.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
-
-#include <unistd.h>
 
 #include <filesystem>
 
@@ -32,37 +30,6 @@ ParticleSet outline_of(const ParticleSet& set)
     outline.support_per_h = set.support_per_h;
     outline.arrays = set.arrays;
     return outline;
-}
-
-// svg, png or pdf, from --plot's extension.
-std::string figure_format(const std::string& plot)
-{
-    const std::string ext = std::filesystem::path(plot).extension().string();
-    if (ext != ".svg" && ext != ".png" && ext != ".pdf")
-        throw Error(ExitCode::usage, fmt::format("--plot {}: expected a figure file ending in .svg, .png or .pdf", plot));
-    return ext.substr(1);
-}
-
-// gnuplot draws beside the figure under a hidden name of this process; the figure is then
-// renamed into place, complete, and the script removed.
-void draw_series(const std::string& plot, const std::string& script)
-{
-    const auto gnuplot = find_gnuplot();
-    if (gnuplot.empty())
-        throw Error(ExitCode::output, fmt::format("--plot {}: gnuplot is not on PATH; expected it to draw the figure", plot));
-    const std::filesystem::path target(plot);
-    const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
-    const std::string format = figure_format(plot), name = fmt::format(".{}.{}", target.stem().string(), ::getpid());
-    std::error_code ec;
-    try {
-        render_figure(folder, name, 900, 1000, script, {format}, gnuplot);
-    } catch (...) {
-        std::filesystem::remove(folder / (name + ".gp"), ec), std::filesystem::remove(folder / (name + "." + format), ec);
-        throw;
-    }
-    std::filesystem::remove(folder / (name + ".gp"), ec);
-    std::filesystem::rename(folder / (name + "." + format), target, ec);
-    if (ec) throw Error(ExitCode::output, fmt::format("--plot {}: cannot put the figure in place ({})", plot, ec.message()));
 }
 
 // NAME.pvd: one entry per snapshot measured, at its time (its place in the series without times).
@@ -106,7 +73,7 @@ std::vector<OutputTarget> series_outputs(const ParticlesOptions& o, const std::v
         outputs.push_back({"--vtk", o.vtk});
     }
     if (!o.plot.empty()) {
-        figure_format(o.plot);
+        series_figure_format(o.plot, "--plot");
         outputs.push_back({"--plot", o.plot});
     }
     std::vector<std::string> inputs;
@@ -176,7 +143,7 @@ int measure_series(const ParticlesOptions& o, const Kernel& kernel)
     if (series.empty())
         throw Error(ExitCode::input, fmt::format("none of the {} snapshots could be measured; expected at least one", files.size()));
     const bool by_time = order_series(series);
-    if (!o.plot.empty()) draw_series(o.plot, series_figure_script(series, by_time));
+    if (!o.plot.empty()) draw_series_figure(o.plot, "--plot", series_figure_script(series, by_time));
     if (!o.vtk.empty()) write_collection(o.vtk, series, by_time);
     if (o.json) {
         nlohmann::json document = {{"kernel", kernel.label()}};

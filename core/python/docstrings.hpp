@@ -648,6 +648,11 @@ steps : int, default 10
     Steps of a sweep.
 histogram : int, default 0
     Bins of the histograms of e0, eps_rho, eps_gradp and eps_gradp_sum (0: none).
+keep_going : bool, default False
+    With a run's files: a snapshot that fails on its input is skipped, with a RuntimeWarning
+    naming it (without: its error stops the series).
+plot : str, optional
+    With a run's files: the errors against time drawn into this .svg, .png or .pdf file (gnuplot).
 
 Returns
 -------

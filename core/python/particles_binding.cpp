@@ -12,6 +12,8 @@
 #include "requests/particles_report.hpp"
 #include "particles/particle_set.hpp"
 #include "requests/particles_request.hpp"
+#include "requests/particles_series.hpp"
+#include "study/series_figure.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
 
@@ -195,7 +197,8 @@ std::optional<std::array<double, 2>> range_of(const py::object& range, const cha
     return std::array<double, 2>{values[0], values[1]};
 }
 
-py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python)
+// With `snapshot`, its particles and statistics too (a series' figure).
+py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python, SeriesSnapshot* snapshot = nullptr)
 {
     ParticleArguments arguments = arguments_of(set, kernel, {g.h, g.support_per_h, g.masses, g.densities}, g.h_over_l,
                                                g.nh, g.volume, g.gravity);
@@ -219,6 +222,7 @@ py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython
         validate_particle_set(set);
         answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
     }
+    if (snapshot) snapshot->file = set.name, snapshot->time = set.time, snapshot->particles = answer.particles, snapshot->point = answer.points.front();
     py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
     if (!answer.measures) return out; // a sweep: its points, no per-particle arrays
     const auto& m = *answer.measures;
@@ -303,6 +307,43 @@ py::object assess_particle_file(const Kernel& kernel, const std::string& path, c
     return to_python(document);
 }
 
+// A run's files, each read and measured as the command line does, in the order of the times
+// in their headers (the order given where one has none). With keep_going a snapshot that fails
+// on its input is skipped with a RuntimeWarning naming it; with plot the series' figure is drawn.
+py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, const OptionalSequence& box, const Given& given,
+                        bool keep_going, const std::optional<std::string>& plot, ToPython to_python)
+{
+    if (plot) {
+        series_figure_format(*plot, "plot");
+        if (!given.h_over_l_range.is_none() || !given.nh_range.is_none())
+            throw Error(ExitCode::usage, "plot: a series' figure is of one setting; expected no h_over_l_range or nh_range");
+    }
+    std::vector<SeriesSnapshot> snapshots;
+    std::vector<py::dict> documents;
+    const std::size_t count = py::len(files);
+    for (const auto& item : files) {
+        const std::string path = path_of(py::reinterpret_borrow<py::object>(item));
+        SeriesSnapshot snapshot;
+        try {
+            py::dict one = measure(kernel, read_file(path, box), given, to_python, &snapshot);
+            one["time"] = snapshot.time ? py::object(py::float_(*snapshot.time)) : py::none();
+            snapshot.given = documents.size();
+            snapshots.push_back(std::move(snapshot)), documents.push_back(std::move(one));
+        } catch (const Error& e) {
+            if (!keep_going || e.code() != ExitCode::input) throw;
+            const std::string message = fmt::format("skipped {}: {}", path, e.what());
+            if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+        }
+    }
+    if (snapshots.empty())
+        throw Error(ExitCode::input, fmt::format("none of the {} snapshots could be measured; expected at least one", count));
+    const bool by_time = order_series(snapshots);
+    if (plot) draw_series_figure(*plot, "plot", series_figure_script(snapshots, by_time));
+    py::list out;
+    for (const auto& snapshot : snapshots) out.append(documents[snapshot.given]);
+    return out;
+}
+
 void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {
     m.def(
@@ -315,7 +356,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                                const OptionalArrayLike& densities, const OptionalFloat& rho0,
                                const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
                                const OptionalParams& params, const OptionalSequence& h_over_l_range,
-                               const OptionalSequence& nh_range, int steps, long long histogram) {
+                               const OptionalSequence& nh_range, int steps, long long histogram, bool keep_going,
+                               const std::optional<std::string>& plot) {
             auto kernel = kernel_of(kernel_spec, params);
             const Given given{h,      support_per_h, h_over_l, nh,       code,           value,    neighbours_by,
                               bias_correction, masses,   densities, rho0,     volume,         gravity,  depth,
@@ -323,22 +365,12 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
             // A file, or a run's files: each read as the command line reads it, a series in the
             // order of the times in the files' headers (the order given where one has none).
             auto typed = [](py::object result) { return py::reinterpret_steal<DictOrList>(result.release()); };
+            if (plot && !(is_paths(positions) && !py::isinstance<py::str>(positions) && !py::hasattr(positions, "__fspath__")))
+                throw Error(ExitCode::usage, "plot: a series' figure; expected a list of a run's files as positions");
             if (!is_paths(positions)) return typed(measure(kernel, set_of(positions, box), given, to_python));
             if (py::isinstance<py::str>(positions) || py::hasattr(positions, "__fspath__"))
                 return typed(measure(kernel, read_file(path_of(positions), box), given, to_python));
-            std::vector<std::pair<std::optional<double>, py::dict>> series;
-            for (const auto& item : positions) {
-                ParticleSet set = read_file(path_of(py::reinterpret_borrow<py::object>(item)), box);
-                const auto time = set.time;
-                py::dict one = measure(kernel, std::move(set), given, to_python);
-                one["time"] = time ? py::object(py::float_(*time)) : py::none();
-                series.emplace_back(time, one);
-            }
-            if (std::all_of(series.begin(), series.end(), [](const auto& s) { return s.first.has_value(); }))
-                std::stable_sort(series.begin(), series.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
-            py::list out;
-            for (auto& [time, one] : series) out.append(one);
-            return typed(std::move(out));
+            return typed(measure_series(kernel, positions, box, given, keep_going, plot, to_python));
         },
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
@@ -346,7 +378,8 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
         py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
         py::arg("params") = py::none(), py::arg("h_over_l_range") = py::none(), py::arg("nh_range") = py::none(),
-        py::arg("steps") = 10, py::arg("histogram") = 0, doc::particles,
+        py::arg("steps") = 10, py::arg("histogram") = 0, py::arg("keep_going") = false, py::arg("plot") = py::none(),
+        doc::particles,
         py::call_guard<InterruptScope>());
 }
 

@@ -21,6 +21,7 @@ struct SeriesSnapshot {
     std::size_t particles = 0;
     ParticlePoint point;
     std::string answer; // the JSON document of a run on the file alone, as text
+    std::size_t given = 0; // its place among the files given
 };
 
 // The files named, each folder replaced by the particle files in it (by name): a code's own

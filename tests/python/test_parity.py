@@ -38,9 +38,7 @@ BY_COMMAND = {
                      ("--size", "--cell", "--sigma", "--seed", "--count", "--dim", "--array")},
                   "--csv": "the per-particle arrays are returned", "--vtk": "the per-particle arrays are returned",
                   "--k": "particles takes positions, not a lattice (h = k d needs one)",
-                  "--memory-limit": "the positions given are in memory already",
-                  "--keep-going": NOT_YET + ": a series stops at the first snapshot that fails",
-                  "--plot": NOT_YET + ": a series' figure (the documents hold its numbers)"},
+                  "--memory-limit": "the positions given are in memory already"},
     "relax": {"--eta": "value with code=\"swift\" (SWIFT's eta); sphkern's own ratio is h_over_l"},
 }
 # Positionals the function takes under another name.
@@ -131,7 +129,6 @@ def test_the_count_of_options_without_a_keyword():
 
 # --json (16 commands), --plugin (15), --set (12), the codes' parameters by their own names (34,
 # value beside code), --ap (6, a_p), 14 taken otherwise (particles' source options, files the
-# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta) and the 2 gaps
-# (particles' series: --keep-going and --plot).
-EXPECTED_WITHOUT_KEYWORD = 99
-EXPECTED_GAPS = 2
+# arrays replace, eps --code as code_k, lattices --radius as shells, relax --eta); no gaps.
+EXPECTED_WITHOUT_KEYWORD = 97
+EXPECTED_GAPS = 0

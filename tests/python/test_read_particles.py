@@ -71,3 +71,55 @@ def test_bad_arguments_name_the_keyword(tmp_path):
         sphkern.particles("cubic_bspline", [str(tmp_path / "none.csv"), str(tmp_path / "p.csv")], box=[1, 1], h_over_l=1.2)
     with pytest.raises(sphkern.BadValue, match="box"):
         sphkern.read_particles(str(tmp_path / "p.csv"), box=[1, -1])
+
+
+def write_run(tmp_path, times):
+    """A run's SWIFT snapshots at these times, 400 random particles each."""
+    rng = np.random.default_rng(5)
+    files = []
+    for k, t in enumerate(times):
+        path = tmp_path / f"snap_{k:03d}.hdf5"
+        with h5py.File(path, "w") as f:
+            f.create_group("Header").attrs.update({"BoxSize": [1.0, 1.0, 1.0], "NumPart_Total": [400, 0, 0, 0, 0, 0],
+                                                   "MassTable": [0.0] * 6, "Time": [t]})
+            part = f.create_group("PartType0")
+            part["Coordinates"], part["Masses"] = rng.uniform(0, 1, (400, 3)), np.full(400, 1 / 400)
+        files.append(str(path))
+    return files
+
+
+def test_a_series_skips_a_broken_snapshot_with_keep_going_and_warns_naming_it(tmp_path):
+    files = write_run(tmp_path, [0.2, 0.1])
+    broken = tmp_path / "snap_009.hdf5"
+    broken.write_bytes(b"\x89HDF\r\n\x1a\n" + b"\0" * 64)
+    with pytest.raises(sphkern.Error, match="snap_009.hdf5"):
+        sphkern.particles("cubic_bspline", files + [str(broken)], h_over_l=1.3)
+    with pytest.warns(RuntimeWarning, match=r"^skipped .*snap_009\.hdf5: "):
+        series = sphkern.particles("cubic_bspline", files + [str(broken)], h_over_l=1.3, keep_going=True)
+    alone = [sphkern.particles("cubic_bspline", f, h_over_l=1.3) for f in files]
+    assert [s["time"] for s in series] == [0.1, 0.2]
+    assert [s["statistics"] for s in series] == [alone[1]["statistics"], alone[0]["statistics"]]
+    with pytest.raises(sphkern.Error, match="none of the 1 snapshots"), pytest.warns(RuntimeWarning):
+        sphkern.particles("cubic_bspline", [str(broken)], h_over_l=1.3, keep_going=True)
+
+
+def test_a_series_figure_is_the_command_lines(tmp_path):
+    import os
+    import subprocess
+    files = write_run(tmp_path, [0.5, 0.0, 1.0])
+    out = tmp_path / "figures"
+    out.mkdir()
+    sphkern.particles("cubic_bspline", files, h_over_l=1.3, plot=str(out / "errors.svg"))
+    assert os.listdir(out) == ["errors.svg"]
+    svg = (out / "errors.svg").read_text()
+    assert svg.lstrip().startswith("<?xml") and svg.rstrip().endswith("</svg>")
+    cli = os.environ.get("SPHKERN_CLI")
+    if cli:
+        subprocess.run([cli, "particles", "cubic_bspline", *files, "--h-over-l", "1.3", "--plot", str(out / "cli.svg")],
+                       capture_output=True, check=True)
+        assert (out / "cli.svg").read_text() == svg
+    with pytest.raises(sphkern.BadValue, match=r"^plot .*\.gif: expected a figure file ending in \.svg, \.png or \.pdf$"):
+        sphkern.particles("cubic_bspline", files, h_over_l=1.3, plot=str(out / "errors.gif"))
+    with pytest.raises(sphkern.BadValue, match=r"^plot: a series' figure"):
+        sphkern.particles("cubic_bspline", files[0], h_over_l=1.3, plot=str(out / "one.svg"))
+    assert sorted(os.listdir(out)) == (["cli.svg", "errors.svg"] if cli else ["errors.svg"])
