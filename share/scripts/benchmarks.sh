@@ -68,9 +68,8 @@ print(f"\nMedians of three runs, {runs[0]['threads']} threads, one fused sweep (
       f"and memory traffic.")
 PY
 
-# PySPH side by side: the same positions, SummationDensity with its CubicSpline.
-/usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" >"$work/pysph-serial.json"
-/usr/bin/python3 share/scripts/pysph_compare.py --sphkern "$sphkern" --openmp >"$work/pysph-openmp.json"
+# PySPH and yt side by side, one core each: the same particles, densities checked.
+/usr/bin/python3 share/scripts/peers_compare.py --sphkern "$sphkern" >"$work/peers.json"
 
 # The Python module: eps over 10^6 k in one call, against the command line and numpy.
 if [[ -d "$PWD/$build/python" ]]; then
@@ -152,26 +151,11 @@ PY
     echo
     cat "$work/block.md"
     echo
-    echo "## Against PySPH"
+    echo "## Against PySPH and yt"
     echo
-    echo "\`/usr/bin/python3 share/scripts/pysph_compare.py [--openmp]\`: the free 100 x 100 x 100 fcc block (PySPH's periodic"
-    echo "domains are axis-aligned, fcc's cell is not), PySPH $(/usr/bin/python3 -c 'import pysph; print(pysph.__version__)') from Debian,"
-    echo "SummationDensity with its CubicSpline through SPHEvaluator.evaluate(), neighbour search included: its first call"
-    echo "(which also compiles and builds the neighbour structures) and the best of three warm calls, against sphkern's one"
-    echo "sweep that computes the density and the pressure gradient (neighbour search included) on the same positions."
+    echo "\`/usr/bin/python3 share/scripts/peers_compare.py\` (its docstring says what is run and checked), one core each:"
     echo
-    python3 - "$work" <<'PY'
-import json, sys
-print("| PySPH | particles | pairs | sphkern density + gradient [s] | PySPH first [s] | PySPH warm [s] | "
-      "first / sphkern | warm / sphkern | max relative difference |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-for name, label in (("serial", "serial"), ("openmp", "OpenMP, 2 threads")):
-    r = json.load(open(f"{sys.argv[1]}/pysph-{name}.json"))
-    print(f"| {label} | {r['particles']} | {r['pair_interactions']} | {r['sphkern_density_and_gradient_seconds']:.4f} | "
-          f"{r['pysph_first_evaluate_seconds']:.3f} | {r['pysph_evaluate_seconds']:.4f} | "
-          f"{r['ratio_pysph_first_over_sphkern']:.1f} | {r['ratio_pysph_warm_over_sphkern']:.2f} | "
-          f"{r['max_relative_density_difference']:.1e} |")
-PY
+    /usr/bin/python3 share/scripts/peers_compare.py --from-json "$work/peers.json" --markdown
     echo
     if [[ -f "$work/python.json" ]]; then
         echo "## The Python module: eps over 10^6 values of k"
