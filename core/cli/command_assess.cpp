@@ -91,6 +91,45 @@ int assess_file(const AssessOptions& o)
     return 0;
 }
 
+// The lattice's options mean nothing on a particle set: said, not ignored.
+void refuse_lattice_options(const Command& command, const std::string& file)
+{
+    for (const char* name : {"--ap", "--gravity", "--site", "--shells", "--continue-past-support", "--kmin", "--kmax",
+                             "--gamma", "--coef-sound", "--horizon"})
+        if (command.count(name) > 0)
+            throw Error(ExitCode::usage, fmt::format("{} is for a lattice; on a particle file ({}) assess judges "
+                                                     "the set's own sums, expected none",
+                                                     name, file));
+}
+
+// A particle file's options mean nothing on a lattice: said, not ignored.
+void refuse_particle_file_options(const Command& command, const std::map<std::string, std::vector<double>>& ranges)
+{
+    for (const char* name : {"--box", "--array", "--neighbours-by", "--bias-correction", "--steps"})
+        if (command.count(name) > 0)
+            throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
+    for (const auto& [name, values] : ranges)
+        if (!values.empty()) {
+            std::string option = name;
+            std::replace(option.begin(), option.end(), '_', '-');
+            throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", option));
+        }
+}
+
+// A setting on a lattice: accuracy, stability and the recommended setting.
+int assess_lattice(const AssessOptions& o)
+{
+    const auto sources = option_sources(o);
+    const auto request = request_from(o);
+    check_assess_request(request, sources);
+    check_threads(o.threads, ValueSource::option("--threads"));
+    const auto [lattice, kernel] = kernel_on_lattice(o, o.kernel, o.lattice, o.sets);
+    const auto result = run_assess(request, sources, kernel, lattice);
+    if (o.json) print_json(assess_document(request, result), command_inputs(&kernel, &lattice));
+    else print_assess(request, result);
+    return 0;
+}
+
 } // namespace
 
 Action add_assess_command(Command app)
@@ -128,33 +167,11 @@ Action add_assess_command(Command app)
     add_json_option(command, *options);
     return [options, command] {
         if (source_kind(options->lattice) == SourceKind::file) {
-            // The lattice's options mean nothing on a particle set: said, not ignored.
-            for (const char* name : {"--ap", "--gravity", "--site", "--shells", "--continue-past-support", "--kmin", "--kmax",
-                                     "--gamma", "--coef-sound", "--horizon"})
-                if (command.count(name) > 0)
-                    throw Error(ExitCode::usage, fmt::format("{} is for a lattice; on a particle file ({}) assess judges "
-                                                             "the set's own sums, expected none",
-                                                             name, options->lattice));
+            refuse_lattice_options(command, options->lattice);
             return assess_file(*options);
         }
-        for (const char* name : {"--box", "--array", "--neighbours-by", "--bias-correction", "--steps"})
-            if (command.count(name) > 0)
-                throw Error(ExitCode::usage, fmt::format("{} is for a particle file; expected one, not a lattice", name));
-        for (const auto& [name, values] : options->ranges)
-            if (!values.empty()) {
-                std::string option = name;
-                std::replace(option.begin(), option.end(), '_', '-');
-                throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", option));
-            }
-        const auto sources = option_sources(*options);
-        const auto request = request_from(*options);
-        check_assess_request(request, sources);
-        check_threads(options->threads, ValueSource::option("--threads"));
-        const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
-        const auto result = run_assess(request, sources, kernel, lattice);
-        if (options->json) print_json(assess_document(request, result), command_inputs(&kernel, &lattice));
-        else print_assess(request, result);
-        return 0;
+        refuse_particle_file_options(command, options->ranges);
+        return assess_lattice(*options);
     };
 }
 

@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -139,6 +140,41 @@ void check_series_targets(const RelaxSeries& series, const std::vector<std::stri
     for (const auto& file : series.member_files()) check_output_targets({{"--history", file}}, inputs);
 }
 
+// --code and its setting, if given; where the setting sets h, no other h beside it.
+std::optional<RelaxCode> relax_code_of(const RelaxOptions& o)
+{
+    std::optional<RelaxCode> code;
+    if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
+    const ValueSource value_source = code_sources(o.codes).second;
+    if (code && code->value && (o.h_over_l || o.nh || o.k))
+        throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it",
+                                                 code->name, value_source.name));
+    return code;
+}
+
+// What --output wrote, and where, said beside the results.
+struct WrittenSet {
+    std::string text;
+    nlohmann::json json;
+};
+
+// The relaxed set (tiled by --tile) and its initial conditions, written to --output.
+WrittenSet write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o,
+                             const std::optional<RelaxCode>& code, const std::array<int, 3>& tiles)
+{
+    const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
+    const ParticleSet& out = o.tile.empty() ? run.state.set : written;
+    write_particle_file(o.output, out,
+                        initial_conditions(kernel, out, run, {o.settings.gamma, o.rho0.value_or(1), o.u}, code,
+                                           o.settings.threads),
+                        o.settings.threads);
+    const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
+    const std::string layout = o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
+    const std::string where = std::filesystem::absolute(o.output).lexically_normal().string();
+    return {fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout),
+            {{"file", where}, {"particles", out.size()}, {"layout", layout}}};
+}
+
 } // namespace
 
 Action add_relax_command(Command app)
@@ -153,12 +189,8 @@ Action add_relax_command(Command app)
         o.settings.method = relax_method_of(o.method, sources.method);
         check_relax_settings(o.settings, sources);
         check_rdf(o.rdf_max, o.rdf_bins, sources); // before the run: g(r) is drawn after it
-        std::optional<RelaxCode> code;
-        if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
+        const std::optional<RelaxCode> code = relax_code_of(o);
         const auto [code_source, value_source] = code_sources(o.codes);
-        if (code && code->value && (o.h_over_l || o.nh || o.k))
-            throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it",
-                                                     code->name, value_source.name));
         SmoothingSpec spec = smoothing_spec({o.h_over_l, o.nh, o.k, std::nullopt}, sources.smoothing);
         const auto outputs = given_outputs(command, {{"--output", o.output}, {"--history", o.history}});
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
@@ -186,31 +218,17 @@ Action add_relax_command(Command app)
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o, series ? &*series : nullptr);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
-        std::string wrote; // what --output wrote, and where, said beside the results
-        nlohmann::json wrote_json;
-        if (!o.output.empty()) {
-            const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
-            const ParticleSet& out = o.tile.empty() ? run.state.set : written;
-            write_particle_file(o.output, out,
-                                initial_conditions(kernel, out, run, {o.settings.gamma, o.rho0.value_or(1), o.u}, code,
-                                                   o.settings.threads),
-                                o.settings.threads);
-            const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
-            const std::string layout = o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
-            const std::string where = std::filesystem::absolute(o.output).lexically_normal().string();
-            wrote = fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout);
-            wrote_json = {{"file", where}, {"particles", out.size()}, {"layout", layout}};
-        }
+        const WrittenSet wrote = o.output.empty() ? WrittenSet{} : write_relaxed_set(kernel, run, o, code, tiles);
         if (!o.history.empty()) write_history(o, run.history, series ? &*series : nullptr);
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);
             if (code) document["code"] = relax_code_json(*code);
-            if (!wrote.empty()) document["output"] = wrote_json;
+            if (!wrote.text.empty()) document["output"] = wrote.json;
             print_json(document, source_inputs(o, kernel, digest.get()));
         } else {
             print_relax(results_file(), kernel, o.settings, run, judged);
             if (code) fmt::print(results_file(), "{}\n", relax_code_text(*code));
-            if (!wrote.empty()) fmt::print(results_file(), "{}\n", wrote);
+            if (!wrote.text.empty()) fmt::print(results_file(), "{}\n", wrote.text);
         }
         return 0;
     };

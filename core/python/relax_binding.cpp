@@ -22,6 +22,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -97,6 +98,51 @@ struct RelaxGiven {
     std::optional<double> rho0, u;
 };
 
+// The code and its setting, if given; where the setting sets h, no other h beside it.
+std::optional<RelaxCode> relax_code_given(const RelaxGiven& g)
+{
+    if (g.value && !g.code) fail_input("value: the parameter of a code; expected code too");
+    std::optional<RelaxCode> code;
+    if (g.code) code = RelaxCode{*g.code, g.value};
+    if (code && code->value && (g.h_over_l || g.nh || g.k))
+        fail_input(fmt::format("code {} sets h with value; expected no h_over_l, nh or k beside it", code->name));
+    return code;
+}
+
+// rho0 and u: positive and finite, for an output that holds them (a .csv holds m, not u); tile
+// copies the set output writes.
+void check_output_settings(const RelaxGiven& g)
+{
+    for (const auto& [value, key] : {std::pair{g.rho0, "rho0"}, std::pair{g.u, "u"}})
+        if (value) {
+            check_positive(*value, named(key));
+            if (!g.output) fail_input(fmt::format("{}: sets what output writes; expected output too", key));
+        }
+    if (g.u && g.output->ends_with(".csv"))
+        fail_input(fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
+                               "Phantom dump)",
+                               *g.output));
+    if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
+}
+
+// The relaxed set (tiled by tile) and its initial conditions, written to output; what was written.
+nlohmann::json write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const RelaxGiven& g,
+                                 const std::optional<RelaxCode>& code, const std::array<int, 3>& tiles)
+{
+    const bool csv = g.output->ends_with(".csv");
+    const ParticleSet tiled = g.tile ? tiled_set(run.state.set, tiles, g.settings.threads) : ParticleSet{};
+    const ParticleSet& out = g.tile ? tiled : run.state.set;
+    write_particle_file(*g.output, out,
+                        initial_conditions(kernel, out, run, {g.settings.gamma, g.rho0.value_or(1), g.u}, code,
+                                           g.settings.threads),
+                        g.settings.threads);
+    const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
+    const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
+    return {{"file", std::filesystem::absolute(*g.output).lexically_normal().string()},
+            {"particles", out.size()},
+            {"layout", layout}};
+}
+
 py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g, const OptionalParams& params)
 {
     set_memory_budget(g.memory_limit, named("memory_limit"));
@@ -105,11 +151,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
     check_relax_settings(g.settings, sources);
     check_rdf(g.rdf_max, g.rdf_bins, sources);
     const CodeSettingSources code_sources{named("code"), named("value")};
-    if (g.value && !g.code) fail_input("value: the parameter of a code; expected code too");
-    std::optional<RelaxCode> code;
-    if (g.code) code = RelaxCode{*g.code, g.value};
-    if (code && code->value && (g.h_over_l || g.nh || g.k))
-        fail_input(fmt::format("code {} sets h with value; expected no h_over_l, nh or k beside it", code->name));
+    const std::optional<RelaxCode> code = relax_code_given(g);
     if (source_given.particle_radius && (g.h_over_l || g.nh || g.k))
         fail_input("particle_radius gives a SPlisHSPlasH file's h; expected no h_over_l, nh or k beside it");
     SmoothingSpec spec = smoothing_spec({g.h_over_l, g.nh, g.k, std::nullopt}, sources.smoothing);
@@ -121,16 +163,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
         if (std::filesystem::exists(spec_text)) inputs.push_back(spec_text);
     check_output_targets(outputs, inputs);
     if (g.output) check_relax_output(*g.output, named("output"), code);
-    for (const auto& [value, key] : {std::pair{g.rho0, "rho0"}, std::pair{g.u, "u"}})
-        if (value) {
-            check_positive(*value, named(key));
-            if (!g.output) fail_input(fmt::format("{}: sets what output writes; expected output too", key));
-        }
-    if (g.u && g.output->ends_with(".csv"))
-        fail_input(fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
-                               "Phantom dump)",
-                               *g.output));
-    if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
+    check_output_settings(g);
     const ParticleSource source = source_of(source_given);
     const auto kernel = kernel_of(kernel_spec, params);
     nlohmann::json document;
@@ -149,19 +182,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
         const RelaxedSet judged = judge_relaxed(kernel, run, g.settings.threads, g.rdf_max, g.rdf_bins);
         document = relax_json(kernel, g.settings, run, judged);
         if (code) document["code"] = relax_code_json(*code);
-        if (g.output) {
-            const ParticleSet tiled = g.tile ? tiled_set(run.state.set, tiles, g.settings.threads) : ParticleSet{};
-            const ParticleSet& out = g.tile ? tiled : run.state.set;
-            write_particle_file(*g.output, out,
-                                initial_conditions(kernel, out, run, {g.settings.gamma, g.rho0.value_or(1), g.u}, code,
-                                                   g.settings.threads),
-                                g.settings.threads);
-            const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
-            const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
-            document["output"] = {{"file", std::filesystem::absolute(*g.output).lexically_normal().string()},
-                                  {"particles", out.size()},
-                                  {"layout", layout}};
-        }
+        if (g.output) document["output"] = write_relaxed_set(kernel, run, g, code, tiles);
         if (g.history)
             write_file_atomically(*g.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
     }

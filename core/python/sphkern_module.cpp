@@ -372,6 +372,46 @@ void bind_roots(py::module_& m, const Guard& guard)
           py::arg("threads") = 0, doc::roots, guard);
 }
 
+// The assess request of the keywords: k, or a code and its value; the window, the tolerance
+// and the stability's settings.
+AssessRequest assess_request_of(std::optional<double> k, const std::optional<std::string>& code,
+                                std::optional<double> value, double kmin, double kmax, double epsilon, double gamma,
+                                std::optional<double> coef_sound, double horizon, int threads)
+{
+    AssessRequest request;
+    if (k.has_value() == (code.has_value() || value.has_value()))
+        fail_input("give k, or code and value (a code's own setting)");
+    if (code.has_value() != value.has_value()) fail_input("give code and value together");
+    if (k) request.setting.k = {*k};
+    if (code) request.setting.code = CodeSetting{*code, *value};
+    request.window_min = kmin, request.window_max = kmax;
+    request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
+    check_threads(threads, ValueSource::argument("threads"));
+    request.threads = threads;
+    return request;
+}
+
+// One verdict on a setting on a lattice, its document as Python objects.
+py::dict assess_on_lattice(const std::string& kernel_spec, const std::string& lattice_spec, const OptionalParams& params,
+                           AssessRequest request, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
+                           const OptionalSequence& shells, bool continue_past_support)
+{
+    AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
+                           ValueSource::argument("code"), ValueSource::argument("value")},
+                          ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
+                          ValueSource::argument("gamma"), ValueSource::argument("horizon")};
+    auto lattice = load_lattice(lattice_spec);
+    auto kernel = kernel_of(kernel_spec, params);
+    request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
+    check_assess_request(request, sources);
+    nlohmann::json document;
+    {
+        py::gil_scoped_release unlocked;
+        document = assess_document(request, run_assess(request, sources, kernel, lattice));
+    }
+    return to_python(document);
+}
+
 // One verdict on a setting: k, or a code's own (`sphkern assess`).
 void bind_assess(py::module_& m, const Guard& guard)
 {
@@ -412,30 +452,10 @@ void bind_assess(py::module_& m, const Guard& guard)
                 fail_input(fmt::format("box, array, neighbours_by, bias_correction, steps and the parameter ranges "
                                        "are for a particle file; {} is a lattice, expected none",
                                        lattice_spec));
-            AssessRequest request;
-            if (k.has_value() == (code.has_value() || value.has_value()))
-                fail_input("give k, or code and value (a code's own setting)");
-            if (code.has_value() != value.has_value()) fail_input("give code and value together");
-            if (k) request.setting.k = {*k};
-            if (code) request.setting.code = CodeSetting{*code, *value};
-            request.window_min = kmin, request.window_max = kmax;
-            request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
-            check_threads(threads, ValueSource::argument("threads"));
-            request.threads = threads;
-            AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
-                                   ValueSource::argument("code"), ValueSource::argument("value")},
-                                  ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
-                                  ValueSource::argument("gamma"), ValueSource::argument("horizon")};
-            auto lattice = load_lattice(lattice_spec);
-            auto kernel = kernel_of(kernel_spec, params);
-            request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
-            check_assess_request(request, sources);
-            nlohmann::json document;
-            {
-                py::gil_scoped_release unlocked;
-                document = assess_document(request, run_assess(request, sources, kernel, lattice));
-            }
-            return to_python(document);
+            return assess_on_lattice(kernel_spec, lattice_spec, params,
+                                     assess_request_of(k, code, value, kmin, kmax, epsilon, gamma, coef_sound, horizon,
+                                                       threads),
+                                     a_p, gravity, site, shells, continue_past_support);
         },
         py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
         py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,

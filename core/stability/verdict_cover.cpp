@@ -174,6 +174,22 @@ std::vector<double> sorted_unique(std::vector<double> ks)
     return ks;
 }
 
+// The rates at the ends and the middle of each agreeing interval, those not yet known, side by side.
+void measure_rates(CoverRates& rates, const std::vector<std::pair<double, double>>& agreeing, const Kernel& kernel,
+                   const Lattice& lattice, const CoverModel& model, int threads)
+{
+    std::vector<double> needed;
+    for (const auto& [a, b] : agreeing)
+        for (double k : {a, 0.5 * (a + b), b})
+            if (!rates.at.count(k)) needed.push_back(k);
+    needed = sorted_unique(std::move(needed));
+    const auto measured = side_by_side<std::shared_ptr<const KChangeRates>>(needed, threads, [&](double k) {
+        return std::make_shared<const KChangeRates>(kernel, lattice, *rates.grid, k, model.gamma, model.h_model);
+    });
+    for (std::size_t i = 0; i < needed.size(); ++i)
+        if (measured[i]) rates.at.emplace(needed[i], *measured[i]);
+}
+
 } // namespace
 
 std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lattice& lattice, double k_min,
@@ -216,16 +232,7 @@ std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lat
             else halve(a, b);
         }
         if (rates->grid) {
-            std::vector<double> needed;
-            for (const auto& [a, b] : agreeing)
-                for (double k : {a, 0.5 * (a + b), b})
-                    if (!rates->at.count(k)) needed.push_back(k);
-            needed = sorted_unique(std::move(needed));
-            const auto measured = side_by_side<std::shared_ptr<const KChangeRates>>(needed, threads, [&](double k) {
-                return std::make_shared<const KChangeRates>(kernel, lattice, *rates->grid, k, model.gamma, model.h_model);
-            });
-            for (std::size_t i = 0; i < needed.size(); ++i)
-                if (measured[i]) rates->at.emplace(needed[i], *measured[i]);
+            measure_rates(*rates, agreeing, kernel, lattice, model, threads);
             for (const auto& [a, b] : agreeing) {
                 const double m = 0.5 * (a + b);
                 if (!rates->at.count(a) || !rates->at.count(m) || !rates->at.count(b)) continue;

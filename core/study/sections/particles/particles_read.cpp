@@ -58,6 +58,70 @@ SourceSources sources_at(const JsonNode& node, const std::string& dim)
     return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), at("/array"), at("/particle_radius"), at("/cell"), ""};
 }
 
+// A lattice block: its size in cells, the cell, the disorder and the seed; returns its label.
+std::string read_lattice_source(const JsonNode& node, const JsonNode& lattice, const std::filesystem::path& study_file,
+                                ParticleSource& src)
+{
+    node.expect_keys({"lattice", "size", "cell", "sigma", "seed", "relax"});
+    src.kind = SourceKind::lattice;
+    src.spec = resolve_beside(lattice.string(), study_file, {".json"});
+    const auto size = node.at("size");
+    const std::size_t n = size.expect_array(2, 3);
+    src.cell_counts = n;
+    std::string cells;
+    for (std::size_t a = 0; a < n; ++a) {
+        src.block.cells[a] = size[a].integer_in(LLONG_MIN, LLONG_MAX);
+        if (a) cells += 'x';
+        cells += std::to_string(src.block.cells[a]);
+    }
+    if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number();
+    if (auto cell = node.find("cell")) {
+        const std::string name = cell->string();
+        if (name != "primitive" && name != "rectangular")
+            cell->error("\"" + name + "\" is unknown, expected primitive or rectangular");
+        src.block.rectangular = name == "rectangular";
+    }
+    src.block.seed = seed_of(node);
+    return fmt::format("{}, {} {}cells, sigma = {:g} d", lattice.string(), cells,
+                       src.block.rectangular ? "rectangular " : "", src.block.sigma);
+}
+
+// Poisson points: the dimension, the count, the seed and the box; returns its label.
+std::string read_poisson_source(const JsonNode& node, const JsonNode& poisson, ParticleSource& src)
+{
+    node.expect_keys({"poisson", "count", "seed", "box", "relax"});
+    src.kind = SourceKind::poisson;
+    src.spec = "poisson";
+    src.poisson.dimension = static_cast<int>(poisson.integer_in(INT_MIN, INT_MAX));
+    src.poisson.count = static_cast<std::size_t>(node.at("count").integer_in(0, LLONG_MAX));
+    src.poisson.seed = seed_of(node);
+    if (auto box = node.find("box")) {
+        const std::size_t n = box->expect_array(2, 3);
+        for (std::size_t a = 0; a < n; ++a) src.poisson.box[static_cast<int>(a)] = (*box)[a].number();
+        check_particle_source(src, sources_at(node, "/poisson"));
+        if (n != static_cast<std::size_t>(src.poisson.dimension)) box->error("expected one side per dimension");
+    }
+    return fmt::format("poisson, {}D, {} particles", src.poisson.dimension, src.poisson.count);
+}
+
+// A particle file beside the study: its box, array and dimension; returns its label (the name).
+std::string read_file_source(const JsonNode& node, const std::filesystem::path& study_file, ParticleSource& src)
+{
+    node.expect_keys({"file", "box", "array", "dim", "relax"});
+    src.kind = SourceKind::file;
+    const auto name = node.at("file").string();
+    src.spec = resolve_beside(name, study_file, {".h5", ".hdf5", ".csv", ".vtk"});
+    if (auto box = node.find("box")) {
+        const std::size_t n = box->expect_array(2, 3);
+        Eigen::Vector3d sides(1, 1, 1);
+        for (std::size_t a = 0; a < n; ++a) sides[static_cast<int>(a)] = (*box)[a].number();
+        src.box = sides;
+    }
+    if (auto array = node.find("array")) src.file.array = array->string();
+    if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(INT_MIN, INT_MAX));
+    return name;
+}
+
 StudyParticleSource read_source(const JsonNode& node, const std::filesystem::path& study_file)
 {
     node.expect_object();
@@ -66,58 +130,9 @@ StudyParticleSource read_source(const JsonNode& node, const std::filesystem::pat
     StudyParticleSource s;
     s.json_path = node.path();
     auto& src = s.source;
-    if (auto lattice = node.find("lattice")) {
-        node.expect_keys({"lattice", "size", "cell", "sigma", "seed", "relax"});
-        src.kind = SourceKind::lattice;
-        src.spec = resolve_beside(lattice->string(), study_file, {".json"});
-        const auto size = node.at("size");
-        const std::size_t n = size.expect_array(2, 3);
-        src.cell_counts = n;
-        std::string cells;
-        for (std::size_t a = 0; a < n; ++a) {
-            src.block.cells[a] = size[a].integer_in(LLONG_MIN, LLONG_MAX);
-            if (a) cells += 'x';
-            cells += std::to_string(src.block.cells[a]);
-        }
-        if (auto sigma = node.find("sigma")) src.block.sigma = sigma->number();
-        if (auto cell = node.find("cell")) {
-            const std::string name = cell->string();
-            if (name != "primitive" && name != "rectangular")
-                cell->error("\"" + name + "\" is unknown, expected primitive or rectangular");
-            src.block.rectangular = name == "rectangular";
-        }
-        src.block.seed = seed_of(node);
-        s.label = fmt::format("{}, {} {}cells, sigma = {:g} d", lattice->string(), cells,
-                              src.block.rectangular ? "rectangular " : "", src.block.sigma);
-    } else if (auto poisson = node.find("poisson")) {
-        node.expect_keys({"poisson", "count", "seed", "box", "relax"});
-        src.kind = SourceKind::poisson;
-        src.spec = "poisson";
-        src.poisson.dimension = static_cast<int>(poisson->integer_in(INT_MIN, INT_MAX));
-        src.poisson.count = static_cast<std::size_t>(node.at("count").integer_in(0, LLONG_MAX));
-        src.poisson.seed = seed_of(node);
-        if (auto box = node.find("box")) {
-            const std::size_t n = box->expect_array(2, 3);
-            for (std::size_t a = 0; a < n; ++a) src.poisson.box[static_cast<int>(a)] = (*box)[a].number();
-            check_particle_source(src, sources_at(node, "/poisson"));
-            if (n != static_cast<std::size_t>(src.poisson.dimension)) box->error("expected one side per dimension");
-        }
-        s.label = fmt::format("poisson, {}D, {} particles", src.poisson.dimension, src.poisson.count);
-    } else {
-        node.expect_keys({"file", "box", "array", "dim", "relax"});
-        src.kind = SourceKind::file;
-        const auto name = node.at("file").string();
-        src.spec = resolve_beside(name, study_file, {".h5", ".hdf5", ".csv", ".vtk"});
-        if (auto box = node.find("box")) {
-            const std::size_t n = box->expect_array(2, 3);
-            Eigen::Vector3d sides(1, 1, 1);
-            for (std::size_t a = 0; a < n; ++a) sides[static_cast<int>(a)] = (*box)[a].number();
-            src.box = sides;
-        }
-        if (auto array = node.find("array")) src.file.array = array->string();
-        if (auto dim = node.find("dim")) src.file.dimension = static_cast<int>(dim->integer_in(INT_MIN, INT_MAX));
-        s.label = name;
-    }
+    if (auto lattice = node.find("lattice")) s.label = read_lattice_source(node, *lattice, study_file, src);
+    else if (auto poisson = node.find("poisson")) s.label = read_poisson_source(node, *poisson, src);
+    else s.label = read_file_source(node, study_file, src);
     check_particle_source(src, sources_at(node, src.kind == SourceKind::poisson ? "/poisson" : "/dim"));
     if (auto relax = node.find("relax")) {
         s.relax = read_relax(*relax);
