@@ -11,8 +11,9 @@ packages=(cmake make g++ libeigen3-dev libboost-dev libboost-filesystem-dev libs
     nlohmann-json3-dev doctest-dev libcli11-dev libmuparser-dev libhdf5-dev libssl-dev voro++-dev gnuplot-nox libbenchmark-dev python3 python3-jsonschema python3-yaml dpkg-dev groff-base
     python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-h5py)
 # The tests compare with a peer code's own sums (PySPH compiles its equations with Cython), read
-# files SPLASH writes (GADGET format 1) and reads (Phantom dumps), and read ParaView's files with VTK.
-[[ ${1:-run} == test ]] && packages+=(python3-pysph splash python3-vtk9)
+# files SPLASH writes (GADGET format 1) and reads (Phantom dumps), read ParaView's files with VTK,
+# and hold the sources to clang-format.
+[[ ${1:-run} == test ]] && packages+=(python3-pysph splash python3-vtk9 clang-format)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -38,7 +38,6 @@ struct AcceptanceRule {
     bool lateral = false; // the lateral error counts too (along gravity, or its maximum over directions)
 };
 
-
 // The largest error the rule looks at, for one site at k.
 double acceptance_error(const HydrostaticErrors& site, double k, const AcceptanceRule& rule);
 

@@ -43,8 +43,7 @@ struct NewtonPoint {
 
 // Newton's method on (eps_rho, eps_gradP) = 0 in (k, parameter), with a central-difference
 // Jacobian; returns the converged point and the Jacobian there.
-std::optional<NewtonPoint> newton(const Kernel& kernel, const DesignProblem& p, double a_p,
-                                                        Eigen::Vector2d x)
+std::optional<NewtonPoint> newton(const Kernel& kernel, const DesignProblem& p, double a_p, Eigen::Vector2d x)
 {
     auto residual = [&](const Eigen::Vector2d& v) {
         auto e = errors_at(kernel, p, a_p, v[0], v[1]);
@@ -113,7 +112,8 @@ std::vector<std::pair<double, double>> solve_blend(const Kernel& blend, const De
     // eps(alpha) = (1 - alpha) eps_A + alpha eps_B at fixed k, so both vanish where
     // D(k) = rho_A gradP_B - rho_B gradP_A = 0, at alpha = rho_A / (rho_A - rho_B).
     const Kernel a = with_parameter(blend, "alpha", 0.0), b = with_parameter(blend, "alpha", 1.0);
-    HydrostaticErrors ea(a, *p.lattice, p.site, a_p, p.gravity, p.k_max), eb(b, *p.lattice, p.site, a_p, p.gravity, p.k_max);
+    HydrostaticErrors ea(a, *p.lattice, p.site, a_p, p.gravity, p.k_max),
+        eb(b, *p.lattice, p.site, a_p, p.gravity, p.k_max);
     std::vector<double> edges = {p.k_min};
     for (double k : ea.breakpoints(p.k_min, p.k_max)) edges.push_back(k);
     edges.push_back(p.k_max);
@@ -142,12 +142,15 @@ std::vector<std::pair<double, double>> solve_by_newton(const Kernel& kernel, con
     pass.run_blocks(scans.size(), 1, p.threads, [&](std::size_t b, std::size_t, std::size_t) {
         const int i = static_cast<int>(b);
         double value = p.parameter_min + (p.parameter_max - p.parameter_min) * i / steps;
-        HydrostaticErrors errors(with_parameter(kernel, p.parameter, value), *p.lattice, p.site, a_p, p.gravity, p.k_max);
+        HydrostaticErrors errors(with_parameter(kernel, p.parameter, value), *p.lattice, p.site, a_p, p.gravity,
+                                 p.k_max);
         scans[b] = find_roots(errors, p.k_min, p.k_max, 200);
     });
     std::vector<std::pair<double, double>> found;
     for (auto function : {ErrorFunction::rho, ErrorFunction::gradp}) {
-        auto other = [&](const Root& r) { return function == ErrorFunction::rho ? r.values.eps_gradp : r.values.eps_rho; };
+        auto other = [&](const Root& r) {
+            return function == ErrorFunction::rho ? r.values.eps_gradp : r.values.eps_rho;
+        };
         for (int i = 0; i < steps; ++i)
             for (const auto& r0 : scans[static_cast<std::size_t>(i)].roots) {
                 if (r0.function != function) continue;

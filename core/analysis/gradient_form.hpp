@@ -30,7 +30,8 @@ inline double gradient_form_weight(GradientForm form, double depth_i, double dep
 {
     switch (form) {
     case GradientForm::sum: return gradient_form_weight<GradientForm::sum>(depth_i, depth_j, rho_i, rho_j);
-    case GradientForm::difference: return gradient_form_weight<GradientForm::difference>(depth_i, depth_j, rho_i, rho_j);
+    case GradientForm::difference:
+        return gradient_form_weight<GradientForm::difference>(depth_i, depth_j, rho_i, rho_j);
     case GradientForm::monaghan: break;
     }
     return gradient_form_weight<GradientForm::monaghan>(depth_i, depth_j, rho_i, rho_j);

@@ -37,7 +37,8 @@ std::vector<Shell> select_shells(const std::vector<Shell>& all, const std::vecto
 
 HydrostaticErrors::HydrostaticErrors(const Kernel& kernel, const Lattice& lattice, int site, double a_p,
                                      const Eigen::Vector3d& gravity, double k_max, const EvaluationMode& mode)
-    : kernel_(kernel), site_(site), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.stableNormalized()), mode_(mode)
+    : kernel_(kernel), site_(site), dim_(lattice.dimension), a_p_(a_p), gravity_(gravity.stableNormalized()),
+      mode_(mode)
 {
     kernel.require_dimension(lattice.dimension, lattice.name);
     require_usable_kernel(kernel, dim_, k_max);
@@ -96,7 +97,8 @@ ErrorValues HydrostaticErrors::at_piece(double k, std::size_t active) const
         for (std::size_t s = 0; s < active; ++s) qs.push_back(terms_[s].radius / k);
         fail_overflowing_kernel(kernel_, dim_, k, "the lattice's density and gradient sums", qs);
         fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the errors "
-                               "are not finite numbers (expected k of order 1)", k));
+                               "are not finite numbers (expected k of order 1)",
+                               k));
     }
     double reach = kernel_.support() * k * (1 + support_edge);
     for (const auto& s : all_shells_)
@@ -153,7 +155,8 @@ void HydrostaticErrors::fail_non_finite(double k, std::size_t active) const
     for (std::size_t s = 0; s < active; ++s) qs.push_back(terms_[s].radius / k);
     fail_overflowing_kernel(kernel_, dim_, k, "the lattice's density and gradient sums", qs);
     fail_input(fmt::format("k = {:.6g} is outside what this kernel and lattice can be evaluated at: the sums "
-                           "overflow (expected k of order 1)", k));
+                           "overflow (expected k of order 1)",
+                           k));
 }
 
 std::pair<double, double> HydrostaticErrors::shell_contribution(const Shell& shell, double k) const

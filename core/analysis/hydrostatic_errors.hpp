@@ -76,8 +76,8 @@ private:
     double a_p_;
     Eigen::Vector3d gravity_;
     EvaluationMode mode_;
-    std::vector<Shell> all_shells_; // every lattice shell up to R k_max, for N_H
-    std::vector<Shell> terms_;      // the shells summed
+    std::vector<Shell> all_shells_;                     // every lattice shell up to R k_max, for N_H
+    std::vector<Shell> terms_;                          // the shells summed
     std::vector<Eigen::Vector3d> moment_along_gravity_; // moment * gravity per term
 };
 

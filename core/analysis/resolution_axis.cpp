@@ -14,8 +14,9 @@ Axis parse_axis(const std::string& text, const std::string& what)
     if (text == "k") return Axis::k;
     if (text == "h_over_l") return Axis::eta;
     if (text == "eta")
-        fail_input(what + " \"eta\" is the old name of sphkern's own h / V^(1/D); expected h_over_l (SWIFT's eta is a code's "
-                          "setting: --code swift --eta)");
+        fail_input(what +
+                   " \"eta\" is the old name of sphkern's own h / V^(1/D); expected h_over_l (SWIFT's eta is a code's "
+                   "setting: --code swift --eta)");
     if (text == "nh") return Axis::nh;
     fail_input(what + " \"" + text + "\" is unknown, expected k, h_over_l or nh");
 }
@@ -57,8 +58,9 @@ std::pair<double, double> k_window(Axis axis, double lo, double hi, const Kernel
         }
     }
     if (!(window.first > 0 && window.second <= 100))
-        fail_input(fmt::format("{}: the window [{}, {}] on the {} axis is k in [{:.6g}, {:.6g}], expected k in (0, 100]",
-                               what, lo, hi, axis_name(axis), window.first, window.second));
+        fail_input(
+            fmt::format("{}: the window [{}, {}] on the {} axis is k in [{:.6g}, {:.6g}], expected k in (0, 100]", what,
+                        lo, hi, axis_name(axis), window.first, window.second));
     return window;
 }
 

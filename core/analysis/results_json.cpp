@@ -11,9 +11,9 @@ namespace sphkern {
 
 nlohmann::json root_json(const Root& r)
 {
-    return {{"function", function_name(r.function)},         {"k", r.k},
-            {"eps_rho", r.values.eps_rho},    {"eps_gradp", r.values.eps_gradp},
-            {"lateral", r.values.lateral},    {"neighbours", r.values.neighbours},
+    return {{"function", function_name(r.function)}, {"k", r.k},
+            {"eps_rho", r.values.eps_rho},           {"eps_gradp", r.values.eps_gradp},
+            {"lateral", r.values.lateral},           {"neighbours", r.values.neighbours},
             {"support_radius", r.support_radius}};
 }
 
@@ -22,7 +22,11 @@ nlohmann::json root_scan_json(const RootScan& scan)
     nlohmann::json roots = nlohmann::json::array(), jumps = nlohmann::json::array();
     for (const auto& r : scan.roots) roots.push_back(root_json(r));
     for (const auto& j : scan.jumps)
-        jumps.push_back({{"function", function_name(j.function)}, {"kind", jump_kind_name(j.kind)}, {"k", j.k}, {"left", j.left}, {"right", j.right}});
+        jumps.push_back({{"function", function_name(j.function)},
+                         {"kind", jump_kind_name(j.kind)},
+                         {"k", j.k},
+                         {"left", j.left},
+                         {"right", j.right}});
     return {{"roots", roots}, {"jumps", jumps}};
 }
 
@@ -47,26 +51,35 @@ nlohmann::json surface_json(const SurfaceProfile& profile)
     auto sites_json = [](const std::vector<SiteLayerErrors>& sites) {
         nlohmann::json list = nlohmann::json::array();
         for (const auto& v : sites)
-            list.push_back({{"site", v.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp},
-                            {"neighbours", v.neighbours}});
+            list.push_back(
+                {{"site", v.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp}, {"neighbours", v.neighbours}});
         return list;
     };
     nlohmann::json layers = nlohmann::json::array();
     for (const auto& l : profile.layers)
-        layers.push_back({{"n", l.n}, {"depth", l.depth}, {"eps_rho", l.eps_rho}, {"eps_gradp", l.eps_gradp},
-                          {"neighbours", l.neighbours}, {"sites", sites_json(l.sites)}});
+        layers.push_back({{"n", l.n},
+                          {"depth", l.depth},
+                          {"eps_rho", l.eps_rho},
+                          {"eps_gradp", l.eps_gradp},
+                          {"neighbours", l.neighbours},
+                          {"sites", sites_json(l.sites)}});
     nlohmann::json terminations = nlohmann::json::array();
     for (std::size_t t = 0; t < profile.planes.types.size(); ++t)
-        terminations.push_back({{"index", t}, {"name", profile.planes.name(static_cast<int>(t))},
-                                {"sites", profile.planes.types[t].sites}, {"offset", profile.planes.types[t].offset}});
+        terminations.push_back({{"index", t},
+                                {"name", profile.planes.name(static_cast<int>(t))},
+                                {"sites", profile.planes.types[t].sites},
+                                {"offset", profile.planes.types[t].offset}});
     nlohmann::json first = nlohmann::json::array();
     for (const auto& m : profile.first_moments) first.push_back({m.x(), m.y(), m.z()});
     return {{"spacing", profile.spacing},
             {"termination", profile.termination},
             {"terminations", terminations},
             {"layers", layers},
-            {"bulk", {{"eps_rho", profile.bulk.eps_rho}, {"eps_gradp", profile.bulk.eps_gradp},
-                      {"neighbours", profile.bulk.neighbours}, {"sites", sites_json(profile.bulk.sites)}}},
+            {"bulk",
+             {{"eps_rho", profile.bulk.eps_rho},
+              {"eps_gradp", profile.bulk.eps_gradp},
+              {"neighbours", profile.bulk.neighbours},
+              {"sites", sites_json(profile.bulk.sites)}}},
             {"first_moments", first}};
 }
 
@@ -98,14 +111,23 @@ nlohmann::json design_json(const Kernel& kernel, const DesignProblem& problem, c
 {
     nlohmann::json solutions = nlohmann::json::array();
     for (const auto& s : result.solutions)
-        solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
-                             {"eps_gradp", s.values.eps_gradp}, {"neighbours", s.values.neighbours},
+        solutions.push_back({{"k", s.k},
+                             {"parameter", s.parameter},
+                             {"eps_rho", s.values.eps_rho},
+                             {"eps_gradp", s.values.eps_gradp},
+                             {"neighbours", s.values.neighbours},
                              {"jacobian_condition", s.jacobian_condition},
                              {"ap_plus_1_percent", {{"k_shift", s.k_shift}, {"parameter_shift", s.parameter_shift}}},
-                             {"non_negative", s.non_negative}, {"method", s.method}});
-    return {{"kernel", kernel.name()}, {"lattice", problem.lattice->name}, {"a_p", problem.a_p},
-            {"parameter", problem.parameter}, {"range", {problem.parameter_min, problem.parameter_max}},
-            {"k_range", {problem.k_min, problem.k_max}}, {"solutions", solutions}, {"note", result.note}};
+                             {"non_negative", s.non_negative},
+                             {"method", s.method}});
+    return {{"kernel", kernel.name()},
+            {"lattice", problem.lattice->name},
+            {"a_p", problem.a_p},
+            {"parameter", problem.parameter},
+            {"range", {problem.parameter_min, problem.parameter_max}},
+            {"k_range", {problem.k_min, problem.k_max}},
+            {"solutions", solutions},
+            {"note", result.note}};
 }
 
 } // namespace sphkern

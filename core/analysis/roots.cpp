@@ -36,8 +36,7 @@ void scan_piece(const HydrostaticErrors& errors, double a, double b, std::size_t
             ErrorValues at = errors.at_piece(k, active);
             if (std::abs(value_of(at, name)) <= singular_value)
                 out.roots.push_back({name, k, at, errors.kernel().support() * k});
-            else
-                out.jumps.push_back({name, JumpKind::singularity, k, f(bracket.first), f(bracket.second)});
+            else out.jumps.push_back({name, JumpKind::singularity, k, f(bracket.first), f(bracket.second)});
         }
         k0 = k1;
         f0 = f1;

@@ -14,17 +14,17 @@ inline constexpr double root_tolerance = 1e-10; // on k
 
 // Which error vanishes or jumps.
 enum class ErrorFunction { rho, gradp };
-const char* function_name(ErrorFunction f);           // "rho" or "gradp", as in results.json
+const char* function_name(ErrorFunction f);             // "rho" or "gradp", as in results.json
 double value_of(const ErrorValues& v, ErrorFunction f); // eps_rho or eps_gradp
 
 enum class JumpKind { support, singularity }; // a shell enters the support; a pole of the kernel
-const char* jump_kind_name(JumpKind kind);     // "support" or "singularity"
+const char* jump_kind_name(JumpKind kind);    // "support" or "singularity"
 
 struct Root {
     ErrorFunction function;
     double k = 0;
-    ErrorValues values;     // both errors at the root
-    double support_radius;  // H / d = R k
+    ErrorValues values;    // both errors at the root
+    double support_radius; // H / d = R k
 };
 
 struct Jump {

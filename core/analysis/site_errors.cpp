@@ -28,7 +28,8 @@ std::vector<std::unique_ptr<HydrostaticErrors>> errors_per_site(const Kernel& ke
                                                                 const EvaluationMode& mode)
 {
     std::vector<std::unique_ptr<HydrostaticErrors>> errors;
-    for (int s : sites) errors.push_back(std::make_unique<HydrostaticErrors>(kernel, lattice, s, a_p, gravity, k_max, mode));
+    for (int s : sites)
+        errors.push_back(std::make_unique<HydrostaticErrors>(kernel, lattice, s, a_p, gravity, k_max, mode));
     return errors;
 }
 

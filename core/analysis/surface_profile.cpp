@@ -16,7 +16,8 @@ namespace sphkern {
 int SurfacePlanes::type_of_site(int site) const
 {
     for (std::size_t t = 0; t < types.size(); ++t)
-        if (std::find(types[t].sites.begin(), types[t].sites.end(), site) != types[t].sites.end()) return static_cast<int>(t);
+        if (std::find(types[t].sites.begin(), types[t].sites.end(), site) != types[t].sites.end())
+            return static_cast<int>(t);
     return 0;
 }
 
@@ -42,8 +43,7 @@ SurfacePlanes surface_planes(const Lattice& lattice, const Eigen::Vector3d& grav
     for (double p : projections)
         if (p > tolerance) period = std::min(period, p);
     bool planar = period >= 1e-3 && std::isfinite(period);
-    for (double p : projections)
-        planar = planar && std::abs(p / period - std::round(p / period)) * period <= tolerance;
+    for (double p : projections) planar = planar && std::abs(p / period - std::round(p / period)) * period <= tolerance;
     if (!planar) {
         std::ostringstream s;
         s << "gravity (";
@@ -63,7 +63,8 @@ SurfacePlanes surface_planes(const Lattice& lattice, const Eigen::Vector3d& grav
         if (same != planes.types.end()) same->sites.push_back(site);
         else planes.types.push_back({offset, {site}});
     }
-    std::sort(planes.types.begin(), planes.types.end(), [](const PlaneType& a, const PlaneType& b) { return a.offset < b.offset; });
+    std::sort(planes.types.begin(), planes.types.end(),
+              [](const PlaneType& a, const PlaneType& b) { return a.offset < b.offset; });
     return planes;
 }
 
@@ -212,8 +213,10 @@ double SurfaceSums::gradient(int s, double depth_i, bool bulk) const
     for (const auto& j : neighbours_of(s)) {
         double depth_j = depth_i + j.height;
         if (!bulk && depth_j < -1e-9) continue;
-        const double rho_j = form_ != GradientForm::monaghan ? 1.0 // read by the Monaghan form only
-                             : 1 + (bulk ? bulk_density_[static_cast<std::size_t>(j.site)] : density_at(j.site, depth_j));
+        const double rho_j =
+            form_ != GradientForm::monaghan
+                ? 1.0 // read by the Monaghan form only
+                : 1 + (bulk ? bulk_density_[static_cast<std::size_t>(j.site)] : density_at(j.site, depth_j));
         const double weight = gradient_form_weight(form_, depth_i, depth_j, rho_i, rho_j);
         // (x_i - x_j) . e / r = -height / r
         sum += weight * kernel_.dw(j.r / k_, dim_, k_) * (-j.height / j.r);
@@ -234,7 +237,8 @@ std::vector<LayerErrors> SurfaceSums::layers(double reported_depth, int min_laye
     std::vector<LayerErrors> layers;
     std::vector<bool> complete(types_.types.size(), false);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
-        if (static_cast<int>(p) >= min_layers && std::all_of(complete.begin(), complete.end(), [](bool c) { return c; }))
+        if (static_cast<int>(p) >= min_layers &&
+            std::all_of(complete.begin(), complete.end(), [](bool c) { return c; }))
             break;
         if (planes_[p].depth > reported_depth + 1e-9) complete[static_cast<std::size_t>(planes_[p].type)] = true;
         throw_if_interrupted();
@@ -257,7 +261,8 @@ void SurfaceSums::require_finite(const std::vector<LayerErrors>& layers) const
         for (const auto& v : l.sites)
             if (!std::isfinite(v.eps_rho) || !std::isfinite(v.eps_gradp)) {
                 for (const auto& j : neighbours_of(v.site)) {
-                    if (!std::isfinite(kernel_.w(j.r / k_, dim_, k_))) fail_non_finite_kernel(kernel_, "W", j.r / k_, dim_, k_);
+                    if (!std::isfinite(kernel_.w(j.r / k_, dim_, k_)))
+                        fail_non_finite_kernel(kernel_, "W", j.r / k_, dim_, k_);
                     if (!std::isfinite(kernel_.dw(j.r / k_, dim_, k_)))
                         fail_non_finite_kernel(kernel_, "dW/dr", j.r / k_, dim_, k_);
                 }
@@ -302,8 +307,8 @@ SurfaceProfile surface_profile(const Kernel& kernel, const Lattice& lattice, int
     const double reported_depth =
         form == GradientForm::monaghan ? reach + (std::floor(reach / period + 1e-9) + 1) * period : reach;
     const double deepest = reported_depth + reach + (min_layers + 1) * period;
-    const SurfaceSums sums(kernel, lattice, profile.planes, planes_below_top(profile.planes, profile.termination, deepest),
-                           a_p, e, k, form);
+    const SurfaceSums sums(kernel, lattice, profile.planes,
+                           planes_below_top(profile.planes, profile.termination, deepest), a_p, e, k, form);
     profile.layers = sums.layers(reported_depth, min_layers);
     sums.require_finite(profile.layers);
     profile.bulk = sums.bulk(profile.layers[0].sites[0].site);

@@ -40,19 +40,19 @@ struct SiteLayerErrors {
 
 struct LayerErrors {
     int n = 0;
-    double depth = 0; // below the top plane, in d
-    double eps_rho = 0;    // the plane's first site
+    double depth = 0;   // below the top plane, in d
+    double eps_rho = 0; // the plane's first site
     double eps_gradp = 0;
     int neighbours = 0;
     std::vector<SiteLayerErrors> sites; // every site on the plane
 };
 
 struct SurfaceProfile {
-    double spacing = 0;               // the planes' period (the layer spacing of a one-site lattice)
+    double spacing = 0; // the planes' period (the layer spacing of a one-site lattice)
     SurfacePlanes planes;
-    int termination = 0;              // the plane type on top
-    std::vector<LayerErrors> layers;  // the occupied planes, n = 0 (top) downwards, until the bulk is reached
-    LayerErrors bulk;                 // every neighbour present (first site, then every site)
+    int termination = 0;             // the plane type on top
+    std::vector<LayerErrors> layers; // the occupied planes, n = 0 (top) downwards, until the bulk is reached
+    LayerErrors bulk;                // every neighbour present (first site, then every site)
     // First moments per site (see GradientTensor): where one is not zero the sum form's
     // bulk value depends on depth (2 P_i m1); the bulk row leaves that term out.
     std::vector<Eigen::Vector3d> first_moments;

@@ -20,9 +20,11 @@ std::size_t checked_block_size(const Lattice& lattice, const BlockOptions& optio
     long double total = lattice.sites();
     for (int i = 0; i < 3; ++i) {
         long long n = options.cells[static_cast<std::size_t>(i)];
-        if (i >= dim && n != 1) fail_input("a " + std::to_string(dim) + "D block takes " + std::to_string(dim) + " sizes");
-        if (n < 1) fail_input("block size " + std::to_string(n) + " along basis vector " + std::to_string(i + 1) +
-                              " is not allowed, expected a positive number of cells");
+        if (i >= dim && n != 1)
+            fail_input("a " + std::to_string(dim) + "D block takes " + std::to_string(dim) + " sizes");
+        if (n < 1)
+            fail_input("block size " + std::to_string(n) + " along basis vector " + std::to_string(i + 1) +
+                       " is not allowed, expected a positive number of cells");
         total *= static_cast<long double>(n);
     }
     // The memory the machine has available now, at the bytes a block particle takes on the
@@ -60,7 +62,8 @@ std::vector<int> plane_ranks(const Lattice& lattice, long long vertical, double 
         for (int s = 0; s < sites; ++s) {
             Eigen::Vector3d index = Eigen::Vector3d::Zero();
             index[dim - 1] = static_cast<double>(c);
-            plane_depths.emplace_back(top + gravity.dot(lattice.basis * (index + lattice.motif[static_cast<std::size_t>(s)])),
+            plane_depths.emplace_back(top + gravity.dot(lattice.basis *
+                                                        (index + lattice.motif[static_cast<std::size_t>(s)])),
                                       static_cast<std::size_t>(c * sites + s));
         }
     std::sort(plane_depths.begin(), plane_depths.end());

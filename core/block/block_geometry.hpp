@@ -13,7 +13,7 @@ namespace sphkern {
 struct BlockGeometry {
     long long size[3] = {1, 1, 1}; // cells along the basis vectors
     std::size_t cells = 0, count = 0;
-    HugeArray<double> depth;       // below the top particle, along gravity
+    HugeArray<double> depth; // below the top particle, along gravity
 };
 
 // The number of particles of the block; Error(input) for a bad size or one over the limit.

@@ -30,8 +30,8 @@ template <GradientForm form>
 SPHKERN_ENGINE_CLONES double gradient_sum(double depth_i, double rho_i, const Neighbours& nb, const double* e,
                                           std::size_t n)
 {
-    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
-    const double *__restrict rho_j = nb.b.data(), *__restrict dw = nb.dw.data(), *__restrict inv_r = nb.inv_r.data();
+    const double* __restrict dx = nb.dx.data(), * __restrict dy = nb.dy.data(), * __restrict dz = nb.dz.data();
+    const double* __restrict rho_j = nb.b.data(), * __restrict dw = nb.dw.data(), * __restrict inv_r = nb.inv_r.data();
     double acc[lanes] = {};
     for (std::size_t base = 0; base < n; base += lanes)
         for (std::size_t l = 0; l < lanes; ++l) {

@@ -104,10 +104,13 @@ ParticleSet block_particle_set(const Lattice& lattice, const BlockOptions& optio
             const double height = up.dot(Eigen::Vector3d(result.x[i], result.y[i], result.z[i]));
             r.first = std::min(r.first, height), r.second = std::max(r.second, height);
         },
-        [](Range& r, const Range& block) { r.first = std::min(r.first, block.first), r.second = std::max(r.second, block.second); });
+        [](Range& r, const Range& block) {
+            r.first = std::min(r.first, block.first), r.second = std::max(r.second, block.second);
+        });
     PeriodicBox box;
     box.edges = unit;
-    for (int a = 0; a < dim - 1; ++a) box.edges.col(a) *= static_cast<double>(options.cells[static_cast<std::size_t>(a)]);
+    for (int a = 0; a < dim - 1; ++a)
+        box.edges.col(a) *= static_cast<double>(options.cells[static_cast<std::size_t>(a)]);
     box.edges.col(dim - 1) *= high - low + 4 * reach;
     Eigen::Matrix3d cell = box.edges;
     if (dim == 2) cell.col(2) = Eigen::Vector3d::UnitZ();

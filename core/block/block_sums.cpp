@@ -17,8 +17,8 @@ struct BlockSweep {
     const NeighbourGrid& grid;
     const SweepParameters& parameters;
     bool with_density, with_gradient;
-    const double* depth;                  // in the block's order
-    const double* rho;                    // in the block's order (Monaghan's form only)
+    const double* depth;           // in the block's order
+    const double* rho;             // in the block's order (Monaghan's form only)
     std::vector<double> point_rho; // in the grid's point order (empty but for Monaghan's form)
     double reach;
     double self, kd, kd1;
@@ -34,7 +34,8 @@ struct BlockSweep {
         const std::size_t i = grid.source(p);
         if (with_density && !with_gradient) kernel.w_batch(nb.q.data(), nb.w.data(), padded, dim, k);
         else kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
-        if (with_density) result.eps_rho[i] = parameters.a_p * (self + block_density_sum(nb.w.data(), padded, n)) / kd - 1;
+        if (with_density)
+            result.eps_rho[i] = parameters.a_p * (self + block_density_sum(nb.w.data(), padded, n)) / kd - 1;
         if (with_gradient) result.eps_gradp[i] = parameters.a_p * gradient(i, nb, padded, result.gravity) / kd1 - 1;
         return n;
     }
@@ -72,7 +73,9 @@ std::size_t sum_block(const Kernel& kernel, const NeighbourGrid& grid, const Blo
     const PairPassInputs pass{{nullptr, sweep.reach}, nullptr, monaghan ? sweep.point_rho.data() : nullptr, false, ""};
     pair_pass(
         grid, "the block", pass, result.threads,
-        [&](int thread, std::size_t p, Neighbours& nb) { pairs[static_cast<std::size_t>(thread)] += sweep.sum_particle(p, nb, result); },
+        [&](int thread, std::size_t p, Neighbours& nb) {
+            pairs[static_cast<std::size_t>(thread)] += sweep.sum_particle(p, nb, result);
+        },
         [](int) {});
     std::size_t total = 0;
     for (auto p : pairs) total += p;

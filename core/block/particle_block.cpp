@@ -40,7 +40,8 @@ std::vector<LayerRange> BlockResult::layers() const
 {
     std::map<int, LayerRange> by_layer;
     for (std::size_t i = 0; i < layer.size(); ++i) {
-        auto [it, added] = by_layer.emplace(layer[i], LayerRange{layer[i], 0, eps_rho[i], eps_rho[i], eps_gradp[i], eps_gradp[i], {}});
+        auto [it, added] =
+            by_layer.emplace(layer[i], LayerRange{layer[i], 0, eps_rho[i], eps_rho[i], eps_gradp[i], eps_gradp[i], {}});
         auto& l = it->second;
         const int site = static_cast<int>(i / (layer.size() / static_cast<std::size_t>(sites)));
         if (std::find(l.sites.begin(), l.sites.end(), site) == l.sites.end()) l.sites.push_back(site);

@@ -43,12 +43,12 @@ struct LayerRange {
 
 struct BlockResult {
     int dimension = 0;
-    HugeArray<double> x, y, z;      // positions, site-major (see evaluate_block)
-    HugeArray<int> layer;           // 0 on top
-    HugeArray<double> eps_rho;      // per particle
-    HugeArray<double> eps_gradp;    // per particle, along gravity
-    Eigen::Vector3d gravity;        // normal to the top face, pointing down
-    double spacing = 0;             // between layers
+    HugeArray<double> x, y, z;         // positions, site-major (see evaluate_block)
+    HugeArray<int> layer;              // 0 on top
+    HugeArray<double> eps_rho;         // per particle
+    HugeArray<double> eps_gradp;       // per particle, along gravity
+    Eigen::Vector3d gravity;           // normal to the top face, pointing down
+    double spacing = 0;                // between layers
     std::size_t pair_interactions = 0; // per sum (the density and the gradient each see this many)
     int threads = 1;
     int sites = 1; // particle i belongs to motif site i / (particles / sites)

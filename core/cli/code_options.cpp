@@ -43,8 +43,9 @@ void add_setting_options(Command c, SettingOptions& o, const std::string& k_help
     c.add_option("--k", o.k, k_help);
     std::vector<std::string> names;
     for (const auto& p : code_profiles()) names.push_back(p.name);
-    c.add_option("--code", o.code, fmt::format("Give the resolution as an SPH code sets it: {}, with its parameter below",
-                                               fmt::join(names, ", ")));
+    c.add_option("--code", o.code,
+                 fmt::format("Give the resolution as an SPH code sets it: {}, with its parameter below",
+                             fmt::join(names, ", ")));
     add_parameters(c, o, {});
 }
 
@@ -68,7 +69,8 @@ std::optional<CodeChoice> code_choice(const SettingOptions& o, const std::option
     if (o.code.empty()) {
         for (const auto& [name, value] : given)
             if (value->has_value())
-                throw Error(ExitCode::usage, fmt::format("{} is a code's setting; expected --code too", option_of(name)));
+                throw Error(ExitCode::usage,
+                            fmt::format("{} is a code's setting; expected --code too", option_of(name)));
         return std::nullopt;
     }
     const std::string parameter = code_profile(o.code, ValueSource::option("--code")).parameter;
@@ -93,7 +95,8 @@ std::optional<CodeSetting> code_setting(const SettingOptions& o)
         return std::nullopt;
     }
     const std::string parameter = option_of(code_profile(o.code, ValueSource::option("--code")).parameter);
-    if (!choice->value) throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, {}", o.code, parameter));
+    if (!choice->value)
+        throw Error(ExitCode::usage, fmt::format("--code {}: expected its setting, {}", o.code, parameter));
     if (o.k) throw Error(ExitCode::usage, fmt::format("give one of --k and {}", parameter));
     return CodeSetting{o.code, *choice->value};
 }
@@ -107,8 +110,9 @@ std::optional<CodeChoice> code_beside_own_eta(const SettingOptions& o, const std
 void refuse_eta_without_code(const SettingOptions& o, const std::optional<double>& eta)
 {
     if (eta && o.code.empty())
-        throw Error(ExitCode::usage, "--eta is SWIFT's eta, a code's setting (--code swift --eta); sphkern's own h over the "
-                                     "mean spacing is --h-over-l");
+        throw Error(ExitCode::usage,
+                    "--eta is SWIFT's eta, a code's setting (--code swift --eta); sphkern's own h over the "
+                    "mean spacing is --h-over-l");
 }
 
 std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
@@ -120,11 +124,13 @@ std::pair<ValueSource, ValueSource> code_sources(const SettingOptions& o)
 void set_density_solve(CodeSetting* setting, const std::string& neighbours_by, bool bias_correction)
 {
     if (!setting && !neighbours_by.empty())
-        throw Error(ExitCode::usage, "--neighbours-by chooses what a code's density solve counts; expected --code with its "
-                                     "parameter (h solved on the set)");
+        throw Error(ExitCode::usage,
+                    "--neighbours-by chooses what a code's density solve counts; expected --code with its "
+                    "parameter (h solved on the set)");
     if (!setting && bias_correction)
-        throw Error(ExitCode::usage, "--bias-correction is the code's correction of its density solve; expected --code with "
-                                     "its parameter (h solved on the set)");
+        throw Error(ExitCode::usage,
+                    "--bias-correction is the code's correction of its density solve; expected --code with "
+                    "its parameter (h solved on the set)");
     if (!setting) return;
     setting->bias_correction = bias_correction;
     if (neighbours_by.empty()) return;
@@ -138,7 +144,8 @@ void add_parameter_ranges(Command c, std::map<std::string, std::vector<double>>&
     for (const auto& p : code_profiles()) {
         if (ranges.contains(p.parameter)) continue;
         c.add_option(option_of(p.parameter) + "-range", ranges[p.parameter],
-                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs", p.parameter))
+                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs",
+                                 p.parameter))
             .expected(2);
     }
 }
@@ -151,8 +158,9 @@ std::optional<std::pair<std::string, std::vector<double>>> parameter_range(
     for (const auto& [name, values] : ranges) {
         if (values.empty()) continue;
         if (name != parameter)
-            throw Error(ExitCode::usage, fmt::format("{}-range sweeps {}; expected --code with that parameter{}", option_of(name),
-                                                     name, code.empty() ? "" : fmt::format(" ({} sets {})", code, parameter)));
+            throw Error(ExitCode::usage,
+                        fmt::format("{}-range sweeps {}; expected --code with that parameter{}", option_of(name), name,
+                                    code.empty() ? "" : fmt::format(" ({} sets {})", code, parameter)));
         found = std::pair{option_of(name) + "-range", values};
     }
     return found;

@@ -17,7 +17,8 @@ namespace sphkern::cli {
 
 void add_plugin_option(Command command, CommonOptions& options)
 {
-    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)").one_value_per_use();
+    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)")
+        .one_value_per_use();
 }
 
 void add_json_option(Command command, CommonOptions& options)
@@ -67,7 +68,8 @@ void add_point_options(Command command, EvaluationOptions& options, const std::s
 
 void add_evaluation_options(Command command, EvaluationOptions& options)
 {
-    add_point_options(command, options, "Gravity direction x,y[,z] (default: the lattice's)", "Motif site of the particle");
+    add_point_options(command, options, "Gravity direction x,y[,z] (default: the lattice's)",
+                      "Motif site of the particle");
     command.add_option("--shells", options.shells,
                        "Sum over these shell radii only (in d, comma-separated), as the paper does");
     command.add_flag("--continue-past-support", options.continue_past_support,
@@ -88,7 +90,8 @@ EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
     inputs.a_p = options.ap;
     if (!options.gravity.empty()) inputs.gravity = parse_number_list(options.gravity, ValueSource::option("--gravity"));
     inputs.site = options.site;
-    if (!options.shells.empty()) inputs.shell_radii = parse_number_list(options.shells, ValueSource::option("--shells"));
+    if (!options.shells.empty())
+        inputs.shell_radii = parse_number_list(options.shells, ValueSource::option("--shells"));
     else if (options.continue_past_support)
         throw Error(ExitCode::usage, "--continue-past-support needs an explicit --shells list");
     inputs.continue_past_support = options.continue_past_support;
@@ -98,7 +101,8 @@ EvaluationInputs evaluation_inputs(const EvaluationOptions& options)
 EvaluationSources evaluation_sources(const EvaluationOptions& options)
 {
     // A site the lattice lacks is refused as input (exit 3), as it always was.
-    return {ValueSource::option("--gravity"), {"--site", ExitCode::input},
+    return {ValueSource::option("--gravity"),
+            {"--site", ExitCode::input},
             ValueSource::option("--shells " + options.shells)};
 }
 

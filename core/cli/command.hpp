@@ -50,9 +50,9 @@ KernelOnLattice kernel_on_lattice(const CommonOptions& options, const std::strin
 // The evaluation options shared by eps, roots and the commands after them.
 struct EvaluationOptions {
     std::string ap = "voronoi";
-    std::string gravity;  // empty: the lattice's
+    std::string gravity; // empty: the lattice's
     int site = 0;
-    std::string shells;   // explicit radii "1,1.732,2"
+    std::string shells; // explicit radii "1,1.732,2"
     bool continue_past_support = false;
 };
 void add_evaluation_options(Command command, EvaluationOptions& options);
@@ -62,7 +62,6 @@ void add_point_options(Command command, EvaluationOptions& options, const std::s
 // The options as numbers, for a request; the option names, for its errors.
 EvaluationInputs evaluation_inputs(const EvaluationOptions& options);
 EvaluationSources evaluation_sources(const EvaluationOptions& options);
-
 
 // The output options a command was given (an option given as '' too, for the check to refuse).
 std::vector<OutputTarget> given_outputs(const Command& command, const std::vector<OutputTarget>& options);

@@ -4,8 +4,8 @@
 #include "cli/command.hpp"
 #include "cli/source_options.hpp"
 #include "requests/assess_particles.hpp"
-#include "requests/assess_sweep.hpp"
 #include "requests/assess_request.hpp"
+#include "requests/assess_sweep.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
 
@@ -55,10 +55,12 @@ AssessSources option_sources(const AssessOptions& o)
 // A code's setting on a particle file: h as `particles --code` sets it, judged on the set.
 int assess_file(const AssessOptions& o)
 {
-    if (o.setting.k) throw Error(ExitCode::usage, "--k needs a lattice; on a particle file give --code and its setting");
+    if (o.setting.k)
+        throw Error(ExitCode::usage, "--k needs a lattice; on a particle file give --code and its setting");
     if (o.setting.code.empty())
-        throw Error(ExitCode::usage, "on a particle file a code's setting is assessed; expected --code (and its setting, or "
-                                     "none for the file's own h)");
+        throw Error(ExitCode::usage,
+                    "on a particle file a code's setting is assessed; expected --code (and its setting, or "
+                    "none for the file's own h)");
     check_epsilon(o.epsilon, ValueSource::option("--epsilon"));
     const auto range = parameter_range(o.ranges, o.setting.code);
     check_threads(o.threads, ValueSource::option("--threads"));
@@ -74,19 +76,22 @@ int assess_file(const AssessOptions& o)
     const auto choice = code_beside_own_eta(o.setting, std::nullopt);
     // A sweep gives the parameter's values; a value of its own beside it is refused.
     if (range && choice->value)
-        throw Error(ExitCode::usage, fmt::format("{} sweeps the parameter; expected no single value beside it", range->first));
+        throw Error(ExitCode::usage,
+                    fmt::format("{} sweeps the parameter; expected no single value beside it", range->first));
     name_code(given, choice->code, range ? std::optional<double>(range->second[0]) : choice->value);
     set_density_solve(given.code ? &*given.code : nullptr, o.neighbours_by, o.bias_correction);
     given.threads = o.threads;
     if (range) {
-        const auto sweep = sweep_code_setting(kernel, set, given, sources, o.epsilon, range->second[0], range->second[1], o.steps,
-                                              ValueSource::option(range->first), ValueSource::option("--steps"));
+        const auto sweep =
+            sweep_code_setting(kernel, set, given, sources, o.epsilon, range->second[0], range->second[1], o.steps,
+                               ValueSource::option(range->first), ValueSource::option("--steps"));
         if (o.json) print_json(code_sweep_json(sweep), source_inputs(source, kernel, digest.get()));
         else print_code_sweep(results_file(), kernel, set, sweep);
         return 0;
     }
     const auto result = assess_particles(kernel, set, given, sources, o.epsilon);
-    if (o.json) print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));
+    if (o.json)
+        print_json(particle_assess_document(kernel, set, given, result), source_inputs(source, kernel, digest.get()));
     else print_particle_assess(results_file(), kernel, set, given, result);
     return 0;
 }
@@ -112,7 +117,8 @@ void refuse_particle_file_options(const Command& command, const std::map<std::st
         if (!values.empty()) {
             std::string option = name;
             std::replace(option.begin(), option.end(), '_', '-');
-            throw Error(ExitCode::usage, fmt::format("--{}-range is for a particle file; expected one, not a lattice", option));
+            throw Error(ExitCode::usage,
+                        fmt::format("--{}-range is for a particle file; expected one, not a lattice", option));
         }
 }
 
@@ -138,17 +144,23 @@ Action add_assess_command(Command app)
                                                    "accuracy, stability and the recommended setting");
     auto options = std::make_shared<AssessOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot, a Phantom dump)")
+    command
+        .add_option("lattice", options->lattice,
+                    "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot, a "
+                    "Phantom dump)")
         .required();
-    add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
-    command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k").capture_default_str();
+    add_setting_options(command, options->setting,
+                        "Smoothing coefficient, h = k d (or --code and the code's own setting)");
+    command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k")
+        .capture_default_str();
     command.add_option("--kmax", options->k_max, "Largest k of the window").capture_default_str();
     command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
     command.add_option("--gamma", options->gamma, "Adiabatic index of the stability analysis").capture_default_str();
-    command.add_option("--coef-sound", options->coef_sound,
-                       "With a weakly compressible code (dualsphysics, pysph): its sound speed over sqrt(g H), whose "
-                       "hydrostatic pressure at rest, up to rho c^2 / coef^2, the stability assumes (default the code's: "
-                       "20, 10 sqrt(2))");
+    command.add_option(
+        "--coef-sound", options->coef_sound,
+        "With a weakly compressible code (dualsphysics, pysph): its sound speed over sqrt(g H), whose "
+        "hydrostatic pressure at rest, up to rho c^2 / coef^2, the stability assumes (default the code's: "
+        "20, 10 sqrt(2))");
     command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
         .capture_default_str();
     add_evaluation_options(command, options->evaluation);
@@ -156,12 +168,14 @@ Action add_assess_command(Command app)
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
     add_parameter_ranges(command, options->ranges);
     command.add_option("--steps", options->steps, "Particle file: steps of a parameter's sweep").capture_default_str();
-    command.add_option("--threads", options->threads,
-                       "Threads of a particle file's sums, or of a lattice's stability scan over k (default: every core)");
+    command.add_option(
+        "--threads", options->threads,
+        "Threads of a particle file's sums, or of a lattice's stability scan over k (default: every core)");
     command.add_option("--neighbours-by", options->neighbours_by,
                        "Particle file: what the code's density solve counts, number or mass (default the code's)");
-    command.add_flag("--bias-correction", options->bias_correction,
-                     "Particle file: the density bias the code subtracts when built so (gadget4: WENDLAND_BIAS_CORRECTION)");
+    command.add_flag(
+        "--bias-correction", options->bias_correction,
+        "Particle file: the density bias the code subtracts when built so (gadget4: WENDLAND_BIAS_CORRECTION)");
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);

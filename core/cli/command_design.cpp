@@ -46,7 +46,8 @@ Action add_design_command(Command app)
     command.add_option("kernel", options->kernel, "Kernel (a blend A+B, or one with parameters)").required();
     command.add_option("lattice", options->lattice, "Lattice name or file").required();
     command.add_option("--param", options->parameter, "The parameter to vary (alpha for a blend)").required();
-    command.add_option("--range", options->range, "Parameter range A B (default: blends [-1, 2], else the declared range)")
+    command
+        .add_option("--range", options->range, "Parameter range A B (default: blends [-1, 2], else the declared range)")
         .expected(2);
     command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
     command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
@@ -64,8 +65,7 @@ Action add_design_command(Command app)
         const auto outcome = run_design(request, sources, kernel, lattice);
         if (options->json)
             print_json(design_json(kernel, outcome.problem, outcome.result), command_inputs(&kernel, &lattice));
-        else
-            print_design(outcome, kernel);
+        else print_design(outcome, kernel);
         return 0;
     };
 }

@@ -22,7 +22,8 @@ EpsRequest request_from(const EpsOptions& o)
 {
     EpsRequest r;
     r.code = code_setting(o.setting);
-    if (r.code && o.axis != "k") throw Error(ExitCode::usage, "--axis is the scale of --k; --code gives the code's own setting");
+    if (r.code && o.axis != "k")
+        throw Error(ExitCode::usage, "--axis is the scale of --k; --code gives the code's own setting");
     if (o.setting.k) r.k = {*o.setting.k};
     r.axis = parse_axis(o.axis, "--axis");
     r.evaluation = evaluation_inputs(o.evaluation);
@@ -43,8 +44,10 @@ Action add_eps_command(Command app)
     auto options = std::make_shared<EpsOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
     command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's own setting)");
-    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or h_over_l (h/V^(1/D))").capture_default_str();
+    add_setting_options(command, options->setting,
+                        "Smoothing coefficient, h = k d (or --code and the code's own setting)");
+    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or h_over_l (h/V^(1/D))")
+        .capture_default_str();
     add_evaluation_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

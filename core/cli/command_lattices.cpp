@@ -8,7 +8,8 @@ namespace sphkern::cli {
 
 Action add_lattices_command(Command app)
 {
-    Command command = app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
+    Command command =
+        app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
     struct Options : CommonOptions {
         std::vector<std::string> lattices;
         double radius = 3;

@@ -3,8 +3,8 @@
 #include "cli/code_options.hpp"
 #include "cli/command.hpp"
 
-#include "requests/relax_report.hpp"
 #include "requests/pairing_request.hpp"
+#include "requests/relax_report.hpp"
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
 
@@ -30,12 +30,15 @@ void add_options(Command c, PairingOptions& o)
     c.add_option("--kmin", r.k_min, "Smallest k of the range");
     c.add_option("--kmax", r.k_max, "Largest k of the range");
     c.add_option("--samples", r.samples, "Evenly spaced k over [kmin, kmax]").capture_default_str();
-    c.add_option("--noise", r.noise, "Gaussian displacement per axis at the start, in units of d").capture_default_str();
+    c.add_option("--noise", r.noise, "Gaussian displacement per axis at the start, in units of d")
+        .capture_default_str();
     c.add_option("--duration", r.duration, "Time of motion, in units of d / c").capture_default_str();
     c.add_option("--damping", r.damping, "Velocity damping rate, in units of c / h").capture_default_str();
     c.add_option("--dt", r.time_step, "Time step, in units of h / c").capture_default_str();
-    c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma").capture_default_str();
-    c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak").capture_default_str();
+    c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")
+        .capture_default_str();
+    c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak")
+        .capture_default_str();
     c.add_option("--seed", r.seed, "Seed of the noise").capture_default_str();
     c.add_option("--threads", r.threads, "Threads (default: every core)");
     add_set_option(c, o.sets);
@@ -47,7 +50,8 @@ void add_options(Command c, PairingOptions& o)
 
 Action add_pairing_command(Command app)
 {
-    Command command = app.add_subcommand("pairing", "Linear stability against the motion of a disturbed lattice, k by k");
+    Command command =
+        app.add_subcommand("pairing", "Linear stability against the motion of a disturbed lattice, k by k");
     auto options = std::make_shared<PairingOptions>();
     add_options(command, *options);
     return [options, command] {
@@ -68,7 +72,8 @@ Action add_pairing_command(Command app)
         const auto [lattice, kernel] = kernel_on_lattice(o, o.kernel, o.lattice, o.sets);
         const auto code_k = pairing_code_k(o.request, code, {code_source, value_source}, kernel, lattice);
         const auto points = pairing_motion(kernel, lattice, o.request);
-        if (o.json) print_json(pairing_json(kernel, lattice, o.request, points, code_k), command_inputs(&kernel, &lattice));
+        if (o.json)
+            print_json(pairing_json(kernel, lattice, o.request, points, code_k), command_inputs(&kernel, &lattice));
         else print_pairing(results_file(), kernel, lattice, o.request, points, code_k);
         return 0;
     };

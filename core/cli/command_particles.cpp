@@ -41,7 +41,8 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
     }
     set_density_solve(a.code ? &*a.code : nullptr, o.neighbours_by, o.bias_correction);
     if (!o.eta_range.empty())
-        throw Error(ExitCode::usage, "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");
+        throw Error(ExitCode::usage,
+                    "--eta-range is the old name of --h-over-l-range, sphkern's own h over the mean spacing");
     a.smoothing = {o.h_over_l, o.nh, o.k, o.support_per_h};
     a.eta_range = range_of(o.h_over_l_range), a.nh_range = range_of(o.nh_range);
     a.steps = o.steps;
@@ -57,38 +58,53 @@ void add_options(Command c, ParticlesOptions& o)
 {
     c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
     add_source_options(c, o);
-    c.add_option("more", o.more, "Further snapshots of the run: the files (or folders) are measured as a series, ordered by "
-                                 "the times in their headers");
+    c.add_option("more", o.more,
+                 "Further snapshots of the run: the files (or folders) are measured as a series, ordered by "
+                 "the times in their headers");
     c.add_flag("--keep-going", o.keep_going, "Series: report a snapshot that fails and go on with the rest");
     c.add_option("--plot", o.plot, "Series: draw the errors against time (median, p1 to p99) as .svg, .png or .pdf");
-    c.add_option("--h-over-l", o.h_over_l, "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a "
-                                           "file h)");
+    c.add_option("--h-over-l", o.h_over_l,
+                 "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a "
+                 "file h)");
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.codes.code, "h as an SPH code sets it, from each particle's SPH density where the code solves for "
-                                   "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
-                                   "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
+    c.add_option("--code", o.codes.code,
+                 "h as an SPH code sets it, from each particle's SPH density where the code solves for "
+                 "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
+                 "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
     add_code_parameters(c, o.codes);
-    c.add_option("--neighbours-by", o.neighbours_by, "With --code: what its density solve counts, number or mass (default the "
-                                                     "code's; SWIFT's use_mass_weighted_num_ngb is mass)");
-    c.add_flag("--bias-correction", o.bias_correction, "With --code: the density bias the code subtracts when built so "
-                                                       "(gadget4: WENDLAND_BIAS_CORRECTION, Wendland kernels in 3D)");
-    c.add_option("--support-per-h", o.support_per_h, "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
+    c.add_option("--neighbours-by", o.neighbours_by,
+                 "With --code: what its density solve counts, number or mass (default the "
+                 "code's; SWIFT's use_mass_weighted_num_ngb is mass)");
+    c.add_flag("--bias-correction", o.bias_correction,
+               "With --code: the density bias the code subtracts when built so "
+               "(gadget4: WENDLAND_BIAS_CORRECTION, Wendland kernels in 3D)");
+    c.add_option("--support-per-h", o.support_per_h,
+                 "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
     c.add_option("--h-over-l-range", o.h_over_l_range, "Sweep h / l over [A, B]").expected(2);
-    c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)").expected(2).hidden();
+    c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)")
+        .expected(2)
+        .hidden();
     c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
     c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
-    c.get_option("--particle-radius").excludes("--h-over-l").excludes("--nh").excludes("--k")
-        .excludes("--h-over-l-range").excludes("--nh-range").excludes("--code");
-    c.add_option("--volume", o.volume, "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
+    c.get_option("--particle-radius")
+        .excludes("--h-over-l")
+        .excludes("--nh")
+        .excludes("--k")
+        .excludes("--h-over-l-range")
+        .excludes("--nh-range")
+        .excludes("--code");
+    c.add_option("--volume", o.volume,
+                 "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
     c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
     c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();
     c.add_option("--rho0", o.rho0, "Reference density of eps_rho (default: the set's total mass over its volume)");
     c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum");
     c.add_option("--threads", o.threads, "Threads (default: every core)");
-    c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
+    c.add_option("--memory-limit", o.memory_limit,
+                 "Memory budget in GiB (default: three quarters of the available memory)");
     c.add_option("--csv", o.csv, "Write one row per particle as CSV");
     c.add_option("--vtk", o.vtk, "Write the per-particle values for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
     add_set_option(c, o.sets);
@@ -98,8 +114,9 @@ void add_options(Command c, ParticlesOptions& o)
 
 // A snapshot larger than the memory budget, measured slab by slab: the same statistics and
 // CSV as in memory, the CSV streamed in file order as the slabs' results are merged.
-Measured measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot, ParticleSources& sources,
-                          const std::string& csv, const std::string& vtk, const SetCheck& check)
+Measured measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const SnapshotRows& snapshot,
+                          ParticleSources& sources, const std::string& csv, const std::string& vtk,
+                          const SetCheck& check)
 {
     Measured m{snapshot.sample(), {}, arguments_of(o, sources)};
     if (check) check(m.set);
@@ -112,7 +129,8 @@ Measured measure_in_slabs(const ParticlesOptions& o, const Kernel& kernel, const
     else
         write_file_atomically(csv, [&](std::ostream& out) {
             ParticleCsvRows rows(out, m.set.dimension, worker_threads(o.threads));
-            m.answer = analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& r) { rows.write(r); });
+            m.answer =
+                analyse_particles_in_slabs(kernel, snapshot, request, [&](const MeasuredRows& r) { rows.write(r); });
         });
     return m;
 }
@@ -131,7 +149,9 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
         check_output_targets(outputs, snapshot->sample().linked_files); // what the file reached through its links
         return measure_in_slabs(o, kernel, *snapshot, sources, csv, vtk, check);
     }
-    Measured m{load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads), {}, arguments_of(o, sources)};
+    Measured m{load_source(source_of(o), source_sources(FrontEnd::command_line), o.threads),
+               {},
+               arguments_of(o, sources)};
     phases.lap("read");
     check_output_targets(outputs, m.set.linked_files); // what the file reached through its links
     if (!vtk.empty()) vtk_format_of(vtk, "--vtk");     // before any work
@@ -150,9 +170,7 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
     return m;
 }
 
-namespace {
-
-} // namespace
+namespace {} // namespace
 
 Action add_particles_command(Command app)
 {
@@ -166,13 +184,15 @@ Action add_particles_command(Command app)
         check_output_targets(outputs, read_inputs(o.source, o.kernel, o.plugins));
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
-        if (!o.more.empty() || std::filesystem::is_directory(o.source))
-            return measure_series(o, kernel);
+        if (!o.more.empty() || std::filesystem::is_directory(o.source)) return measure_series(o, kernel);
         if (!o.plot.empty())
-            throw Error(ExitCode::usage, "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
+            throw Error(ExitCode::usage,
+                        "--plot " + o.plot + ": draws a series' errors against time; expected several snapshots");
         const auto digest = o.json ? start_source_digest(o) : nullptr;
         const Measured m = measure_source(o, kernel, outputs, o.csv, o.vtk);
-        if (o.json) print_json(particle_answer_json(kernel, m.set, m.answer, m.arguments), source_inputs(o, kernel, digest.get()));
+        if (o.json)
+            print_json(particle_answer_json(kernel, m.set, m.answer, m.arguments),
+                       source_inputs(o, kernel, digest.get()));
         else print_particle_answer(results_file(), kernel, m.set, m.answer, m.arguments);
         return 0;
     };

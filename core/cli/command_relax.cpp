@@ -12,10 +12,10 @@
 #include "requests/relax_series.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
-#include "support/text/value_checks.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/output_targets.hpp"
 #include "support/io/results_output.hpp"
+#include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -35,7 +35,7 @@ struct RelaxOptions : CommonOptions, SourceOptions {
     std::vector<std::string> sets;
     std::optional<double> h_over_l, eta, nh, k;
     std::optional<double> rho0, u; // of the written initial conditions
-    SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
+    SettingOptions codes;          // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
     RelaxSettings settings;
     double memory_limit = 0, rdf_max = 3;
     std::size_t rdf_bins = 60;
@@ -49,10 +49,11 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
     c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
     c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.codes.code, "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full "
-                                         "dump), its layout and h; "
-                                         "with its parameter (--eta for swift), the run's h and each written h as the "
-                                         "code sets it");
+    c.add_option("--code", o.codes.code,
+                 "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full "
+                 "dump), its layout and h; "
+                 "with its parameter (--eta for swift), the run's h and each written h as the "
+                 "code sets it");
     add_code_parameters(c, o.codes);
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
     c.get_option("--particle-radius").excludes("--h-over-l").excludes("--nh").excludes("--k");
@@ -60,8 +61,10 @@ void add_options(Command c, RelaxOptions& o)
         .capture_default_str();
     auto& s = o.settings;
     c.add_option("--steps", s.steps, "At most this many steps").capture_default_str();
-    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)").capture_default_str();
-    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma").capture_default_str();
+    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)")
+        .capture_default_str();
+    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")
+        .capture_default_str();
     c.add_option("--dt", s.time_step, "pressure: time step in units of h / c").capture_default_str();
     c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h").capture_default_str();
     c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij").capture_default_str();
@@ -69,15 +72,21 @@ void add_options(Command c, RelaxOptions& o)
     c.add_option("--threads", s.threads, "Threads (default: every core)");
     c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
     c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
-    c.add_option("--memory-limit", o.memory_limit, "Memory budget in GiB (default: three quarters of the available memory)");
-    c.add_option("--output", o.output, "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with "
-                                       "--code phantom any other name (a Phantom full dump, NAME_00000.tmp)");
+    c.add_option("--memory-limit", o.memory_limit,
+                 "Memory budget in GiB (default: three quarters of the available memory)");
+    c.add_option("--output", o.output,
+                 "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with "
+                 "--code phantom any other name (a Phantom full dump, NAME_00000.tmp)");
     c.add_option("--rho0", o.rho0, "With --output: the density written, masses rho0 V (default 1)");
-    c.add_option("--u", o.u, "With an HDF5 or Phantom --output: the internal energy written (default c^2 / (gamma (gamma - 1)), "
-                             "0.9 for gamma 5/3)");
-    c.add_option("--tile", o.tile, "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
-    c.add_option("--history", o.history, "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
-                                         "at every step as a ParaView series (F_k.vtu beside F.pvd)");
+    c.add_option("--u", o.u,
+                 "With an HDF5 or Phantom --output: the internal energy written (default c^2 / (gamma (gamma - 1)), "
+                 "0.9 for gamma 5/3)");
+    c.add_option(
+        "--tile", o.tile,
+        "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
+    c.add_option("--history", o.history,
+                 "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
+                 "at every step as a ParaView series (F_k.vtu beside F.pvd)");
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -91,7 +100,8 @@ void require_box_for_output(const ParticleSet& set, const RelaxOptions& o, Parti
         require_layout_box(set, layout, "--output " + o.output);
     } catch (const Error& e) {
         if (source_kind(o.source) != SourceKind::lattice || o.cell == "rectangular") throw;
-        throw Error(e.code(), std::string(e.what()) + "; --cell rectangular cuts the block from the lattice's rectangular cell");
+        throw Error(e.code(),
+                    std::string(e.what()) + "; --cell rectangular cuts the block from the lattice's rectangular cell");
     }
 }
 
@@ -113,23 +123,28 @@ void check_initial_state(const RelaxOptions& o)
             throw Error(ExitCode::usage, fmt::format("{} sets what --output writes; expected --output too", name));
     }
     if (o.u && o.output.ends_with(".csv"))
-        throw Error(ExitCode::usage, fmt::format("--u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 "
-                                                 "or .hdf5 --output (or a Phantom dump)",
-                                                 o.output));
+        throw Error(ExitCode::usage,
+                    fmt::format("--u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 "
+                                "or .hdf5 --output (or a Phantom dump)",
+                                o.output));
 }
 
 // The run; where it diverges, the steps before it (all finite) still go to --history, and the
 // error says so. The set itself is not written: its positions are what diverged.
-RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o, RelaxSeries* series)
+RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o,
+                                 RelaxSeries* series)
 {
     try {
         if (!series) return relax_particles(kernel, std::move(set), h, o.settings);
         return relax_particles(kernel, std::move(set), h, o.settings,
-                               [series](const RelaxState& state, const RelaxStep& step) { series->write_step(state, step); });
+                               [series](const RelaxState& state, const RelaxStep& step) {
+                                   series->write_step(state, step);
+                               });
     } catch (const RelaxDiverged& e) {
         if (o.history.empty()) throw;
         write_history(o, e.history, series);
-        throw Error(e.code(), fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, o.history));
+        throw Error(e.code(),
+                    fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, o.history));
     }
 }
 
@@ -147,8 +162,9 @@ std::optional<RelaxCode> relax_code_of(const RelaxOptions& o)
     if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
     const ValueSource value_source = code_sources(o.codes).second;
     if (code && code->value && (o.h_over_l || o.nh || o.k))
-        throw Error(ExitCode::usage, fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it",
-                                                 code->name, value_source.name));
+        throw Error(ExitCode::usage,
+                    fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it", code->name,
+                                value_source.name));
     return code;
 }
 

@@ -38,7 +38,8 @@ RootsRequest request_from(const RootsOptions& o)
     r.stability = o.stability;
     r.model = {o.gamma, o.horizon, o.steps, parse_h_model(o.h_model, "--h-model"), o.threads};
     // --convention is the old name of --code: the same answer, with the code's own density.
-    if (!o.convention.empty() && !o.code.empty()) throw Error(ExitCode::usage, "give one of --code and --convention (its old name)");
+    if (!o.convention.empty() && !o.code.empty())
+        throw Error(ExitCode::usage, "give one of --code and --convention (its old name)");
     const std::string& code = o.code.empty() ? o.convention : o.code;
     if (!code.empty()) r.code = &code_profile(code, ValueSource::option(o.code.empty() ? "--convention" : "--code"));
     r.evaluation = evaluation_inputs(o.evaluation);
@@ -49,7 +50,7 @@ RootsRequest request_from(const RootsOptions& o)
 RootsSources option_sources(const RootsOptions& o)
 {
     return {ValueSource::option("--kmin/--kmax"), ValueSource::option("--epsilon"), ValueSource::option("--gamma"),
-            ValueSource::option("--horizon"), ValueSource::option("--steps"), evaluation_sources(o.evaluation)};
+            ValueSource::option("--horizon"),     ValueSource::option("--steps"),   evaluation_sources(o.evaluation)};
 }
 
 // The lattices and kernels named, "all" for every one.
@@ -58,8 +59,7 @@ std::vector<Lattice> lattices_of(const std::string& spec)
     std::vector<Lattice> lattices;
     if (spec == "all")
         for (const auto& name : shipped_lattice_names()) lattices.push_back(load_lattice(name));
-    else
-        lattices.push_back(load_lattice(spec));
+    else lattices.push_back(load_lattice(spec));
     return lattices;
 }
 
@@ -68,9 +68,31 @@ std::vector<Kernel> kernels_of(const RootsOptions& o, KernelRegistry& registry)
     std::vector<Kernel> kernels;
     if (o.kernel == "all")
         for (const auto& p : registry.plugins()) kernels.emplace_back(p, parse_sets(o.sets));
-    else
-        kernels.push_back(make_kernel(registry, o.kernel, o.sets));
+    else kernels.push_back(make_kernel(registry, o.kernel, o.sets));
     return kernels;
+}
+
+// The roots of every kernel and lattice named, as text or one JSON array.
+int run_roots_command(const RootsOptions& o)
+{
+    const auto request = request_from(o);
+    const auto sources = option_sources(o);
+    check_roots_request(request, sources);
+    auto registry = discover_kernels(o);
+    const auto lattices = lattices_of(o.lattice);
+    const auto kernels = kernels_of(o, registry);
+    const bool many = kernels.size() > 1 || lattices.size() > 1;
+    nlohmann::json all = nlohmann::json::array();
+    for (const auto& lattice : lattices)
+        for (const auto& kernel : kernels) {
+            if (many && !kernel.supports(lattice.dimension)) continue; // "all": the pairs that exist
+            const auto result = run_roots(request, sources, kernel, lattice);
+            if (o.json) all.push_back(roots_request_document(request, result, kernel, lattice));
+            else print_roots(request, result, kernel, lattice);
+        }
+    // One shape for one pair and for many: an array of documents.
+    if (o.json) print_json(all);
+    return 0;
 }
 
 } // namespace
@@ -85,46 +107,37 @@ Action add_roots_command(Command app)
     command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
     command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
     command.add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
-    command.add_option("--axis", options->axis, "The scale of --kmin/--kmax: k (h/d), h_over_l (h/V^(1/D)) or nh (neighbours)")
+    command
+        .add_option("--axis", options->axis,
+                    "The scale of --kmin/--kmax: k (h/d), h_over_l (h/V^(1/D)) or nh (neighbours)")
         .capture_default_str();
-    command.add_flag("--stability", options->stability, "Also the stable k intervals of the window (linear "
-                                                        "stability) and where condition (22) holds there");
+    command.add_flag("--stability", options->stability,
+                     "Also the stable k intervals of the window (linear "
+                     "stability) and where condition (22) holds there");
     command.add_option("--gamma", options->gamma, "With --stability: adiabatic index").capture_default_str();
     command.add_option("--steps", options->steps, "With --stability: k intervals of the scan").capture_default_str();
-    command.add_option("--threads", options->threads, "With --stability: threads of the scan over k (default: every core)")
+    command
+        .add_option("--threads", options->threads, "With --stability: threads of the scan over k (default: every core)")
         .check_range(0, 1024);
     command.add_option("--convention", options->convention, "The old name of --code, kept as its alias");
-    command.add_option("--code", options->code, "Also give every k as an SPH code's own setting, with its own SPH "
-                                                 "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
-    command.add_option("--horizon", options->horizon, "With --stability: growth time in d/c; slower instabilities "
-                                                       "count as stable (weak)").capture_default_str();
-    command.add_option("--h-model", options->h_model, "With --stability: fixed or adaptive h (h = (h/l) (m/rho)^(1/D), "
-                                                       "grad-h terms); k is the equilibrium h = k d in both")
+    command.add_option("--code", options->code,
+                       "Also give every k as an SPH code's own setting, with its own SPH "
+                       "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
+    command
+        .add_option("--horizon", options->horizon,
+                    "With --stability: growth time in d/c; slower instabilities "
+                    "count as stable (weak)")
+        .capture_default_str();
+    command
+        .add_option("--h-model", options->h_model,
+                    "With --stability: fixed or adaptive h (h = (h/l) (m/rho)^(1/D), "
+                    "grad-h terms); k is the equilibrium h = k d in both")
         .capture_default_str();
     add_evaluation_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
-    return [options] {
-        const auto request = request_from(*options);
-        const auto sources = option_sources(*options);
-        check_roots_request(request, sources);
-        auto registry = discover_kernels(*options);
-        const auto lattices = lattices_of(options->lattice);
-        const auto kernels = kernels_of(*options, registry);
-        const bool many = kernels.size() > 1 || lattices.size() > 1;
-        nlohmann::json all = nlohmann::json::array();
-        for (const auto& lattice : lattices)
-            for (const auto& kernel : kernels) {
-                if (many && !kernel.supports(lattice.dimension)) continue; // "all": the pairs that exist
-                const auto result = run_roots(request, sources, kernel, lattice);
-                if (options->json) all.push_back(roots_request_document(request, result, kernel, lattice));
-                else print_roots(request, result, kernel, lattice);
-            }
-        // One shape for one pair and for many: an array of documents.
-        if (options->json) print_json(all);
-        return 0;
-    };
+    return [options] { return run_roots_command(*options); };
 }
 
 } // namespace sphkern::cli

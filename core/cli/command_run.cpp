@@ -33,9 +33,12 @@ Action add_run_command(Command app)
     command.add_option("--format", options->format, "Figure formats, comma-separated: svg, png, pdf")
         .capture_default_str();
     command.add_flag("--force", options->force, "Replace an existing results folder");
-    command.add_option("--reproduce", options->reproduce,
-                        "Run the study a results.json records again and say whether the numbers agree (exit 1 if not)")
-        .excludes(command.get_option("study")).excludes("--output").excludes("--force");
+    command
+        .add_option("--reproduce", options->reproduce,
+                    "Run the study a results.json records again and say whether the numbers agree (exit 1 if not)")
+        .excludes(command.get_option("study"))
+        .excludes("--output")
+        .excludes("--force");
     add_plugin_option(command, *options);
     return [options] {
         auto started = std::chrono::steady_clock::now();

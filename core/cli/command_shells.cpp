@@ -27,7 +27,8 @@ Action add_shells_command(Command app)
         if (!options->plugins.empty()) discover_kernels(*options); // validated like everywhere
         const auto lattice = load_lattice(options->lattice);
         ShellsRequest request{options->radius, options->site, std::nullopt};
-        if (!options->gravity.empty()) request.gravity = parse_number_list(options->gravity, ValueSource::option("--gravity"));
+        if (!options->gravity.empty())
+            request.gravity = parse_number_list(options->gravity, ValueSource::option("--gravity"));
         const auto document = run_shells(request, shells_sources(FrontEnd::command_line), lattice);
         if (options->json) print_json(document, command_inputs(nullptr, &lattice));
         else print_shells(document);

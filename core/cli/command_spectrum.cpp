@@ -34,8 +34,7 @@ Action add_spectrum_command(Command app)
         const auto result = run_spectrum(options->request, sources, kernel);
         if (options->json)
             print_json(spectrum_document(options->request, result, kernel), command_inputs(&kernel, nullptr));
-        else
-            print_spectrum(options->request, result, kernel);
+        else print_spectrum(options->request, result, kernel);
         return 0;
     };
 }

@@ -35,16 +35,11 @@ struct StabilityOptions : CommonOptions {
 // The command line's names for the request's values.
 StabilitySources option_sources(const StabilityOptions& o)
 {
-    return {ValueSource::option("--k"),
-            ValueSource::option("--kmin"),
-            ValueSource::option("--kmax"),
-            ValueSource::option("--gamma"),
-            ValueSource::option("--horizon"),
-            ValueSource::option("--wavevector " + one_line(o.wavevector)),
-            ValueSource::option("--steps"),
-            ValueSource::option("--grid"),
-            ValueSource::option("--path"),
-            " (or give --kmin and --kmax)"};
+    return {ValueSource::option("--k"),       ValueSource::option("--kmin"),
+            ValueSource::option("--kmax"),    ValueSource::option("--gamma"),
+            ValueSource::option("--horizon"), ValueSource::option("--wavevector " + one_line(o.wavevector)),
+            ValueSource::option("--steps"),   ValueSource::option("--grid"),
+            ValueSource::option("--path"),    " (or give --kmin and --kmax)"};
 }
 
 // The adapter: the text of the wave vector and h model (the request checks which options go together).
@@ -66,7 +61,9 @@ StabilityRequest request_from(const StabilityOptions& o)
     r.grid = o.grid;
     r.threads = o.threads;
     if (!o.code.empty()) {
-        if (!r.k_min) throw Error(ExitCode::usage, "--code gives the stable intervals over k in a code's setting; expected --kmin and --kmax");
+        if (!r.k_min)
+            throw Error(ExitCode::usage,
+                        "--code gives the stable intervals over k in a code's setting; expected --kmin and --kmax");
         r.code = &code_profile(o.code, ValueSource::option("--code"));
     }
     return r;
@@ -83,26 +80,33 @@ void add_stability_options(Command command, StabilityOptions& o)
     kmax_option.needs(kmin_option);
     command.add_option("--gamma", o.gamma, "Adiabatic index of P = rho c^2 / gamma").capture_default_str();
     command.add_option("--wavevector", o.wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
-    Option path_option = command.add_option("--path", o.path, "Dispersion curves along the high-symmetry "
-                                                             "path: about this many points");
+    Option path_option = command.add_option("--path", o.path,
+                                            "Dispersion curves along the high-symmetry "
+                                            "path: about this many points");
     path_option.excludes(kmin_option).excludes(kmax_option);
-    command.add_option("--grid", o.grid, "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
-                                         "in 2D; doubled until the minimum settles)");
-    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak").capture_default_str();
-    command.add_option("--h-model", o.h_model, "Smoothing length: fixed (h = k d) or adaptive (h = eta "
-                                               "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
+    command.add_option("--grid", o.grid,
+                       "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
+                       "in 2D; doubled until the minimum settles)");
+    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak")
+        .capture_default_str();
+    command
+        .add_option("--h-model", o.h_model,
+                    "Smoothing length: fixed (h = k d) or adaptive (h = eta "
+                    "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
         .capture_default_str();
     command.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
-    command.add_option("--code", o.code, "With --kmin/--kmax: the stable intervals also in an SPH code's own setting, "
-                                         "with its own density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
+    command.add_option("--code", o.code,
+                       "With --kmin/--kmax: the stable intervals also in an SPH code's own setting, "
+                       "with its own density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
 }
 
 } // namespace
 
 Action add_stability_command(Command app)
 {
-    Command command = app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
-                                                    "scan, long-wave sound speed");
+    Command command =
+        app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
+                                        "scan, long-wave sound speed");
     auto options = std::make_shared<StabilityOptions>();
     command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
     command.add_option("lattice", options->lattice, "Lattice name or file").required();

@@ -34,7 +34,8 @@ SurfaceRequest request_from(const SurfaceOptions& o)
 SurfaceSources option_sources(const SurfaceOptions& o)
 {
     const auto [code, code_value] = code_sources(o.setting);
-    return {ValueSource::option("--k"), evaluation_sources(o.evaluation), ValueSource::option("--layers"), code, code_value};
+    return {ValueSource::option("--k"), evaluation_sources(o.evaluation), ValueSource::option("--layers"), code,
+            code_value};
 }
 
 } // namespace
@@ -48,9 +49,11 @@ Action add_surface_command(Command app)
     add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's setting)");
     command.add_option("--layers", options->layers, "Report at least this many layers").capture_default_str();
     command.add_option("--form", options->form, "Gradient form: sum, difference or monaghan").capture_default_str();
-    add_point_options(command, options->evaluation, "Gravity x,y[,z], normal to a lattice plane", "Motif site on the top layer");
-    command.add_option("--termination", options->termination,
-                        "Which plane type is on top (an index from the listed terminations; default: --site's)")
+    add_point_options(command, options->evaluation, "Gravity x,y[,z], normal to a lattice plane",
+                      "Motif site on the top layer");
+    command
+        .add_option("--termination", options->termination,
+                    "Which plane type is on top (an index from the listed terminations; default: --site's)")
         .check_non_negative();
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
@@ -63,8 +66,7 @@ Action add_surface_command(Command app)
         const auto result = run_surface(request, sources, kernel, lattice);
         if (options->json)
             print_json(surface_request_document(request, result, kernel, lattice), command_inputs(&kernel, &lattice));
-        else
-            print_surface(request, result, kernel, lattice);
+        else print_surface(request, result, kernel, lattice);
         return 0;
     };
 }

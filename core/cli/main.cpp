@@ -37,7 +37,6 @@ int finish(int status)
     return status;
 }
 
-
 using Commands = std::vector<std::pair<CLI::App*, cli::Action>>;
 
 Commands add_commands(CLI::App& app)
@@ -49,16 +48,17 @@ Commands add_commands(CLI::App& app)
         cli::Action action = add_command(program);
         commands.emplace_back(app.get_subcommands({})[before], std::move(action));
     };
-    for (auto* add_command : {cli::add_run_command, cli::add_kernels_command, cli::add_check_command,
-                              cli::add_lattices_command, cli::add_shells_command, cli::add_eps_command, cli::add_assess_command,
-                              cli::add_roots_command, cli::add_surface_command, cli::add_block_command,
-                              cli::add_design_command, cli::add_stability_command, cli::add_spectrum_command,
-                              cli::add_particles_command, cli::add_relax_command, cli::add_pairing_command,
-                              cli::add_studies_command})
+    for (auto* add_command :
+         {cli::add_run_command, cli::add_kernels_command, cli::add_check_command, cli::add_lattices_command,
+          cli::add_shells_command, cli::add_eps_command, cli::add_assess_command, cli::add_roots_command,
+          cli::add_surface_command, cli::add_block_command, cli::add_design_command, cli::add_stability_command,
+          cli::add_spectrum_command, cli::add_particles_command, cli::add_relax_command, cli::add_pairing_command,
+          cli::add_studies_command})
         add(add_command);
     // An empty value ('') is never a number, a name or a file: refused before CLI11 reads it as 0.
-    const CLI::Validator non_empty([](std::string& value) { return value.empty() ? std::string("an empty value") : std::string(); },
-                                   "", "non-empty");
+    const CLI::Validator non_empty(
+        [](std::string& value) { return value.empty() ? std::string("an empty value") : std::string(); }, "",
+        "non-empty");
     for (auto* command : app.get_subcommands({}))
         for (auto* option : command->get_options())
             if (option->get_type_size() != 0 && !option->get_positional()) option->check(non_empty);

@@ -93,15 +93,9 @@ Option Command::add_flag(const std::string& name, bool& value, const std::string
     return Option(app_->add_flag(name, value, description));
 }
 
-Option Command::get_option(const std::string& name)
-{
-    return Option(app_->get_option(name));
-}
+Option Command::get_option(const std::string& name) { return Option(app_->get_option(name)); }
 
-std::size_t Command::count(const std::string& name) const
-{
-    return app_->count(name);
-}
+std::size_t Command::count(const std::string& name) const { return app_->count(name); }
 
 template Option Command::add_option(const std::string&, std::string&, const std::string&);
 template Option Command::add_option(const std::string&, int&, const std::string&);

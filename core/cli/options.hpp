@@ -19,10 +19,10 @@ class Option {
 public:
     explicit Option(CLI::Option* option) : option_(option) {}
     Option required();
-    Option capture_default_str();    // show the default in --help
-    Option expected(int values);     // a list of exactly this many values
-    Option one_value_per_use();      // a repeatable option that takes only the word after it each time
-    Option hidden();                 // left out of --help (an old name kept to say the new one)
+    Option capture_default_str(); // show the default in --help
+    Option expected(int values);  // a list of exactly this many values
+    Option one_value_per_use();   // a repeatable option that takes only the word after it each time
+    Option hidden();              // left out of --help (an old name kept to say the new one)
     Option excludes(Option other);
     Option excludes(const std::string& name);
     Option needs(Option other);

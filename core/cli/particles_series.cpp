@@ -5,12 +5,12 @@
 #include "particles/sources/particle_source.hpp"
 #include "requests/particles_report.hpp"
 #include "requests/particles_series.hpp"
+#include "study/series_figure.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
 #include "support/io/results_output.hpp"
 #include "support/io/vtk_xml.hpp"
 #include "support/process/progress.hpp"
-#include "study/series_figure.hpp"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -49,12 +49,14 @@ std::vector<std::string> checked_series_files(const ParticlesOptions& o)
     const auto files = series_files(named);
     for (const auto& file : files)
         if (source_kind(file) != SourceKind::file)
-            throw Error(ExitCode::usage, fmt::format("{}: a series is made of particle files (and folders of them); expected "
-                                                     "no lattice or poisson source among them",
-                                                     file));
+            throw Error(ExitCode::usage,
+                        fmt::format("{}: a series is made of particle files (and folders of them); expected "
+                                    "no lattice or poisson source among them",
+                                    file));
     if (!o.h_over_l_range.empty() || !o.nh_range.empty())
-        throw Error(ExitCode::usage, "--h-over-l-range and --nh-range sweep one file; a series measures each snapshot at "
-                                     "one h (give --h-over-l, --nh or --code)");
+        throw Error(ExitCode::usage,
+                    "--h-over-l-range and --nh-range sweep one file; a series measures each snapshot at "
+                    "one h (give --h-over-l, --nh or --code)");
     if (!o.vtk.empty() && std::filesystem::path(o.vtk).extension() != ".pvd")
         throw Error(ExitCode::usage, fmt::format("--vtk {}: a series is written as a ParaView collection; expected "
                                                  "NAME.pvd (with NAME_<snapshot>.vtu beside it)",
@@ -141,7 +143,8 @@ int measure_series(const ParticlesOptions& o, const Kernel& kernel)
         progress.step(file);
     }
     if (series.empty())
-        throw Error(ExitCode::input, fmt::format("none of the {} snapshots could be measured; expected at least one", files.size()));
+        throw Error(ExitCode::input,
+                    fmt::format("none of the {} snapshots could be measured; expected at least one", files.size()));
     const bool by_time = order_series(series);
     if (!o.plot.empty()) draw_series_figure(o.plot, "--plot", series_figure_script(series, by_time));
     if (!o.vtk.empty()) write_collection(o.vtk, series, by_time);

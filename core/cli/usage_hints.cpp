@@ -35,7 +35,8 @@ std::string nearest(const std::string& word, const std::vector<std::string>& nam
 std::vector<std::string> command_names(const CLI::App& app)
 {
     std::vector<std::string> names;
-    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+        names.push_back(sub->get_name());
     return names;
 }
 
@@ -96,13 +97,14 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& error, int
             // sphkern's own options (--log-level) come before the command.
             const std::string name = word.substr(0, word.find('='));
             if (name.starts_with("--") && app.get_option_no_throw(name) != nullptr)
-                return fmt::format("{} is sphkern's own option: give it before the command (sphkern {} VALUE {} ...)", name,
-                                   name, command->get_name());
+                return fmt::format("{} is sphkern's own option: give it before the command (sphkern {} VALUE {} ...)",
+                                   name, name, command->get_name());
         }
         for (const auto& word : extras)
             if (word.starts_with("--"))
-                return fmt::format("{}: unknown option \"{}\"{}; `sphkern {} --help` lists them", command->get_name(), word,
-                                   nearest(word.substr(0, word.find('=')), option_names(*command)), command->get_name());
+                return fmt::format("{}: unknown option \"{}\"{}; `sphkern {} --help` lists them", command->get_name(),
+                                   word, nearest(word.substr(0, word.find('=')), option_names(*command)),
+                                   command->get_name());
         if (!extras.empty())
             return fmt::format("{}: the arguments {} were not expected (see sphkern {} --help)", command->get_name(),
                                fmt::join(extras, " "), command->get_name());

@@ -37,12 +37,12 @@ struct CodeKernel {
 };
 
 struct CodeProfile {
-    std::string name;      // "swift"
-    std::string title;     // "SWIFT", as the code spells itself
-    std::string parameter; // "eta": how the command line and Python name it
-    std::string parameter_help; // the option's help: "SWIFT's eta, h = eta (m / rho)^(1/D)"
-    std::string source;    // where the code states its definition
-    bool from_sph_density = false; // h solved from the SPH density (else from the rest spacing)
+    std::string name;                             // "swift"
+    std::string title;                            // "SWIFT", as the code spells itself
+    std::string parameter;                        // "eta": how the command line and Python name it
+    std::string parameter_help;                   // the option's help: "SWIFT's eta, h = eta (m / rho)^(1/D)"
+    std::string source;                           // where the code states its definition
+    bool from_sph_density = false;                // h solved from the SPH density (else from the rest spacing)
     NeighbourCount counts = NeighbourCount::mass; // what that solve counts, and where the code says so
     std::string count_source;
     std::string count_switch; // the code's setting that makes it count the other way, empty if none
@@ -52,13 +52,13 @@ struct CodeProfile {
     std::string bias_switch, bias_source;
     double (*self_bias)(const Kernel& kernel, int dimension, double value, const ValueSource& source) = nullptr;
     RestPressure rest_pressure = RestPressure::ideal_gas;
-    double coef_sound = 0;         // Tait: the default c / sqrt(g H), and where the code sets it
+    double coef_sound = 0; // Tait: the default c / sqrt(g H), and where the code sets it
     std::string coef_sound_source;
-    std::vector<int> dimensions;   // the dimensions the code runs
+    std::vector<int> dimensions; // the dimensions the code runs
     std::vector<CodeKernel> kernels;
-    bool user_kernels = false;     // the code takes a kernel it does not ship (a user's own)
-    bool pair_mean = false;        // a pair's h in its sums is (h_i + h_j) / 2 (else h_i)
-    bool sets_volume = false;      // the setting fixes the particle volume too (SPlisHSPlasH)
+    bool user_kernels = false;      // the code takes a kernel it does not ship (a user's own)
+    bool pair_mean = false;         // a pair's h in its sums is (h_i + h_j) / 2 (else h_i)
+    bool sets_volume = false;       // the setting fixes the particle volume too (SPlisHSPlasH)
     bool counts_neighbours = false; // the parameter is a neighbour number, going as H^D (GADGET)
     CodeLayout layout = CodeLayout::none;
     // The ending the code's reader needs of an HDF5 file's name, and why ("" for any).

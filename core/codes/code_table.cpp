@@ -24,7 +24,7 @@ namespace sphkern {
 
 const std::vector<CodeProfile>& code_profiles()
 {
-    static const std::vector<CodeProfile> all{swift_code(),  phantom_code(),      gadget2_code(),     gadget4_code(),
+    static const std::vector<CodeProfile> all{swift_code(), phantom_code(),      gadget2_code(),     gadget4_code(),
                                               pysph_code(), dualsphysics_code(), splishsplash_code()};
     return all;
 }
@@ -47,7 +47,8 @@ const CodeProfile& code_profile(const std::string& name, const ValueSource& sour
         if (p.name == name) return p;
         names.push_back(p.name);
     }
-    source.fail(fmt::format("\"{}\" is unknown, expected one of {}{}", name, fmt::join(names, ", "), did_you_mean(name, names)),
+    source.fail(fmt::format("\"{}\" is unknown, expected one of {}{}", name, fmt::join(names, ", "),
+                            did_you_mean(name, names)),
                 ErrorKind::unknown_name);
 }
 
@@ -86,22 +87,23 @@ bool code_ships(const CodeProfile& p, const Kernel& kernel, int dimension)
 void require_code_kernel(const CodeProfile& p, const Kernel& kernel, int dimension)
 {
     if (!in(p.dimensions, dimension))
-        fail_usage(fmt::format("{}: {} runs in {} only, not in {}D", kernel.name(), p.name, dimensions_text(p.dimensions),
-                               dimension));
+        fail_usage(fmt::format("{}: {} runs in {} only, not in {}D", kernel.name(), p.name,
+                               dimensions_text(p.dimensions), dimension));
     if (code_ships(p, kernel, dimension)) return;
     const auto names = kernels_in(p, dimension);
     std::vector<int> elsewhere;
     for (const auto& k : p.kernels)
         if (k.kernel == kernel.name()) elsewhere = k.dimensions;
-    const std::string has = elsewhere.empty() ? fmt::format("does not ship it; its kernels are {}", fmt::join(names, ", "))
-                                              : fmt::format("has it in {} only; its kernels in {}D are {}", dimensions_text(elsewhere),
-                                                            dimension, fmt::join(names, ", "));
+    const std::string has = elsewhere.empty()
+                                ? fmt::format("does not ship it; its kernels are {}", fmt::join(names, ", "))
+                                : fmt::format("has it in {} only; its kernels in {}D are {}",
+                                              dimensions_text(elsewhere), dimension, fmt::join(names, ", "));
     if (!p.user_kernels) fail_usage(fmt::format("{}: {} {}", kernel.name(), p.name, has));
     // Said once a run: a command may check its kernel more than once.
     static std::mutex said_mutex;
     static std::set<std::string> said;
-    const std::string line = fmt::format("{}: {} {}; taken as a user's kernel, which {} accepts", kernel.name(), p.name,
-                                         has, p.title);
+    const std::string line =
+        fmt::format("{}: {} {}; taken as a user's kernel, which {} accepts", kernel.name(), p.name, has, p.title);
     const std::lock_guard lock(said_mutex);
     if (said.insert(line).second) spdlog::warn("{}", line);
 }
@@ -128,18 +130,21 @@ StabilityPressure stability_pressure(const CodeProfile* code, double gamma, std:
         std::vector<std::string> codes;
         for (const auto& p : code_profiles())
             if (p.rest_pressure == RestPressure::tait) codes.push_back(p.name);
-        source.fail(fmt::format("{:g}: the sound speed over sqrt(g H) of a weakly compressible code ({}); expected --code "
-                                "naming one",
-                                *coef_sound, fmt::join(codes, ", ")));
+        source.fail(
+            fmt::format("{:g}: the sound speed over sqrt(g H) of a weakly compressible code ({}); expected --code "
+                        "naming one",
+                        *coef_sound, fmt::join(codes, ", ")));
     }
-    if (!tait) return {gamma, false, 0, fmt::format("an ideal gas at rest, P0 / rho = c^2 / gamma (gamma = {:g})", gamma)};
+    if (!tait)
+        return {gamma, false, 0, fmt::format("an ideal gas at rest, P0 / rho = c^2 / gamma (gamma = {:g})", gamma)};
     const double c = coef_sound.value_or(code->coef_sound);
     // P0 / (rho c^2) from 1e-6 (gamma's largest) to 1: a sound speed of 1 to 1000 sqrt(g H).
     if (!(c >= 1 && c <= 1000)) source.fail(fmt::format("{:g}: expected a number in [1, 1000]", c));
-    return {c * c, true, c,
-            fmt::format("Tait's pressure at rest ({}): hydrostatic, up to rho c^2 / {:.4g} (c = {:.4g} sqrt(g H)), the top "
-                        "of its range deciding",
-                        code->title, c * c, c)};
+    return {
+        c * c, true, c,
+        fmt::format("Tait's pressure at rest ({}): hydrostatic, up to rho c^2 / {:.4g} (c = {:.4g} sqrt(g H)), the top "
+                    "of its range deciding",
+                    code->title, c * c, c)};
 }
 
 double code_support_per_h(const CodeProfile& p, const Kernel& kernel, int dim) { return p.support_per_h(kernel, dim); }
@@ -152,8 +157,8 @@ double code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, doubl
     return p.parameter_of(kernel, dim, k, spacing);
 }
 
-double k_of_code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, double a_p, double value,
-                           double k_max, const std::function<double(double)>& eps_rho, const ValueSource& source)
+double k_of_code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, double a_p, double value, double k_max,
+                           const std::function<double(double)>& eps_rho, const ValueSource& source)
 {
     // At rest spacing the parameter is a power of k: its k is the start of the search.
     const double power = p.counts_neighbours ? dim : 1;
@@ -167,13 +172,16 @@ double k_of_code_parameter(const CodeProfile& p, const Kernel& kernel, int dim, 
     while (f(lo) > 0 && lo > 1e-3) lo /= 1.25;
     while (f(hi) < 0 && hi < k_max) hi = std::min(k_max, hi * 1.25);
     if (f(lo) > 0)
-        source.fail(fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support",
-                                value, f(lo) + value, p.parameter));
+        source.fail(
+            fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support",
+                        value, f(lo) + value, p.parameter));
     if (f(hi) < 0)
-        source.fail(fmt::format("{:g}: expected at most {:.6g}, the {} at k = {:g}", value, f(hi) + value, p.parameter, hi));
+        source.fail(
+            fmt::format("{:g}: expected at most {:.6g}, the {} at k = {:g}", value, f(hi) + value, p.parameter, hi));
     std::uintmax_t iterations = 200;
     const auto [a, b] = boost::math::tools::toms748_solve(
-        f, lo, hi, [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(x)); }, iterations);
+        f, lo, hi, [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(x)); },
+        iterations);
     return 0.5 * (a + b);
 }
 

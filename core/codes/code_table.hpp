@@ -59,10 +59,10 @@ void require_lattice_volume(const CodeProfile& profile, const std::string& what)
 // dispersion relation depends on P0 only through P0 / (rho c^2), its pairing term grows with
 // it, and at P0 = 0 no kernel pairs, so the top of the range decides. Without a code, gamma.
 struct StabilityPressure {
-    double gamma = 5.0 / 3.0;     // the dispersion relation's, 1 / (P0 / (rho c^2))
+    double gamma = 5.0 / 3.0; // the dispersion relation's, 1 / (P0 / (rho c^2))
     bool tait = false;
-    double coef_sound = 0;        // Tait: c / sqrt(g H)
-    std::string text;             // "an ideal gas at rest (gamma = 1.667)" or Tait's, for a person
+    double coef_sound = 0; // Tait: c / sqrt(g H)
+    std::string text;      // "an ideal gas at rest (gamma = 1.667)" or Tait's, for a person
 };
 StabilityPressure stability_pressure(const CodeProfile* code, double gamma, std::optional<double> coef_sound,
                                      const ValueSource& coef_sound_source);
@@ -74,8 +74,7 @@ double code_parameter(const CodeProfile& profile, const Kernel& kernel, int dime
 // The k at which the code's parameter is `value`; eps_rho(k) gives the lattice's density
 // error. Solved to 1e-12 in k where the parameter depends on the density; Error(input)
 // naming `source` where no k up to k_max gives it.
-double k_of_code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p,
-                           double value, double k_max, const std::function<double(double)>& eps_rho,
-                           const ValueSource& source);
+double k_of_code_parameter(const CodeProfile& profile, const Kernel& kernel, int dimension, double a_p, double value,
+                           double k_max, const std::function<double(double)>& eps_rho, const ValueSource& source);
 
 } // namespace sphkern

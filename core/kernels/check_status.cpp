@@ -12,10 +12,7 @@ constexpr const char* names[] = {"ok", "warn", "fail"}; // in the enum's order
 
 } // namespace
 
-const char* check_status_name(CheckStatus status)
-{
-    return names[static_cast<int>(status)];
-}
+const char* check_status_name(CheckStatus status) { return names[static_cast<int>(status)]; }
 
 CheckStatus check_status_named(std::string_view name)
 {

@@ -137,8 +137,7 @@ private:
 std::string identifier(const JsonNode& node)
 {
     std::string s = node.string();
-    if (!is_identifier(s))
-        node.error("expected a name of up to 64 characters of [a-z0-9_]");
+    if (!is_identifier(s)) node.error("expected a name of up to 64 characters of [a-z0-9_]");
     return s;
 }
 

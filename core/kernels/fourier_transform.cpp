@@ -11,8 +11,8 @@
 
 namespace sphkern {
 
-double radial_fourier_transform(const std::function<double(double)>& f, double support,
-                                const std::vector<double>& cuts, double kh, int dim)
+double radial_fourier_transform(const std::function<double(double)>& f, double support, const std::vector<double>& cuts,
+                                double kh, int dim)
 {
     using boost::math::constants::pi;
     auto integrand = [&](double q) {
@@ -33,8 +33,8 @@ double radial_fourier_transform(const std::function<double(double)>& f, double s
         if (b <= a) continue;
         const int n = static_cast<int>(std::ceil((b - a) / part));
         for (int j = 0; j < n; ++j)
-            sum += boost::math::quadrature::gauss_kronrod<double, 21>::integrate(
-                integrand, a + (b - a) * j / n, a + (b - a) * (j + 1) / n, 3, 1e-11);
+            sum += boost::math::quadrature::gauss_kronrod<double, 21>::integrate(integrand, a + (b - a) * j / n,
+                                                                                 a + (b - a) * (j + 1) / n, 3, 1e-11);
     }
     return sum;
 }
@@ -43,8 +43,8 @@ double fourier_transform_by_quadrature(const Kernel& kernel, double kh, int dim,
 {
     std::vector<double> cuts = kernel.definition().breakpoints;
     for (double t : kernel.definition().truncations) cuts.push_back(t);
-    return radial_fourier_transform([&](double q) { return kernel.w_truncated(q, dim, k); }, kernel.support(), cuts,
-                                    kh, dim);
+    return radial_fourier_transform([&](double q) { return kernel.w_truncated(q, dim, k); }, kernel.support(), cuts, kh,
+                                    dim);
 }
 
 } // namespace sphkern

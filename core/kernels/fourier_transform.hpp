@@ -17,7 +17,7 @@ class Kernel;
 double fourier_transform_by_quadrature(const Kernel& kernel, double kh, int dim, double k);
 
 // The radial transform of any profile f(q) on [0, R] with the given interior cuts.
-double radial_fourier_transform(const std::function<double(double)>& f, double support,
-                                const std::vector<double>& cuts, double kh, int dim);
+double radial_fourier_transform(const std::function<double(double)>& f, double support, const std::vector<double>& cuts,
+                                double kh, int dim);
 
 } // namespace sphkern

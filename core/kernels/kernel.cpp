@@ -47,7 +47,8 @@ void Kernel::require_dimension(int dim, const std::string& lattice_name) const
 
 double Kernel::d2w(double q, int dim, double k) const
 {
-    return f_->has_second_derivative() ? f_->d2w(q, dim, k, values_.data()) : numerical_second_derivative(*this, q, dim, k);
+    return f_->has_second_derivative() ? f_->d2w(q, dim, k, values_.data())
+                                       : numerical_second_derivative(*this, q, dim, k);
 }
 
 double Kernel::fourier(double kh, int dim, double k) const

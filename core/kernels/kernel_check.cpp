@@ -42,7 +42,8 @@ struct CheckItem {
 struct Checks {
     std::vector<CheckItem> items;
     CheckStatus worst = CheckStatus::ok;
-    void add(int dim, const std::string& name, CheckStatus status, const std::string& detail, const std::string& hint = {})
+    void add(int dim, const std::string& name, CheckStatus status, const std::string& detail,
+             const std::string& hint = {})
     {
         if (status != CheckStatus::ok && hint.empty())
             throw std::logic_error("check " + name + " warns or fails without a hint");
@@ -53,7 +54,9 @@ struct Checks {
     {
         nlohmann::json json = nlohmann::json::array();
         for (const auto& c : items) {
-            nlohmann::json item = {{"dimension", c.dimension}, {"check", c.name}, {"status", check_status_name(c.status)},
+            nlohmann::json item = {{"dimension", c.dimension},
+                                   {"check", c.name},
+                                   {"status", check_status_name(c.status)},
                                    {"detail", c.detail}};
             if (!c.hint.empty()) item["hint"] = c.hint;
             json.push_back(std::move(item));
@@ -96,21 +99,20 @@ double check_derivative(const Kernel& kernel, int dim, const std::vector<double>
     double relative = mismatch / std::max(scale, 1e-300);
     const auto& definition = kernel.definition();
     const std::string file = expression_file(kernel);
-    if (!definition.derivative_note.empty())
-        checks.add(dim, "derivative", CheckStatus::ok, definition.derivative_note);
+    if (!definition.derivative_note.empty()) checks.add(dim, "derivative", CheckStatus::ok, definition.derivative_note);
     else if (definition.separate_derivative)
         checks.add(dim, "derivative", CheckStatus::ok,
                    "declared a separate derivative: differs from dW/dr by up to " + format(relative, 3) +
                        " (relative, at q = " + format(worst_q, 4) + ", k = 1); reported, not checked");
     else
         checks.add(dim, "derivative", ok_or(relative <= 1e-6, CheckStatus::fail),
-                   "largest relative difference from a numerical dW/dr: " + format(relative, 3) + " at q = " +
-                       format(worst_q, 4),
-                   file.empty() ? "compare dw with the derivative of w near q = " + format(worst_q, 4) +
-                                      "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE"
-                                : "\"dw\" in " + file + " is not the derivative of \"w\" with respect to q near q = " +
-                                      format(worst_q, 4) +
-                                      ": correct \"dw\", or leave it out and sphkern differentiates \"w\"");
+                   "largest relative difference from a numerical dW/dr: " + format(relative, 3) +
+                       " at q = " + format(worst_q, 4),
+                   file.empty()
+                       ? "compare dw with the derivative of w near q = " + format(worst_q, 4) +
+                             "; a k-dependent derivative must set SPHKERN_KERNEL_SEPARATE_DERIVATIVE"
+                       : "\"dw\" in " + file + " is not the derivative of \"w\" with respect to q near q = " +
+                             format(worst_q, 4) + ": correct \"dw\", or leave it out and sphkern differentiates \"w\"");
     return scale;
 }
 
@@ -118,8 +120,9 @@ double check_derivative(const Kernel& kernel, int dim, const std::vector<double>
 void check_second_derivative(const Kernel& kernel, int dim, const std::vector<double>& edges, Checks& checks)
 {
     if (!kernel.provides_second_derivative()) {
-        checks.add(dim, "second_derivative", CheckStatus::ok,
-                   "not provided: computed from dW/dr by sixth-order finite differences that never straddle a breakpoint");
+        checks.add(
+            dim, "second_derivative", CheckStatus::ok,
+            "not provided: computed from dW/dr by sixth-order finite differences that never straddle a breakpoint");
         return;
     }
     const double R = kernel.support();
@@ -129,7 +132,8 @@ void check_second_derivative(const Kernel& kernel, int dim, const std::vector<do
         bool near_edge = false;
         for (double e : edges) near_edge |= std::abs(q - e) < 0.02;
         if (near_edge) continue;
-        const double numeric = numerical_second_derivative(kernel, q, dim, check_k), given = kernel.d2w(q, dim, check_k);
+        const double numeric = numerical_second_derivative(kernel, q, dim, check_k),
+                     given = kernel.d2w(q, dim, check_k);
         scale = std::max(scale, std::abs(given));
         if (std::abs(given - numeric) > mismatch) mismatch = std::abs(given - numeric), worst_q = q;
     }
@@ -158,15 +162,16 @@ void check_continuity(const Kernel& kernel, int dim, const std::vector<double>& 
         std::string where = at_support ? "at R = " + format(b) : "at breakpoint q = " + format(b);
         bool w_ok = w_jump <= 1e-7 * std::max(w0, 1e-300);
         bool dw_ok = dw_jump <= 1e-7 * dw_scale;
-        const CheckStatus status = w_ok ? ok_or(dw_ok, CheckStatus::warn) : (at_support ? CheckStatus::warn : CheckStatus::fail);
+        const CheckStatus status =
+            w_ok ? ok_or(dw_ok, CheckStatus::warn) : (at_support ? CheckStatus::warn : CheckStatus::fail);
         std::string hint;
         if (at_support)
             hint = (file.empty() ? "W or dW/dr does not reach zero at R"
                                  : "\"w\" or \"dw\" in " + file + " is not zero at \"support\" = " + format(b)) +
                    ": the errors jump where a shell crosses the support; a kernel that ends smoothly at R avoids it";
         else
-            hint = (file.empty() ? "the pieces" : "the pieces of \"w\" or \"dw\" in " + file) + " do not meet at q = " +
-                   format(b) + ": check each piece's formula and constant there";
+            hint = (file.empty() ? "the pieces" : "the pieces of \"w\" or \"dw\" in " + file) +
+                   " do not meet at q = " + format(b) + ": check each piece's formula and constant there";
         checks.add(dim, "continuity", status,
                    where + ": jump of W " + format(w_jump, 4) + ", of dW/dr " + format(dw_jump, 4) +
                        " (in units of h^-D, h^-(D+1))",
@@ -209,7 +214,8 @@ void check_breakpoints(const Kernel& kernel, int dim, Checks& checks)
     }
     const std::string file = expression_file(kernel);
     checks.add(dim, "breakpoints", ok_or(found.empty(), CheckStatus::warn),
-               found.empty() ? "W and dW/dr smooth between the declared breakpoints" : found + ", which is not a declared breakpoint",
+               found.empty() ? "W and dW/dr smooth between the declared breakpoints"
+                             : found + ", which is not a declared breakpoint",
                (file.empty() ? "declare the breakpoint" : "add that q to \"breakpoints\" in " + file) +
                    " (or fix the formula): quadratures and derivatives are split at breakpoints only");
 }
@@ -262,7 +268,8 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
 {
     const auto [integral, error] = kernel_integral(kernel, dim, check_k);
     const double deviation = std::abs(integral - 1);
-    std::string detail = "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")";
+    std::string detail =
+        "integral of W = " + format(integral) + " (quadrature error estimate " + format(error, 2) + ")";
     if (kernel.definition().normalised) detail += "; \"normalise\": true, so sphkern divides \"w\" by its integral";
     const std::string file = expression_file(kernel), D = std::to_string(dim) + "D";
     if (deviation <= normalization_ok) {
@@ -275,11 +282,16 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
                    detail + "; the formula continued past R integrates to " + format(whole),
                    file.empty()
                        ? "normalised over all space, not over the support: cutting the formula at R changes its "
-                         "integral by " + format(integral - 1, 3) + "; divide W by " + format(integral) + " in " + D +
+                         "integral by " +
+                             format(integral - 1, 3) + "; divide W by " + format(integral) + " in " + D +
                              " or choose a larger R"
-                       : "\"w\" in " + file + " is normalised over all space, not over \"support\": cutting the "
-                         "formula at R changes its integral by " + format(integral - 1, 3) + "; multiply \"w\" and "
-                         "\"dw\" by " + format(1 / integral) + " in " + D +
+                       : "\"w\" in " + file +
+                             " is normalised over all space, not over \"support\": cutting the "
+                             "formula at R changes its integral by " +
+                             format(integral - 1, 3) +
+                             "; multiply \"w\" and "
+                             "\"dw\" by " +
+                             format(1 / integral) + " in " + D +
                              ", choose a larger \"support\", or set \"normalise\": true");
         return integral;
     }
@@ -300,8 +312,8 @@ double check_normalization(const Kernel& kernel, int dim, Checks& checks)
             hint += "; one formula has one constant for all its \"dimensions\": give " + D + " a file of its own";
         hint += ", or set \"normalise\": true";
     }
-    checks.add(dim, "normalization", deviation <= normalization_truncation ? CheckStatus::warn : CheckStatus::fail, detail,
-               hint);
+    checks.add(dim, "normalization", deviation <= normalization_truncation ? CheckStatus::warn : CheckStatus::fail,
+               detail, hint);
     return integral;
 }
 
@@ -344,7 +356,8 @@ void check_gradient_moment(const Kernel& kernel, int dim, double integral, Check
     if (jump_at_support) detail += ", plus the surface term the jump of W at R leaves out, " + format(surface, 4);
     if (kernel.definition().separate_derivative) {
         checks.add(dim, "gradient_moment", CheckStatus::ok,
-                   detail + "; a separate derivative: reported, not checked (it is the continuum gradient error times -D)");
+                   detail +
+                       "; a separate derivative: reported, not checked (it is the continuum gradient error times -D)");
         return;
     }
     const std::string file = expression_file(kernel);
@@ -357,8 +370,8 @@ void check_gradient_moment(const Kernel& kernel, int dim, double integral, Check
         hint = (file.empty() ? "dW/dr is not the derivative of W"
                              : "\"dw\" in " + file + " is not the derivative of \"w\"") +
                " (a wrong factor or sign?)";
-    checks.add(dim, "gradient_moment", consistent ? ok_or(!jump_at_support, CheckStatus::warn) : CheckStatus::fail, detail,
-               hint);
+    checks.add(dim, "gradient_moment", consistent ? ok_or(!jump_at_support, CheckStatus::warn) : CheckStatus::fail,
+               detail, hint);
 }
 
 // The second moment, the kernel's width in units of h^2 (reported); returns it.
@@ -375,12 +388,13 @@ void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
     double worst = 0, at = 0;
     for (int i = 0; i <= 200; ++i) {
         const double kh = 0.25 * i;
-        const double d = std::abs(kernel.fourier(kh, dim, check_k) - fourier_transform_by_quadrature(kernel, kh, dim, check_k));
+        const double d =
+            std::abs(kernel.fourier(kh, dim, check_k) - fourier_transform_by_quadrature(kernel, kh, dim, check_k));
         if (d > worst) worst = d, at = kh;
     }
     checks.add(dim, "fourier_provided", ok_or(worst <= 1e-8, CheckStatus::fail),
-               "provided transform; largest difference from the quadrature of W: " + format(worst, 3) + " at kh = " +
-                   format(at, 4),
+               "provided transform; largest difference from the quadrature of W: " + format(worst, 3) +
+                   " at kh = " + format(at, 4),
                "the transform must be that of the normalised W, as a function of kappa h");
 }
 
@@ -389,12 +403,14 @@ void check_provided_transform(const Kernel& kernel, int dim, Checks& checks)
 nlohmann::json check_fourier(const Kernel& kernel, int dim, Checks& checks)
 {
     auto spectrum = spectrum_summary(kernel, dim, check_k);
-    nlohmann::json entry = {{"min", spectrum.minimum}, {"at", spectrum.at}, {"at_zero", kernel.fourier(0, dim, check_k)},
+    nlohmann::json entry = {{"min", spectrum.minimum},
+                            {"at", spectrum.at},
+                            {"at_zero", kernel.fourier(0, dim, check_k)},
                             {"source", spectrum.provided ? "plugin" : "quadrature"}};
     entry["first_zero"] = spectrum.first_zero ? nlohmann::json(*spectrum.first_zero) : nlohmann::json();
     checks.add(dim, "fourier", spectrum.minimum < -1e-9 ? CheckStatus::warn : CheckStatus::ok,
-               "min of the Fourier transform over kh in [0, 50]: " + format(spectrum.minimum, 4) + " at kh = " +
-                   format(spectrum.at, 5) +
+               "min of the Fourier transform over kh in [0, 50]: " + format(spectrum.minimum, 4) +
+                   " at kh = " + format(spectrum.at, 5) +
                    (spectrum.first_zero ? ", first zero at kh = " + format(*spectrum.first_zero, 6) : ", no zero"),
                "negative W^: with many neighbours SPH pairs particles (Dehnen & Aly 2012); see sphkern stability");
     if (spectrum.provided) check_provided_transform(kernel, dim, checks);
@@ -457,8 +473,8 @@ nlohmann::json check_kernel_isolated(const Kernel& kernel, double timeout_second
 {
     auto result = run_isolated([&] { return check_kernel(kernel).dump(); }, timeout_seconds);
     if (auto* failure = std::get_if<IsolatedFailure>(&result))
-        throw Error(ExitCode::plugin, kernel.definition().source + ": kernel " + kernel.name() + " " +
-                                          failure->reason + " during the check");
+        throw Error(ExitCode::plugin, kernel.definition().source + ": kernel " + kernel.name() + " " + failure->reason +
+                                          " during the check");
     return nlohmann::json::parse(std::get<std::string>(result));
 }
 

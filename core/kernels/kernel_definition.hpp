@@ -23,8 +23,10 @@ public:
     virtual ~KernelFunctions() = default;
     virtual double w(double q, int dim, double k, const double* params) const = 0;
     virtual double dw(double q, int dim, double k, const double* params) const = 0;
-    virtual void w_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* params) const = 0;
-    virtual void dw_batch(const double* q, double* out, std::size_t n, int dim, double k, const double* params) const = 0;
+    virtual void w_batch(const double* q, double* out, std::size_t n, int dim, double k,
+                         const double* params) const = 0;
+    virtual void dw_batch(const double* q, double* out, std::size_t n, int dim, double k,
+                          const double* params) const = 0;
     // W and W' together (a plugin's fused evaluation); by default the two batch calls.
     virtual void w_dw_batch(const double* q, double* w, double* dw, std::size_t n, int dim, double k,
                             const double* params) const
@@ -52,12 +54,12 @@ struct KernelDefinition {
     double support = 0;
     std::vector<int> dimensions;
     std::vector<KernelParameter> parameters;
-    std::vector<double> breakpoints;   // interior q where the definition changes
-    bool separate_derivative = false;  // dW/dr is its own formula
-    bool from_expression = false;      // expression files only (its faults are input errors, not plugin errors)
+    std::vector<double> breakpoints;  // interior q where the definition changes
+    bool separate_derivative = false; // dW/dr is its own formula
+    bool from_expression = false;     // expression files only (its faults are input errors, not plugin errors)
     KernelOrigin origin = KernelOrigin::plugin;
-    bool normalised = false;           // an expression file with "normalise": true: sphkern divides W by its integral
-    std::string derivative_note;       // how dW/dr is obtained when it is not a formula
+    bool normalised = false;     // an expression file with "normalise": true: sphkern divides W by its integral
+    std::string derivative_note; // how dW/dr is obtained when it is not a formula
     // q at which the kernel (or a part of it) is cut to zero: {R}, or each part's R for a blend.
     std::vector<double> truncations;
     std::shared_ptr<const KernelFunctions> functions;

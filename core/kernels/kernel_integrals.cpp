@@ -32,7 +32,8 @@ std::pair<double, double> radial_integral(const Kernel& kernel, int dim, const s
     for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
         double piece_error = 0;
         total += boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-            [&](double q) { return f(q) * radial_power_of(q, dim - 1); }, edges[i], edges[i + 1], 15, 1e-15, &piece_error);
+            [&](double q) { return f(q) * radial_power_of(q, dim - 1); }, edges[i], edges[i + 1], 15, 1e-15,
+            &piece_error);
         error += piece_error;
     }
     return {sphere_area(dim) * total, sphere_area(dim) * error};
@@ -50,7 +51,8 @@ double kernel_integral_estimate(const Kernel& kernel, int dim, double k)
 
 std::pair<double, double> kernel_integral(const Kernel& kernel, int dim, double k, int radial_power)
 {
-    return radial_integral(kernel, dim, [&](double q) { return kernel.w(q, dim, k) * radial_power_of(q, radial_power); });
+    return radial_integral(kernel, dim,
+                           [&](double q) { return kernel.w(q, dim, k) * radial_power_of(q, radial_power); });
 }
 
 } // namespace sphkern

@@ -19,9 +19,9 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include <cerrno>
 #include <boost/dll/library_info.hpp>
 #include <boost/dll/shared_library.hpp>
+#include <cerrno>
 #include <fmt/format.h>
 
 #include <atomic>
@@ -31,21 +31,18 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <sstream>
-#include <type_traits>
-#include <fcntl.h>
 #include <sys/stat.h>
+#include <type_traits>
 #include <unistd.h>
 
 namespace sphkern {
 
 namespace {
 
-bool valid_identifier(const char* s)
-{
-    return s && is_identifier(std::string_view(s, strnlen(s, 65)));
-}
+bool valid_identifier(const char* s) { return s && is_identifier(std::string_view(s, strnlen(s, 65))); }
 
 bool valid_text(const char* s)
 {
@@ -94,7 +91,8 @@ std::string loader_reason(std::string what, const std::string& path)
 {
     const std::string marker = "dlerror system message: ";
     const auto begin = what.find(marker), end = what.rfind("): ");
-    if (begin != std::string::npos && end != std::string::npos && end > begin) what = what.substr(begin + marker.size(), end - begin - marker.size());
+    if (begin != std::string::npos && end != std::string::npos && end > begin)
+        what = what.substr(begin + marker.size(), end - begin - marker.size());
     if (what.starts_with(path + ": ")) what.erase(0, path.size() + 2);
     return what;
 }
@@ -104,8 +102,9 @@ std::shared_ptr<boost::dll::shared_library> open_library(const std::string& path
 {
     const KeepWorkingFolder keep;
     try {
-        return std::make_shared<boost::dll::shared_library>(
-            boost::dll::fs::path(path), boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
+        return std::make_shared<boost::dll::shared_library>(boost::dll::fs::path(path),
+                                                            boost::dll::load_mode::rtld_now |
+                                                                boost::dll::load_mode::rtld_local);
     } catch (const std::exception& e) {
         if (errno == EMFILE || errno == ENFILE) fail_resource(errno, name + ": cannot be opened");
         throw Error(ExitCode::plugin, name + ": not a loadable shared library: " + loader_reason(e.what(), path));
@@ -131,7 +130,8 @@ const void* call_entry(const boost::dll::shared_library& library, const std::str
                 hint = " (it exports the C++ name " + symbol + ": declare the entry function extern \"C\")";
                 break;
             }
-        throw Error(ExitCode::plugin, file + ": not a sphkern kernel plugin (no exported " SPHKERN_ENTRY_NAME ")" + hint);
+        throw Error(ExitCode::plugin,
+                    file + ": not a sphkern kernel plugin (no exported " SPHKERN_ENTRY_NAME ")" + hint);
     }
     auto entry = library.get<const void*()>(SPHKERN_ENTRY_NAME);
     const void* descriptor = entry();
@@ -171,8 +171,7 @@ public:
           w_batch_(file, d.fields.name, "the batch W"), dw_batch_(file, d.fields.name, "the batch dW"),
           w_dw_batch_(file, d.fields.name, "the fused W and dW"), d2w_(file, d.fields.name, "d2W"),
           fourier_(file, d.fields.name, "the Fourier transform")
-    {
-    }
+    {}
     double w(double q, int dim, double k, const double* p) const override
     {
         return call(w_, [&] { return d_.fields.w(q, dim, k, p); });
@@ -235,7 +234,8 @@ private:
     [[noreturn]] void refuse_after_crash(const PluginCall& where) const
     {
         throw Error(ExitCode::plugin, std::string(where.plugin()) + " " + what_happened(crashed_signal_.load()) +
-                                          " in " + where.function() + " earlier; it is not called again in this process");
+                                          " in " + where.function() +
+                                          " earlier; it is not called again in this process");
     }
     static std::string what_happened(int jump)
     {
@@ -373,15 +373,18 @@ std::string probe_descriptor_functions(const PluginDescriptor& out)
             d->w_batch(qs.data(), batch_w.data(), qs.size(), dim, k, params.data());
             d->dw_batch(qs.data(), batch_dw.data(), qs.size(), dim, k, params.data());
             if (out.second) out.second->d2w_batch(qs.data(), batch_d2w.data(), qs.size(), dim, k, params.data());
-            if (out.fused) out.fused->w_dw(qs.data(), fused_w.data(), fused_dw.data(), qs.size(), dim, k, params.data());
+            if (out.fused)
+                out.fused->w_dw(qs.data(), fused_w.data(), fused_dw.data(), qs.size(), dim, k, params.data());
             for (int i = 0; i <= steps; ++i) {
                 double w = d->w(qs[i], dim, k, params.data()), dw = d->dw(qs[i], dim, k, params.data());
                 double d2w = out.second ? out.second->d2w(qs[i], dim, k, params.data()) : 0.0;
                 double transform = out.fourier ? out.fourier->transform(2 * qs[i], dim, k, params.data()) : 0.0;
                 std::ostringstream at;
                 at << " at q = " << qs[i] << ", D = " << dim << ", k = " << k;
-                if (!std::isfinite(w) || !std::isfinite(dw) || !std::isfinite(d2w)) return "non-finite value" + at.str();
-                if (!std::isfinite(transform)) return "non-finite Fourier transform at kh = " + std::to_string(2 * qs[i]);
+                if (!std::isfinite(w) || !std::isfinite(dw) || !std::isfinite(d2w))
+                    return "non-finite value" + at.str();
+                if (!std::isfinite(transform))
+                    return "non-finite Fourier transform at kh = " + std::to_string(2 * qs[i]);
                 if (disagree(batch_w[i], w) || disagree(batch_dw[i], dw) || (out.second && disagree(batch_d2w[i], d2w)))
                     return "batch and scalar functions disagree" + at.str();
                 if (out.fused && (disagree(fused_w[i], w) || disagree(fused_dw[i], dw)))
@@ -424,7 +427,8 @@ ProbeVerdict probe_open_plugin(const PluginFile& plugin)
                 auto library = open_library(plugin.loader_path(), name);
                 PluginDescriptor d;
                 auto reason = read_kernel_descriptor(call_entry(*library, name), d);
-                return reason.empty() ? std::string("+") + d.fields.name : name + ": invalid kernel descriptor: " + reason;
+                return reason.empty() ? std::string("+") + d.fields.name
+                                      : name + ": invalid kernel descriptor: " + reason;
             } catch (const Error& e) {
                 return e.what(); // already names the file
             }
@@ -498,7 +502,8 @@ std::shared_ptr<const KernelDefinition> load_kernel_plugin(const std::filesystem
         if (d->dimensions & SPHKERN_DIM(dim)) plugin->dimensions.push_back(dim);
     for (uint32_t i = 0; i < d->parameter_count; ++i) {
         const auto& p = d->parameters[i];
-        plugin->parameters.push_back({p.name, printable_text(p.description), p.default_value, p.min_value, p.max_value});
+        plugin->parameters.push_back(
+            {p.name, printable_text(p.description), p.default_value, p.min_value, p.max_value});
     }
     plugin->breakpoints.assign(d->breakpoints, d->breakpoints + d->breakpoint_count);
     plugin->separate_derivative = (d->flags & SPHKERN_KERNEL_SEPARATE_DERIVATIVE) != 0;

@@ -120,7 +120,8 @@ void KernelRegistry::learn_names()
     if (unknown.empty()) return;
     std::vector<std::string> failures(unknown.size());
     ParallelFor probes;
-    const int threads = static_cast<int>(std::min<std::size_t>(unknown.size(), 2 * std::max(1u, std::thread::hardware_concurrency())));
+    const int threads =
+        static_cast<int>(std::min<std::size_t>(unknown.size(), 2 * std::max(1u, std::thread::hardware_concurrency())));
     probes.run(unknown.size(), threads, [&](int, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end && probes.keep_going(); ++i) {
             try {
@@ -194,7 +195,8 @@ std::shared_ptr<const KernelDefinition> KernelRegistry::find(const std::string& 
         std::string suffix = parts.back();
         for (std::size_t i = parts.size() - 1; i-- > 0;) {
             suffix = parts[i] + "+" + suffix;
-            auto cached = std::find_if(blends_.begin(), blends_.end(), [&](const auto& b) { return b.first == suffix; });
+            auto cached =
+                std::find_if(blends_.begin(), blends_.end(), [&](const auto& b) { return b.first == suffix; });
             if (cached != blends_.end()) {
                 blend = cached->second;
                 continue;

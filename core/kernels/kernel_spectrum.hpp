@@ -14,10 +14,10 @@ inline constexpr double spectrum_kh_max = 50;
 
 struct SpectrumSummary {
     int dimension = 0;
-    double minimum = 0;                // min of W^ over [0, spectrum_kh_max]
-    double at = 0;                     // kh of the minimum
-    std::optional<double> first_zero;  // the smallest kh with W^ = 0, if any
-    bool provided = false;             // the plugin's own transform (else quadrature)
+    double minimum = 0;               // min of W^ over [0, spectrum_kh_max]
+    double at = 0;                    // kh of the minimum
+    std::optional<double> first_zero; // the smallest kh with W^ = 0, if any
+    bool provided = false;            // the plugin's own transform (else quadrature)
 };
 
 // W^ at n + 1 equally spaced kh in [0, kh_max].

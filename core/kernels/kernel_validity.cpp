@@ -32,7 +32,8 @@ void fail_non_finite_kernel(const Kernel& kernel, const char* what, double q, in
                             kernel.label(), kernel.definition().source, what, q, dim, k));
 }
 
-void fail_overflowing_kernel(const Kernel& kernel, int dim, double k, const std::string& sum, std::span<const double> q_values)
+void fail_overflowing_kernel(const Kernel& kernel, int dim, double k, const std::string& sum,
+                             std::span<const double> q_values)
 {
     std::vector<double> qs(q_values.begin(), q_values.end());
     const int samples = 256;
@@ -40,17 +41,19 @@ void fail_overflowing_kernel(const Kernel& kernel, int dim, double k, const std:
     double largest = 0;
     const char* what = "W";
     for (double q : qs)
-        for (const auto& [name, value] : {std::pair{"W", kernel.w(q, dim, k)}, std::pair{"dW/dr", kernel.dw(q, dim, k)}})
+        for (const auto& [name, value] :
+             {std::pair{"W", kernel.w(q, dim, k)}, std::pair{"dW/dr", kernel.dw(q, dim, k)}})
             if (std::abs(value) > largest) largest = std::abs(value), what = name;
     if (!(largest > 1e100)) return;
     double from = INFINITY, to = -INFINITY;
     for (double q : qs)
         if (std::abs(kernel.w(q, dim, k)) > 1e-6 * largest || std::abs(kernel.dw(q, dim, k)) > 1e-6 * largest)
             from = std::min(from, q), to = std::max(to, q);
-    throw Error(kernel_fault_code(kernel),
-                fmt::format("kernel {} ({}): {} reaches {:.4g} for q in [{:.6g}, {:.6g}] (D = {}, k = {:.6g}), and {} of its "
-                            "finite values overflows a double; expected values of order 1",
-                            kernel.label(), kernel.definition().source, what, largest, from, to, dim, k, sum));
+    throw Error(
+        kernel_fault_code(kernel),
+        fmt::format("kernel {} ({}): {} reaches {:.4g} for q in [{:.6g}, {:.6g}] (D = {}, k = {:.6g}), and {} of its "
+                    "finite values overflows a double; expected values of order 1",
+                    kernel.label(), kernel.definition().source, what, largest, from, to, dim, k, sum));
 }
 
 void fail_non_finite_sum(const Kernel& kernel, int dim, double k, const std::string& where, const std::string& scale,

@@ -26,7 +26,8 @@ bool same_content_stamp(const struct stat& a, const struct stat& b)
 PluginFile::PluginFile(const std::filesystem::path& file) : name_(file.string())
 {
     struct stat st {};
-    if (::stat(file.c_str(), &st) != 0) throw Error(ExitCode::plugin, name_ + ": no such plugin file", ErrorKind::missing_file);
+    if (::stat(file.c_str(), &st) != 0)
+        throw Error(ExitCode::plugin, name_ + ": no such plugin file", ErrorKind::missing_file);
     if (S_ISDIR(st.st_mode)) throw Error(ExitCode::plugin, name_ + ": is a folder, expected a plugin file");
     // A device or a pipe would be read without end by the loader (and opening a FIFO would block).
     if (!S_ISREG(st.st_mode))

@@ -34,7 +34,8 @@ fs::path PluginProbeCache::location()
 {
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
         return fs::path(xdg) / "sphkern" / "plugin-probes.json";
-    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "sphkern" / "plugin-probes.json";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".cache" / "sphkern" / "plugin-probes.json";
     return {};
 }
 
@@ -53,9 +54,12 @@ PluginProbeCache::PluginProbeCache()
         auto document = read_json_file(file);
         if (document.value("format", "") != cache_format) return;
         for (const auto& [path, e] : document.at("plugins").items())
-            entries_[path] = {e.at("size").get<long long>(), e.at("mtime_ns").get<long long>(),
-                              e.at("ctime_ns").get<long long>(), e.at("inode").get<unsigned long long>(),
-                              e.at("device").get<unsigned long long>(), e.at("name").get<std::string>()};
+            entries_[path] = {e.at("size").get<long long>(),
+                              e.at("mtime_ns").get<long long>(),
+                              e.at("ctime_ns").get<long long>(),
+                              e.at("inode").get<unsigned long long>(),
+                              e.at("device").get<unsigned long long>(),
+                              e.at("name").get<std::string>()};
     } catch (const std::exception& e) { // a corrupt cache is only a missed shortcut
         spdlog::debug("ignoring the plugin probe cache {}: {}", file.string(), e.what());
         entries_.clear();

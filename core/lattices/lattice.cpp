@@ -12,8 +12,8 @@
 #include "support/text/value_checks.hpp"
 
 #include <Eigen/LU>
-#include <nlohmann/json.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,18 +30,20 @@ constexpr double max_coordinate = 1e6;
 
 Eigen::Vector3d read_vector(const JsonNode& node, int dimension, double limit)
 {
-    if (!node.is_array()) node.error("expected an array of " + std::to_string(dimension) + " numbers, got " +
-                                     json_type_name(node.value()));
+    if (!node.is_array())
+        node.error("expected an array of " + std::to_string(dimension) + " numbers, got " +
+                   json_type_name(node.value()));
     if (node.size() != static_cast<std::size_t>(dimension))
-        node.error("expected " + std::to_string(dimension) + " components (dimension is " +
-                   std::to_string(dimension) + "), got " + std::to_string(node.size()));
+        node.error("expected " + std::to_string(dimension) + " components (dimension is " + std::to_string(dimension) +
+                   "), got " + std::to_string(node.size()));
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
     for (int i = 0; i < dimension; ++i) v[i] = node[static_cast<std::size_t>(i)].number_in(-limit, limit);
     return v;
 }
 
 // The smallest distance between two lattice points, in the file's units.
-double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension, const std::vector<Eigen::Vector3d>& motif)
+double nearest_neighbour_distance(const Eigen::Matrix3d& basis, int dimension,
+                                  const std::vector<Eigen::Vector3d>& motif)
 {
     // A primitive vector of the reduced basis bounds the distance: search no further.
     const Eigen::Matrix3d reduced = reduce_basis(basis, dimension).first;
@@ -58,8 +60,7 @@ std::string read_lattice_name(const JsonNode& root)
 {
     auto node = root.at("name");
     std::string name = node.string();
-    if (!is_identifier(name, "-"))
-        node.error("expected a name of up to 64 characters of [a-z0-9_-]");
+    if (!is_identifier(name, "-")) node.error("expected a name of up to 64 characters of [a-z0-9_-]");
     return name;
 }
 
@@ -142,11 +143,11 @@ std::vector<VolumeCoefficient> read_volume_coefficients(const JsonNode& root, co
     extra->expect_object();
     for (const auto& [key, unused] : extra->value().items()) {
         auto value_node = extra->at(key);
-        if (!is_identifier(key, {}, std::string::npos))
-            value_node.error("expected a name of [a-z0-9_]");
+        if (!is_identifier(key, {}, std::string::npos)) value_node.error("expected a name of [a-z0-9_]");
         // Only the computed names can clash (the parser refuses a key given twice): linear in the keys.
         for (std::size_t i = 0; i < computed; ++i)
-            if (coefficients[i].name == key) value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
+            if (coefficients[i].name == key)
+                value_node.error("\"" + key + "\" is computed by sphkern and cannot be redefined");
         double v = value_node.number();
         if (v <= 0 || v > 1e6) value_node.error("expected a positive volume coefficient up to 1e6");
         coefficients.push_back({key, v, lattice.file});
@@ -171,8 +172,7 @@ double Lattice::volume_coefficient(const std::string& spec) const
         names.push_back(c.name);
         list += (list.empty() ? "" : ", ") + c.name;
     }
-    std::string message =
-        "lattice " + name + " has no volume coefficient \"" + spec + "\"" + did_you_mean(spec, names);
+    std::string message = "lattice " + name + " has no volume coefficient \"" + spec + "\"" + did_you_mean(spec, names);
     fail_unknown(message + "; expected one of " + list + " or a positive number");
 }
 
@@ -229,10 +229,12 @@ Lattice load_lattice(const std::string& spec)
 Eigen::Vector3d direction_of(const std::vector<double>& components, int dimension, const ValueSource& source)
 {
     if (static_cast<int>(components.size()) != dimension)
-        fail_input(fmt::format("{}: {} components, expected {} (one per dimension)", source.name, components.size(), dimension));
+        fail_input(fmt::format("{}: {} components, expected {} (one per dimension)", source.name, components.size(),
+                               dimension));
     Eigen::Vector3d v = Eigen::Vector3d::Zero();
     for (int i = 0; i < dimension; ++i) v[i] = components[static_cast<std::size_t>(i)];
-    if (!v.allFinite() || v.cwiseAbs().maxCoeff() == 0) source.fail("expected a direction: finite components, not all zero");
+    if (!v.allFinite() || v.cwiseAbs().maxCoeff() == 0)
+        source.fail("expected a direction: finite components, not all zero");
     return v.stableNormalized();
 }
 

@@ -23,10 +23,10 @@ struct Lattice {
     std::string title;
     std::string file;
     int dimension = 0;
-    Eigen::Matrix3d basis;               // columns are the primitive vectors; in 2D the third is e_z
-    std::vector<Eigen::Vector3d> motif;  // fractional coordinates in [0, 1)
-    Eigen::Vector3d gravity;             // unit vector pointing down
-    double file_nearest_distance = 1;    // d in the file's own units, before the rescaling
+    Eigen::Matrix3d basis;              // columns are the primitive vectors; in 2D the third is e_z
+    std::vector<Eigen::Vector3d> motif; // fractional coordinates in [0, 1)
+    Eigen::Vector3d gravity;            // unit vector pointing down
+    double file_nearest_distance = 1;   // d in the file's own units, before the rescaling
     std::vector<VolumeCoefficient> volume_coefficients;
 
     int sites() const { return static_cast<int>(motif.size()); }

@@ -11,9 +11,13 @@ nlohmann::json lattice_json(const Lattice& l)
     nlohmann::json coefficients = nlohmann::json::object();
     for (const auto& c : l.volume_coefficients) coefficients[c.name] = c.value;
     std::vector<double> gravity(l.gravity.data(), l.gravity.data() + l.dimension);
-    return {{"name", l.name},   {"title", l.title},
-            {"dimension", l.dimension}, {"sites", l.sites()},
-            {"volume_coefficients", coefficients}, {"gravity", gravity}, {"file", l.file}};
+    return {{"name", l.name},
+            {"title", l.title},
+            {"dimension", l.dimension},
+            {"sites", l.sites()},
+            {"volume_coefficients", coefficients},
+            {"gravity", gravity},
+            {"file", l.file}};
 }
 
 nlohmann::json lattice_description_json(const Lattice& lattice, double radius)
@@ -42,8 +46,11 @@ nlohmann::json shells_json(const Lattice& lattice, int site, double radius, cons
     int total = 0;
     for (const auto& s : shells) {
         total += s.count;
-        list.push_back({{"radius", s.radius}, {"radius_squared", s.radius * s.radius}, {"count", s.count},
-                        {"cumulative", total}, {"gravity_moment", s.directional_moment(e)}});
+        list.push_back({{"radius", s.radius},
+                        {"radius_squared", s.radius * s.radius},
+                        {"count", s.count},
+                        {"cumulative", total},
+                        {"gravity_moment", s.directional_moment(e)}});
     }
     return {{"lattice", lattice.name}, {"site", site}, {"radius", radius}, {"shells", list}};
 }

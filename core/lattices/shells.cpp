@@ -20,7 +20,8 @@ std::vector<Shell> lattice_shells(const Lattice& lattice, int site, double r_max
         s << "radius " << r_max << " is not allowed, expected a positive number (in units of d)";
         fail_input(s.str());
     }
-    if (site < 0 || site >= lattice.sites()) fail_input(site_range(lattice.name, lattice.sites()) + ", not " + std::to_string(site));
+    if (site < 0 || site >= lattice.sites())
+        fail_input(site_range(lattice.name, lattice.sites()) + ", not " + std::to_string(site));
     double bound = lattice_point_bound(r_max, lattice.dimension);
     check_work_budget(fmt::format("radius {}", r_max), "lattice points inside it (at most)", bound,
                       static_cast<double>(max_lattice_points));

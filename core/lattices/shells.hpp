@@ -13,9 +13,9 @@ namespace sphkern {
 inline constexpr double shell_tolerance = 1e-9;
 
 struct Shell {
-    double radius = 0;       // in units of d
+    double radius = 0; // in units of d
     int count = 0;
-    Eigen::Matrix3d moment;  // sum over the shell of r_hat r_hat^T
+    Eigen::Matrix3d moment;                          // sum over the shell of r_hat r_hat^T
     Eigen::Vector3d first = Eigen::Vector3d::Zero(); // sum over the shell of r_hat (zero at a centre of inversion)
 
     // sum (e . r_hat)^2 over the shell: what the pressure gradient along e needs.

@@ -1,8 +1,8 @@
 #include "particles/density_smoothing.hpp"
 
 #include "kernels/kernel_validity.hpp"
-#include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/lane_sums.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/neighbour_grid.hpp"
 #include "particles/engine/pair_pass.hpp"
 #include "support/error.hpp"
@@ -28,7 +28,8 @@ namespace {
 SPHKERN_ENGINE_CLONES void weighted_sums(const double* w_, const double* dw_, const double* q_, const double* m_,
                                          const double* r2_, std::size_t n, double reach2, double& mw, double& mqdw)
 {
-    const UnalignedQuad *w = as_quads(w_), *dw = as_quads(dw_), *q = as_quads(q_), *m = as_quads(m_), *r2 = as_quads(r2_);
+    const UnalignedQuad *w = as_quads(w_), *dw = as_quads(dw_), *q = as_quads(q_), *m = as_quads(m_),
+                        *r2 = as_quads(r2_);
     const Quad reach = {reach2, reach2, reach2, reach2}, zero = {};
     Partial a, b;
     for (std::size_t i = 0; i < n / 4; ++i) {
@@ -92,14 +93,14 @@ constexpr double near_root = 5e-2, near_margin = 1.08;
 // zero), so each sum is the one a search at that h would give, in the same order.
 class DensityPass {
 public:
-    DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing, double self_weight,
-                int threads)
+    DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing,
+                double self_weight, int threads)
         : kernel_(kernel), set_(set), mass_(mass), spacing_(spacing), self_weight_(self_weight), threads_(threads),
           steps_(set.size(), 0)
-    {
-    }
+    {}
 
-    // Newton steps for the particles whose `solving` is set; `step(m, h, rho, drho)` gives the NewtonStep of a particle of mass m.
+    // Newton steps for the particles whose `solving` is set; `step(m, h, rho, drho)` gives the NewtonStep of a particle
+    // of mass m.
     template <class Step>
     PassProgress operator()(std::span<double> h, std::vector<std::uint8_t>& solving, double wanted_allowance,
                             const Step& step)
@@ -108,7 +109,8 @@ public:
         // A periodic box holds a search of at most half its width (with the grid's margin of 1.1):
         // the margin shrinks to fit, down to none, where the box then refuses h itself as before.
         const double widest = set_.box ? set_.box->smallest_width(set_.dimension) / 2 : INFINITY;
-        const double allowance = std::max(1.0, std::min(wanted_allowance, widest / (1.1 * kernel_.support() * h_largest)));
+        const double allowance =
+            std::max(1.0, std::min(wanted_allowance, widest / (1.1 * kernel_.support() * h_largest)));
         const double h_max = allowance * h_largest;
         require_usable_kernel(kernel_, set_.dimension, h_max / spacing_);
         // The grid is kept while every support fits it: the solve moves h by little after its first pass.
@@ -147,7 +149,6 @@ public:
     static constexpr int max_steps = 100; // a particle's Newton steps over all passes
 
 private:
-
     enum class End { solved, beyond, unsettled };
     struct Outcome {
         End end;
@@ -194,8 +195,8 @@ private:
         // W = w(q) / h^D: dW / dh = -(D w + q w') / h^(D+1).
         const double rho = mw / hd, drho = -(dim * mw + mqdw) / (hd * h);
         if (!std::isfinite(rho) || !std::isfinite(drho))
-            fail_non_finite_sum(kernel_, dim, k, fmt::format("particle {} of {}", i, set_.name), fmt::format("h = {:.6g}", h),
-                                {nb.q.data(), nb.count});
+            fail_non_finite_sum(kernel_, dim, k, fmt::format("particle {} of {}", i, set_.name),
+                                fmt::format("h = {:.6g}", h), {nb.q.data(), nb.count});
         return {rho, drho};
     }
 
@@ -216,9 +217,10 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
                                       double mean_volume, int threads, bool by_number, double self_weight)
 {
     if (set.neighbours_only > 0)
-        fail_input(fmt::format("{}: h from the SPH density is solved for every particle; the set has {} neighbours-only "
-                               "particles, expected one particle array",
-                               set.name, set.neighbours_only));
+        fail_input(
+            fmt::format("{}: h from the SPH density is solved for every particle; the set has {} neighbours-only "
+                        "particles, expected one particle array",
+                        set.name, set.neighbours_only));
     const int dim = set.dimension;
     const std::size_t n = set.size();
     // Without masses, or counting by number, every particle has the mean volume's (rho0 = 1).
@@ -239,7 +241,8 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
     double total_mass = 0;
     for (std::size_t i = 0; i < n; ++i) total_mass += mass(i);
     const double mean_density = total_mass / (static_cast<double>(n) * mean_volume);
-    PerParticle h = PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(mass(i), mean_density); }));
+    PerParticle h =
+        PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(mass(i), mean_density); }));
     std::vector<std::uint8_t> solving(n, 1);
     DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), self_weight, threads);
     constexpr double tolerance = 1e-12;
@@ -247,19 +250,22 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
         const double fixed = h_of(m, rho), g = now - fixed;
         if (std::abs(g) <= tolerance * now) return NewtonStep{now, std::abs(g) / now, true};
         const double slope = 1 + fixed / dim * drho / rho, newton = now - g / slope;
-        return NewtonStep{slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed, std::abs(g) / now, false};
+        return NewtonStep{slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed, std::abs(g) / now,
+                          false};
     };
     // The first guess may be far off, a later pass's start is one Newton step from its h: the
     // first pass gathers a wider margin of h (each pass's search costs its margin to the power D).
     for (int pass = 1;; ++pass) {
-        const PassProgress progress = densities(std::span<double>(h.values.data(), n), solving, pass == 1 ? first_allowance : allowance, step);
+        const PassProgress progress =
+            densities(std::span<double>(h.values.data(), n), solving, pass == 1 ? first_allowance : allowance, step);
         spdlog::debug("h from the SPH density: pass {}, largest relative residual {:.3g}, {} particles left", pass,
                       progress.residual, progress.left);
         if (progress.unsettled > 0)
-            fail_input(fmt::format("{}: h from the SPH density did not settle in {} Newton steps for {} particles (the "
-                                   "largest relative residual is still {:.3g}); expected a set whose density the kernel "
-                                   "resolves",
-                                   set.name, DensityPass::max_steps, progress.unsettled, progress.residual));
+            fail_input(
+                fmt::format("{}: h from the SPH density did not settle in {} Newton steps for {} particles (the "
+                            "largest relative residual is still {:.3g}); expected a set whose density the kernel "
+                            "resolves",
+                            set.name, DensityPass::max_steps, progress.unsettled, progress.residual));
         if (progress.left == 0) return h;
     }
 }

@@ -60,17 +60,16 @@ SPHKERN_ENGINE_CLONES void sums_over(const PairArrays& in, double* __restrict to
 void neighbour_sums(Neighbours& nb, std::size_t padded, double uniform_volume, bool with_mass, bool with_z,
                     double* total)
 {
-    const PairArrays in{nb.dx.data(), nb.dy.data(), nb.dz.data(),  nb.inv_r.data(), nb.a.data(),
-                        with_mass ? nb.b.data() : nullptr,           nb.w.data(),     nb.dw.data(),
-                        uniform_volume, padded,       with_z};
+    const PairArrays in{nb.dx.data(),    nb.dy.data(), nb.dz.data(),
+                        nb.inv_r.data(), nb.a.data(),  with_mass ? nb.b.data() : nullptr,
+                        nb.w.data(),     nb.dw.data(), uniform_volume,
+                        padded,          with_z};
     if (uniform_volume > 0) {
         for (std::size_t j = nb.count; j < padded; ++j) nb.w[j] = nb.dw[j] = 0; // no V_j = 0 on the padding
         if (with_mass) sums_over<true, true>(in, total);
         else sums_over<false, true>(in, total);
-    } else if (with_mass)
-        sums_over<true, false>(in, total);
-    else
-        sums_over<false, false>(in, total);
+    } else if (with_mass) sums_over<true, false>(in, total);
+    else sums_over<false, false>(in, total);
 }
 
 } // namespace sphkern

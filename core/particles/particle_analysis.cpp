@@ -16,43 +16,66 @@ namespace sphkern {
 
 namespace {
 
-ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
-{
-    static constexpr double MeasureRecord::*fields[] = {&MeasureRecord::e0,      &MeasureRecord::e0,      &MeasureRecord::eps_gradp,
-                                                        &MeasureRecord::eps_gradp_sum, &MeasureRecord::e1_norm, &MeasureRecord::m1_norm,
-                                                        &MeasureRecord::E_norm};
-    const int threads = m.threads;
-    const std::size_t n = m.size(), measures = std::size(measure_names);
+// The measures' records read a run at a time into a column per measure: each pass of the
+// statistics reads the records once (the passes read each value of a column); a run gives each
+// thread a share of the percentiles' buckets to count, and is at most a quarter of the set, so
+// that the columns take at most 16 bytes a particle (whole blocks: the moments go block by block).
+class RecordColumns {
+public:
+    explicit RecordColumns(const ParticleMeasures& m) : m_(m), columns_(std::size(measure_names))
+    {
+        const std::size_t n = m.size(), quarter = n / 4 / particle_block_size * particle_block_size;
+        run_ =
+            std::max(particle_block_size,
+                     std::min(statistics_detail::buckets * static_cast<std::size_t>(std::max(1, m.threads)), quarter));
+        for (auto& column : columns_) column.resize(std::min(run_, n));
+    }
+
     // Without masses eps_rho is e0: its summary is e0's (measure f's statistics are own(f)'s).
-    const bool eps_rho_is_e0 = m.eps_rho.empty();
-    const auto own = [&](std::size_t f) { return f == 1 && eps_rho_is_e0 ? std::size_t{0} : f; };
-    // Each pass of the statistics reads the records once, a run at a time, into a column per
-    // measure (the passes read each value of a column); a run gives each thread a share of the
-    // percentiles' buckets to count, and is at most a quarter of the set, so that the columns
-    // take at most 16 bytes a particle (whole blocks: the moments go block by block).
-    const std::size_t quarter = n / 4 / particle_block_size * particle_block_size;
-    const std::size_t run = std::max(particle_block_size, std::min(statistics_detail::buckets * static_cast<std::size_t>(std::max(1, threads)), quarter));
-    std::vector<ParticleValues> columns(measures);
-    for (auto& column : columns) column.resize(std::min(run, n));
-    auto each_run = [&](const auto& step) {
-        for (std::size_t begin = 0; begin < n; begin += run) {
-            const std::size_t count = std::min(run, n - begin);
+    std::size_t own(std::size_t f) const { return f == 1 && m_.eps_rho.empty() ? std::size_t{0} : f; }
+
+    // step(f, begin, count, value) for each measure f that is its own, run by run; value(k) is
+    // the k-th record's of the run.
+    template <class Step>
+    void each_run(const Step& step)
+    {
+        static constexpr double MeasureRecord::*fields[] = {&MeasureRecord::e0,        &MeasureRecord::e0,
+                                                            &MeasureRecord::eps_gradp, &MeasureRecord::eps_gradp_sum,
+                                                            &MeasureRecord::e1_norm,   &MeasureRecord::m1_norm,
+                                                            &MeasureRecord::E_norm};
+        const std::size_t n = m_.size();
+        for (std::size_t begin = 0; begin < n; begin += run_) {
+            const std::size_t count = std::min(run_, n - begin);
             ParallelFor pass;
-            pass.run_blocks(count, particle_block_size, threads, [&](std::size_t, std::size_t from, std::size_t to) {
+            pass.run_blocks(count, particle_block_size, m_.threads, [&](std::size_t, std::size_t from, std::size_t to) {
                 for (std::size_t k = from; k < to; ++k) {
-                    const MeasureRecord& r = m.scalars[begin + k];
-                    for (std::size_t f = 0; f < 7; ++f) columns[f][k] = r.*fields[f];
-                    columns[7][k] = r.neighbours;
-                    if (!eps_rho_is_e0) columns[1][k] = m.eps_rho[begin + k];
+                    const MeasureRecord& r = m_.scalars[begin + k];
+                    for (std::size_t f = 0; f < 7; ++f) columns_[f][k] = r.*fields[f];
+                    columns_[7][k] = r.neighbours;
+                    if (!m_.eps_rho.empty()) columns_[1][k] = m_.eps_rho[begin + k];
                 }
             });
-            for (std::size_t f = 0; f < measures; ++f) {
+            for (std::size_t f = 0; f < columns_.size(); ++f) {
                 if (own(f) != f) continue;
-                const double* column = columns[f].data();
+                const double* column = columns_[f].data();
                 step(f, begin, count, [column](std::size_t k) { return column[k]; });
             }
         }
-    };
+    }
+
+private:
+    const ParticleMeasures& m_;
+    std::size_t run_ = 0;
+    std::vector<ParticleValues> columns_;
+};
+
+ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
+{
+    const int threads = m.threads;
+    const std::size_t n = m.size(), measures = std::size(measure_names);
+    RecordColumns records(m);
+    const auto own = [&](std::size_t f) { return records.own(f); };
+    const auto each_run = [&](const auto& step) { records.each_run(step); };
     std::vector<ExactSummary> summaries(measures, ExactSummary(n));
     each_run([&](std::size_t f, std::size_t begin, std::size_t count, const auto& value) {
         summaries[f].add_moments(begin, count, threads, value);
@@ -66,7 +89,9 @@ ParticlePoint summarise_point(const ParticleMeasures& m, std::size_t bins)
         summaries[f].count(count, threads, value);
         if (f < histograms.size()) histograms[f].add_values(count, threads, value);
     });
-    each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) { summaries[f].gather(count, threads, value); });
+    each_run([&](std::size_t f, std::size_t, std::size_t count, const auto& value) {
+        summaries[f].gather(count, threads, value);
+    });
     ParticlePoint point;
     for (std::size_t f = 0; f < measures; ++f)
         point.statistics.emplace_back(measure_names[f], summaries[own(f)].finish());
@@ -107,7 +132,8 @@ void answer_volumes(ParticleAnswer& answer, const ParticleSet& set, const Partic
         fail_input(fmt::format("volume: {} values for {} particles", answer.volumes.size(), set.size()));
     // Every pass over the particles on the request's threads, sums in fixed blocks (the same on any number).
     const auto& volumes = answer.volumes;
-    if (const auto i = first_index_where(volumes.size(), threads, [&](std::size_t i) { return !std::isfinite(volumes[i]) || volumes[i] <= 0; }))
+    if (const auto i = first_index_where(volumes.size(), threads,
+                                         [&](std::size_t i) { return !std::isfinite(volumes[i]) || volumes[i] <= 0; }))
         fail_input(fmt::format("volume of particle {} is {}, expected a positive finite number", *i, volumes[*i]));
     const std::size_t measured = set.measured();
     const double total_volume = parallel_sum(measured, threads, [&](std::size_t i) { return volumes[i]; });
@@ -121,7 +147,8 @@ void answer_volumes(ParticleAnswer& answer, const ParticleSet& set, const Partic
 
 } // namespace
 
-void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set, double rho0)
+void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set,
+                  double rho0)
 {
     require_finite(point, set, rho0);
     point.eta = h.mean / unit;
@@ -150,8 +177,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
 
     std::vector<SmoothingSpec> specs;
     if (const auto& s = request.sweep)
-        for (int i = 0; i <= s->steps; ++i)
-            specs.push_back({s->rule, s->from + (s->to - s->from) * i / s->steps, 0});
+        for (int i = 0; i <= s->steps; ++i) specs.push_back({s->rule, s->from + (s->to - s->from) * i / s->steps, 0});
     else specs.push_back(request.smoothing);
     const int dim = set.dimension;
     const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
@@ -159,23 +185,27 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
         phases.restart();
         auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume, threads);
         phases.lap("h");
-        MeasureInputs inputs{h.view(), answer.volumes.view(), set.mass, answer.rho0, answer.spacing, request.depth, answer.gravity,
-                             request.threads, request.vectors, specs[p].pair};
+        MeasureInputs inputs{h.view(),      answer.volumes.view(), set.mass,        answer.rho0,     answer.spacing,
+                             request.depth, answer.gravity,        request.threads, request.vectors, specs[p].pair};
         auto measures = measure_particles(kernel, set, inputs);
         phases.merge(measures.phases);
         phases.restart();
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.
         if (point.statistics.back().second.min == 0) {
-            const auto i = first_index_where(measures.size(), threads, [&](std::size_t i) { return measures.scalars[i].neighbours == 0; });
+            const auto i = first_index_where(measures.size(), threads,
+                                             [&](std::size_t i) { return measures.scalars[i].neighbours == 0; });
             fail_input(fmt::format("{}: {} has no neighbour inside its support (h = {:.6g}); expected a "
                                    "larger h or a denser set",
                                    set.name, set.particle(*i), h[*i]));
         }
-        finish_point(point, statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; }), unit, R, set, answer.rho0);
+        finish_point(point, statistics_detail::moments(measured, threads, [&](std::size_t i) { return h[i]; }), unit, R,
+                     set, answer.rho0);
         answer.threads = measures.threads;
         phases.lap("statistics");
-        if (specs.size() > 1) spdlog::debug("{}: {} of {} (h/l = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta, point.nh);
+        if (specs.size() > 1)
+            spdlog::debug("{}: {} of {} (h/l = {:.4g}, N_H = {:.4g})", set.name, p + 1, specs.size(), point.eta,
+                          point.nh);
         answer.points.push_back(std::move(point));
         if (specs.size() == 1) answer.h = std::move(h), answer.measures = std::move(measures);
     }

@@ -24,11 +24,11 @@ struct SmoothingSweep {
 struct ParticleRequest {
     SmoothingSpec smoothing;
     std::optional<SmoothingSweep> sweep;
-    std::optional<VolumeModel> volume;       // default: default_volume_model
-    std::vector<double> given_volumes;       // non-empty: these volumes, whatever `volume` says
-    std::optional<Eigen::Vector3d> gravity;  // default: the set's
-    double depth = 1;                        // of eps_gradp_sum, in units of h
-    std::optional<double> rho0;              // of eps_rho where the set has masses
+    std::optional<VolumeModel> volume;      // default: default_volume_model
+    std::vector<double> given_volumes;      // non-empty: these volumes, whatever `volume` says
+    std::optional<Eigen::Vector3d> gravity; // default: the set's
+    double depth = 1;                       // of eps_gradp_sum, in units of h
+    std::optional<double> rho0;             // of eps_rho where the set has masses
     int threads = 0;
     std::size_t histogram_bins = 0;
     bool vectors = true; // keep e1, m1 and E per particle (per-particle outputs); else their magnitudes only
@@ -36,7 +36,7 @@ struct ParticleRequest {
 
 // The statistics of one h (one value of a sweep).
 struct ParticlePoint {
-    double eta = 0, nh = 0;     // h = eta V̄^(1/D) and N_H = c_D (R eta)^D for the mean h
+    double eta = 0, nh = 0; // h = eta V̄^(1/D) and N_H = c_D (R eta)^D for the mean h
     double h_min = 0, h_max = 0;
     double mean_neighbours = 0;
     std::vector<std::pair<std::string, Summary>> statistics; // e0, eps_rho, eps_gradp, ... in a fixed order
@@ -51,9 +51,9 @@ struct ParticleAnswer {
     VolumeModel volume = VolumeModel::uniform;
     double mean_volume = 0, rho0 = 1, spacing = 1;
     Eigen::Vector3d gravity;
-    PerParticle h, volumes;                      // of the single h (h not kept for sweeps)
-    std::optional<ParticleMeasures> measures;    // of the single h
-    std::vector<ParticlePoint> points;           // one, or one per sweep value
+    PerParticle h, volumes;                   // of the single h (h not kept for sweeps)
+    std::optional<ParticleMeasures> measures; // of the single h
+    std::vector<ParticlePoint> points;        // one, or one per sweep value
     int threads = 1;
     PhaseTimes phases; // volumes, h, grid, sums, statistics (a front end adds read and write)
 };
@@ -62,12 +62,14 @@ struct ParticleAnswer {
 ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request);
 
 // The statistics of a point, in this order; the first four have histograms.
-inline constexpr const char* measure_names[] = {"e0", "eps_rho", "eps_gradp", "eps_gradp_sum", "|e1|", "|m1|", "||E||_F", "neighbours"};
+inline constexpr const char* measure_names[] = {"e0",   "eps_rho", "eps_gradp", "eps_gradp_sum",
+                                                "|e1|", "|m1|",    "||E||_F",   "neighbours"};
 inline constexpr std::size_t measures_with_histograms = 4;
 
 // A point's h over the mean spacing, N_H and h range from the statistics of h (`unit` the
 // mean spacing V̄^(1/D)); and one line for statistics that overflow a double (Error(input)),
 // so that no non-finite number is printed.
-void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set, double rho0);
+void finish_point(ParticlePoint& point, const Summary& h, double unit, double support, const ParticleSet& set,
+                  double rho0);
 
 } // namespace sphkern

@@ -2,8 +2,8 @@
 
 #include "kernels/kernel_validity.hpp"
 #include "particles/engine/neighbour_gather.hpp"
-#include "particles/neighbour_sums.hpp"
 #include "particles/engine/pair_pass.hpp"
+#include "particles/neighbour_sums.hpp"
 #include "support/error.hpp"
 #include "support/process/parallel_for.hpp"
 
@@ -13,8 +13,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <optional>
 #include <stdexcept>
@@ -54,7 +54,8 @@ struct PointInputs {
         if (!find_uniform) return {grid.gather(given.values), 0.0};
         const std::span<const double> per_particle = given.values;
         const double v = per_particle.front();
-        const bool uniform = !first_index_where(per_particle.size(), grid.threads(), [&](std::size_t i) { return per_particle[i] != v; });
+        const bool uniform = !first_index_where(per_particle.size(), grid.threads(),
+                                                [&](std::size_t i) { return per_particle[i] != v; });
         return uniform ? PointInputs{{}, v} : PointInputs{grid.gather(per_particle), 0.0};
     }
     PointValues view() const { return {per_point.empty() ? nullptr : per_point.data(), all}; }
@@ -107,7 +108,8 @@ private:
         const char* record = reinterpret_cast<const char*>(&out.scalars[i]);
         __builtin_prefetch(record, 1), __builtin_prefetch(record + sizeof(MeasureRecord) - 1, 1);
         if (!out.eps_rho.empty()) __builtin_prefetch(&out.eps_rho[i], 1);
-        if (!out.e1.empty()) __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
+        if (!out.e1.empty())
+            __builtin_prefetch(&out.e1[i], 1), __builtin_prefetch(&out.m1[i], 1), __builtin_prefetch(&out.E[i], 1);
     }
     std::vector<PointResult> results_;
     std::size_t pairs_ = 0; // the neighbours of the particles flushed
@@ -172,7 +174,8 @@ struct Sweep {
             nb.r[kept] = h_i / h_ij;
             ++kept;
         }
-        for (std::size_t j = kept; j < padded_count(kept); ++j) nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r[j] = 1;
+        for (std::size_t j = kept; j < padded_count(kept); ++j)
+            nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r[j] = 1;
         nb.count = kept;
         return kept;
     }
@@ -215,7 +218,8 @@ struct Sweep {
         if (dim == 2) tensor[2] = tensor[4] = tensor[5] = 0;
         out.E = tensor;
         scalars.E_norm = frobenius_norm(tensor, dim);
-        scalars.e1_norm = std::hypot(out.e1[0], out.e1[1], out.e1[2]), scalars.m1_norm = std::hypot(out.m1[0], out.m1[1], out.m1[2]);
+        scalars.e1_norm = std::hypot(out.e1[0], out.e1[1], out.e1[2]),
+        scalars.m1_norm = std::hypot(out.m1[0], out.m1[1], out.m1[2]);
         const Eigen::Vector3d g = in.gravity.value_or(set.gravity);
         Eigen::Matrix3d T;
         T << tensor[0], tensor[3], tensor[4], tensor[3], tensor[1], tensor[5], tensor[4], tensor[5], tensor[2];
@@ -226,7 +230,6 @@ struct Sweep {
         scalars.neighbours = static_cast<int>(n);
     }
 };
-
 
 // The search reach of every particle's support radius R h, from h in point order (one for all
 // for one h); with the mean pair h, of R (h + h_max) / 2, the widest of its pairs.
@@ -255,9 +258,12 @@ void check_inputs(const ParticleSet& set, const MeasureInputs& in)
     const std::size_t n = set.size();
     if (in.h.size() != n || in.volume.size() != n || (!in.mass.empty() && in.mass.size() != n))
         fail_input(fmt::format("{}: smoothing lengths, volumes or masses missing for some particles", set.name));
-    if (!std::isfinite(in.rho0) || in.rho0 <= 0) fail_input(fmt::format("the reference density {} is not positive", in.rho0));
-    if (!std::isfinite(in.depth) || in.depth < 0) fail_input(fmt::format("the depth {} of eps_gradp_sum is not a non-negative number", in.depth));
-    if (!std::isfinite(in.spacing) || in.spacing <= 0) fail_input(fmt::format("{}: the mean spacing is not positive", set.name));
+    if (!std::isfinite(in.rho0) || in.rho0 <= 0)
+        fail_input(fmt::format("the reference density {} is not positive", in.rho0));
+    if (!std::isfinite(in.depth) || in.depth < 0)
+        fail_input(fmt::format("the depth {} of eps_gradp_sum is not a non-negative number", in.depth));
+    if (!std::isfinite(in.spacing) || in.spacing <= 0)
+        fail_input(fmt::format("{}: the mean spacing is not positive", set.name));
 }
 
 } // namespace
@@ -266,12 +272,12 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
 {
     check_inputs(set, inputs);
     kernel.require_dimension(set.dimension, set.name);
-    const double h_max = inputs.slab           ? inputs.slab->h_max
+    const double h_max = inputs.slab             ? inputs.slab->h_max
                          : inputs.h.is_uniform() ? inputs.h.uniform
                                                  : parallel_reduce(
-                                   set.size(), worker_threads(inputs.threads), 0.0,
-                                   [&](std::size_t i, double& m) { m = std::max(m, inputs.h[i]); },
-                                   [](double& m, double block) { m = std::max(m, block); });
+                                                       set.size(), worker_threads(inputs.threads), 0.0,
+                                                       [&](std::size_t i, double& m) { m = std::max(m, inputs.h[i]); },
+                                                       [](double& m, double block) { m = std::max(m, block); });
     require_usable_kernel(kernel, set.dimension, h_max / inputs.spacing);
     PhaseTimes phases;
     ParticleMeasures out;
@@ -303,7 +309,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     spdlog::debug("{}: {} particles and {} ghosts on {} threads ({} of the particles neighbours only)", set.name,
                   set.size(), grid.points() - set.size(), out.threads, set.neighbours_only);
     auto t0 = Clock::now();
-    const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
+    const std::clock_t c0 = std::clock();                                    // the process's CPU time, every thread
     std::vector<ResultBlock> results(static_cast<std::size_t>(out.threads)); // one per thread
     const double* b = pair_mean ? neighbour_points.data() : sweep.mass.empty() ? nullptr : sweep.mass.data();
     const PairPassInputs pass{sweep.reach.view(), sweep.volume.view().per_point, b, false, set.name + ": the sums"};

@@ -6,8 +6,8 @@
 
 #include "kernels/kernel.hpp"
 #include "particles/engine/neighbour_grid.hpp"
-#include "particles/per_particle.hpp"
 #include "particles/particle_set.hpp"
+#include "particles/per_particle.hpp"
 #include "particles/smoothing_lengths.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/phase_times.hpp"
@@ -29,15 +29,15 @@ struct MeasureSlab {
 
 // Views of the caller's arrays (nothing per particle is copied).
 struct MeasureInputs {
-    PerParticleView h;              // sphkern's h of every particle (support R h)
-    PerParticleView volume;         // V_j
-    std::span<const double> mass;   // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
-    double rho0 = 1;            // the reference density of eps_rho
-    double spacing = 1;         // d of k = h / d, the argument of kernels that depend on k
-    double depth = 1;           // of the sum form, in units of h
-    std::optional<Eigen::Vector3d> gravity; // the unit g of eps_gradp; none: the set's
-    int threads = 0;            // 0: every core
-    bool vectors = true;        // keep e1, m1 and E per particle (else only their magnitudes)
+    PerParticleView h;                       // sphkern's h of every particle (support R h)
+    PerParticleView volume;                  // V_j
+    std::span<const double> mass;            // m_j; empty: m_j = rho0 V_j, and eps_rho = e0
+    double rho0 = 1;                         // the reference density of eps_rho
+    double spacing = 1;                      // d of k = h / d, the argument of kernels that depend on k
+    double depth = 1;                        // of the sum form, in units of h
+    std::optional<Eigen::Vector3d> gravity;  // the unit g of eps_gradp; none: the set's
+    int threads = 0;                         // 0: every core
+    bool vectors = true;                     // keep e1, m1 and E per particle (else only their magnitudes)
     PairSmoothing pair = PairSmoothing::own; // the mean: W(r_ij, (h_i + h_j) / 2) and its gradient
     const MeasureSlab* slab = nullptr;       // a slab: only its own rows' particles measured
 };
@@ -51,7 +51,7 @@ struct MeasureRecord {
     // The smallest eigenvalue of I + E, the first-order correction matrix sum_j V_j r_ij ⊗ ∇_i W_ij:
     // 1 inside a fluid, about 0.5 on a free surface (Marrone et al. 2010 call <= 0.75 near one).
     double lambda_min;
-    int neighbours;                  // j != i inside the support
+    int neighbours; // j != i inside the support
 };
 
 // Every array is written by the threads of the sums (first touch), one value per measured
@@ -61,22 +61,23 @@ struct MeasureRecord {
 // the tensor (120 bytes more) are kept where a front end asks for them (MeasureInputs::vectors).
 struct ParticleMeasures {
     FirstTouchVector<MeasureRecord> scalars;
-    FirstTouchVector<double> eps_rho;                  // empty without masses: then eps_rho = e0
-    FirstTouchVector<std::array<double, 3>> e1, m1;    // empty unless asked for
-    FirstTouchVector<std::array<double, 6>> E;         // xx, yy, zz, xy, xz, yz; empty unless asked for
-    std::size_t pairs = 0;                // sum of the neighbour counts
+    FirstTouchVector<double> eps_rho;               // empty without masses: then eps_rho = e0
+    FirstTouchVector<std::array<double, 3>> e1, m1; // empty unless asked for
+    FirstTouchVector<std::array<double, 6>> E;      // xx, yy, zz, xy, xz, yz; empty unless asked for
+    std::size_t pairs = 0;                          // sum of the neighbour counts
     int threads = 1;
-    double seconds = 0;                   // the sums, without the neighbour grid
-    PhaseTimes phases;                    // grid and sums
-    double cpu_seconds = 0;               // the same, CPU time of all threads (a loaded machine's measure)
+    double seconds = 0;     // the sums, without the neighbour grid
+    PhaseTimes phases;      // grid and sums
+    double cpu_seconds = 0; // the same, CPU time of all threads (a loaded machine's measure)
     std::size_t size() const { return scalars.size(); }
     double eps_rho_of(std::size_t i) const { return eps_rho.empty() ? scalars[i].e0 : eps_rho[i]; }
 };
 
 // Every particle's measures by direct sums over its neighbours (periodic images by the
 // minimum image). With the mean pair h, j is a neighbour of i where r_ij is inside the pair's
-// support R (h_i + h_j) / 2, and the sums stay in units of h_i (the results' scale). Independent of the thread count. Throws Error(input) for two particles at
-// one position (naming both ids) and a non-finite kernel value (the kernel's fault code).
+// support R (h_i + h_j) / 2, and the sums stay in units of h_i (the results' scale). Independent of the thread count.
+// Throws Error(input) for two particles at one position (naming both ids) and a non-finite kernel value (the kernel's
+// fault code).
 ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs);
 
 // ||E||_F of the stored components.

@@ -42,9 +42,10 @@ void check_positive(const ParticleValues& values, const ParticleSet& set, const 
     if (values.empty()) return;
     if (values.size() != set.size())
         fail_input(fmt::format("{}: {} has {} values for {} particles", set.name, field, values.size(), set.size()));
-    if (const auto i = first_index_where(values.size(), threads, [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
-        fail_input(fmt::format("{}: {} of {} is {}, expected a positive finite number", set.name, field, set.particle(*i),
-                               values[*i]));
+    if (const auto i = first_index_where(values.size(), threads,
+                                         [&](std::size_t i) { return !std::isfinite(values[i]) || values[i] <= 0; }))
+        fail_input(fmt::format("{}: {} of {} is {}, expected a positive finite number", set.name, field,
+                               set.particle(*i), values[*i]));
 }
 
 } // namespace

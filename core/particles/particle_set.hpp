@@ -26,15 +26,15 @@ struct PeriodicBox {
 };
 
 struct ParticleSet {
-    std::string name;  // the file, lattice or "poisson", for messages
+    std::string name; // the file, lattice or "poisson", for messages
     // Other files the reader opened through the file (HDF5 external links, virtual datasets):
     // inputs too, which no output may replace.
     std::vector<std::string> linked_files;
     int dimension = 3;
-    ParticleValues x, y, z;              // z is 0 in 2D; first touched by the threads that fill them
-    ParticleValues h, mass, density;      // each empty or one value per particle
+    ParticleValues x, y, z;          // z is 0 in 2D; first touched by the threads that fill them
+    ParticleValues h, mass, density; // each empty or one value per particle
     std::optional<PeriodicBox> box;
-    double support_per_h = 0;   // a file's own convention (SWIFT's kernel gamma), 0 if unknown
+    double support_per_h = 0; // a file's own convention (SWIFT's kernel gamma), 0 if unknown
     // A file with no h whose code's support is this many particle radii, a radius the file does
     // not hold (SPlisHSPlasH: 4); 0 for others. Without a radius such a set needs --h-over-l or --nh.
     double support_per_radius = 0;
@@ -44,7 +44,7 @@ struct ParticleSet {
     // The simulation time the file's header gives (SWIFT and GADGET /Header Time, PySPH's
     // solver_data t, GADGET's binary header, Phantom's time); none for other sets.
     std::optional<double> time;
-    double spacing = 0;         // a lattice's nearest-neighbour distance d, 0 for other sets
+    double spacing = 0;                                  // a lattice's nearest-neighbour distance d, 0 for other sets
     Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -1); // the lattice's, else -y (2D) or -z (3D)
 
     // The last this many particles are neighbours only (a PySPH file's other arrays: walls and

@@ -77,7 +77,8 @@ Percentiles::Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, 
         ranks_.push_back(lo), ranks_.push_back(std::min(lo + 1, n - 1));
     }
     for (std::size_t rank : ranks_) {
-        const auto b = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), rank) - first_.begin() - 1);
+        const auto b =
+            static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), rank) - first_.begin() - 1);
         if (slot_[b] < 0) slot_[b] = static_cast<std::int8_t>(bucket_of_.size()), bucket_of_.push_back(b);
     }
 }
@@ -88,17 +89,19 @@ void Percentiles::finish(const std::vector<std::vector<std::vector<std::uint64_t
     // is one value, in any order of gathering.
     std::vector<double> at(ranks_.size());
     ParallelFor select;
-    select.run(ranks_.size(), std::min(threads_, static_cast<int>(ranks_.size())), [&](int, std::size_t begin, std::size_t end) {
-        for (std::size_t r = begin; r < end; ++r) {
-            const auto b = static_cast<std::size_t>(std::upper_bound(first_.begin(), first_.end(), ranks_[r]) - first_.begin() - 1);
-            const auto slot = static_cast<std::size_t>(slot_[b]);
-            std::vector<std::uint64_t> keys;
-            keys.reserve(first_[b + 1] - first_[b]);
-            for (const auto& part : parts)
-                if (slot < part.size()) keys.insert(keys.end(), part[slot].begin(), part[slot].end());
-            at[r] = from_key(select_key(std::move(keys), ranks_[r] - first_[b], of_.lo, of_.shift));
-        }
-    });
+    select.run(ranks_.size(), std::min(threads_, static_cast<int>(ranks_.size())),
+               [&](int, std::size_t begin, std::size_t end) {
+                   for (std::size_t r = begin; r < end; ++r) {
+                       const auto b = static_cast<std::size_t>(
+                           std::upper_bound(first_.begin(), first_.end(), ranks_[r]) - first_.begin() - 1);
+                       const auto slot = static_cast<std::size_t>(slot_[b]);
+                       std::vector<std::uint64_t> keys;
+                       keys.reserve(first_[b + 1] - first_[b]);
+                       for (const auto& part : parts)
+                           if (slot < part.size()) keys.insert(keys.end(), part[slot].begin(), part[slot].end());
+                       at[r] = from_key(select_key(std::move(keys), ranks_[r] - first_[b], of_.lo, of_.shift));
+                   }
+               });
     // numpy's linear interpolation between the order statistics at floor(rank) and the one above.
     double* out[] = {&s.p1, &s.p50, &s.p99};
     for (std::size_t k = 0; k < 3; ++k) {

@@ -52,7 +52,8 @@ struct KeyBuckets {
 // what) and a gather of the keys in the buckets of the ranks they need.
 class Percentiles {
 public:
-    Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, std::size_t n, const KeyBuckets& of, int threads);
+    Percentiles(const std::vector<std::vector<std::uint32_t>>& counts, std::size_t n, const KeyBuckets& of,
+                int threads);
     // The slot of a key's bucket among those to gather, -1 for none.
     int slot(std::uint64_t key) const { return slot_[of_.of(key)]; }
     std::size_t slots() const { return bucket_of_.size(); }

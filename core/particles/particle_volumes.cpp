@@ -35,13 +35,15 @@ PerParticle particle_volumes(const ParticleSet& set, VolumeModel model, int thre
     switch (model) {
     case VolumeModel::uniform:
         if (!set.box)
-            fail_input(fmt::format("{}: uniform volumes need a periodic box; expected a box, or each particle's volume (m / rho)",
-                                   set.name));
+            fail_input(fmt::format(
+                "{}: uniform volumes need a periodic box; expected a box, or each particle's volume (m / rho)",
+                set.name));
         return PerParticle::same(set.size(), mean_volume(set));
     case VolumeModel::file:
         if (set.mass.empty() || set.density.empty())
-            fail_input(fmt::format("{}: the file's volumes (m / rho) need masses and densities in the file; expected {}", set.name,
-                                   set.mass.empty() ? "masses" : "densities"));
+            fail_input(
+                fmt::format("{}: the file's volumes (m / rho) need masses and densities in the file; expected {}",
+                            set.name, set.mass.empty() ? "masses" : "densities"));
         return fill([&](std::size_t i) { return set.mass[i] / set.density[i]; });
     case VolumeModel::voronoi: {
         if (!set.box) fail_input(fmt::format("{}: Voronoi volumes need a periodic box", set.name));

@@ -19,11 +19,12 @@ enum class PairSmoothing { own, mean };
 
 struct SmoothingSpec {
     SmoothingRule rule = SmoothingRule::eta;
-    double value = 1.2;        // eta, N_H, k or the density rule's coefficient; unused for `file`
-    double support_per_h = 0;  // `file`: the support radius is this times the stored h; 0: the file's own
+    double value = 1.2;       // eta, N_H, k or the density rule's coefficient; unused for `file`
+    double support_per_h = 0; // `file`: the support radius is this times the stored h; 0: the file's own
     PairSmoothing pair = PairSmoothing::own;
-    bool by_number = false;    // `density`: the solve counts each neighbour once, not its mass (SWIFT, GADGET-2)
-    double self_weight = 1;    // `density`: the weight of a particle's own term in its density (GADGET-4's bias correction)
+    bool by_number = false; // `density`: the solve counts each neighbour once, not its mass (SWIFT, GADGET-2)
+    double self_weight =
+        1; // `density`: the weight of a particle's own term in its density (GADGET-4's bias correction)
 };
 
 // N_H = c_D (R eta)^D, the mean number of neighbours inside the support at uniform density
@@ -35,6 +36,6 @@ double eta_for_neighbour_number(double nh, double support, int dimension);
 // The spec as checked against the set by requests/smoothing_request.hpp (a k without a
 // lattice, a file h without a convention: std::logic_error).
 PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
-                                 double mean_volume, int threads = 1);
+                              double mean_volume, int threads = 1);
 
 } // namespace sphkern

@@ -33,7 +33,8 @@ ParticleSet tiled_set(const ParticleSet& set, const std::array<int, 3>& tiles, i
             const double along[3] = {static_cast<double>(c % t0), static_cast<double>(c / t0 % t1),
                                      dim == 3 ? static_cast<double>(c / (t0 * t1)) : 0.0};
             const Eigen::Vector3d shift = edges.col(0) * along[0] + edges.col(1) * along[1] + edges.col(2) * along[2];
-            out.x[k] = set.x[i] + shift.x(), out.y[k] = set.y[i] + shift.y(), out.z[k] = dim == 3 ? set.z[i] + shift.z() : 0.0;
+            out.x[k] = set.x[i] + shift.x(), out.y[k] = set.y[i] + shift.y(),
+            out.z[k] = dim == 3 ? set.z[i] + shift.z() : 0.0;
             if (!set.h.empty()) out.h[k] = set.h[i];
             if (!set.mass.empty()) out.mass[k] = set.mass[i];
             if (!set.density.empty()) out.density[k] = set.density[i];

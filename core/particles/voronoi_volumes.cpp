@@ -46,9 +46,10 @@ std::vector<double> voronoi_volumes(const ParticleSet& set)
             if ((++done & 4095) == 0) throw_if_interrupted();
             const int id = loop.pid();
             if (!container.compute_cell(cell, loop))
-                fail_input(fmt::format("{}: the Voronoi cell of particle {} cannot be computed (another particle at its "
-                                       "position?)",
-                                       set.name, id));
+                fail_input(
+                    fmt::format("{}: the Voronoi cell of particle {} cannot be computed (another particle at its "
+                                "position?)",
+                                set.name, id));
             cells[static_cast<std::size_t>(id)] = dim == 2 ? cell.volume() / thickness : cell.volume();
         } while (loop.inc());
     for (std::size_t i = 0; i < n; ++i)

@@ -41,7 +41,8 @@ Examples
 ['ok']
 )doc";
 
-inline constexpr const char* spectrum = R"doc(The Fourier transform of a kernel against kappa h, as `sphkern spectrum --json`.
+inline constexpr const char* spectrum =
+    R"doc(The Fourier transform of a kernel against kappa h, as `sphkern spectrum --json`.
 
 Parameters
 ----------
@@ -72,7 +73,8 @@ Examples
 ((101, 2), 'quadrature')
 )doc";
 
-inline constexpr const char* block = R"doc(Direct SPH sums over a finite block of lattice cells, as `sphkern block --json`.
+inline constexpr const char* block =
+    R"doc(Direct SPH sums over a finite block of lattice cells, as `sphkern block --json`.
 
 Parameters
 ----------
@@ -113,7 +115,8 @@ Examples
 (216, (216, 3), 5)
 )doc";
 
-inline constexpr const char* pairing = R"doc(Linear stability against the motion of a disturbed lattice, k by k, as `sphkern pairing --json`.
+inline constexpr const char* pairing =
+    R"doc(Linear stability against the motion of a disturbed lattice, k by k, as `sphkern pairing --json`.
 
 Give k (or code and value), or kmin and kmax.
 

@@ -46,7 +46,7 @@ std::vector<std::string> texts_of(const py::object& given, const char* what, con
 }
 
 py::list check_command(const OptionalNames& kernel, bool all, bool strict, double timeout, const OptionalNames& plugin,
-               const OptionalParams& params)
+                       const OptionalParams& params)
 {
     CheckRequest request;
     request.names = texts_of(kernel, "kernel", "a kernel name or file, or a sequence of them");
@@ -77,7 +77,7 @@ py::list check_command(const OptionalNames& kernel, bool all, bool strict, doubl
 }
 
 py::dict spectrum_command(const std::string& kernel_spec, int dim, double k, double kh_max, int points,
-                  const OptionalParams& params)
+                          const OptionalParams& params)
 {
     const SpectrumRequest request{dim, k, kh_max, points};
     const SpectrumSources sources{value_named(FrontEnd::python, "dim"), value_named(FrontEnd::python, "k"),
@@ -92,7 +92,8 @@ py::dict spectrum_command(const std::string& kernel_spec, int dim, double k, dou
     py::dict out = to_python(spectrum_document(request, result, kernel));
     py::array_t<double> curve({result.curve.size(), std::size_t{2}});
     auto view = curve.mutable_unchecked<2>();
-    for (std::size_t i = 0; i < result.curve.size(); ++i) view(i, 0) = result.curve[i].first, view(i, 1) = result.curve[i].second;
+    for (std::size_t i = 0; i < result.curve.size(); ++i)
+        view(i, 0) = result.curve[i].first, view(i, 1) = result.curve[i].second;
     out["curve"] = curve;
     return out;
 }
@@ -105,9 +106,10 @@ py::array_t<T> column(const HugeArray<T>& values)
     return out;
 }
 
-py::dict block_command(const std::string& kernel_spec, const std::string& lattice_spec, double k, const IntSequence& size,
-               bool periodic, const std::string& form, int threads, const NameOrNumber& a_p,
-               const std::optional<std::string>& vtk, const std::optional<std::string>& csv, const OptionalParams& params)
+py::dict block_command(const std::string& kernel_spec, const std::string& lattice_spec, double k,
+                       const IntSequence& size, bool periodic, const std::string& form, int threads,
+                       const NameOrNumber& a_p, const std::optional<std::string>& vtk,
+                       const std::optional<std::string>& csv, const OptionalParams& params)
 {
     std::vector<OutputTarget> outputs;
     if (vtk) outputs.push_back({"vtk", *vtk});
@@ -156,11 +158,13 @@ py::dict block_command(const std::string& kernel_spec, const std::string& lattic
 }
 
 py::dict pairing_command(const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k,
-                 const std::optional<std::string>& code, std::optional<double> value, std::optional<double> kmin,
-                 std::optional<double> kmax, int samples, double noise, double duration, double damping, double dt,
-                 double gamma, double horizon, unsigned long long seed, int threads, const OptionalParams& params)
+                         const std::optional<std::string>& code, std::optional<double> value,
+                         std::optional<double> kmin, std::optional<double> kmax, int samples, double noise,
+                         double duration, double damping, double dt, double gamma, double horizon,
+                         unsigned long long seed, int threads, const OptionalParams& params)
 {
-    const CodeSettingSources code_sources{value_named(FrontEnd::python, "code"), value_named(FrontEnd::python, "value")};
+    const CodeSettingSources code_sources{value_named(FrontEnd::python, "code"),
+                                          value_named(FrontEnd::python, "value")};
     const auto setting = code_setting_of(code, value, code_sources);
     const bool range = kmin || kmax;
     if ((k || setting) == range) fail_input("give k (or code and value), or kmin and kmax");
@@ -195,9 +199,9 @@ void bind_kernel_commands(py::module_& m)
           py::arg("strict") = false, py::arg("timeout") = 60.0, py::arg("plugin") = py::none(),
           py::arg("params") = py::none(), doc::check, guard);
     const SpectrumRequest spectrum_defaults;
-    m.def("spectrum", &spectrum_command, py::arg("kernel"), py::arg("dim"), py::kw_only(), py::arg("k") = spectrum_defaults.k,
-          py::arg("max") = spectrum_defaults.kh_max, py::arg("points") = spectrum_defaults.points,
-          py::arg("params") = py::none(), doc::spectrum, guard);
+    m.def("spectrum", &spectrum_command, py::arg("kernel"), py::arg("dim"), py::kw_only(),
+          py::arg("k") = spectrum_defaults.k, py::arg("max") = spectrum_defaults.kh_max,
+          py::arg("points") = spectrum_defaults.points, py::arg("params") = py::none(), doc::spectrum, guard);
     m.def("block", &block_command, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::arg("size"), py::kw_only(),
           py::arg("periodic") = false, py::arg("form") = "sum", py::arg("threads") = 0, py::arg("a_p") = "voronoi",
           py::arg("vtk") = py::none(), py::arg("csv") = py::none(), py::arg("params") = py::none(), doc::block, guard);

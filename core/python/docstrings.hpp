@@ -7,7 +7,8 @@
 
 namespace sphkern::doc {
 
-inline constexpr const char* module = R"doc(sphkern: accuracy of SPH smoothing kernels on particle lattices and any particle set.
+inline constexpr const char* module =
+    R"doc(sphkern: accuracy of SPH smoothing kernels on particle lattices and any particle set.
 
 Every function returns what the command line's --json prints, as Python objects, with
 numpy arrays where the input is an array. Lengths on a lattice are in units of its
@@ -142,7 +143,8 @@ Examples
 True
 )doc";
 
-inline constexpr const char* assess = R"doc(One verdict on a setting, k or an SPH code's own, on a lattice or a particle file.
+inline constexpr const char* assess =
+    R"doc(One verdict on a setting, k or an SPH code's own, on a lattice or a particle file.
 
 As `sphkern assess`: the errors at every site against condition (22) with the margin, the
 linear verdict for fixed and adaptive h, the recommended setting of a window of k, and one
@@ -288,7 +290,8 @@ Examples
 [12, 6]
 )doc";
 
-inline constexpr const char* surface = R"doc(The errors layer by layer below a free surface, as `sphkern surface --json`.
+inline constexpr const char* surface =
+    R"doc(The errors layer by layer below a free surface, as `sphkern surface --json`.
 
 Parameters
 ----------
@@ -509,7 +512,8 @@ Examples
 (True, 'alpha')
 )doc";
 
-inline constexpr const char* kernel_class = R"doc(A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q = r / h.
+inline constexpr const char* kernel_class =
+    R"doc(A kernel's functions h^D W and h^(D+1) dW/dr, vectorised over q = r / h.
 
 Made by sphkern.kernel(name).
 )doc";
@@ -542,7 +546,8 @@ Examples
 array([0.31830989, 0.07957747, 0.        ])
 )doc";
 
-inline const std::string kernel_dw = std::string("The kernel's derivative h^(D+1) dW/dr at q in D dimensions.\n") + q_dim_k +
+inline const std::string kernel_dw = std::string("The kernel's derivative h^(D+1) dW/dr at q in D dimensions.\n") +
+                                     q_dim_k +
                                      R"doc(Returns
 -------
 numpy.ndarray
@@ -575,7 +580,8 @@ Examples
 ('wendland_c2', 2.0)
 )doc";
 
-inline constexpr const char* particles = R"doc(The consistency errors of a kernel on any particle set, as `sphkern particles --json`.
+inline constexpr const char* particles =
+    R"doc(The consistency errors of a kernel on any particle set, as `sphkern particles --json`.
 
 Positions are copied once; the sums run without the GIL. With masses, eps_rho is
 sum_j m_j W_ij / rho0 - 1; without, it equals e0 = sum_j V_j W_ij - 1 (share/docs/method.md,

@@ -10,11 +10,13 @@ namespace {
 
 // The classes, made once when the module is imported and kept for the process's life.
 struct ErrorClasses {
-    PyObject* error = nullptr;        // Error(Exception): the base of them all
-    PyObject* bad_value = nullptr;    // BadValue(Error, ValueError): a value out of range, of the wrong kind, not fitting
-    PyObject* unknown_name = nullptr; // UnknownName(BadValue, LookupError): a kernel, lattice, study, code ... that is not known
-    PyObject* file_error = nullptr;   // FileError(BadValue, FileNotFoundError): an input file that is not there
-    PyObject* plugin_error = nullptr; // PluginError(Error, RuntimeError): a plugin that cannot be loaded, validated or run
+    PyObject* error = nullptr;     // Error(Exception): the base of them all
+    PyObject* bad_value = nullptr; // BadValue(Error, ValueError): a value out of range, of the wrong kind, not fitting
+    PyObject* unknown_name =
+        nullptr; // UnknownName(BadValue, LookupError): a kernel, lattice, study, code ... that is not known
+    PyObject* file_error = nullptr; // FileError(BadValue, FileNotFoundError): an input file that is not there
+    PyObject* plugin_error =
+        nullptr; // PluginError(Error, RuntimeError): a plugin that cannot be loaded, validated or run
     PyObject* output_error = nullptr; // OutputError(Error, OSError): results that cannot be written, or exist
     PyObject* check_failed = nullptr; // CheckFailed(Error): a kernel check failed (check)
 };
@@ -33,7 +35,8 @@ PyObject* make_class(py::module_& m, const char* name, std::initializer_list<PyO
     py::dict body;
     body["__doc__"] = doc;
     body["__module__"] = "sphkern";
-    py::object cls = py::reinterpret_borrow<py::object>(reinterpret_cast<PyObject*>(&PyType_Type))(name, base_tuple, body);
+    py::object cls =
+        py::reinterpret_borrow<py::object>(reinterpret_cast<PyObject*>(&PyType_Type))(name, base_tuple, body);
     m.attr(name) = cls;
     return cls.release().ptr(); // kept: the translator uses it for the process's life
 }

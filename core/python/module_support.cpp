@@ -82,8 +82,9 @@ ParticleSet load_particle_file(const std::string& path, const std::optional<std:
     if (box)
         for (double side : *box) box_text += (box_text.empty() ? "" : ",") + fmt::format("{}", side);
     if (box && box_text.empty()) box_text = ","; // an empty sequence: refused as a list without numbers
-    const ParticleSource source = particle_source_of(
-        {path, "", box_text, array.value_or(""), "", 0, 1, 0, dim.value_or(0), particle_radius}, source_sources(FrontEnd::python));
+    const ParticleSource source =
+        particle_source_of({path, "", box_text, array.value_or(""), "", 0, 1, 0, dim.value_or(0), particle_radius},
+                           source_sources(FrontEnd::python));
     if (source.kind != SourceKind::file)
         fail_input(fmt::format("path: \"{}\" is a lattice or poisson source; expected a particle file", path));
     return load_source(source, source_sources(FrontEnd::python), 0);

@@ -14,8 +14,8 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <vector>
 #include <string>
+#include <vector>
 
 namespace sphkern {
 

@@ -2,15 +2,15 @@
 // (into the engine's own layout); the per-particle results come back as numpy arrays.
 #include "particles_binding.hpp"
 #include "docstrings.hpp"
+#include "module_support.hpp"
 #include "python_arrays.hpp"
 #include "python_types.hpp"
-#include "module_support.hpp"
 
 #include "codes/code_table.hpp"
+#include "particles/particle_set.hpp"
 #include "requests/assess_particles.hpp"
 #include "requests/assess_sweep.hpp"
 #include "requests/particles_report.hpp"
-#include "particles/particle_set.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/particles_series.hpp"
 #include "study/series_figure.hpp"
@@ -96,8 +96,9 @@ struct GivenPerParticle {
 };
 
 // The arguments as the request takes them.
-ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const GivenPerParticle& given, const py::object& h_over_l,
-                               const py::object& nh, const py::object& volume, const py::object& gravity)
+ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const GivenPerParticle& given,
+                               const py::object& h_over_l, const py::object& nh, const py::object& volume,
+                               const py::object& gravity)
 {
     if (!given.h.is_none() + !h_over_l.is_none() + !nh.is_none() > 1) fail_input("give one of h, h_over_l and nh");
     if (!given.densities.is_none() && given.masses.is_none())
@@ -159,16 +160,19 @@ py::array_t<double> tensors(std::span<const std::array<double, 6>> E, int dim)
 
 // neighbours_by and bias_correction: what the code's density solve counts and the bias it
 // subtracts, given with code and value (the command line's --neighbours-by, --bias-correction).
-void set_density_solve(ParticleArguments& arguments, const std::optional<std::string>& neighbours_by, bool bias_correction)
+void set_density_solve(ParticleArguments& arguments, const std::optional<std::string>& neighbours_by,
+                       bool bias_correction)
 {
     if (neighbours_by) {
-        if (!arguments.code) fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
+        if (!arguments.code)
+            fail_input("neighbours_by: what a code's density solve counts; expected code and value too");
         if (*neighbours_by != "number" && *neighbours_by != "mass")
             fail_input(fmt::format("neighbours_by: \"{}\", expected \"number\" or \"mass\"", *neighbours_by));
         arguments.code->counts = *neighbours_by == "number" ? NeighbourCount::number : NeighbourCount::mass;
     }
     if (bias_correction) {
-        if (!arguments.code) fail_input("bias_correction: the code's correction of its density solve; expected code and value too");
+        if (!arguments.code)
+            fail_input("bias_correction: the code's correction of its density solve; expected code and value too");
         arguments.code->bias_correction = true;
     }
 }
@@ -198,10 +202,11 @@ std::optional<std::array<double, 2>> range_of(const py::object& range, const cha
 }
 
 // With `snapshot`, its particles and statistics too (a series' figure).
-py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python, SeriesSnapshot* snapshot = nullptr)
+py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython to_python,
+                 SeriesSnapshot* snapshot = nullptr)
 {
-    ParticleArguments arguments = arguments_of(set, kernel, {g.h, g.support_per_h, g.masses, g.densities}, g.h_over_l,
-                                               g.nh, g.volume, g.gravity);
+    ParticleArguments arguments =
+        arguments_of(set, kernel, {g.h, g.support_per_h, g.masses, g.densities}, g.h_over_l, g.nh, g.volume, g.gravity);
     // A code alone: the h given, as that code stores it.
     const auto code_value = number_of(g.value, "value");
     if (g.code && !code_value) {
@@ -213,16 +218,20 @@ py::dict measure(const Kernel& kernel, ParticleSet set, const Given& g, ToPython
     arguments.rho0 = number_of(g.rho0, "rho0");
     arguments.depth = g.depth;
     arguments.threads = g.threads;
-    arguments.eta_range = range_of(g.h_over_l_range, "h_over_l_range"), arguments.nh_range = range_of(g.nh_range, "nh_range");
+    arguments.eta_range = range_of(g.h_over_l_range, "h_over_l_range"),
+    arguments.nh_range = range_of(g.nh_range, "nh_range");
     arguments.steps = g.steps, arguments.histogram = g.histogram;
     if (arguments.eta_range || arguments.nh_range) arguments.per_particle_files = false; // a sweep returns no arrays
     ParticleAnswer answer;
     {
         py::gil_scoped_release unlocked;
         validate_particle_set(set);
-        answer = analyse_particles(kernel, set, particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
+        answer = analyse_particles(kernel, set,
+                                   particle_request(arguments, kernel, set, particle_sources(FrontEnd::python)));
     }
-    if (snapshot) snapshot->file = set.name, snapshot->time = set.time, snapshot->particles = answer.particles, snapshot->point = answer.points.front();
+    if (snapshot)
+        snapshot->file = set.name, snapshot->time = set.time, snapshot->particles = answer.particles,
+        snapshot->point = answer.points.front();
     py::dict out = to_python(particle_answer_json(kernel, set, answer, arguments));
     if (!answer.measures) return out; // a sweep: its points, no per-particle arrays
     const auto& m = *answer.measures;
@@ -258,7 +267,10 @@ bool is_paths(const py::object& positions)
     return py::len(items) > 0 && std::all_of(items.begin(), items.end(), path);
 }
 
-std::string path_of(const py::object& p) { return py::str(py::module_::import("os").attr("fspath")(p)).cast<std::string>(); }
+std::string path_of(const py::object& p)
+{
+    return py::str(py::module_::import("os").attr("fspath")(p)).cast<std::string>();
+}
 
 // A particle file as `particles FILE` reads it, `box` as --box.
 ParticleSet read_file(const std::string& path, const py::object& box)
@@ -277,15 +289,18 @@ ParticleSet read_file(const std::string& path, const py::object& box)
 
 py::object assess_particle_file(const Kernel& kernel, const std::string& path, const FileAssess& f, ToPython to_python)
 {
-    if (!f.code) fail_input("on a particle file a code's setting is assessed; expected code (and value, or none for the file's own h)");
+    if (!f.code)
+        fail_input(
+            "on a particle file a code's setting is assessed; expected code (and value, or none for the file's own h)");
     const CodeProfile& profile = code_profile(*f.code, ValueSource::argument("code"));
     for (const auto& [parameter, range] : f.ranges)
         if (parameter != profile.parameter)
-            fail_input(fmt::format("{}_range: sweeps the {} of {}; expected code naming it, or {}_range", parameter, parameter,
-                                   f.code == profile.name ? "another code" : *f.code, profile.parameter));
+            fail_input(fmt::format("{}_range: sweeps the {} of {}; expected code naming it, or {}_range", parameter,
+                                   parameter, f.code == profile.name ? "another code" : *f.code, profile.parameter));
     const auto range = f.ranges.find(profile.parameter);
     const bool sweep = range != f.ranges.end();
-    if (sweep && f.value) fail_input(fmt::format("{}_range: sweeps the parameter; expected no value beside it", profile.parameter));
+    if (sweep && f.value)
+        fail_input(fmt::format("{}_range: sweeps the parameter; expected no value beside it", profile.parameter));
     if (sweep && range->second.size() != 2)
         fail_input(fmt::format("{}_range: expected two numbers, [A, B]", profile.parameter));
     check_epsilon(f.epsilon, ValueSource::argument("epsilon"));
@@ -302,7 +317,8 @@ py::object assess_particle_file(const Kernel& kernel, const std::string& path, c
                                                               range->second[1], f.steps,
                                                               ValueSource::argument(profile.parameter + "_range"),
                                                               ValueSource::argument("steps")))
-                         : particle_assess_document(kernel, set, given, assess_particles(kernel, set, given, sources, f.epsilon));
+                         : particle_assess_document(kernel, set, given,
+                                                    assess_particles(kernel, set, given, sources, f.epsilon));
     }
     return to_python(document);
 }
@@ -310,13 +326,14 @@ py::object assess_particle_file(const Kernel& kernel, const std::string& path, c
 // A run's files, each read and measured as the command line does, in the order of the times
 // in their headers (the order given where one has none). With keep_going a snapshot that fails
 // on its input is skipped with a RuntimeWarning naming it; with plot the series' figure is drawn.
-py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, const OptionalSequence& box, const Given& given,
-                        bool keep_going, const std::optional<std::string>& plot, ToPython to_python)
+py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, const OptionalSequence& box,
+                        const Given& given, bool keep_going, const std::optional<std::string>& plot, ToPython to_python)
 {
     if (plot) {
         series_figure_format(*plot, "plot");
         if (!given.h_over_l_range.is_none() || !given.nh_range.is_none())
-            throw Error(ExitCode::usage, "plot: a series' figure is of one setting; expected no h_over_l_range or nh_range");
+            throw Error(ExitCode::usage,
+                        "plot: a series' figure is of one setting; expected no h_over_l_range or nh_range");
     }
     std::vector<SeriesSnapshot> snapshots;
     std::vector<py::dict> documents;
@@ -336,7 +353,8 @@ py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, con
         }
     }
     if (snapshots.empty())
-        throw Error(ExitCode::input, fmt::format("none of the {} snapshots could be measured; expected at least one", count));
+        throw Error(ExitCode::input,
+                    fmt::format("none of the {} snapshots could be measured; expected at least one", count));
     const bool by_time = order_series(snapshots);
     if (plot) draw_series_figure(*plot, "plot", series_figure_script(snapshots, by_time));
     py::list out;
@@ -348,24 +366,25 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {
     m.def(
         "particles",
-        [kernel_of, to_python](const std::string& kernel_spec, const PositionsOrFiles& positions, const OptionalSequence& box,
-                               const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
-                               const OptionalFloat& nh, const std::optional<std::string>& code,
-                               const OptionalFloat& value, const std::optional<std::string>& neighbours_by,
-                               bool bias_correction, const OptionalArrayLike& masses,
-                               const OptionalArrayLike& densities, const OptionalFloat& rho0,
-                               const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
-                               const OptionalParams& params, const OptionalSequence& h_over_l_range,
-                               const OptionalSequence& nh_range, int steps, long long histogram, bool keep_going,
-                               const std::optional<std::string>& plot) {
+        [kernel_of,
+         to_python](const std::string& kernel_spec, const PositionsOrFiles& positions, const OptionalSequence& box,
+                    const OptionalArrayLike& h, const OptionalFloat& support_per_h, const OptionalFloat& h_over_l,
+                    const OptionalFloat& nh, const std::optional<std::string>& code, const OptionalFloat& value,
+                    const std::optional<std::string>& neighbours_by, bool bias_correction,
+                    const OptionalArrayLike& masses, const OptionalArrayLike& densities, const OptionalFloat& rho0,
+                    const VolumeArgument& volume, const OptionalSequence& gravity, double depth, int threads,
+                    const OptionalParams& params, const OptionalSequence& h_over_l_range,
+                    const OptionalSequence& nh_range, int steps, long long histogram, bool keep_going,
+                    const std::optional<std::string>& plot) {
             auto kernel = kernel_of(kernel_spec, params);
-            const Given given{h,      support_per_h, h_over_l, nh,       code,           value,    neighbours_by,
-                              bias_correction, masses,   densities, rho0,     volume,         gravity,  depth,
-                              threads, h_over_l_range, nh_range, steps,   histogram};
+            const Given given{h,        support_per_h, h_over_l, nh,     code,    value, neighbours_by, bias_correction,
+                              masses,   densities,     rho0,     volume, gravity, depth, threads,       h_over_l_range,
+                              nh_range, steps,         histogram};
             // A file, or a run's files: each read as the command line reads it, a series in the
             // order of the times in the files' headers (the order given where one has none).
             auto typed = [](py::object result) { return py::reinterpret_steal<DictOrList>(result.release()); };
-            if (plot && !(is_paths(positions) && !py::isinstance<py::str>(positions) && !py::hasattr(positions, "__fspath__")))
+            if (plot &&
+                !(is_paths(positions) && !py::isinstance<py::str>(positions) && !py::hasattr(positions, "__fspath__")))
                 throw Error(ExitCode::usage, "plot: a series' figure; expected a list of a run's files as positions");
             if (!is_paths(positions)) return typed(measure(kernel, set_of(positions, box), given, to_python));
             if (py::isinstance<py::str>(positions) || py::hasattr(positions, "__fspath__"))
@@ -375,11 +394,11 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
         py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
         py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
         py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("neighbours_by") = py::none(),
-        py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(), py::arg("rho0") = py::none(),
-        py::arg("volume") = py::none(), py::arg("gravity") = py::none(), py::arg("depth") = 1.0, py::arg("threads") = 0,
-        py::arg("params") = py::none(), py::arg("h_over_l_range") = py::none(), py::arg("nh_range") = py::none(),
-        py::arg("steps") = 10, py::arg("histogram") = 0, py::arg("keep_going") = false, py::arg("plot") = py::none(),
-        doc::particles,
+        py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(),
+        py::arg("rho0") = py::none(), py::arg("volume") = py::none(), py::arg("gravity") = py::none(),
+        py::arg("depth") = 1.0, py::arg("threads") = 0, py::arg("params") = py::none(),
+        py::arg("h_over_l_range") = py::none(), py::arg("nh_range") = py::none(), py::arg("steps") = 10,
+        py::arg("histogram") = 0, py::arg("keep_going") = false, py::arg("plot") = py::none(), doc::particles,
         py::call_guard<InterruptScope>());
 }
 

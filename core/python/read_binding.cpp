@@ -23,8 +23,9 @@ py::object column(const ParticleValues& values)
     return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
-py::dict read_particles(const std::string& path, const std::optional<std::string>& array, const std::optional<std::vector<double>>& box,
-                        const std::optional<int>& dim, const std::optional<double>& particle_radius)
+py::dict read_particles(const std::string& path, const std::optional<std::string>& array,
+                        const std::optional<std::vector<double>>& box, const std::optional<int>& dim,
+                        const std::optional<double>& particle_radius)
 {
     ParticleSet set;
     {

@@ -1,8 +1,8 @@
 // sphkern.relax: a particle set relaxed in its periodic box, through the requests `sphkern
 // relax` runs (the source, h, the settings, the code, the outputs), its --json document as
 // Python objects with the relaxed positions as a numpy array.
-#include "commands_binding.hpp"
 #include "command_docstrings.hpp"
+#include "commands_binding.hpp"
 #include "module_support.hpp"
 #include "python_types.hpp"
 
@@ -81,7 +81,8 @@ RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h
     } catch (const RelaxDiverged& e) {
         if (!history) throw;
         write_file_atomically(*history, [&](std::ostream& out) { write_relax_history_csv(out, e.history); });
-        throw Error(e.code(), fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, *history));
+        throw Error(e.code(),
+                    fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, *history));
     }
 }
 
@@ -119,9 +120,10 @@ void check_output_settings(const RelaxGiven& g)
             if (!g.output) fail_input(fmt::format("{}: sets what output writes; expected output too", key));
         }
     if (g.u && g.output->ends_with(".csv"))
-        fail_input(fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
-                               "Phantom dump)",
-                               *g.output));
+        fail_input(
+            fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
+                        "Phantom dump)",
+                        *g.output));
     if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
 }
 
@@ -143,7 +145,8 @@ nlohmann::json write_relaxed_set(const Kernel& kernel, const RelaxResult& run, c
             {"layout", layout}};
 }
 
-py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g, const OptionalParams& params)
+py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g,
+                       const OptionalParams& params)
 {
     set_memory_budget(g.memory_limit, named("memory_limit"));
     const auto sources = relax_sources(FrontEnd::python);
@@ -208,13 +211,14 @@ void bind_relax(py::module_& m)
            double rdf_max, std::size_t rdf_bins, double memory_limit, const std::optional<std::string>& output,
            std::optional<double> rho0, std::optional<double> u, const OptionalIntSequence& tile,
            const std::optional<std::string>& history, const OptionalParams& params) {
-            const RelaxSettings settings{RelaxMethod::pressure, steps, tolerance, gamma, dt, damping, alpha, max_move, threads};
+            const RelaxSettings settings{
+                RelaxMethod::pressure, steps, tolerance, gamma, dt, damping, alpha, max_move, threads};
             std::optional<std::string> tiles;
             if (!tile.is_none()) tiles = list_text(tile, "tile", "whole numbers of copies [N1, N2] or [N1, N2, N3]");
             return relax_command(kernel, {source, size, cell, sigma, seed, count, dim, box, particle_radius, array},
-                         {h_over_l, nh, k, code, value, method, settings, rdf_max, rdf_bins, memory_limit, output,
-                          tiles, history, rho0, u},
-                         params);
+                                 {h_over_l, nh, k, code, value, method, settings, rdf_max, rdf_bins, memory_limit,
+                                  output, tiles, history, rho0, u},
+                                 params);
         },
         py::arg("kernel"), py::arg("source"), py::kw_only(), py::arg("size") = py::none(), py::arg("cell") = py::none(),
         py::arg("sigma") = 0.0, py::arg("seed") = 1, py::arg("count") = py::none(), py::arg("dim") = py::none(),
@@ -225,8 +229,8 @@ void bind_relax(py::module_& m)
         py::arg("dt") = d.time_step, py::arg("damping") = d.damping, py::arg("alpha") = d.alpha,
         py::arg("max_move") = d.max_move, py::arg("threads") = d.threads, py::arg("rdf_max") = 3.0,
         py::arg("rdf_bins") = 60, py::arg("memory_limit") = 0.0, py::arg("output") = py::none(),
-        py::arg("rho0") = py::none(), py::arg("u") = py::none(), py::arg("tile") = py::none(), py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax,
-        py::call_guard<InterruptScope>());
+        py::arg("rho0") = py::none(), py::arg("u") = py::none(), py::arg("tile") = py::none(),
+        py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax, py::call_guard<InterruptScope>());
 }
 
 } // namespace sphkern

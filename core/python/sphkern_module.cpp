@@ -5,31 +5,31 @@
 #include "analysis/hydrostatic_errors.hpp"
 #include "analysis/resolution_axis.hpp"
 #include "analysis/results_json.hpp"
-#include "kernels/kernel_json.hpp"
-#include "lattices/lattice_json.hpp"
-#include "docstrings.hpp"
-#include "module_errors.hpp"
-#include "module_support.hpp"
-#include "particles_binding.hpp"
 #include "commands_binding.hpp"
-#include "python_arrays.hpp"
-#include "python_types.hpp"
+#include "docstrings.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/kernel_json.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "lattices/lattice_json.hpp"
 #include "lattices/numeric_inputs.hpp"
+#include "module_errors.hpp"
+#include "module_support.hpp"
 #include "particles/sources/particle_source.hpp"
-#include "stability/stability_scan.hpp"
-#include "requests/kernels_request.hpp"
-#include "requests/lattices_request.hpp"
+#include "particles_binding.hpp"
+#include "python_arrays.hpp"
+#include "python_types.hpp"
+#include "requests/assess_request.hpp"
 #include "requests/design_request.hpp"
 #include "requests/eps_request.hpp"
-#include "requests/assess_request.hpp"
+#include "requests/kernels_request.hpp"
+#include "requests/lattices_request.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/roots_request.hpp"
 #include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
+#include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/process/interruption.hpp"
@@ -146,7 +146,8 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
     request.layers = layers;
     request.evaluation = evaluation_of(lattice, a_p, gravity, site);
     request.form = parse_gradient_form(form);
-    if (termination && *termination < 0) fail_input(fmt::format("termination: {}: expected an index, 0 or more", *termination));
+    if (termination && *termination < 0)
+        fail_input(fmt::format("termination: {}: expected an index, 0 or more", *termination));
     request.termination = termination;
     const SurfaceSources sources{ValueSource::argument("k"), argument_sources(), ValueSource::argument("layers"),
                                  code_sources.code, code_sources.value};
@@ -156,8 +157,8 @@ py::dict surface(const std::string& kernel_spec, const std::string& lattice_spec
 }
 
 // The roots request from its arguments: the texts as types, the stability model checked with or without `stability`.
-RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis, bool stability,
-                           double gamma, int steps, double horizon, const std::string& h_model,
+RootsRequest roots_request(double kmin, double kmax, double epsilon, bool lateral, const std::string& axis,
+                           bool stability, double gamma, int steps, double horizon, const std::string& h_model,
                            const std::optional<std::string>& convention, const std::optional<std::string>& code,
                            int threads)
 {
@@ -172,7 +173,8 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model"), threads};
     // convention is the old name of code: the same answer, with the code's own density.
     if (convention && code) throw Error(ExitCode::input, "give one of code and convention (its old name)");
-    if (code || convention) r.code = &code_profile(code ? *code : *convention, ValueSource::argument(code ? "code" : "convention"));
+    if (code || convention)
+        r.code = &code_profile(code ? *code : *convention, ValueSource::argument(code ? "code" : "convention"));
     return r;
 }
 
@@ -187,8 +189,8 @@ py::dict roots(const std::string& kernel_spec, const std::string& lattice_spec, 
     auto request = roots_request(kmin, kmax, epsilon, lateral, axis, stability, gamma, steps, horizon, h_model,
                                  convention, code, threads);
     RootsSources sources{ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
-                         ValueSource::argument("gamma"), ValueSource::argument("horizon"),
-                         ValueSource::argument("steps"), argument_sources()};
+                         ValueSource::argument("gamma"),     ValueSource::argument("horizon"),
+                         ValueSource::argument("steps"),     argument_sources()};
     check_roots_request(request, sources);
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
@@ -252,7 +254,8 @@ private:
         py::array_t<double> out(shape);
         const std::size_t n = static_cast<std::size_t>(q.size());
         for (std::size_t i = 0; i < n; ++i)
-            if (!std::isfinite(q.data()[i]) || q.data()[i] < 0) fail_input(fmt::format("q = {} is not allowed, expected q >= 0", q.data()[i]));
+            if (!std::isfinite(q.data()[i]) || q.data()[i] < 0)
+                fail_input(fmt::format("q = {} is not allowed, expected q >= 0", q.data()[i]));
         {
             py::gil_scoped_release unlocked;
             if (derivative) kernel_.dw_batch(q.data(), out.mutable_data(), n, dim, k);
@@ -272,10 +275,10 @@ std::filesystem::path module_folder()
 }
 
 // The adapter: the arguments as given (0 grid or path: none); the request checks them and which go together.
-StabilityRequest stability_request(std::optional<double> k, double gamma, const std::optional<std::vector<double>>& wavevector,
-                                   std::optional<double> kmin, std::optional<double> kmax, int steps, int grid, int path,
-                                   int threads, double horizon, const std::string& h_model,
-                                   const std::optional<std::string>& code)
+StabilityRequest stability_request(std::optional<double> k, double gamma,
+                                   const std::optional<std::vector<double>>& wavevector, std::optional<double> kmin,
+                                   std::optional<double> kmax, int steps, int grid, int path, int threads,
+                                   double horizon, const std::string& h_model, const std::optional<std::string>& code)
 {
     StabilityRequest r;
     if (code) {
@@ -305,20 +308,25 @@ using Guard = py::call_guard<InterruptScope>;
 // Every kernel and lattice, and files loaded into the module.
 void bind_catalogues(py::module_& m, const Guard& guard)
 {
-    m.def("kernels", []() -> py::list {
-        std::lock_guard lock(registry_mutex());
-        return to_python(kernels_listing(registry()));
-    }, doc::kernels, guard);
-    m.def("lattices", []() -> py::list {
-        return to_python(lattices_listing());
-    }, doc::lattices, guard);
-    m.def("load_plugin", [](const std::string& path) -> py::dict {
-        std::lock_guard lock(registry_mutex());
-        return to_python(kernel_json(*registry().find(path)));
-    }, py::arg("path"), doc::load_plugin, guard);
-    m.def("load_lattice",
-          [](const std::string& path) -> py::dict { return to_python(lattice_json(read_lattice(path))); },
-          py::arg("path"), doc::load_lattice, guard);
+    m.def(
+        "kernels",
+        []() -> py::list {
+            std::lock_guard lock(registry_mutex());
+            return to_python(kernels_listing(registry()));
+        },
+        doc::kernels, guard);
+    m.def(
+        "lattices", []() -> py::list { return to_python(lattices_listing()); }, doc::lattices, guard);
+    m.def(
+        "load_plugin",
+        [](const std::string& path) -> py::dict {
+            std::lock_guard lock(registry_mutex());
+            return to_python(kernel_json(*registry().find(path)));
+        },
+        py::arg("path"), doc::load_plugin, guard);
+    m.def(
+        "load_lattice", [](const std::string& path) -> py::dict { return to_python(lattice_json(read_lattice(path))); },
+        py::arg("path"), doc::load_lattice, guard);
 }
 
 // The hydrostatic errors at k, the neighbour shells and the surface profile.
@@ -344,29 +352,28 @@ void bind_accuracy(py::module_& m, const Guard& guard)
         },
         py::arg("kernel"), py::arg("lattice"), py::arg("code"), py::arg("value"), py::kw_only(),
         py::arg("a_p") = "voronoi", py::arg("site") = 0, py::arg("params") = py::none(), doc::code_k, guard);
-    m.def("shells",
-          [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
-              auto lattice = load_lattice(lattice_spec);
-              const ShellsRequest request{radius, site, gravity_input(gravity, lattice.dimension)};
-              return to_python(run_shells(request, shells_sources(FrontEnd::python), lattice));
-          },
-          py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
-          guard);
-    m.def("surface", &surface,
-          py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(), py::arg("code") = py::none(),
-          py::arg("value") = py::none(), py::arg("form") = "sum",
-          py::arg("layers") = 4, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+    m.def(
+        "shells",
+        [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
+            auto lattice = load_lattice(lattice_spec);
+            const ShellsRequest request{radius, site, gravity_input(gravity, lattice.dimension)};
+            return to_python(run_shells(request, shells_sources(FrontEnd::python), lattice));
+        },
+        py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
+        guard);
+    m.def("surface", &surface, py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
+          py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("form") = "sum", py::arg("layers") = 4,
+          py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
           py::arg("params") = py::none(), py::arg("termination") = py::none(), doc::surface, guard);
 }
 
 // The roots in k of both errors, with stability and a code's convention on request.
 void bind_roots(py::module_& m, const Guard& guard)
 {
-    m.def("roots", &roots,
-          py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25,
-          py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false,
-          py::arg("axis") = "k", py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
+    m.def("roots", &roots, py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75,
+          py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+          py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false, py::arg("axis") = "k",
+          py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
           py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
           py::arg("code") = py::none(), py::arg("shells") = py::none(), py::arg("continue_past_support") = false,
           py::arg("threads") = 0, doc::roots, guard);
@@ -392,14 +399,17 @@ AssessRequest assess_request_of(std::optional<double> k, const std::optional<std
 }
 
 // One verdict on a setting on a lattice, its document as Python objects.
-py::dict assess_on_lattice(const std::string& kernel_spec, const std::string& lattice_spec, const OptionalParams& params,
-                           AssessRequest request, const NameOrNumber& a_p, const OptionalSequence& gravity, int site,
-                           const OptionalSequence& shells, bool continue_past_support)
+py::dict assess_on_lattice(const std::string& kernel_spec, const std::string& lattice_spec,
+                           const OptionalParams& params, AssessRequest request, const NameOrNumber& a_p,
+                           const OptionalSequence& gravity, int site, const OptionalSequence& shells,
+                           bool continue_past_support)
 {
     AssessSources sources{{ValueSource::argument("k"), ValueSource::argument("axis"), argument_sources(),
                            ValueSource::argument("code"), ValueSource::argument("value")},
-                          ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"),
-                          ValueSource::argument("gamma"), ValueSource::argument("horizon")};
+                          ValueSource::argument("kmin/kmax"),
+                          ValueSource::argument("epsilon"),
+                          ValueSource::argument("gamma"),
+                          ValueSource::argument("horizon")};
     auto lattice = load_lattice(lattice_spec);
     auto kernel = kernel_of(kernel_spec, params);
     request.setting.evaluation = evaluation_of(lattice, a_p, gravity, site, shells, continue_past_support);
@@ -421,12 +431,13 @@ void bind_assess(py::module_& m, const Guard& guard)
            std::optional<std::string> code, std::optional<double> value, double kmin, double kmax, double epsilon,
            double gamma, std::optional<double> coef_sound, double horizon, const NameOrNumber& a_p,
            const OptionalSequence& gravity, int site, const OptionalParams& params, const OptionalSequence& box,
-           std::optional<std::string> array, std::optional<std::string> neighbours_by, bool bias_correction, int threads,
-           int steps, const OptionalSequence& eta_range, const OptionalSequence& hfact_range,
+           std::optional<std::string> array, std::optional<std::string> neighbours_by, bool bias_correction,
+           int threads, int steps, const OptionalSequence& eta_range, const OptionalSequence& hfact_range,
            const OptionalSequence& nngb_range, const OptionalSequence& hdx_range, const OptionalSequence& coefh_range,
            const OptionalSequence& particle_radius_range, const OptionalSequence& shells,
            bool continue_past_support) -> py::dict {
-            const auto lattice_spec = py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
+            const auto lattice_spec =
+                py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
             if (source_kind(lattice_spec) == SourceKind::file) {
                 // The lattice's keywords mean nothing on a particle set: said, not ignored.
                 const bool lattice_keywords = k || coef_sound || !gravity.is_none() || !shells.is_none() ||
@@ -434,21 +445,22 @@ void bind_assess(py::module_& m, const Guard& guard)
                                               gamma != 5.0 / 3.0 || horizon != default_horizon || site != 0 ||
                                               !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == "voronoi");
                 if (lattice_keywords)
-                    fail_input(fmt::format("k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site and shells are for a "
-                                           "lattice; on a particle file ({}) assess judges the set's own sums, expected none",
-                                           lattice_spec));
+                    fail_input(fmt::format(
+                        "k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site and shells are for a "
+                        "lattice; on a particle file ({}) assess judges the set's own sums, expected none",
+                        lattice_spec));
                 FileAssess f{code, value, epsilon, {}, array, neighbours_by, bias_correction, threads, steps, {}};
                 if (!box.is_none()) f.box = box.cast<std::vector<double>>();
                 const std::pair<const char*, const OptionalSequence*> ranges[] = {
-                    {"eta", &eta_range},  {"hfact", &hfact_range}, {"nngb", &nngb_range},
+                    {"eta", &eta_range}, {"hfact", &hfact_range}, {"nngb", &nngb_range},
                     {"hdx", &hdx_range}, {"coefh", &coefh_range}, {"particle_radius", &particle_radius_range}};
                 for (const auto& [name, range] : ranges)
                     if (!range->is_none()) f.ranges[name] = range->cast<std::vector<double>>();
                 return assess_particle_file(kernel_of(kernel_spec, params), lattice_spec, f, &to_python);
             }
-            if (!box.is_none() || array || neighbours_by || bias_correction || steps != 10 ||
-                !eta_range.is_none() || !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() ||
-                !coefh_range.is_none() || !particle_radius_range.is_none())
+            if (!box.is_none() || array || neighbours_by || bias_correction || steps != 10 || !eta_range.is_none() ||
+                !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() || !coefh_range.is_none() ||
+                !particle_radius_range.is_none())
                 fail_input(fmt::format("box, array, neighbours_by, bias_correction, steps and the parameter ranges "
                                        "are for a particle file; {} is a lattice, expected none",
                                        lattice_spec));
@@ -460,54 +472,55 @@ void bind_assess(py::module_& m, const Guard& guard)
         py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
         py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,
         py::arg("gamma") = 5.0 / 3.0, py::arg("coef_sound") = py::none(), py::arg("horizon") = default_horizon,
-        py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(),
-        py::arg("box") = py::none(), py::arg("array") = py::none(), py::arg("neighbours_by") = py::none(),
-        py::arg("bias_correction") = false, py::arg("threads") = 0, py::arg("steps") = 10, py::arg("eta_range") = py::none(),
-        py::arg("hfact_range") = py::none(), py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(),
-        py::arg("coefh_range") = py::none(), py::arg("particle_radius_range") = py::none(), py::arg("shells") = py::none(),
-        py::arg("continue_past_support") = false,
-        doc::assess, guard);
+        py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
+        py::arg("params") = py::none(), py::arg("box") = py::none(), py::arg("array") = py::none(),
+        py::arg("neighbours_by") = py::none(), py::arg("bias_correction") = false, py::arg("threads") = 0,
+        py::arg("steps") = 10, py::arg("eta_range") = py::none(), py::arg("hfact_range") = py::none(),
+        py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(), py::arg("coefh_range") = py::none(),
+        py::arg("particle_radius_range") = py::none(), py::arg("shells") = py::none(),
+        py::arg("continue_past_support") = false, doc::assess, guard);
 }
 
 // Linear stability through the one stability request.
 void bind_stability(py::module_& m, const Guard& guard)
 {
-    m.def("stability",
-          [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
-             std::optional<std::vector<double>> wavevector, std::optional<double> kmin, std::optional<double> kmax,
-             int steps, int grid, int path, int threads, double horizon, const OptionalParams& params,
-             const std::string& h_model, const std::optional<std::string>& code) -> py::dict {
-              const auto request = stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads,
-                                                     horizon, h_model, code);
-              const StabilitySources sources{ValueSource::argument("k"),       ValueSource::argument("kmin"),
-                                             ValueSource::argument("kmax"),    ValueSource::argument("gamma"),
-                                             ValueSource::argument("horizon"), ValueSource::argument("wavevector"),
-                                             ValueSource::argument("steps"),   ValueSource::argument("grid"),
-                                             ValueSource::argument("path"),    ""};
-              check_stability_request(request, sources);
-              auto lattice = load_lattice(lattice_spec);
-              auto kernel = kernel_of(kernel_spec, params);
-              nlohmann::json document;
-              {
-                  py::gil_scoped_release unlocked;
-                  document = run_stability(request, sources, kernel, lattice);
-              }
-              return to_python(document);
-          },
-          py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
-          py::arg("gamma") = 5.0 / 3.0, py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(),
-          py::arg("kmax") = py::none(), py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0,
-          py::arg("threads") = 0, py::arg("horizon") = default_horizon, py::arg("params") = py::none(),
-          py::arg("h_model") = "fixed", py::arg("code") = py::none(), doc::stability, guard);
+    m.def(
+        "stability",
+        [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
+           std::optional<std::vector<double>> wavevector, std::optional<double> kmin, std::optional<double> kmax,
+           int steps, int grid, int path, int threads, double horizon, const OptionalParams& params,
+           const std::string& h_model, const std::optional<std::string>& code) -> py::dict {
+            const auto request =
+                stability_request(k, gamma, wavevector, kmin, kmax, steps, grid, path, threads, horizon, h_model, code);
+            const StabilitySources sources{ValueSource::argument("k"),       ValueSource::argument("kmin"),
+                                           ValueSource::argument("kmax"),    ValueSource::argument("gamma"),
+                                           ValueSource::argument("horizon"), ValueSource::argument("wavevector"),
+                                           ValueSource::argument("steps"),   ValueSource::argument("grid"),
+                                           ValueSource::argument("path"),    ""};
+            check_stability_request(request, sources);
+            auto lattice = load_lattice(lattice_spec);
+            auto kernel = kernel_of(kernel_spec, params);
+            nlohmann::json document;
+            {
+                py::gil_scoped_release unlocked;
+                document = run_stability(request, sources, kernel, lattice);
+            }
+            return to_python(document);
+        },
+        py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(), py::arg("gamma") = 5.0 / 3.0,
+        py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(), py::arg("kmax") = py::none(),
+        py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0, py::arg("threads") = 0,
+        py::arg("horizon") = default_horizon, py::arg("params") = py::none(), py::arg("h_model") = "fixed",
+        py::arg("code") = py::none(), doc::stability, guard);
 }
 
 // Kernel design: where both errors vanish.
 void bind_design(py::module_& m, const Guard& guard)
 {
-    m.def("design", &design,
-          py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(), py::arg("range") = py::none(),
-          py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(),
-          py::arg("site") = 0, py::arg("params") = py::none(), py::arg("threads") = 0, doc::design, guard);
+    m.def("design", &design, py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(),
+          py::arg("range") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi",
+          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), py::arg("threads") = 0,
+          doc::design, guard);
 }
 
 // A kernel as an object, its functions vectorised over q.
@@ -519,9 +532,10 @@ void bind_kernel(py::module_& m, const Guard& guard)
         .def_property_readonly("info", &KernelHandle::info, doc::kernel_info)
         .def("w", &KernelHandle::w, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_w.c_str(), guard)
         .def("dw", &KernelHandle::dw, py::arg("q"), py::arg("dim"), py::arg("k") = 1.0, doc::kernel_dw.c_str(), guard);
-    m.def("kernel",
-          [](const std::string& spec, const OptionalParams& params) { return KernelHandle(kernel_of(spec, params)); },
-          py::arg("name"), py::arg("params") = py::none(), doc::kernel, guard);
+    m.def(
+        "kernel",
+        [](const std::string& spec, const OptionalParams& params) { return KernelHandle(kernel_of(spec, params)); },
+        py::arg("name"), py::arg("params") = py::none(), doc::kernel, guard);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // sphkern.run and sphkern.studies: a study into its results folder through the one study
 // runner the command line uses, and the shipped studies.
-#include "commands_binding.hpp"
 #include "command_docstrings.hpp"
+#include "commands_binding.hpp"
 #include "module_support.hpp"
 
 #include "requests/studies_request.hpp"
@@ -24,12 +24,13 @@ namespace sphkern {
 namespace {
 
 py::dict run_command(const std::optional<std::string>& study, const std::optional<std::string>& output, bool no_plots,
-             const std::string& format, bool force, const std::optional<std::string>& reproduce)
+                     const std::string& format, bool force, const std::optional<std::string>& reproduce)
 {
     py::dict out;
     if (reproduce) {
         if (study || output || force)
-            fail_input("reproduce: runs the study the results file records; expected no study, output or force beside it");
+            fail_input(
+                "reproduce: runs the study the results file records; expected no study, output or force beside it");
         Reproduction outcome;
         {
             py::gil_scoped_release unlocked;
@@ -48,7 +49,8 @@ py::dict run_command(const std::optional<std::string>& study, const std::optiona
         done = run_study_folder(request, {"format"}, []() -> KernelRegistry& { return registry(); });
     }
     // As the command line warns: the folder is complete, without the figures.
-    if (done.gnuplot_missing && PyErr_WarnEx(PyExc_RuntimeWarning, "gnuplot not found on PATH: figures skipped", 1) != 0)
+    if (done.gnuplot_missing &&
+        PyErr_WarnEx(PyExc_RuntimeWarning, "gnuplot not found on PATH: figures skipped", 1) != 0)
         throw py::error_already_set();
     out["folder"] = std::filesystem::absolute(done.folder).lexically_normal().string();
     out["cases"] = done.cases;
@@ -65,7 +67,8 @@ void bind_studies(py::module_& m)
     m.def("run", &run_command, py::arg("study") = py::none(), py::arg("output") = py::none(), py::kw_only(),
           py::arg("no_plots") = false, py::arg("format") = "svg", py::arg("force") = false,
           py::arg("reproduce") = py::none(), doc::run, guard);
-    m.def("studies", []() -> py::list { return to_python(studies_listing()); }, doc::studies, guard);
+    m.def(
+        "studies", []() -> py::list { return to_python(studies_listing()); }, doc::studies, guard);
 }
 
 } // namespace sphkern

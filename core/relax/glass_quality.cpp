@@ -72,7 +72,8 @@ void check_rdf_settings(double r_max, std::size_t bins, const ValueSource& r_max
 {
     check_range(static_cast<double>(bins), 1, 100000, bins_source);
     if (!(r_max > 0.5) || !std::isfinite(r_max))
-        throw Error(r_max_source.code, r_max_source.about(r_max) + ": expected a finite number above 0.5 (mean spacings)");
+        throw Error(r_max_source.code,
+                    r_max_source.about(r_max) + ": expected a finite number above 0.5 (mean spacings)");
 }
 
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads)

@@ -32,7 +32,8 @@ std::vector<double> nearest_distances(const ParticleSet& set, int threads);
 double paired_fraction(const ParticleSet& set, int threads);
 
 // g(r)'s range (finite, above 0.5 l) and bins (1 to 100000), each refusal naming its source.
-void check_rdf_settings(double r_max, std::size_t bins, const ValueSource& r_max_source, const ValueSource& bins_source);
+void check_rdf_settings(double r_max, std::size_t bins, const ValueSource& r_max_source,
+                        const ValueSource& bins_source);
 
 // g(r) up to `r_max` (units of l; at most half the box's smallest width) in `bins` bins.
 GlassQuality glass_quality(const ParticleSet& set, double r_max, std::size_t bins, int threads);

@@ -159,7 +159,8 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
     p.cells = block_cells(lattice, kernel.support() * k);
     // The motion can only grow the wave vectors the block carries: the prediction uses those.
     const double b = r.damping / k; // c / h in units of c / d
-    const BlockPrediction predicted = block_prediction(dispersion, reciprocal, lattice.dimension, p.cells, b, r.duration);
+    const BlockPrediction predicted =
+        block_prediction(dispersion, reciprocal, lattice.dimension, p.cells, b, r.duration);
     p.omega2 = std::min(0.0, predicted.lowest);
     p.predicted_factor = predicted.rms_factor;
     if (p.omega2 < -unstable_threshold) {
@@ -177,14 +178,16 @@ PairingPoint run_one(const Kernel& kernel, const Lattice& lattice, double k, con
     p.particles = start.size();
     RelaxSettings settings;
     settings.method = RelaxMethod::pressure;
-    settings.time_step = r.time_step, settings.damping = r.damping, settings.gamma = r.gamma, settings.threads = r.threads;
+    settings.time_step = r.time_step, settings.damping = r.damping, settings.gamma = r.gamma,
+    settings.threads = r.threads;
     settings.steps = std::max(1, static_cast<int>(std::ceil(r.duration / (r.time_step * k))));
     std::vector<std::pair<double, double>> series;
     p.rms_start = displacement_rms(start, sites, r.threads);
     p.paired_start = paired_fraction(start, r.threads);
-    const RelaxResult run = relax_particles(kernel, std::move(start), k, settings, [&](const RelaxState& s, const RelaxStep& step) {
-        series.emplace_back(step.time, displacement_rms(s.set, sites, r.threads));
-    });
+    const RelaxResult run =
+        relax_particles(kernel, std::move(start), k, settings, [&](const RelaxState& s, const RelaxStep& step) {
+            series.emplace_back(step.time, displacement_rms(s.set, sites, r.threads));
+        });
     p.rms_end = series.back().second;
     for (const auto& point : series) p.rms_max = std::max(p.rms_max, point.second);
     p.paired_end = paired_fraction(run.state.set, r.threads);
@@ -206,10 +209,11 @@ std::vector<PairingPoint> pairing_motion(const Kernel& kernel, const Lattice& la
     double terms = 0;
     for (int i = 0; i < request.samples; ++i) terms += pairing_pair_terms(kernel, lattice, k_of(i), request);
     if (terms > max_pairing_pair_terms)
-        fail_input(fmt::format("pairing: the motion asks for {:.3g} pair evaluations over its {} sample(s) of k, over the "
-                               "limit of {:.3g}; expected a smaller k, a shorter {} or fewer {}",
-                               terms, request.samples, max_pairing_pair_terms, setting_named("duration"),
-                               setting_named("samples")));
+        fail_input(
+            fmt::format("pairing: the motion asks for {:.3g} pair evaluations over its {} sample(s) of k, over the "
+                        "limit of {:.3g}; expected a smaller k, a shorter {} or fewer {}",
+                        terms, request.samples, max_pairing_pair_terms, setting_named("duration"),
+                        setting_named("samples")));
     std::vector<PairingPoint> points;
     for (int i = 0; i < request.samples; ++i) points.push_back(run_one(kernel, lattice, k_of(i), request));
     return points;

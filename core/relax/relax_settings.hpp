@@ -14,16 +14,16 @@ const char* relax_method_name(RelaxMethod method);
 // Checked by requests/relax_request.hpp (the engine takes them as given).
 struct RelaxSettings {
     RelaxMethod method = RelaxMethod::pressure;
-    int steps = 200;         // at most this many steps
-    double tolerance = 0;    // stop once the RMS displacement of a step is below tolerance * h (0: never)
+    int steps = 200;      // at most this many steps
+    double tolerance = 0; // stop once the RMS displacement of a step is below tolerance * h (0: never)
     // pressure: P = rho0 c^2 / gamma (rho / rho0)^gamma, the model of `stability`.
     double gamma = 5.0 / 3.0;
-    double time_step = 0.2;  // in h / c
-    double damping = 0.5;    // dv/dt = a - damping (c / h) v
+    double time_step = 0.2; // in h / c
+    double damping = 0.5;   // dv/dt = a - damping (c / h) v
     // shift: dx_i = -alpha h^2 sum_j V_j grad_i W_ij, at most max_move * h a step.
     double alpha = 0.1;
     double max_move = 0.1;
-    int threads = 0;         // 0: every core
+    int threads = 0; // 0: every core
 };
 
 } // namespace sphkern

@@ -3,9 +3,9 @@
 #include "particles/engine/neighbour_gather.hpp"
 #include "support/text/setting_names.hpp"
 
-#include "support/process/parallel_for.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
+#include "support/process/parallel_for.hpp"
 #include "support/process/progress.hpp"
 
 #include <fmt/format.h>
@@ -69,7 +69,9 @@ Moves move_all(RelaxState& s, const MoveOf& move_of)
             const double m2 = move(s, i, d.x(), d.y(), d.z());
             m.sum2 += m2, m.max2 = std::max(m.max2, m2);
         },
-        [](Moves& total, const Moves& block) { total.sum2 += block.sum2, total.max2 = std::max(total.max2, block.max2); });
+        [](Moves& total, const Moves& block) {
+            total.sum2 += block.sum2, total.max2 = std::max(total.max2, block.max2);
+        });
 }
 
 // False when the integration diverges: a move that is not finite, or longer than a quarter of
@@ -92,8 +94,9 @@ bool finish_moves(RelaxState& s, RelaxStep& step, const Moves& moves)
                                  : std::string("a particle's move in one step overflowed a double");
     throw RelaxDiverged(fmt::format("{}: the integration diverged at step {} (t = {:.4g} d/c): {}; expected a smaller "
                                     "{} (now {:g}), more {} (now {:g}) or a {} nearer 1 (now {:g})",
-                                    s.set.name, step.step, step.step * dt, move, setting_named("dt"), settings.time_step,
-                                    setting_named("damping"), settings.damping, setting_named("gamma"), settings.gamma),
+                                    s.set.name, step.step, step.step * dt, move, setting_named("dt"),
+                                    settings.time_step, setting_named("damping"), settings.damping,
+                                    setting_named("gamma"), settings.gamma),
                         std::move(history));
 }
 
@@ -117,7 +120,8 @@ bool pressure_step(const Kernel& kernel, RelaxState& s, double dt, double dampin
 {
     const double factor = std::exp(-damping * dt / 2);
     kick(s, dt / 2, factor);
-    const Moves moves = move_all(s, [&](std::size_t i) { return Eigen::Vector3d(s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt); });
+    const Moves moves =
+        move_all(s, [&](std::size_t i) { return Eigen::Vector3d(s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt); });
     if (!finish_moves(s, step, moves)) return false;
     compute_forces(kernel, s.set, s.model, s.forces);
     kick(s, dt / 2, factor);
@@ -168,12 +172,36 @@ RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const Re
     return s;
 }
 
+// Step step.step of the method: false where the integration diverges. Particles brought to one
+// position after the first step are the pairing instability (W' = 0 at r = 0 leaves a pair no
+// force apart): RelaxDiverged, with the history so far.
+bool take_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settings, double dt, double damping,
+               RelaxStep& step, RelaxResult& result)
+{
+    try {
+        return settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
+                                                        : shift_step(kernel, s, settings, step);
+    } catch (const CoincidentParticles& e) {
+        if (step.step == 1) throw; // the set as given
+        throw RelaxDiverged(
+            fmt::format("{}: at step {} (t = {:.4g} d/c) particles {} and {} met at one position, where "
+                        "no SPH sum is defined: the pairing instability merged them (the set as given "
+                        "had them apart); expected a setting where the set is stable (sphkern "
+                        "stability at this k) or fewer steps",
+                        s.set.name, step.step, (step.step - 1) * result.dt, e.first, e.second),
+            std::move(result.history));
+    }
+}
+
 } // namespace
 
 RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
                             const std::function<void(const RelaxState&, const RelaxStep&)>& observe)
 {
-    if (!set.box) fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box", set.name));
+    if (!set.box)
+        fail_input(
+            fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box",
+                        set.name));
     kernel.require_dimension(set.dimension, set.name);
     RelaxResult result;
     result.spacing = length_unit(set);
@@ -201,21 +229,8 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
         throw_if_interrupted();
         RelaxStep step;
         step.step = n;
-        bool settled = false;
-        try {
-            settled = settings.method == RelaxMethod::pressure ? pressure_step(kernel, s, dt, damping, step)
-                                                               : shift_step(kernel, s, settings, step);
-        } catch (const CoincidentParticles& e) {
-            if (n == 1) throw; // the set as given
-            // The run brought them together: the pairing instability (W' = 0 at r = 0 leaves a pair no force apart).
-            throw RelaxDiverged(fmt::format("{}: at step {} (t = {:.4g} d/c) particles {} and {} met at one position, where "
-                                            "no SPH sum is defined: the pairing instability merged them (the set as given "
-                                            "had them apart); expected a setting where the set is stable (sphkern "
-                                            "stability at this k) or fewer steps",
-                                            s.set.name, n, (n - 1) * result.dt, e.first, e.second),
-                                std::move(result.history));
-        }
-        if (!settled) fail_diverged(s, settings, step, result.dt, std::move(result.history));
+        if (!take_step(kernel, s, settings, dt, damping, step, result))
+            fail_diverged(s, settings, step, result.dt, std::move(result.history));
         step.time = settings.method == RelaxMethod::pressure ? n * result.dt : 0;
         record_errors(s, step);
         result.history.push_back(step);

@@ -20,7 +20,7 @@ namespace sphkern {
 // the kinetic energy per particle (in units of c^2, unit mass).
 struct RelaxStep {
     int step = 0;
-    double time = 0;       // in d / c
+    double time = 0; // in d / c
     double rms_move = 0, max_move = 0;
     double rms_e0 = 0, rms_e1 = 0;
     double kinetic = 0;
@@ -41,8 +41,8 @@ struct RelaxResult {
     std::vector<RelaxStep> history; // step 0 (the start) and every step taken
     double spacing = 1;             // d: the set's, else the mean spacing
     double h = 1;
-    double dt = 0;                  // in d / c (pressure)
-    std::string stop;               // why it stopped: "tolerance" or "steps"
+    double dt = 0;    // in d / c (pressure)
+    std::string stop; // why it stopped: "tolerance" or "steps"
     // Seconds of the start (its first sums), and over the steps of the grid, the density and
     // force passes, and the rest (kicks, moves, wrapping, each step's errors).
     PhaseTimes phases;
@@ -55,8 +55,7 @@ class RelaxDiverged : public Error {
 public:
     RelaxDiverged(const std::string& message, std::vector<RelaxStep> steps)
         : Error(ExitCode::input, message), history(std::move(steps))
-    {
-    }
+    {}
     std::vector<RelaxStep> history;
 };
 

@@ -110,7 +110,8 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
         out.gx[i] = -model.volume * s.g[0], out.gy[i] = -model.volume * s.g[1], out.gz[i] = -model.volume * s.g[2];
         if (model.pressure)
             out.ax[i] = model.mass * s.a[0], out.ay[i] = model.mass * s.a[1], out.az[i] = model.mass * s.a[2];
-        if (!std::isfinite(out.gx[i] + out.gy[i] + out.gz[i]) || (model.pressure && !std::isfinite(out.ax[i] + out.ay[i] + out.az[i])))
+        if (!std::isfinite(out.gx[i] + out.gy[i] + out.gz[i]) ||
+            (model.pressure && !std::isfinite(out.ax[i] + out.ay[i] + out.az[i])))
             fail_non_finite_sum(kernel, dim, model.k, fmt::format("particle {} of {}", i, set.name),
                                 fmt::format("h = {:.6g}", model.h), {nb.q.data(), nb.count});
     });

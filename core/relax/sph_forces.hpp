@@ -16,22 +16,22 @@
 namespace sphkern {
 
 struct ForceModel {
-    double h = 1;        // one h for every particle (support R h)
-    double volume = 1;   // V of every particle: the box over N
-    double mass = 1;     // m of every particle
-    double rho0 = 1;     // the density at which P / rho = c^2 / gamma
-    double c = 1;        // the sound speed at rho0
+    double h = 1;      // one h for every particle (support R h)
+    double volume = 1; // V of every particle: the box over N
+    double mass = 1;   // m of every particle
+    double rho0 = 1;   // the density at which P / rho = c^2 / gamma
+    double c = 1;      // the sound speed at rho0
     double gamma = 5.0 / 3.0;
-    double k = 1;        // h / d, the argument of kernels that depend on k
+    double k = 1;         // h / d, the argument of kernels that depend on k
     bool pressure = true; // false: the density and the gradient sum only
     int threads = 1;
 };
 
 struct ForceField {
-    std::vector<double> density;     // rho_i
-    std::vector<double> gx, gy, gz;  // sum_j V grad_i W_ij (1 / length)
-    std::vector<double> ax, ay, az;  // the pressure acceleration (empty without `pressure`)
-    PhaseTimes phases;               // grid, density and forces, added up over every call
+    std::vector<double> density;    // rho_i
+    std::vector<double> gx, gy, gz; // sum_j V grad_i W_ij (1 / length)
+    std::vector<double> ax, ay, az; // the pressure acceleration (empty without `pressure`)
+    PhaseTimes phases;              // grid, density and forces, added up over every call
     double pressure(double density, const ForceModel& model) const;
 };
 

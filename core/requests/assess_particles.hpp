@@ -41,12 +41,12 @@ struct LatticeStability {
 struct ParticleAssessResult {
     ParticleAnswer answer;
     ParticleRegion interior, surface;
-    double worst = 0;        // the larger of max(|p1|, |p99|) of eps_rho and of eps_gradp
-    std::string worst_name;  // "e0" or "eps_gradp", of the interior
+    double worst = 0;       // the larger of max(|p1|, |p99|) of eps_rho and of eps_gradp
+    std::string worst_name; // "e0" or "eps_gradp", of the interior
     double epsilon = 0.01;
     std::vector<LatticeStability> lattices; // every shipped lattice of the set's dimension
-    std::string pressure;    // the pressure at rest the verdicts assume, in words
-    std::string verdict;     // the one line
+    std::string pressure;                   // the pressure at rest the verdicts assume, in words
+    std::string verdict;                    // the one line
     bool accurate() const { return worst <= epsilon; }
 };
 

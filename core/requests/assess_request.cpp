@@ -38,7 +38,8 @@ RootsSources window_sources(const AssessSources& s)
 // "SWIFT eta 1.2348" or "k = 1.2".
 std::string setting_text(const AssessResult& a)
 {
-    if (a.at.code) return fmt::format("{} {} {:g}", a.at.code->setting.code, a.at.code->parameter, a.at.code->setting.value);
+    if (a.at.code)
+        return fmt::format("{} {} {:g}", a.at.code->setting.code, a.at.code->parameter, a.at.code->setting.value);
     return fmt::format("k = {:g}", a.at.k);
 }
 
@@ -54,8 +55,8 @@ const AssessStability& own_model(const AssessResult& a)
 std::string stability_text(const AssessStability& s)
 {
     if (s.verdict == Verdict::stable) return "stable";
-    return fmt::format("{} ({} mode growing in {:.3g} d/c)", s.verdict == Verdict::weak ? "weakly unstable" : "unstable",
-                       s.mode, s.growth_time);
+    return fmt::format("{} ({} mode growing in {:.3g} d/c)",
+                       s.verdict == Verdict::weak ? "weakly unstable" : "unstable", s.mode, s.growth_time);
 }
 
 namespace {
@@ -80,14 +81,15 @@ std::string window_text(const AssessResult& a, const AssessWindow& w)
 std::string narrow_text(double relative_half_width)
 {
     if (relative_half_width >= robust_half_width) return "";
-    return fmt::format("; narrow: +-{:.2g}% in h, less than the +-{:g}% a relaxed glass's h spans", 100 * relative_half_width,
-                       100 * robust_half_width);
+    return fmt::format("; narrow: +-{:.2g}% in h, less than the +-{:g}% a relaxed glass's h spans",
+                       100 * relative_half_width, 100 * robust_half_width);
 }
 
 std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
 {
     const auto& rec = a.window.stability.recommended;
-    if (!rec.found) return fmt::format("no setting of k in [{:g}, {:g}] is both accurate and stable", r.window_min, r.window_max);
+    if (!rec.found)
+        return fmt::format("no setting of k in [{:g}, {:g}] is both accurate and stable", r.window_min, r.window_max);
     const std::string edge = rec.at_window_edge ? ", at the window's edge: widen it" : "";
     const std::string nh = fmt::format(", N_H {} to {}", rec.neighbours_from, rec.neighbours_to);
     const std::string narrow = narrow_text(rec.margin / rec.k);
@@ -95,9 +97,12 @@ std::string recommendation_text(const AssessResult& a, const AssessRequest& r)
     if (const auto& c = a.window.in_code; c && c->recommended)
         text = fmt::format("recommended {} {:.3g} ({:.3g} to {:.3g}{}{}{})", a.code->parameter, c->recommended_value,
                            c->recommended->from, c->recommended->to, nh, edge, narrow);
-    else text = fmt::format("recommended k {:.3g} ({:.3g} to {:.3g}{}{}{})", rec.k, rec.widest.from, rec.widest.to, nh, edge, narrow);
+    else
+        text = fmt::format("recommended k {:.3g} ({:.3g} to {:.3g}{}{}{})", rec.k, rec.widest.from, rec.widest.to, nh,
+                           edge, narrow);
     // The window of the setting given, or the nearest to it, where it is another.
-    if (a.nearest && !(a.windows[*a.nearest].k.from == rec.widest.from && a.windows[*a.nearest].k.to == rec.widest.to)) {
+    if (a.nearest &&
+        !(a.windows[*a.nearest].k.from == rec.widest.from && a.windows[*a.nearest].k.to == rec.widest.to)) {
         const auto& w = a.windows[*a.nearest];
         const bool holds = a.at.k >= w.k.from && a.at.k <= w.k.to;
         text += fmt::format("; {} the setting: {}{}", holds ? "the window holding" : "nearest to", window_text(a, w),
@@ -123,9 +128,11 @@ void find_windows(AssessResult& a)
 
 } // namespace
 
-AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h, double horizon)
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h,
+                             double horizon)
 {
-    const auto sample = stability_sample(Dispersion(kernel, lattice, k, gamma, h), reciprocal_lattice(lattice), 0, 0, horizon);
+    const auto sample =
+        stability_sample(Dispersion(kernel, lattice, k, gamma, h), reciprocal_lattice(lattice), 0, 0, horizon);
     AssessStability s{h, sample.verdict, sample.growth_time, ""};
     if (sample.verdict != Verdict::stable) s.mode = mode_kind_name(sample.mode.kind);
     return s;
@@ -133,7 +140,8 @@ AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, doubl
 
 void check_epsilon(double epsilon, const ValueSource& source)
 {
-    if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1) source.fail(fmt::format("{}: expected a number in (0, 1)", epsilon));
+    if (!std::isfinite(epsilon) || epsilon <= 0 || epsilon >= 1)
+        source.fail(fmt::format("{}: expected a number in (0, 1)", epsilon));
 }
 
 void check_assess_request(const AssessRequest& r, const AssessSources& sources)
@@ -145,7 +153,8 @@ void check_assess_request(const AssessRequest& r, const AssessSources& sources)
     check_horizon(r.horizon, sources.horizon.name);
 }
 
-AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel, const Lattice& lattice)
+AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel,
+                        const Lattice& lattice)
 {
     AssessResult a;
     if (r.setting.code) a.code = &code_profile(r.setting.code->code, sources.setting.code);
@@ -181,21 +190,27 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
                             {"robust", rec.margin / rec.k >= robust_half_width}});
     nlohmann::json windows = nlohmann::json::array();
     for (const auto& w : a.windows) {
-        nlohmann::json one = {{"k", {w.k.from, w.k.to}}, {"relative_half_width", w.relative_half_width}, {"robust", w.robust()}};
+        nlohmann::json one = {{"k", {w.k.from, w.k.to}},
+                              {"relative_half_width", w.relative_half_width},
+                              {"robust", w.robust()}};
         if (w.code) one["code"] = {w.code->from, w.code->to};
         windows.push_back(one);
     }
     if (const auto& c = a.window.in_code; c && c->recommended)
-        recommended["code"] = {{"parameter", a.code->parameter}, {"value", c->recommended_value},
+        recommended["code"] = {{"parameter", a.code->parameter},
+                               {"value", c->recommended_value},
                                {"interval", {c->recommended->from, c->recommended->to}}};
     return {{"eps", eps_document(a.at)},
-            {"condition_22", {{"epsilon", r.epsilon}, {"holds", a.accurate(r.epsilon)}, {"margin", r.epsilon - a.worst}}},
+            {"condition_22",
+             {{"epsilon", r.epsilon}, {"holds", a.accurate(r.epsilon)}, {"margin", r.epsilon - a.worst}}},
             {"stability", stability},
-            {"pressure", a.pressure.tait ? nlohmann::json{{"model", "tait"},
-                                                          {"coef_sound", a.pressure.coef_sound},
-                                                          {"p0_over_rho_c2", 1 / a.pressure.gamma},
-                                                          {"text", a.pressure.text}}
-                                         : nlohmann::json{{"model", "ideal_gas"}, {"gamma", a.pressure.gamma}, {"text", a.pressure.text}}},
+            {"pressure",
+             a.pressure.tait
+                 ? nlohmann::json{{"model", "tait"},
+                                  {"coef_sound", a.pressure.coef_sound},
+                                  {"p0_over_rho_c2", 1 / a.pressure.gamma},
+                                  {"text", a.pressure.text}}
+                 : nlohmann::json{{"model", "ideal_gas"}, {"gamma", a.pressure.gamma}, {"text", a.pressure.text}}},
             {"window", {r.window_min, r.window_max}},
             {"recommended", recommended},
             {"windows", windows},
@@ -207,11 +222,13 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
 void print_assess(const AssessRequest& r, const AssessResult& a)
 {
     print_eps(a.at);
-    fmt::print(results_file(), "condition (22), epsilon = {:g}: {} (margin {:.3g}: epsilon less the largest error at any site)\n",
+    fmt::print(results_file(),
+               "condition (22), epsilon = {:g}: {} (margin {:.3g}: epsilon less the largest error at any site)\n",
                r.epsilon, a.accurate(r.epsilon) ? "holds at every site" : "fails", r.epsilon - a.worst);
     const std::string pressure = a.pressure.tait ? a.pressure.text : fmt::format("gamma = {:g}", r.gamma);
     for (const auto& s : a.stability)
-        fmt::print(results_file(), "linear stability, {} h ({}): {}\n", h_model_name(s.h_model), pressure, stability_text(s));
+        fmt::print(results_file(), "linear stability, {} h ({}): {}\n", h_model_name(s.h_model), pressure,
+                   stability_text(s));
     fmt::print(results_file(), "{}\n", a.verdict);
 }
 

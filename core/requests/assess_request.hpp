@@ -19,9 +19,9 @@
 namespace sphkern {
 
 struct AssessRequest {
-    EpsRequest setting;                          // one k, or the code's setting
-    double window_min = 0.75, window_max = 2.0;  // in k: where a setting is recommended
-    double epsilon = 0.01;                       // of condition (22)
+    EpsRequest setting;                         // one k, or the code's setting
+    double window_min = 0.75, window_max = 2.0; // in k: where a setting is recommended
+    double epsilon = 0.01;                      // of condition (22)
     double gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound; // a Tait code's c / sqrt(g H), default the code's
     int threads = 0;                  // of the window's scan over k (0: every core)
@@ -42,7 +42,8 @@ struct AssessStability {
 
 // The linear verdict at one k for an h model (the fastest mode's kind and growth time where
 // unstable), and it in words: "stable", "unstable (transverse mode growing in 9.75 d/c)".
-AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h, double horizon);
+AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h,
+                             double horizon);
 std::string stability_text(const AssessStability& s);
 
 // A window narrower than this, half its width over its centre in h, is no setting for real
@@ -59,12 +60,12 @@ struct AssessWindow {
 };
 
 struct AssessResult {
-    EpsAtK at;                  // k and the errors at every site
-    double worst = 0;           // the largest |eps_rho| or |eps_gradP| over the sites
+    EpsAtK at;                              // k and the errors at every site
+    double worst = 0;                       // the largest |eps_rho| or |eps_gradP| over the sites
     std::vector<AssessStability> stability; // fixed h, then adaptive h
-    RootsResult window;         // condition (22), stability and the recommended k of the window
-    std::vector<AssessWindow> windows; // every interval both accurate and stable, in k order
-    std::optional<std::size_t> nearest; // the window that holds the setting, or the nearest to it
+    RootsResult window;                     // condition (22), stability and the recommended k of the window
+    std::vector<AssessWindow> windows;      // every interval both accurate and stable, in k order
+    std::optional<std::size_t> nearest;     // the window that holds the setting, or the nearest to it
     const CodeProfile* code = nullptr;
     StabilityPressure pressure; // the pressure at rest the verdicts assume
     std::string verdict;        // the one line

@@ -14,10 +14,10 @@
 namespace sphkern {
 
 struct SweepPoint {
-    double value = 0;          // the code's parameter
+    double value = 0; // the code's parameter
     double mean_neighbours = 0;
     ParticleRegion interior;
-    double margin = 0;         // epsilon less the interior's worst
+    double margin = 0; // epsilon less the interior's worst
     bool holds = false;
 };
 

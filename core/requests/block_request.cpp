@@ -24,7 +24,8 @@ BlockRun run_block(const BlockRequest& r, const BlockSources& sources, const Ker
 {
     const auto dimension = static_cast<std::size_t>(lattice.dimension);
     if (r.cells.size() != dimension) // a value that does not fit the lattice: input, as for every source
-        fail_input(fmt::format("{}: the lattice is {}D, expected {} cell counts", sources.size.name, dimension, dimension));
+        fail_input(
+            fmt::format("{}: the lattice is {}D, expected {} cell counts", sources.size.name, dimension, dimension));
     BlockRun run;
     for (std::size_t a = 0; a < r.cells.size(); ++a) run.options.cells[a] = r.cells[a];
     run.options.periodic = r.periodic;
@@ -44,16 +45,27 @@ nlohmann::json block_document(const BlockRun& run, const Kernel& kernel, const L
     const auto& result = run.result;
     nlohmann::json layers = nlohmann::json::array();
     for (const auto& l : result.layers())
-        layers.push_back({{"layer", l.layer}, {"particles", l.particles}, {"sites", l.sites},
-                          {"eps_rho_min", l.rho_min}, {"eps_rho_max", l.rho_max},
-                          {"eps_gradp_min", l.gradp_min}, {"eps_gradp_max", l.gradp_max}});
-    return {{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", block.k}, {"a_p", block.a_p},
-            {"size", block.cells}, {"periodic", block.periodic},
-            {"form", gradient_form_name(block.form)}, {"particles", result.particles()},
-            {"pair_interactions_per_pass", result.pair_interactions}, {"threads", result.threads},
+        layers.push_back({{"layer", l.layer},
+                          {"particles", l.particles},
+                          {"sites", l.sites},
+                          {"eps_rho_min", l.rho_min},
+                          {"eps_rho_max", l.rho_max},
+                          {"eps_gradp_min", l.gradp_min},
+                          {"eps_gradp_max", l.gradp_max}});
+    return {{"kernel", kernel.label()},
+            {"lattice", lattice.name},
+            {"k", block.k},
+            {"a_p", block.a_p},
+            {"size", block.cells},
+            {"periodic", block.periodic},
+            {"form", gradient_form_name(block.form)},
+            {"particles", result.particles()},
+            {"pair_interactions_per_pass", result.pair_interactions},
+            {"threads", result.threads},
             {"fused_passes", result.timings.fused},
             {"seconds", {{"setup", result.timings.setup}, {"evaluation", result.timings.evaluation}}},
-            {"pair_interactions_per_second", run.pairs_per_second}, {"layers", layers}};
+            {"pair_interactions_per_second", run.pairs_per_second},
+            {"layers", layers}};
 }
 
 void print_block(const BlockRun& run, const Kernel& kernel, const Lattice& lattice)
@@ -85,7 +97,9 @@ void write_block_vtk(std::ostream& out, const BlockResult& r)
                      r.threads);
     auto scalars = [&](const char* header, const auto& values) {
         w.print("{}", header);
-        w.rows(n, r.threads, [&](fmt::memory_buffer& row, std::size_t i) { fmt::format_to(std::back_inserter(row), "{}\n", values[i]); });
+        w.rows(n, r.threads, [&](fmt::memory_buffer& row, std::size_t i) {
+            fmt::format_to(std::back_inserter(row), "{}\n", values[i]);
+        });
     };
     scalars("SCALARS eps_rho double 1\nLOOKUP_TABLE default\n", r.eps_rho);
     scalars("SCALARS eps_gradp double 1\nLOOKUP_TABLE default\n", r.eps_gradp);
@@ -95,9 +109,13 @@ void write_block_vtk(std::ostream& out, const BlockResult& r)
 void write_block_vtu(std::ostream& out, const BlockResult& r)
 {
     const std::size_t n = r.particles();
-    auto values = [](const auto& array) { return [&array](std::size_t i, int) { return static_cast<double>(array[i]); }; };
+    auto values = [](const auto& array) {
+        return [&array](std::size_t i, int) { return static_cast<double>(array[i]); };
+    };
     write_vtu(out, {{r.x.data(), n}, {r.y.data(), n}, {r.z.data(), n}},
-              {{"layer", 1, values(r.layer)}, {"eps_rho", 1, values(r.eps_rho)}, {"eps_gradp", 1, values(r.eps_gradp)}});
+              {{"layer", 1, values(r.layer)},
+               {"eps_rho", 1, values(r.eps_rho)},
+               {"eps_gradp", 1, values(r.eps_gradp)}});
 }
 
 void write_block_csv(std::ostream& out, const BlockResult& r)

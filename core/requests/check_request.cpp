@@ -19,8 +19,9 @@ bool only_files(const CheckRequest& r) { return r.names.empty() && !r.all; }
 
 CheckSources check_sources(FrontEnd f)
 {
-    return {value_named(f, "timeout"), f == FrontEnd::command_line ? "name a kernel, give --plugin FILE, or use --all"
-                                                                   : "name a kernel, give plugin=FILE, or use all=True"};
+    return {value_named(f, "timeout"), f == FrontEnd::command_line
+                                           ? "name a kernel, give --plugin FILE, or use --all"
+                                           : "name a kernel, give plugin=FILE, or use all=True"};
 }
 
 void check_check_request(const CheckRequest& r, const CheckSources& sources)
@@ -72,8 +73,8 @@ void print_check(const KernelCheck& check)
                    name_width, c["status"].get<std::string>(), status_width, c["detail"].get<std::string>());
     for (const auto& c : d["checks"])
         if (c.contains("hint"))
-            fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(), c["check"].get<std::string>(),
-                       c["hint"].get<std::string>());
+            fmt::print(results_file(), "  hint ({}D {}): {}\n", c["dimension"].get<int>(),
+                       c["check"].get<std::string>(), c["hint"].get<std::string>());
 }
 
 } // namespace sphkern

@@ -16,7 +16,10 @@ namespace sphkern {
 
 namespace {
 
-PairSmoothing pair_smoothing(const CodeProfile& profile) { return profile.pair_mean ? PairSmoothing::mean : PairSmoothing::own; }
+PairSmoothing pair_smoothing(const CodeProfile& profile)
+{
+    return profile.pair_mean ? PairSmoothing::mean : PairSmoothing::own;
+}
 
 const char* count_name(NeighbourCount counts) { return counts == NeighbourCount::number ? "number" : "mass"; }
 
@@ -25,11 +28,11 @@ NeighbourCount counts_of(const CodeProfile& profile, const CodeSetting& setting,
 {
     if (!setting.counts) return profile.counts;
     if (!profile.from_sph_density)
-        sources.code.fail(fmt::format("{}: {} sets h from the mean spacing, with no neighbour count; expected no count", setting.code,
-                                      profile.title));
+        sources.code.fail(fmt::format("{}: {} sets h from the mean spacing, with no neighbour count; expected no count",
+                                      setting.code, profile.title));
     if (*setting.counts != profile.counts && profile.count_switch.empty())
-        sources.code.fail(fmt::format("{}: {} counts neighbours by {} only ({}); expected that count", setting.code, profile.title,
-                                      count_name(profile.counts), profile.count_source));
+        sources.code.fail(fmt::format("{}: {} counts neighbours by {} only ({}); expected that count", setting.code,
+                                      profile.title, count_name(profile.counts), profile.count_source));
     return *setting.counts;
 }
 
@@ -49,11 +52,13 @@ void require_neighbour_reach(const CodeProfile& profile, const Kernel& kernel, i
                              const ValueSource& source)
 {
     if (!profile.from_sph_density) return;
-    const double lone = profile.parameter_of(kernel, dimension, std::pow(kernel.w(0, dimension, 1), 1.0 / dimension), 1);
+    const double lone =
+        profile.parameter_of(kernel, dimension, std::pow(kernel.w(0, dimension, 1), 1.0 / dimension), 1);
     if (!(value > lone))
-        source.fail(fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support, "
-                                "below which {}'s density solve has no h",
-                                value, lone, profile.parameter, profile.title));
+        source.fail(
+            fmt::format("{:g}: expected more than {:.6g}, the {} of a particle with no neighbour inside its support, "
+                        "below which {}'s density solve has no h",
+                        value, lone, profile.parameter, profile.title));
 }
 
 // The fraction of a particle's own density term the code subtracts; an Error naming the code
@@ -65,8 +70,8 @@ double self_bias(const CodeProfile& profile, const Kernel& kernel, int dimension
         std::vector<std::string> codes;
         for (const auto& p : code_profiles())
             if (p.self_bias) codes.push_back(fmt::format("{} ({})", p.name, p.bias_switch));
-        sources.code.fail(fmt::format("{}: {} subtracts no bias from the density; expected a code that does: {}", profile.name,
-                                      profile.title, fmt::join(codes, ", ")));
+        sources.code.fail(fmt::format("{}: {} subtracts no bias from the density; expected a code that does: {}",
+                                      profile.name, profile.title, fmt::join(codes, ", ")));
     }
     return profile.self_bias(kernel, dimension, value, sources.value);
 }
@@ -80,8 +85,8 @@ std::optional<CodeSetting> code_setting_of(const std::optional<std::string>& cod
         throw Error(sources.code.code, fmt::format("{} = {}: expected {}, the code's parameter, too", sources.code.name,
                                                    *code, sources.value.name));
     if (value && !code)
-        throw Error(sources.value.code, fmt::format("{}: is a code's parameter; expected {} too", sources.value.name,
-                                                    sources.code.name));
+        throw Error(sources.value.code,
+                    fmt::format("{}: is a code's parameter; expected {} too", sources.value.name, sources.code.name));
     if (!code) return std::nullopt;
     return CodeSetting{*code, *value};
 }
@@ -152,7 +157,9 @@ SmoothingSpec stored_code_smoothing(const std::string& code, const CodeSettingSo
 
 nlohmann::json code_k_json(const CodeK& code)
 {
-    nlohmann::json out = {{"name", code.setting.code}, {"parameter", code.parameter}, {"value", code.setting.value},
+    nlohmann::json out = {{"name", code.setting.code},
+                          {"parameter", code.parameter},
+                          {"value", code.setting.value},
                           {"value_at_k", code.value_at_k}};
     if (code.a_p) out["a_p"] = *code.a_p;
     return out;
@@ -161,7 +168,9 @@ nlohmann::json code_k_json(const CodeK& code)
 nlohmann::json code_answer_json(const CodeSetting& setting)
 {
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
-    nlohmann::json out = {{"name", setting.code}, {"parameter", profile.parameter}, {"value", setting.value},
+    nlohmann::json out = {{"name", setting.code},
+                          {"parameter", profile.parameter},
+                          {"value", setting.value},
                           {"h_from", profile.from_sph_density ? "sph_density" : "mean_spacing"}};
     if (profile.from_sph_density) out["counts"] = count_name(setting.counts.value_or(profile.counts));
     if (setting.bias_correction) out["bias_correction"] = profile.bias_switch;
@@ -171,19 +180,23 @@ nlohmann::json code_answer_json(const CodeSetting& setting)
 std::string code_answer_text(const CodeSetting& setting)
 {
     const auto& profile = code_profile(setting.code, ValueSource::argument("code"));
-    return fmt::format("{} {} = {:.10g}: h from {}{}", setting.code, profile.parameter, setting.value,
-                       !profile.from_sph_density               ? "the mean spacing"
-                       : setting.counts.value_or(profile.counts) == NeighbourCount::number
-                           ? "each particle's neighbour count sum_j W, by number as the code counts (solved for every particle)"
-                                                                  : "each particle's SPH density (solved for every particle)",
-                       setting.bias_correction ? ", less the code's bias (" + profile.bias_switch + ")" : "");
+    return fmt::format(
+        "{} {} = {:.10g}: h from {}{}", setting.code, profile.parameter, setting.value,
+        !profile.from_sph_density ? "the mean spacing"
+        : setting.counts.value_or(profile.counts) == NeighbourCount::number
+            ? "each particle's neighbour count sum_j W, by number as the code counts (solved for every particle)"
+            : "each particle's SPH density (solved for every particle)",
+        setting.bias_correction ? ", less the code's bias (" + profile.bias_switch + ")" : "");
 }
 
 nlohmann::json stored_code_json(const std::string& code, const Kernel& kernel, int dimension)
 {
     const auto& profile = code_profile(code, ValueSource::argument("code"));
-    return {{"name", code}, {"parameter", profile.parameter}, {"h_from", "file"},
-            {"support_per_h", code_support_per_h(profile, kernel, dimension)}, {"pair_h", profile.pair_mean ? "mean" : "own"}};
+    return {{"name", code},
+            {"parameter", profile.parameter},
+            {"h_from", "file"},
+            {"support_per_h", code_support_per_h(profile, kernel, dimension)},
+            {"pair_h", profile.pair_mean ? "mean" : "own"}};
 }
 
 std::string stored_code_text(const std::string& code, const Kernel& kernel, int dimension)

@@ -20,7 +20,8 @@ namespace sphkern {
 
 struct CodeSetting {
     CodeSetting(std::string code_name = {}, double parameter = 0, std::optional<NeighbourCount> count = std::nullopt)
-        : code(std::move(code_name)), value(parameter), counts(count) {}
+        : code(std::move(code_name)), value(parameter), counts(count)
+    {}
     std::string code;
     double value = 0;
     // On a particle set, what the code's density solve counts where the code lets it be chosen
@@ -47,9 +48,9 @@ void check_code_setting(const CodeSetting& setting, const CodeSettingSources& so
 // solves for h with it, so that the code's parameter recomputed at k is the one given.
 struct CodeK {
     CodeSetting setting;
-    std::string parameter;  // the code's name for it ("eta")
+    std::string parameter; // the code's name for it ("eta")
     double k = 0;
-    double value_at_k = 0;  // the code's parameter recomputed at k (equal to the given to 1e-12)
+    double value_at_k = 0;     // the code's parameter recomputed at k (equal to the given to 1e-12)
     std::optional<double> a_p; // the volume the code fixes (SPlisHSPlasH), in place of the lattice's
 };
 CodeK k_of_code_setting(const CodeSetting& setting, const CodeSettingSources& sources, const Kernel& kernel,

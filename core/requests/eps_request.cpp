@@ -21,8 +21,8 @@ void check_eps_request(const EpsRequest& r, const EpsSources& sources)
     for (double k : r.k) check_k(k, sources.k);
     // Refused as input (exit 3) since the axis is valid, only not here.
     if (r.axis == Axis::nh)
-        fail_input(fmt::format("{} nh names a window, not one value: give {} on the k or h_over_l axis", sources.axis.name,
-                               sources.k.name));
+        fail_input(fmt::format("{} nh names a window, not one value: give {} on the k or h_over_l axis",
+                               sources.axis.name, sources.k.name));
     check_evaluation(r.evaluation, sources.evaluation);
 }
 
@@ -44,7 +44,8 @@ EpsAtK run_eps_at_k(const EpsRequest& r, const EpsSources& sources, const Kernel
         const double given = r.k.at(0);
         result.k = r.axis == Axis::eta ? k_of_eta(given, evaluation.a_p, lattice.dimension) : given;
         // Refused as input (exit 3): the k is the conversion's, not a value given.
-        check_k(result.k, ValueSource::argument("k"), fmt::format(" ({} on the h_over_l axis)", sources.k.about(given)));
+        check_k(result.k, ValueSource::argument("k"),
+                fmt::format(" ({} on the h_over_l axis)", sources.k.about(given)));
     }
     result.eta = eta_of_k(result.k, evaluation.a_p, lattice.dimension);
     result.support_radius = kernel.support() * result.k;
@@ -66,10 +67,12 @@ std::vector<ErrorValues> run_eps_series(const EpsRequest& r, const EpsSources& s
         for (double& value : k) {
             const double given = value;
             value = k_of_eta(given, evaluation.a_p, lattice.dimension);
-            check_k(value, ValueSource::argument("k"), fmt::format(" ({} on the h_over_l axis)", sources.k.about(given)));
+            check_k(value, ValueSource::argument("k"),
+                    fmt::format(" ({} on the h_over_l axis)", sources.k.about(given)));
         }
     const double k_max = *std::max_element(k.begin(), k.end());
-    HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max, evaluation.mode);
+    HydrostaticErrors errors(kernel, lattice, evaluation.site, evaluation.a_p, evaluation.gravity, k_max,
+                             evaluation.mode);
     std::vector<ErrorValues> values;
     values.reserve(k.size());
     for (double one : k) values.push_back(errors.at(one));
@@ -81,12 +84,20 @@ nlohmann::json eps_document(const EpsAtK& r)
     nlohmann::json per_site = nlohmann::json::array();
     for (const auto& s : r.sites) per_site.push_back(site_report_json(s, r.dimension));
     const auto& v = r.chosen();
-    nlohmann::json document = {{"kernel", r.kernel}, {"lattice", r.lattice}, {"k", r.k}, {"a_p", r.a_p}, {"h_over_l", r.eta},
-            {"site", r.site}, {"eps_rho", v.eps_rho}, {"eps_gradp", v.eps_gradp}, {"lateral", v.lateral},
-            {"neighbours", v.neighbours}, {"support_radius", r.support_radius}, {"sites", per_site},
-            {"worst_site", r.sites[r.worst].site}};
-    if (r.code)
-        document["code"] = code_k_json(*r.code);
+    nlohmann::json document = {{"kernel", r.kernel},
+                               {"lattice", r.lattice},
+                               {"k", r.k},
+                               {"a_p", r.a_p},
+                               {"h_over_l", r.eta},
+                               {"site", r.site},
+                               {"eps_rho", v.eps_rho},
+                               {"eps_gradp", v.eps_gradp},
+                               {"lateral", v.lateral},
+                               {"neighbours", v.neighbours},
+                               {"support_radius", r.support_radius},
+                               {"sites", per_site},
+                               {"worst_site", r.sites[r.worst].site}};
+    if (r.code) document["code"] = code_k_json(*r.code);
     return document;
 }
 
@@ -114,12 +125,15 @@ void print_every_site(const EpsAtK& r)
 void print_eps(const EpsAtK& r)
 {
     const auto& v = r.chosen();
-    const std::string given = r.code ? fmt::format(" ({} {} = {:.10g})", r.code->setting.code, r.code->parameter, r.code->setting.value)
-                              : r.axis == Axis::eta ? fmt::format(" (h/l = {:.10g})", r.eta)
-                                                    : "";
+    const std::string given =
+        r.code ? fmt::format(" ({} {} = {:.10g})", r.code->setting.code, r.code->parameter, r.code->setting.value)
+        : r.axis == Axis::eta ? fmt::format(" (h/l = {:.10g})", r.eta)
+                              : "";
     fmt::print(results_file(), "{} on {} at k = {}, a_p = {:.10g}{}\n", r.kernel, r.lattice, r.k, r.a_p, given);
-    fmt::print(results_file(), "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
-               v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, r.support_radius);
+    fmt::print(
+        results_file(),
+        "  eps_rho    {:.12g}\n  eps_gradP  {:.12g}\n  lateral    {:.3g}\n  N_H        {}\n  H/d        {:.10g}\n",
+        v.eps_rho, v.eps_gradp, v.lateral, v.neighbours, r.support_radius);
     print_every_site(r);
 }
 

@@ -20,8 +20,8 @@
 namespace sphkern {
 
 struct EpsRequest {
-    std::vector<double> k; // on `axis`: the command line gives one, Python an array (flattened)
-    Axis axis = Axis::k;   // k or eta; nh names a window, not a value
+    std::vector<double> k;           // on `axis`: the command line gives one, Python an array (flattened)
+    Axis axis = Axis::k;             // k or eta; nh names a window, not a value
     std::optional<CodeSetting> code; // instead of k (the command line's one value)
     EvaluationInputs evaluation;
 };
@@ -42,10 +42,10 @@ struct EpsAtK {
     int dimension = 0;
     Axis axis = Axis::k;
     double k = 0, a_p = 0, eta = 0, support_radius = 0; // support_radius: H/d = R k
-    int site = 0;                  // the chosen site, checked against the lattice by run_eps_at_k
-    std::optional<CodeK> code;     // the code's setting given, whose k this is
-    std::vector<SiteReport> sites; // every site of the lattice, in order: sites[s].site == s
-    std::size_t worst = 0;         // index into sites
+    int site = 0;                                       // the chosen site, checked against the lattice by run_eps_at_k
+    std::optional<CodeK> code;                          // the code's setting given, whose k this is
+    std::vector<SiteReport> sites;                      // every site of the lattice, in order: sites[s].site == s
+    std::size_t worst = 0;                              // index into sites
     // Bounds-checked: an EpsAtK built by hand with a site it lacks throws, never reads past the end.
     const ErrorValues& chosen() const { return sites.at(static_cast<std::size_t>(site)).values; }
 };

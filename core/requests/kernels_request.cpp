@@ -21,8 +21,8 @@ void print_kernels(KernelRegistry& registry)
     for (const auto& p : registry.plugins()) {
         std::string params;
         for (const auto& q : p->parameters) params += (params.empty() ? "" : ",") + q.name;
-        fmt::print(results_file(), "{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support, p->dimensions_text(),
-                   params.empty() ? "-" : params, p->reference, "", p->source);
+        fmt::print(results_file(), "{:<20} {:>4g} {:<6} {:<12} {}\n{:<46} {}\n", p->name, p->support,
+                   p->dimensions_text(), params.empty() ? "-" : params, p->reference, "", p->source);
     }
 }
 

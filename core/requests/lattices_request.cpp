@@ -26,7 +26,8 @@ void print_examples()
     fmt::print(results_file(), "\nexamples (several sites; give the file):\n");
     for (const auto& file : files) {
         const auto lattice = read_lattice(file);
-        fmt::print(results_file(), "{:<12} {:>3} {:>5}  {}\n", lattice.name, lattice.dimension, lattice.sites(), file.string());
+        fmt::print(results_file(), "{:<12} {:>3} {:>5}  {}\n", lattice.name, lattice.dimension, lattice.sites(),
+                   file.string());
     }
 }
 
@@ -72,7 +73,8 @@ void print_lattice_description(const Lattice& lattice, const nlohmann::json& d)
         std::string position, shells;
         for (double v : site["position"]) position += fmt::format("{}{:.6f}", position.empty() ? "" : ", ", v);
         for (const auto& s : site["shells"])
-            shells += fmt::format("{}{:.4f} ({})", shells.empty() ? "" : ", ", s["radius"].get<double>(), s["count"].get<int>());
+            shells += fmt::format("{}{:.4f} ({})", shells.empty() ? "" : ", ", s["radius"].get<double>(),
+                                  s["count"].get<int>());
         fmt::print(results_file(), "  site {} at ({}) d: shells up to {} d: {}\n", site["site"].get<int>(), position,
                    d["shells_radius"].get<double>(), shells);
     }

@@ -24,17 +24,18 @@ void print_sweep_table(std::FILE* out, const ParticleAnswer& answer)
     fmt::print(out, "\n{:>9} {:>9} {:>10} {:>12} {:>12} {:>12} {:>14} {:>12} {:>12}\n", "h/l", "N_H", "neighbours",
                "mean e0", "rms e0", "rms eps_gradp", "rms gradp_sum", "rms |e1|", "rms ||E||_F");
     for (const auto& p : answer.points)
-        fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n", p.eta,
-                   p.nh, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms, p.statistic("eps_gradp").rms,
-                   p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms, p.statistic("||E||_F").rms);
+        fmt::print(out, "{:>9.4f} {:>9.3f} {:>10.2f} {:>12.4e} {:>12.4e} {:>12.4e} {:>14.4e} {:>12.4e} {:>12.4e}\n",
+                   p.eta, p.nh, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms,
+                   p.statistic("eps_gradp").rms, p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms,
+                   p.statistic("||E||_F").rms);
 }
 
 } // namespace
 
 nlohmann::json summary_json(const Summary& s)
 {
-    return {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min}, {"max", s.max},
-            {"p1", s.p1},     {"p50", s.p50}, {"p99", s.p99}};
+    return {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min},
+            {"max", s.max},   {"p1", s.p1},   {"p50", s.p50}, {"p99", s.p99}};
 }
 
 nlohmann::json phases_json(const PhaseTimes& phases)
@@ -48,13 +49,19 @@ nlohmann::json point_json(const ParticlePoint& p)
 {
     nlohmann::json statistics = nlohmann::json::object();
     for (const auto& [name, s] : p.statistics) statistics[name] = summary_json(s);
-    nlohmann::json point = {{"h_over_l", p.eta},         {"nh", p.nh},       {"h_min", p.h_min}, {"h_max", p.h_max},
-                            {"mean_neighbours", p.mean_neighbours}, {"pairs", p.pairs}, {"seconds", p.seconds},
+    nlohmann::json point = {{"h_over_l", p.eta},
+                            {"nh", p.nh},
+                            {"h_min", p.h_min},
+                            {"h_max", p.h_max},
+                            {"mean_neighbours", p.mean_neighbours},
+                            {"pairs", p.pairs},
+                            {"seconds", p.seconds},
                             {"cpu_seconds", p.cpu_seconds},
                             {"statistics", statistics}};
     if (!p.histograms.empty()) {
         nlohmann::json histograms = nlohmann::json::object();
-        for (const auto& [name, h] : p.histograms) histograms[name] = {{"min", h.lo}, {"max", h.hi}, {"counts", h.counts}};
+        for (const auto& [name, h] : p.histograms)
+            histograms[name] = {{"min", h.lo}, {"max", h.hi}, {"counts", h.counts}};
         point["histograms"] = histograms;
     }
     return point;
@@ -63,7 +70,9 @@ nlohmann::json point_json(const ParticlePoint& p)
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,
                                     const ParticleArguments& asked)
 {
-    nlohmann::json source = {{"name", set.name}, {"particles", answer.particles}, {"dimension", set.dimension},
+    nlohmann::json source = {{"name", set.name},
+                             {"particles", answer.particles},
+                             {"dimension", set.dimension},
                              {"periodic", set.box.has_value()}};
     if (set.neighbours_only) source["neighbours_only"] = set.neighbours_only;
     if (set.box) {
@@ -95,8 +104,8 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
     fmt::print(out, "{} on {}: {} particles{} in {}D, {}, volumes {} (mean {:.6g}), gravity ({:.4g}, {:.4g}{})\n",
                kernel.label(), set.name, answer.particles,
                set.neighbours_only ? fmt::format(" (and {} neighbours only)", set.neighbours_only) : "", set.dimension,
-               set.box ? "periodic box" : "free (no box)",
-               volume_model_name(answer.volume), answer.mean_volume, answer.gravity.x(), answer.gravity.y(),
+               set.box ? "periodic box" : "free (no box)", volume_model_name(answer.volume), answer.mean_volume,
+               answer.gravity.x(), answer.gravity.y(),
                set.dimension == 3 ? fmt::format(", {:.4g}", answer.gravity.z()) : "");
     if (asked.code) fmt::print(out, "{}\n", code_answer_text(*asked.code));
     if (asked.stored_h_code) fmt::print(out, "{}\n", stored_code_text(*asked.stored_h_code, kernel, set.dimension));
@@ -105,14 +114,16 @@ void print_particle_answer(std::FILE* out, const Kernel& kernel, const ParticleS
         return;
     }
     for (const auto& p : answer.points) {
-        fmt::print(out, "\nh/l = {:.6g} (h over the mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
-                        "average, {} pairs in {:.3f} s\n",
-                   p.eta, p.nh, p.h_min, p.h_max, p.mean_neighbours, p.pairs, p.seconds);
-        fmt::print(out, "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "measure", "mean", "std", "rms",
-                   "min", "p1", "p50", "p99", "max");
+        fmt::print(
+            out,
+            "\nh/l = {:.6g} (h over the mean spacing), N_H = {:.6g}, h in [{:.6g}, {:.6g}]: {:.2f} neighbours on "
+            "average, {} pairs in {:.3f} s\n",
+            p.eta, p.nh, p.h_min, p.h_max, p.mean_neighbours, p.pairs, p.seconds);
+        fmt::print(out, "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}\n", "measure", "mean", "std",
+                   "rms", "min", "p1", "p50", "p99", "max");
         for (const auto& [name, s] : p.statistics)
-            fmt::print(out, "{:<14} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e}\n", name,
-                       s.mean, s.std, s.rms, s.min, s.p1, s.p50, s.p99, s.max);
+            fmt::print(out, "{:<14} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e} {:>12.4e}\n",
+                       name, s.mean, s.std, s.rms, s.min, s.p1, s.p50, s.p99, s.max);
         for (const auto& [name, h] : p.histograms) {
             fmt::print(out, "histogram of {} over [{:.6g}, {:.6g}]:", name, h.lo, h.hi);
             for (auto c : h.counts) fmt::print(out, " {}", c);
@@ -137,7 +148,8 @@ void format_row(fmt::memory_buffer& row, const CsvRow& r, bool three)
     auto to = std::back_inserter(row);
     fmt::format_to(to, "{},{},{},", r.id, r.x, r.y);
     if (three) fmt::format_to(to, "{},", r.z);
-    fmt::format_to(to, "{},{},{},{},{},{},{},{},", r.h, r.volume, r.neighbours, r.e0, r.eps_rho, r.eps_gradp, r.e1[0], r.e1[1]);
+    fmt::format_to(to, "{},{},{},{},{},{},{},{},", r.h, r.volume, r.neighbours, r.e0, r.eps_rho, r.eps_gradp, r.e1[0],
+                   r.e1[1]);
     if (three) fmt::format_to(to, "{},", r.e1[2]);
     fmt::format_to(to, "{},{}", r.m1[0], r.m1[1]);
     if (three) fmt::format_to(to, ",{}", r.m1[2]);
@@ -161,13 +173,15 @@ void write_particle_csv(std::ostream& stream, const ParticleSet& set, const Part
     print_csv_header(out, three);
     out.rows(set.measured(), answer.threads, [&](fmt::memory_buffer& row, std::size_t i) {
         const MeasureRecord& r = m.scalars[i];
-        format_row(row, {i, set.x[i], set.y[i], set.z[i], answer.h[i], answer.volumes[i], r.neighbours, r.e0, m.eps_rho_of(i),
-                         r.eps_gradp, m.e1[i], m.m1[i]},
+        format_row(row,
+                   {i, set.x[i], set.y[i], set.z[i], answer.h[i], answer.volumes[i], r.neighbours, r.e0,
+                    m.eps_rho_of(i), r.eps_gradp, m.e1[i], m.m1[i]},
                    three);
     });
 }
 
-ParticleCsvRows::ParticleCsvRows(std::ostream& out, int dimension, int threads) : out_(out), three_(dimension == 3), threads_(threads)
+ParticleCsvRows::ParticleCsvRows(std::ostream& out, int dimension, int threads)
+    : out_(out), three_(dimension == 3), threads_(threads)
 {
     print_csv_header(out_, three_);
 }
@@ -175,8 +189,19 @@ ParticleCsvRows::ParticleCsvRows(std::ostream& out, int dimension, int threads) 
 void ParticleCsvRows::write(const MeasuredRows& r)
 {
     out_.rows(r.count, threads_, [&](fmt::memory_buffer& row, std::size_t k) {
-        format_row(row, {r.begin + k, r.x[k], r.y[k], r.z[k], r.h[k], r.volume[k], static_cast<long long>(r.neighbours[k]), r.e0[k],
-                         r.eps_rho[k], r.eps_gradp[k], {r.e1[0][k], r.e1[1][k], r.e1[2][k]}, {r.m1[0][k], r.m1[1][k], r.m1[2][k]}},
+        format_row(row,
+                   {r.begin + k,
+                    r.x[k],
+                    r.y[k],
+                    r.z[k],
+                    r.h[k],
+                    r.volume[k],
+                    static_cast<long long>(r.neighbours[k]),
+                    r.e0[k],
+                    r.eps_rho[k],
+                    r.eps_gradp[k],
+                    {r.e1[0][k], r.e1[1][k], r.e1[2][k]},
+                    {r.m1[0][k], r.m1[1][k], r.m1[2][k]}},
                    three_);
     });
 }
@@ -216,7 +241,9 @@ void write_particle_vtu(std::ostream& out, const ParticleSet& set, const Particl
     const auto& m = *answer.measures;
     const std::size_t n = set.measured(); // the neighbours-only particles have no measures
     const bool three = set.dimension == 3;
-    const VtuPoints points{{set.x.data(), n}, {set.y.data(), n}, three ? std::span<const double>(set.z.data(), n) : std::span<const double>{}};
+    const VtuPoints points{{set.x.data(), n},
+                           {set.y.data(), n},
+                           three ? std::span<const double>(set.z.data(), n) : std::span<const double>{}};
     auto scalar = [](const char* name, auto value) {
         return VtuArray{name, 1, [value](std::size_t i, int) { return static_cast<double>(value(i)); }};
     };

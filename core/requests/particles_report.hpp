@@ -14,7 +14,7 @@
 namespace sphkern {
 
 nlohmann::json summary_json(const Summary& summary);
-nlohmann::json phases_json(const PhaseTimes& phases); // {"phase": seconds, ...}
+nlohmann::json phases_json(const PhaseTimes& phases);  // {"phase": seconds, ...}
 nlohmann::json point_json(const ParticlePoint& point); // eta, N_H, neighbours and the statistics of one h
 // With the code the h came from, where `asked` names one ("code" in the JSON, a line in the text).
 nlohmann::json particle_answer_json(const Kernel& kernel, const ParticleSet& set, const ParticleAnswer& answer,

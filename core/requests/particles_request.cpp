@@ -10,8 +10,16 @@ namespace sphkern {
 ParticleSources particle_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {smoothing_sources(f), n("h_over_l_range"), n("nh_range"), n("steps"),     n("volume"),
-            n("gravity"),         n("depth"),     n("rho0"),     n("threads"),   n("histogram"),
+    return {smoothing_sources(f),
+            n("h_over_l_range"),
+            n("nh_range"),
+            n("steps"),
+            n("volume"),
+            n("gravity"),
+            n("depth"),
+            n("rho0"),
+            n("threads"),
+            n("histogram"),
             f == FrontEnd::command_line ? ValueSource::option("--csv and --vtk") : n("arrays"),
             {n("code"), n("value")}}; // the command line names the code's parameter itself
 }
@@ -31,7 +39,8 @@ std::optional<SmoothingSweep> sweep_of(const ParticleArguments& given, const Par
     if (!given.eta_range && !given.nh_range) return std::nullopt;
     const bool eta = given.eta_range.has_value();
     const auto& [from, to] = eta ? *given.eta_range : *given.nh_range;
-    if (given.per_particle_files) sources.per_particle_files.fail("write one h per particle; they do not go with a sweep");
+    if (given.per_particle_files)
+        sources.per_particle_files.fail("write one h per particle; they do not go with a sweep");
     return checked_sweep(eta ? SmoothingRule::eta : SmoothingRule::nh, from, to, given.steps,
                          eta ? sources.eta_range : sources.nh_range, sources.steps);
 }
@@ -54,17 +63,20 @@ ParticleRequest particle_request(const ParticleArguments& given, const Kernel& k
                                  const ParticleSources& sources)
 {
     const auto& s = sources.smoothing;
-    require_at_most_one({{given.smoothing.eta.has_value(), &s.eta}, {given.smoothing.nh.has_value(), &s.nh},
-                         {given.smoothing.k.has_value(), &s.k}, {given.eta_range.has_value(), &sources.eta_range},
+    require_at_most_one({{given.smoothing.eta.has_value(), &s.eta},
+                         {given.smoothing.nh.has_value(), &s.nh},
+                         {given.smoothing.k.has_value(), &s.k},
+                         {given.eta_range.has_value(), &sources.eta_range},
                          {given.nh_range.has_value(), &sources.nh_range}});
     ParticleRequest request;
     request.sweep = sweep_of(given, sources);
     if (given.code || given.stored_h_code) {
         if (given.smoothing.eta || given.smoothing.nh || given.smoothing.k || request.sweep)
-            sources.code.code.fail("gives h for one setting; expected no " + s.eta.name + ", " + s.nh.name + ", " + s.k.name +
-                                   " or sweep beside it");
+            sources.code.code.fail("gives h for one setting; expected no " + s.eta.name + ", " + s.nh.name + ", " +
+                                   s.k.name + " or sweep beside it");
         if (given.smoothing.support_per_h)
-            sources.code.code.fail(fmt::format("gives the support over h; expected no {} beside it", s.support_per_h.name));
+            sources.code.code.fail(
+                fmt::format("gives the support over h; expected no {} beside it", s.support_per_h.name));
         if (given.stored_h_code) {
             request.smoothing = stored_code_smoothing(*given.stored_h_code, sources.code, kernel, set);
         } else {

@@ -17,13 +17,13 @@ namespace sphkern {
 // What was not given is empty.
 struct ParticleArguments {
     SmoothingArguments smoothing;
-    std::optional<CodeSetting> code; // instead of eta, N_H or k: a code's own setting (one h, no sweep)
+    std::optional<CodeSetting> code;          // instead of eta, N_H or k: a code's own setting (one h, no sweep)
     std::optional<std::string> stored_h_code; // a code alone: the set's stored h as that code stores it
     std::optional<std::array<double, 2>> eta_range, nh_range; // a sweep over [A, B]
-    int steps = 10;                                          // of a sweep
-    std::optional<std::string> volume;                       // uniform, file or voronoi
-    std::vector<double> volumes;                             // non-empty: one per particle (checked with the set)
-    std::optional<std::vector<double>> gravity;              // as many components as the set's dimension
+    int steps = 10;                                           // of a sweep
+    std::optional<std::string> volume;                        // uniform, file or voronoi
+    std::vector<double> volumes;                              // non-empty: one per particle (checked with the set)
+    std::optional<std::vector<double>> gravity;               // as many components as the set's dimension
     double depth = 1;
     std::optional<double> rho0;
     int threads = 0;

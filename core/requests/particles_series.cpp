@@ -44,7 +44,9 @@ std::vector<std::string> folder_files(const fs::path& folder)
         files.push_back(entry.path());
         names.insert(entry.path().filename().string());
     }
-    if (ec) fail_input(fmt::format("{}: the folder cannot be listed ({}); expected a folder of snapshots", folder.string(), ec.message()));
+    if (ec)
+        fail_input(fmt::format("{}: the folder cannot be listed ({}); expected a folder of snapshots", folder.string(),
+                               ec.message()));
     std::sort(files.begin(), files.end());
     std::vector<std::string> dumps, tables;
     for (const auto& file : files) {
@@ -54,9 +56,10 @@ std::vector<std::string> folder_files(const fs::path& folder)
         (is_code_dump(*format) ? dumps : tables).push_back(file.string());
     }
     if (dumps.empty() && tables.empty())
-        fail_input(fmt::format("{}: the folder holds no particle file; expected snapshots (HDF5, GADGET binary, Phantom "
-                               "dumps, CSV or VTK)",
-                               folder.string()));
+        fail_input(
+            fmt::format("{}: the folder holds no particle file; expected snapshots (HDF5, GADGET binary, Phantom "
+                        "dumps, CSV or VTK)",
+                        folder.string()));
     return dumps.empty() ? tables : dumps;
 }
 
@@ -103,8 +106,9 @@ void check_series_member(const std::string& first, const ParticleSet& first_set,
                                next_set.dimension, first, first_set.dimension));
     const std::string a = format_of(first, first_set), b = format_of(next, next_set);
     if (a != b)
-        fail_input(fmt::format("{} is a {} file but {} is a {} file; expected the snapshots of one run, written by one code",
-                               next, b, first, a));
+        fail_input(
+            fmt::format("{} is a {} file but {} is a {} file; expected the snapshots of one run, written by one code",
+                        next, b, first, a));
 }
 
 bool order_series(std::vector<SeriesSnapshot>& series)
@@ -112,9 +116,11 @@ bool order_series(std::vector<SeriesSnapshot>& series)
     for (const auto& s : series)
         if (s.time && !std::isfinite(*s.time))
             fail_input(fmt::format("{}: its header's time is {}; expected a finite number", s.file, *s.time));
-    const bool by_time = std::all_of(series.begin(), series.end(), [](const SeriesSnapshot& s) { return s.time.has_value(); });
+    const bool by_time =
+        std::all_of(series.begin(), series.end(), [](const SeriesSnapshot& s) { return s.time.has_value(); });
     if (by_time)
-        std::stable_sort(series.begin(), series.end(), [](const SeriesSnapshot& a, const SeriesSnapshot& b) { return *a.time < *b.time; });
+        std::stable_sort(series.begin(), series.end(),
+                         [](const SeriesSnapshot& a, const SeriesSnapshot& b) { return *a.time < *b.time; });
     return by_time;
 }
 
@@ -161,10 +167,13 @@ std::string series_figure_script(const std::vector<SeriesSnapshot>& series, bool
     for (std::size_t m = 0; m < 3; ++m) {
         const std::size_t c = 2 + 3 * m; // the columns of p1, p50 and p99
         script += fmt::format("set ylabel '{}' noenhanced\n", measures[m]);
-        script += m == 2 ? fmt::format("set xlabel \"{}\"\n", by_time ? "time (from the snapshots' headers)" : "snapshot (file order)") : "";
-        script += fmt::format("plot $series using 1:{}:{} with filledcurves fc '#1f77b4' fs transparent solid 0.25 "
-                              "title 'p1 to p99', '' using 1:{} with linespoints pt 7 ps 0.6 lc '#1f77b4' title 'median'\n",
-                              c, c + 2, c + 1);
+        script += m == 2 ? fmt::format("set xlabel \"{}\"\n",
+                                       by_time ? "time (from the snapshots' headers)" : "snapshot (file order)")
+                         : "";
+        script +=
+            fmt::format("plot $series using 1:{}:{} with filledcurves fc '#1f77b4' fs transparent solid 0.25 "
+                        "title 'p1 to p99', '' using 1:{} with linespoints pt 7 ps 0.6 lc '#1f77b4' title 'median'\n",
+                        c, c + 2, c + 1);
         script += m == 0 ? "unset key\n" : ""; // one legend for the figure
     }
     return script + "unset multiplot\n";

@@ -20,7 +20,7 @@ struct SeriesSnapshot {
     std::optional<double> time; // as the file's header gives it
     std::size_t particles = 0;
     ParticlePoint point;
-    std::string answer; // the JSON document of a run on the file alone, as text
+    std::string answer;    // the JSON document of a run on the file alone, as text
     std::size_t given = 0; // its place among the files given
 };
 

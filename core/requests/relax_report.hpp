@@ -2,11 +2,11 @@
 // quality of the set it made, as text, JSON and a history CSV.
 #pragma once
 
-#include "requests/code_setting.hpp"
 #include "particles/particle_analysis.hpp"
 #include "relax/glass_quality.hpp"
 #include "relax/pairing_motion.hpp"
 #include "relax/relaxation.hpp"
+#include "requests/code_setting.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -21,7 +21,7 @@ namespace sphkern {
 struct RelaxedSet {
     ParticleAnswer measures;
     GlassQuality quality;
-    double eta = 0, nh = 0;   // h over the mean spacing, and D&A's neighbour number
+    double eta = 0, nh = 0; // h over the mean spacing, and D&A's neighbour number
     double poisson_rms_e0 = 0;
 };
 

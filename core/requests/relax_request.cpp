@@ -23,8 +23,8 @@ namespace sphkern {
 RelaxSources relax_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {smoothing_sources(f), n("method"), n("steps"), n("tolerance"), n("gamma"),   n("dt"),
-            n("damping"),         n("alpha"),  n("max_move"), n("threads"), n("rdf_max"), n("rdf_bins")};
+    return {smoothing_sources(f), n("method"), n("steps"),    n("tolerance"), n("gamma"),   n("dt"),
+            n("damping"),         n("alpha"),  n("max_move"), n("threads"),   n("rdf_max"), n("rdf_bins")};
 }
 
 RelaxMethod relax_method_of(const std::string& name, const ValueSource& source)
@@ -102,22 +102,25 @@ void check_relax_code(const RelaxCode& code, const std::string& output, const Ke
             if (p.layout != CodeLayout::none && p.layout != CodeLayout::phantom) hdf5_codes.push_back(p.name);
         const std::string last = hdf5_codes.back();
         hdf5_codes.pop_back();
-        sources.code.fail(fmt::format("{}: sphkern writes HDF5 initial conditions for {} and {}, and a Phantom dump for "
-                                      "phantom; {} starts from files of its own (a .csv output holds its h)",
-                                      code.name, fmt::join(hdf5_codes, ", "), last, profile.title));
+        sources.code.fail(
+            fmt::format("{}: sphkern writes HDF5 initial conditions for {} and {}, and a Phantom dump for "
+                        "phantom; {} starts from files of its own (a .csv output holds its h)",
+                        code.name, fmt::join(hdf5_codes, ", "), last, profile.title));
     }
     if (hdf5 && !output.ends_with(profile.hdf5_suffix))
-        sources.code.fail(fmt::format("{}: {}; expected a name ending in {}, not {}", code.name, profile.hdf5_suffix_reason,
-                                      profile.hdf5_suffix, output));
+        sources.code.fail(fmt::format("{}: {}; expected a name ending in {}, not {}", code.name,
+                                      profile.hdf5_suffix_reason, profile.hdf5_suffix, output));
     if (!code.value && output.empty())
-        sources.code.fail(fmt::format("{}: names the code the written set is for, or with {} sets h; expected an output "
-                                      "or {}",
-                                      code.name, sources.value.name, sources.value.name));
+        sources.code.fail(
+            fmt::format("{}: names the code the written set is for, or with {} sets h; expected an output "
+                        "or {}",
+                        code.name, sources.value.name, sources.value.name));
     if (code.value) check_code_setting({code.name, *code.value}, sources);
     require_code_kernel(profile, kernel, dimension);
 }
 
-SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension, const CodeSettingSources& sources)
+SmoothingSpec relax_code_smoothing(const RelaxCode& code, const Kernel& kernel, int dimension,
+                                   const CodeSettingSources& sources)
 {
     const SmoothingSpec spec = code_smoothing({code.name, *code.value}, sources, kernel, dimension);
     return {SmoothingRule::eta, spec.value, 0};
@@ -139,16 +142,22 @@ ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& set, 
     }
     const auto& profile = code_profile(code->name, ValueSource::argument("code"));
     const double per_h = code_support_per_h(profile, kernel, set.dimension), to_stored = kernel.support() / per_h;
-    ParticleOutput out{std::vector<double>(n, run.h * to_stored), per_h, mass, density,
-                       profile.layout == CodeLayout::swift ? swift_kernel_label(kernel.name()) : "", u, relax_layout(code)};
+    ParticleOutput out{std::vector<double>(n, run.h * to_stored),
+                       per_h,
+                       mass,
+                       density,
+                       profile.layout == CodeLayout::swift ? swift_kernel_label(kernel.name()) : "",
+                       u,
+                       relax_layout(code)};
     if (solved_h(*code)) {
-        const SmoothingSpec spec = code_smoothing(
-            {code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")}, kernel, set.dimension);
+        const SmoothingSpec spec =
+            code_smoothing({code->name, *code->value}, {ValueSource::argument("code"), ValueSource::argument("value")},
+                           kernel, set.dimension);
         // Solved once on the run's set: copy c of it holds particle i at c n + i (tiled_set), and
         // its periodic images are the other copies, so each copy's h is the original's.
         const ParticleSet& run_set = run.state.set;
-        const PerParticle h = density_smoothing_lengths(kernel, run_set, spec.value, mean_volume(run_set), threads,
-                                                            spec.by_number);
+        const PerParticle h =
+            density_smoothing_lengths(kernel, run_set, spec.value, mean_volume(run_set), threads, spec.by_number);
         for (std::size_t i = 0; i < n; ++i) out.h[i] = h[i % run_set.size()] * to_stored;
     }
     if (profile.layout == CodeLayout::phantom) {
@@ -165,7 +174,8 @@ nlohmann::json relax_code_json(const RelaxCode& code)
 {
     const auto& profile = code_profile(code.name, ValueSource::argument("code"));
     const char* layouts[] = {"swift", "gadget", "pysph", "phantom"};
-    nlohmann::json out = {{"name", code.name}, {"parameter", profile.parameter},
+    nlohmann::json out = {{"name", code.name},
+                          {"parameter", profile.parameter},
                           {"layout", layouts[static_cast<int>(relax_layout(code))]},
                           {"written_h", solved_h(code) ? "sph_density" : "run_h"}};
     if (code.value) out["value"] = *code.value;
@@ -177,15 +187,17 @@ std::string relax_code_text(const RelaxCode& code)
     const auto& profile = code_profile(code.name, ValueSource::argument("code"));
     const std::string setting = code.value ? fmt::format(" {} = {:.10g}", profile.parameter, *code.value) : "";
     return fmt::format("for {}{}: {}", code.name, setting,
-                       solved_h(code) ? "the run's h at the rest density; each written h solved with the particle's SPH density"
-                                      : "written with the run's h in the code's convention");
+                       solved_h(code)
+                           ? "the run's h at the rest density; each written h solved with the particle's SPH density"
+                           : "written with the run's h in the code's convention");
 }
 
 void check_relax_output(const std::string& file, const ValueSource& source, const std::optional<RelaxCode>& code)
 {
     // An unknown code is left to check_relax_code, which names --code.
     bool phantom = false;
-    for (const auto& p : code_profiles()) phantom = phantom || (code && p.name == code->name && p.layout == CodeLayout::phantom);
+    for (const auto& p : code_profiles())
+        phantom = phantom || (code && p.name == code->name && p.layout == CodeLayout::phantom);
     try {
         check_particle_output_name(file, phantom ? ParticleLayout::phantom : ParticleLayout::swift);
     } catch (const Error& e) { // "--output x.txt: expected ...", "output x.txt: expected ..."
@@ -205,20 +217,22 @@ std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, con
         tiles[a] = static_cast<int>(counts[a]);
     }
     if (static_cast<int>(counts.size()) != set.dimension)
-        throw Error(ExitCode::input, fmt::format("{} {}: {} counts for a set in {} dimensions; expected {}", source.name,
-                                                 text, counts.size(), set.dimension, set.dimension));
+        throw Error(ExitCode::input, fmt::format("{} {}: {} counts for a set in {} dimensions; expected {}",
+                                                 source.name, text, counts.size(), set.dimension, set.dimension));
     const double copies = static_cast<double>(tiles[0]) * tiles[1] * tiles[2];
     if (copies * static_cast<double>(set.size()) > static_cast<double>(max_particles()))
-        throw Error(ExitCode::input, fmt::format("{} {}: {:.0f} particles, more than the memory budget holds ({})",
-                                                 source.name, text, copies * static_cast<double>(set.size()), max_particles()));
+        throw Error(ExitCode::input,
+                    fmt::format("{} {}: {:.0f} particles, more than the memory budget holds ({})", source.name, text,
+                                copies * static_cast<double>(set.size()), max_particles()));
     return tiles;
 }
 
 double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& kernel, const SmoothingSources& sources)
 {
     if (!set.box)
-        fail_input(fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box",
-                               set.name));
+        fail_input(
+            fmt::format("{}: relaxation needs a periodic box; expected a lattice block, poisson or a file with a box",
+                        set.name));
     // Walls and solids read as neighbours only would move with the fluid.
     if (set.neighbours_only)
         fail_input(fmt::format("{}: relaxation moves every particle; expected one particle array, not a list (a list "

@@ -73,12 +73,11 @@ struct InitialState {
     std::optional<double> u;
 };
 
-// The relaxed set as initial conditions (InitialState). Without a code: SWIFT's layout for its own kernels, h = H / gamma
-// with SWIFT's gamma and the kernel's name, and sphkern's h and R for a kernel SWIFT lacks.
-// With a code: its layout and its stored h (code_support_per_h), solved per particle on the
-// run's set (each copy takes the original's) where the code's parameter is given and the code
-// solves h with its density.
-// `written`: the run's set, or copies of it side by side (tiled_set).
+// The relaxed set as initial conditions (InitialState). Without a code: SWIFT's layout for its own kernels, h = H /
+// gamma with SWIFT's gamma and the kernel's name, and sphkern's h and R for a kernel SWIFT lacks. With a code: its
+// layout and its stored h (code_support_per_h), solved per particle on the run's set (each copy takes the original's)
+// where the code's parameter is given and the code solves h with its density. `written`: the run's set, or copies of it
+// side by side (tiled_set).
 ParticleOutput initial_conditions(const Kernel& kernel, const ParticleSet& written, const RelaxResult& run,
                                   const InitialState& state, const std::optional<RelaxCode>& code, int threads);
 
@@ -98,6 +97,7 @@ std::array<int, 3> tiles_of(const std::string& text, const ParticleSet& set, con
 
 // The one h of a relaxation (fixed-h SPH; a file's own h is not used): the set must have a
 // periodic box and fit the spec (smoothing_spec's).
-double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& kernel, const SmoothingSources& sources);
+double relax_h(const SmoothingSpec& spec, const ParticleSet& set, const Kernel& kernel,
+               const SmoothingSources& sources);
 
 } // namespace sphkern

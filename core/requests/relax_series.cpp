@@ -16,7 +16,9 @@ bool is_pvd_name(const std::string& path)
     return extension == ".pvd";
 }
 
-RelaxSeries::RelaxSeries(std::filesystem::path pvd, int steps) : pvd_(std::move(pvd)), last_(static_cast<std::size_t>(steps)) {}
+RelaxSeries::RelaxSeries(std::filesystem::path pvd, int steps)
+    : pvd_(std::move(pvd)), last_(static_cast<std::size_t>(steps))
+{}
 
 RelaxSeries::~RelaxSeries()
 {

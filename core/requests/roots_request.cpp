@@ -34,7 +34,9 @@ RootsInCode in_code(const CodeProfile& profile, const RootsResult& result, const
 {
     require_code_kernel(profile, kernel, dimension);
     require_lattice_volume(profile, "a window of k at the lattice's a_p");
-    auto value = [&](double k) { return code_parameter(profile, kernel, dimension, result.a_p, k, site.at(k).eps_rho); };
+    auto value = [&](double k) {
+        return code_parameter(profile, kernel, dimension, result.a_p, k, site.at(k).eps_rho);
+    };
     RootsInCode c;
     c.best = value(result.analysis.all_along.best_k);
     for (const auto& i : result.analysis.all_along.intervals) c.accurate.push_back({value(i.from), value(i.to)});
@@ -56,18 +58,19 @@ RootsResult run_roots(const RootsRequest& r, const RootsSources& sources, const 
     // The window in k for this kernel, lattice and a_p, from the axis it was given on.
     std::tie(result.k_min, result.k_max) = k_window(r.axis, r.window_min, r.window_max, kernel, lattice,
                                                     evaluation.site, evaluation.a_p, sources.window.name);
-    auto sites = errors_per_site(kernel, lattice, every_site(lattice), evaluation.a_p, evaluation.gravity,
-                                 result.k_max, evaluation.mode);
+    auto sites = errors_per_site(kernel, lattice, every_site(lattice), evaluation.a_p, evaluation.gravity, result.k_max,
+                                 evaluation.mode);
     std::vector<const HydrostaticErrors*> all;
     for (const auto& s : sites) all.push_back(s.get());
     result.analysis = analyse_roots(all, result.k_min, result.k_max, r.epsilon, r.lateral);
     // The stable k of the same window, and where condition (22) at every site holds there too.
     if (r.stability)
-        result.stability = roots_stability(kernel, lattice, result.k_min, result.k_max, r.model,
-                                           result.analysis.all_along.intervals,
-                                           *sites[static_cast<std::size_t>(evaluation.site)]);
+        result.stability =
+            roots_stability(kernel, lattice, result.k_min, result.k_max, r.model, result.analysis.all_along.intervals,
+                            *sites[static_cast<std::size_t>(evaluation.site)]);
     if (r.code)
-        result.in_code = in_code(*r.code, result, kernel, lattice.dimension, *sites[static_cast<std::size_t>(evaluation.site)]);
+        result.in_code =
+            in_code(*r.code, result, kernel, lattice.dimension, *sites[static_cast<std::size_t>(evaluation.site)]);
     return result;
 }
 
@@ -80,7 +83,10 @@ nlohmann::json roots_request_document(const RootsRequest& r, const RootsResult& 
     if (const auto& c = result.in_code) {
         nlohmann::json accurate = nlohmann::json::array();
         for (const auto& i : c->accurate) accurate.push_back({i.from, i.to});
-        document["code"] = {{"name", r.code->name}, {"parameter", r.code->parameter}, {"best_k", c->best}, {"accurate", accurate}};
+        document["code"] = {{"name", r.code->name},
+                            {"parameter", r.code->parameter},
+                            {"best_k", c->best},
+                            {"accurate", accurate}};
         if (c->recommended)
             document["code"].update({{"recommended", c->recommended_value},
                                      {"recommended_interval", {c->recommended->from, c->recommended->to}}});
@@ -106,14 +112,15 @@ std::string acceptance_text(const Acceptance& a)
 
 void print_scan(const RootScan& scan)
 {
-    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H", "H/d");
+    fmt::print(results_file(), "{:<6} {:>14} {:>12} {:>12} {:>6} {:>10}\n", "zero", "k", "eps_rho", "eps_gradP", "N_H",
+               "H/d");
     for (const auto& r : scan.roots)
-        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", function_name(r.function), r.k,
-                   r.values.eps_rho, r.values.eps_gradp, r.values.neighbours, r.support_radius);
+        fmt::print(results_file(), "{:<6} {:>14.10f} {:>12.5f} {:>12.5f} {:>6} {:>10.6f}\n", function_name(r.function),
+                   r.k, r.values.eps_rho, r.values.eps_gradp, r.values.neighbours, r.support_radius);
     if (scan.roots.empty()) fmt::print(results_file(), "(no root in the interval)\n");
     for (const auto& j : scan.jumps)
-        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", function_name(j.function), j.k, jump_kind_name(j.kind),
-                   j.left, j.right);
+        fmt::print(results_file(), "jump of eps_{} at k = {:.10f} ({}): {:.6g} -> {:.6g}\n", function_name(j.function),
+                   j.k, jump_kind_name(j.kind), j.left, j.right);
 }
 
 void print_roots_stability(const RootsRequest& r, const RootsStability& stability)
@@ -124,8 +131,9 @@ void print_roots_stability(const RootsRequest& r, const RootsStability& stabilit
         fmt::print(results_file(), "stability (gamma = {:.6g}, {} h): not available: {}\n", m.gamma,
                    h_model_name(m.h_model), stability.json["refused"].get<std::string>());
     else
-        fmt::print(results_file(), "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
-                                   "accurate (condition (22), every site) and stable:{}\n  {}\n",
+        fmt::print(results_file(),
+                   "stable (gamma = {:.6g}, {} h; no mode grows faster than {:g} d/c) for k in{}\n  "
+                   "accurate (condition (22), every site) and stable:{}\n  {}\n",
                    m.gamma, h_model_name(m.h_model), m.horizon, intervals_text(stability.stable),
                    intervals_text(stability.both), recommended_text(stability.recommended));
 }
@@ -180,7 +188,8 @@ void print_roots(const RootsRequest& r, const RootsResult& result, const Kernel&
                r.axis == Axis::k ? "" : fmt::format(" ({} in [{}, {}])", axis_name(r.axis), r.window_min, r.window_max),
                many_sites ? fmt::format(", site {}", site) : "");
     print_scan(chosen.scan);
-    fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", r.epsilon, lateral, acceptance_text(chosen.along));
+    fmt::print(results_file(), "condition (22), epsilon = {}{}: {}\n", r.epsilon, lateral,
+               acceptance_text(chosen.along));
     fmt::print(results_file(), "  for every direction (max |eigenvalue of E|): {}\n", acceptance_text(chosen.every));
     if (many_sites) {
         print_other_sites(analysis, site);

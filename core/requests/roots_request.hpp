@@ -25,7 +25,7 @@ struct RootsRequest {
     double epsilon = 0.01; // the tolerance of condition (22), in (0, 1)
     bool lateral = false;  // the lateral gradient error counts in condition (22) too
     bool stability = false;
-    RootsStabilityOptions model; // checked whether or not `stability` asks for it
+    RootsStabilityOptions model;       // checked whether or not `stability` asks for it
     const CodeProfile* code = nullptr; // a code's own setting beside k, with its own density
     EvaluationInputs evaluation;
 };
@@ -53,7 +53,7 @@ struct RootsResult {
     double a_p = 0;
     double k_min = 0, k_max = 0; // the window in k
     RootsAnalysis analysis;
-    RootsStability stability; // empty unless the request asks for it
+    RootsStability stability;           // empty unless the request asks for it
     std::optional<RootsInCode> in_code; // with a code
 };
 

@@ -16,7 +16,8 @@ SmoothingSources smoothing_sources(FrontEnd f)
 
 SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSources& sources, SmoothingSpec fallback)
 {
-    require_at_most_one({{given.eta.has_value(), &sources.eta}, {given.nh.has_value(), &sources.nh},
+    require_at_most_one({{given.eta.has_value(), &sources.eta},
+                         {given.nh.has_value(), &sources.nh},
                          {given.k.has_value(), &sources.k}});
     if (given.eta) check_number(*given.eta, 0, 100, LowEnd::open, sources.eta);
     if (given.nh) check_number(*given.nh, 1, 1e5, LowEnd::closed, sources.nh, " (neighbours)");
@@ -31,7 +32,8 @@ void check_smoothing_fits(const SmoothingSpec& spec, const ParticleSet& set, con
 {
     const std::string others = fmt::format("give {} E or {} N", sources.eta.name, sources.nh.name);
     if (spec.rule == SmoothingRule::k && set.spacing <= 0)
-        fail_input(fmt::format("{}: {} needs a lattice (h = k d); for other sets {}", set.name, sources.k.name, others));
+        fail_input(
+            fmt::format("{}: {} needs a lattice (h = k d); for other sets {}", set.name, sources.k.name, others));
     if (spec.rule != SmoothingRule::file) return;
     if (set.h.empty()) fail_input(fmt::format("{}: the file has no smoothing lengths; {}", set.name, others));
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;
@@ -56,7 +58,8 @@ void check_file_kernel(const SmoothingSpec& spec, const ParticleSet& set, const 
         return;
     fail_input(fmt::format("{}: the file's h and its kernel gamma {} are for its kernel {}, not {}; expected that "
                            "kernel, or {} X to map its h to {}'s support",
-                           set.name, set.support_per_h, file_kernel_text(set), kernel, sources.support_per_h.name, kernel));
+                           set.name, set.support_per_h, file_kernel_text(set), kernel, sources.support_per_h.name,
+                           kernel));
 }
 
 std::string file_kernel_text(const ParticleSet& set)
@@ -70,7 +73,8 @@ SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& s
 {
     const bool rule_given = given.eta || given.nh || given.k;
     SmoothingSpec spec = smoothing_spec(given, sources);
-    if (!rule_given && !set.h.empty() && file_h_allowed) spec = {SmoothingRule::file, 0, given.support_per_h.value_or(0)};
+    if (!rule_given && !set.h.empty() && file_h_allowed)
+        spec = {SmoothingRule::file, 0, given.support_per_h.value_or(0)};
     // A code whose support is a number of particle radii the file does not hold (SPlisHSPlasH).
     if (!rule_given && set.h.empty() && set.support_per_radius > 0)
         fail_input(fmt::format("{}: the file holds no h and no particle radius (its support is {} radii); give "
@@ -79,7 +83,8 @@ SmoothingSpec smoothing_of(const SmoothingArguments& given, const ParticleSet& s
     const auto x = given.support_per_h;
     if (x && (spec.rule != SmoothingRule::file || !(*x > 0) || !std::isfinite(*x)))
         sources.support_per_h.fail(fmt::format("maps a file's h (a positive finite number); it does not go with {}, "
-                                               "{} or {}", sources.eta.name, sources.nh.name, sources.k.name));
+                                               "{} or {}",
+                                               sources.eta.name, sources.nh.name, sources.k.name));
     check_smoothing_fits(spec, set, sources);
     return spec;
 }

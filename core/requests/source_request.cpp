@@ -1,8 +1,8 @@
 #include "requests/source_request.hpp"
 
+#include "lattices/lattice.hpp"
 #include "particles/formats/particle_arrays.hpp"
 #include "particles/particles_memory.hpp"
-#include "lattices/lattice.hpp"
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -16,7 +16,14 @@ namespace sphkern {
 SourceSources source_sources(FrontEnd f)
 {
     auto n = [f](const char* key) { return value_named(f, key); };
-    return {n("size"), n("sigma"), n("count"), n("dim"), n("box"), n("array"), n("particle_radius"), n("cell"),
+    return {n("size"),
+            n("sigma"),
+            n("count"),
+            n("dim"),
+            n("box"),
+            n("array"),
+            n("particle_radius"),
+            n("cell"),
             f == FrontEnd::command_line ? "--memory-limit" : ""};
 }
 
@@ -42,12 +49,15 @@ ParticleSource particle_source_of(const SourceArguments& o, const SourceSources&
     source.spec = o.spec;
     source.kind = source_kind(o.spec);
     auto names = shipped_lattice_names();
-    if (source.kind == SourceKind::lattice && !o.spec.ends_with(".json") && std::find(names.begin(), names.end(), o.spec) == names.end()) {
+    if (source.kind == SourceKind::lattice && !o.spec.ends_with(".json") &&
+        std::find(names.begin(), names.end(), o.spec) == names.end()) {
         names.push_back("poisson");
         fail_unknown(fmt::format("unknown source \"{}\"{}; expected poisson, a lattice ({}) or a particle file", o.spec,
                                  did_you_mean(o.spec, names), fmt::join(names.begin(), names.end() - 1, ", ")));
     }
-    const auto refuse = [](const ValueSource& setting, const std::string& problem) { throw Error(setting.code, setting.name + problem); };
+    const auto refuse = [](const ValueSource& setting, const std::string& problem) {
+        throw Error(setting.code, setting.name + problem);
+    };
     if (source.kind != SourceKind::lattice && !o.size.empty())
         refuse(sources.size, " cuts a lattice into a block; " + o.spec + " is not a lattice");
     if (source.kind != SourceKind::lattice && !o.cell.empty())
@@ -58,7 +68,8 @@ ParticleSource particle_source_of(const SourceArguments& o, const SourceSources&
     if (source.kind != SourceKind::poisson && o.count) refuse(sources.count, " is for poisson sets");
     if (source.kind == SourceKind::lattice) {
         if (o.size.empty())
-            throw Error(sources.size.code, "a lattice source needs " + sources.size.name + " N1,N2[,N3] (cells of the periodic block)");
+            throw Error(sources.size.code,
+                        "a lattice source needs " + sources.size.name + " N1,N2[,N3] (cells of the periodic block)");
         const auto cells = parse_number_list(o.size, sources.size, 2, 3);
         for (std::size_t a = 0; a < cells.size(); ++a) {
             if (cells[a] != std::floor(cells[a]) || std::abs(cells[a]) > 1e15)
@@ -79,14 +90,14 @@ ParticleSource particle_source_of(const SourceArguments& o, const SourceSources&
         if (!o.box.empty()) {
             const auto sides = parse_number_list(o.box, sources.box, 1, 3);
             for (int a = 0; a < 3; ++a)
-                source.poisson.box[a] = sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
+                source.poisson.box[a] =
+                    sides[sides.size() == 1 ? 0 : std::min<std::size_t>(static_cast<std::size_t>(a), sides.size() - 1)];
             if (sides.size() != 1 && static_cast<int>(sides.size()) != source.poisson.dimension)
                 refuse(sources.box, " " + o.box + ": give one side or one per dimension");
         }
     }
     if (source.kind == SourceKind::file) file_source(o, sources, source);
-    else if (!o.array.empty())
-        refuse(sources.array, " chooses a PySPH particle array; " + o.spec + " is not a file");
+    else if (!o.array.empty()) refuse(sources.array, " chooses a PySPH particle array; " + o.spec + " is not a file");
     else if (o.particle_radius)
         refuse(sources.particle_radius, " gives the h of a SPlisHSPlasH file; " + o.spec + " is not a file");
     return source;
@@ -111,7 +122,8 @@ void check_particle_source(const ParticleSource& s, const SourceSources& sources
         check_number(s.block.sigma, 0, 10, LowEnd::closed, sources.sigma, " (units of d)");
         return;
     case SourceKind::poisson:
-        if (s.poisson.dimension != 2 && s.poisson.dimension != 3) sources.dim.fail(fmt::format("{}: expected 2 or 3", s.poisson.dimension));
+        if (s.poisson.dimension != 2 && s.poisson.dimension != 3)
+            sources.dim.fail(fmt::format("{}: expected 2 or 3", s.poisson.dimension));
         check_range(static_cast<double>(s.poisson.count), 2, 0x1p40, sources.count);
         return check_box(s.poisson.box, s.poisson.dimension, sources.box);
     case SourceKind::file:
@@ -131,12 +143,15 @@ void check_particle_source(const ParticleSource& s, const SourceSources& sources
 void set_memory_budget(double gib, const ValueSource& source)
 {
     if (!std::isfinite(gib) || gib < 0 || gib > max_memory_limit_gib)
-        throw Error(source.code, fmt::format("{}: expected GiB in [0, 1e6] (0: from the available memory)", source.about(gib)));
-    // A positive budget below one byte would be taken as 0, "from the available memory": the opposite of what was asked.
+        throw Error(source.code,
+                    fmt::format("{}: expected GiB in [0, 1e6] (0: from the available memory)", source.about(gib)));
+    // A positive budget below one byte would be taken as 0, "from the available memory": the opposite of what was
+    // asked.
     if (gib > 0 && gib * 1073741824.0 < 1)
-        throw Error(source.code, fmt::format("{}: less than one byte; expected 0 (from the available memory) or at least "
-                                             "1e-9 GiB",
-                                             source.about(gib)));
+        throw Error(source.code,
+                    fmt::format("{}: less than one byte; expected 0 (from the available memory) or at least "
+                                "1e-9 GiB",
+                                source.about(gib)));
     set_memory_limit_gib(gib);
 }
 
@@ -147,14 +162,14 @@ ParticleSet load_source(const ParticleSource& s, const SourceSources& sources, i
     const std::size_t budget = max_particles();
     auto over_budget = [&](const ValueSource& source, double count) {
         if (count > static_cast<double>(budget)) // a request over a limit: input, whatever the source
-            fail_input(fmt::format("{}: {:.0f} particles, more than the memory limit of {} particles{}", source.name, count,
-                                   budget, sources.budget.empty() ? "" : " (" + sources.budget + ")"));
+            fail_input(fmt::format("{}: {:.0f} particles, more than the memory limit of {} particles{}", source.name,
+                                   count, budget, sources.budget.empty() ? "" : " (" + sources.budget + ")"));
     };
     if (s.kind == SourceKind::lattice) {
         const Lattice lattice = block_cell(load_lattice(s.spec), s.block);
         if (s.cell_counts != static_cast<std::size_t>(lattice.dimension))
-            throw Error(ExitCode::input, fmt::format("{}: the lattice is {}D, expected {} cell counts", sources.size.name,
-                                                     lattice.dimension, lattice.dimension));
+            throw Error(ExitCode::input, fmt::format("{}: the lattice is {}D, expected {} cell counts",
+                                                     sources.size.name, lattice.dimension, lattice.dimension));
         double count = lattice.sites();
         for (const long long cells : s.block.cells) count *= static_cast<double>(cells);
         over_budget(sources.size, count);
@@ -176,9 +191,10 @@ std::unique_ptr<SnapshotRows> snapshot_in_slabs(const ParticleSource& s, const S
     auto snapshot = std::make_unique<SnapshotRows>(s.spec);
     if (snapshot->size() <= max_particles()) return nullptr;
     if (s.file.dimension)
-        sources.dim.fail(fmt::format("{}: a snapshot of {} particles, over the memory budget, is read in slabs; expected its "
-                                     "/Header Dimension instead",
-                                     *s.file.dimension, snapshot->size()));
+        sources.dim.fail(
+            fmt::format("{}: a snapshot of {} particles, over the memory budget, is read in slabs; expected its "
+                        "/Header Dimension instead",
+                        *s.file.dimension, snapshot->size()));
     if (s.box) {
         PeriodicBox box;
         for (int a = 0; a < snapshot->sample().dimension; ++a) box.edges(a, a) = (*s.box)[a];

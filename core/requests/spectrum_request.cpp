@@ -26,7 +26,8 @@ SpectrumResult run_spectrum(const SpectrumRequest& r, const SpectrumSources& sou
                           spectrum_summary(kernel, r.dimension, r.k)};
     for (const auto& [kh, value] : result.curve)
         if (!std::isfinite(value))
-            fail_input(fmt::format("kernel {}: its Fourier transform is not finite at kappa h = {}", kernel.label(), kh));
+            fail_input(
+                fmt::format("kernel {}: its Fourier transform is not finite at kappa h = {}", kernel.label(), kh));
     return result;
 }
 
@@ -35,9 +36,12 @@ nlohmann::json spectrum_document(const SpectrumRequest& r, const SpectrumResult&
     const auto& summary = result.summary;
     nlohmann::json points = nlohmann::json::array();
     for (const auto& [kh, value] : result.curve) points.push_back({kh, value});
-    return {{"kernel", kernel.label()}, {"dimension", r.dimension}, {"k", r.k},
+    return {{"kernel", kernel.label()},
+            {"dimension", r.dimension},
+            {"k", r.k},
             {"source", summary.provided ? "plugin" : "quadrature"},
-            {"min", summary.minimum}, {"at", summary.at},
+            {"min", summary.minimum},
+            {"at", summary.at},
             {"first_zero", summary.first_zero ? nlohmann::json(*summary.first_zero) : nlohmann::json()},
             {"curve", points}};
 }

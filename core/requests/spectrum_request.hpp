@@ -14,10 +14,10 @@
 namespace sphkern {
 
 struct SpectrumRequest {
-    int dimension = 0;                // 1, 2 or 3
-    double k = 1;                     // for kernels whose formula depends on it, in [1e-3, 100]
-    double kh_max = spectrum_kh_max;  // the curve's end, in [0.1, 1000]
-    int points = 500;                 // intervals on [0, kh_max], 1 to 100000
+    int dimension = 0;               // 1, 2 or 3
+    double k = 1;                    // for kernels whose formula depends on it, in [1e-3, 100]
+    double kh_max = spectrum_kh_max; // the curve's end, in [0.1, 1000]
+    int points = 500;                // intervals on [0, kh_max], 1 to 100000
 };
 
 // How the front end names each value in its errors.

@@ -22,11 +22,12 @@ std::string verdict_text(const nlohmann::json& d)
 {
     const std::string verdict = d["verdict"].get<std::string>();
     if (verdict == "stable") return verdict;
-    std::string s = fmt::format("{} (horizon {:g} d/c): ", verdict == "unstable" ? "UNSTABLE" : "weak",
-                                d["horizon"].get<double>());
-    if (!d.contains("growth_time")) return s + "only long waves grow (omega^2 / kappa^2 < 0), ever more slowly as kappa -> 0";
-    return s + fmt::format("growth time {:.4g} d/c, {} mode at kappa = {} / d (unfolded {})", d["growth_time"].get<double>(),
-                           d["mode"]["kind"].get<std::string>(), vector_text(d["at"]),
+    std::string s =
+        fmt::format("{} (horizon {:g} d/c): ", verdict == "unstable" ? "UNSTABLE" : "weak", d["horizon"].get<double>());
+    if (!d.contains("growth_time"))
+        return s + "only long waves grow (omega^2 / kappa^2 < 0), ever more slowly as kappa -> 0";
+    return s + fmt::format("growth time {:.4g} d/c, {} mode at kappa = {} / d (unfolded {})",
+                           d["growth_time"].get<double>(), d["mode"]["kind"].get<std::string>(), vector_text(d["at"]),
                            vector_text(d["mode"]["unfolded_wavevector"]));
 }
 
@@ -53,10 +54,13 @@ void print_over_k(const nlohmann::json& document, const std::string& kernel, con
     if (document.contains("code")) {
         const auto& c = document["code"];
         std::string s;
-        for (const auto& i : c["stable_at_horizon"]) s += fmt::format(" [{:.6g}, {:.6g}]", i[0].get<double>(), i[1].get<double>());
-        fmt::print(results_file(), "  in {}'s own setting ({}, with its SPH density): no mode grows faster than the horizon for {} in{}\n",
-                   c["name"].get<std::string>(), c["parameter"].get<std::string>(), c["parameter"].get<std::string>(),
-                   s.empty() ? " none" : s);
+        for (const auto& i : c["stable_at_horizon"])
+            s += fmt::format(" [{:.6g}, {:.6g}]", i[0].get<double>(), i[1].get<double>());
+        fmt::print(
+            results_file(),
+            "  in {}'s own setting ({}, with its SPH density): no mode grows faster than the horizon for {} in{}\n",
+            c["name"].get<std::string>(), c["parameter"].get<std::string>(), c["parameter"].get<std::string>(),
+            s.empty() ? " none" : s);
     }
     fmt::print(results_file(), "  {:>10} {:>14} {:>9} {:>12} {}\n", "k", "min omega^2", "verdict", "growth time",
                "mode");
@@ -69,7 +73,8 @@ void print_over_k(const nlohmann::json& document, const std::string& kernel, con
     }
     // The cover's k are many (every edge to 1e-6): their count, not a line each.
     if (!document["between"].empty())
-        fmt::print(results_file(), "  k looked at besides the samples, for the intervals: {}\n", document["between"].size());
+        fmt::print(results_file(), "  k looked at besides the samples, for the intervals: {}\n",
+                   document["between"].size());
 }
 
 void print_path(const nlohmann::json& document, const std::string& kernel, const std::string& lattice,
@@ -110,9 +115,10 @@ void print_long_waves(const nlohmann::json& document)
     for (const auto& s : document["sound_speed"]) {
         std::string relation;
         if (s.contains("pressure_term"))
-            relation = fmt::format("  (eps_rho {:+.3e}, eps_gradP {:+.3e}, pressure term {:+.3e}, stiffness term {:+.3e})",
-                                   s["eps_rho"].get<double>(), s["eps_gradp"].get<double>(),
-                                   s["pressure_term"].get<double>(), s["stiffness_term"].get<double>());
+            relation =
+                fmt::format("  (eps_rho {:+.3e}, eps_gradP {:+.3e}, pressure term {:+.3e}, stiffness term {:+.3e})",
+                            s["eps_rho"].get<double>(), s["eps_gradp"].get<double>(), s["pressure_term"].get<double>(),
+                            s["stiffness_term"].get<double>());
         fmt::print(results_file(), "  {:<6} {:+.6e}{}\n", s["direction"].get<std::string>(),
                    s["longitudinal_error"].get<double>(), relation);
     }
@@ -122,11 +128,13 @@ void print_zone_scan(const nlohmann::json& document, const std::string& kernel, 
                      const StabilityRequest& options)
 {
     fmt::print(results_file(), "{} on {} ({} Bravais lattice) at k = {}, gamma = {:.6g}, {} h: {}\n", kernel,
-               lattice.name, document["bravais"].get<std::string>(), *options.k, options.gamma,
-               h_model_text(document), verdict_text(document));
+               lattice.name, document["bravais"].get<std::string>(), *options.k, options.gamma, h_model_text(document),
+               verdict_text(document));
     const auto& zone = document["zone_scan"];
-    fmt::print(results_file(), "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
-                               "branch {}):\n", zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),
+    fmt::print(results_file(),
+               "  min omega^2 per branch over the Brillouin zone (last grid {}^{}, {} grids, lowest "
+               "branch {}):\n",
+               zone["grid"].get<int>(), lattice.dimension, zone["grids"].get<int>(),
                zone["converged"].get<bool>() ? "settled within the tolerance" : "NOT settled");
     for (const auto& m : document["branches"])
         fmt::print(results_file(), "  branch {:>2}  {:>14.6g} (c/d)^2 at kappa = {} / d, longitudinal {:.3f}\n",

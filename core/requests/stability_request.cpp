@@ -24,18 +24,15 @@ StabilityMode stability_mode(const StabilityRequest& r)
 namespace {
 
 // The option or argument alone: "--wavevector 1,0" -> "--wavevector".
-std::string bare_name(const ValueSource& source)
-{
-    return source.name.substr(0, source.name.find(' '));
-}
+std::string bare_name(const ValueSource& source) { return source.name.substr(0, source.name.find(' ')); }
 
 // A k range or one k; a wave vector or a path.
 void check_combination(const StabilityRequest& r, const StabilitySources& sources)
 {
     if (r.k_min || r.k_max) {
         if (!r.k_min || !r.k_max || r.k || r.wavevector || r.path_points)
-            throw Error(sources.k_min.code, fmt::format("{} and {} go together, without {}, {} or {}", sources.k_min.name,
-                                                        sources.k_max.name, sources.k.name,
+            throw Error(sources.k_min.code, fmt::format("{} and {} go together, without {}, {} or {}",
+                                                        sources.k_min.name, sources.k_max.name, sources.k.name,
                                                         bare_name(sources.wavevector), sources.path.name));
         return;
     }
@@ -56,7 +53,9 @@ nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, 
     require_lattice_volume(code, "a window of k at the lattice's a_p");
     const double a_p = lattice.volume_coefficient("voronoi");
     const HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max);
-    auto value = [&](double k) { return code_parameter(code, kernel, lattice.dimension, a_p, k, errors.at(k).eps_rho); };
+    auto value = [&](double k) {
+        return code_parameter(code, kernel, lattice.dimension, a_p, k, errors.at(k).eps_rho);
+    };
     nlohmann::json out = {{"name", code.name}, {"parameter", code.parameter}};
     for (const char* key : {"stable_intervals", "stable_at_horizon"}) {
         out[key] = nlohmann::json::array();
@@ -70,10 +69,8 @@ nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, 
 void check_stability_request(const StabilityRequest& r, const StabilitySources& sources)
 {
     check_combination(r, sources);
-    if (stability_mode(r) == StabilityMode::over_k)
-        check_k_interval(*r.k_min, *r.k_max, sources.k_min, sources.k_max);
-    else
-        check_k(*r.k, sources.k, sources.k_hint);
+    if (stability_mode(r) == StabilityMode::over_k) check_k_interval(*r.k_min, *r.k_max, sources.k_min, sources.k_max);
+    else check_k(*r.k, sources.k, sources.k_hint);
     check_steps(r.steps, sources.steps);
     if (r.grid) check_range(*r.grid, 2, 400, sources.grid);
     if (r.path_points) check_range(*r.path_points, 2, 100000, sources.path);

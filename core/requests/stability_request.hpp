@@ -34,8 +34,8 @@ struct StabilityRequest {
     double gamma = 5.0 / 3.0;
     double horizon = default_horizon; // d/c: slower growth is weak
     HModel h_model = HModel::fixed;
-    std::optional<int> grid; // the first zone grid, 2 to 400; none: the default
-    int threads = 0;         // 0: every core
+    std::optional<int> grid;           // the first zone grid, 2 to 400; none: the default
+    int threads = 0;                   // 0: every core
     const CodeProfile* code = nullptr; // over_k: the intervals in a code's own setting too
 };
 

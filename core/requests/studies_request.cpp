@@ -22,7 +22,8 @@ nlohmann::json studies_listing()
     nlohmann::json list = nlohmann::json::array();
     for (const auto& file : files) {
         const auto study = read_json_file(file);
-        list.push_back({{"name", file.stem().string()}, {"title", study.value("title", study.value("name", ""))},
+        list.push_back({{"name", file.stem().string()},
+                        {"title", study.value("title", study.value("name", ""))},
                         {"kernels", study.value("kernels", nlohmann::json::array()).size()},
                         {"lattices", study.value("lattices", nlohmann::json::array())},
                         {"file", file.string()}});

@@ -69,8 +69,8 @@ void print_surface(const SurfaceRequest& r, const SurfaceResult& result, const K
     const auto& profile = result.profile;
     const bool one_site = lattice.sites() == 1;
     print_surface_heading(r, result, kernel, lattice);
-    fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site",
-               "N", "eps_rho", "eps_gradP");
+    fmt::print(results_file(), "{:>5} {:>10} {}{:>6} {:>14} {:>14}\n", "layer", "depth/d", one_site ? "" : " site", "N",
+               "eps_rho", "eps_gradP");
     for (const auto& l : profile.layers)
         for (const auto& v : l.sites)
             fmt::print(results_file(), "{:>5} {:>10.5f} {}{:>6} {:>14.8f} {:>14.8f}\n", l.n, l.depth,

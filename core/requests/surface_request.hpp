@@ -19,10 +19,10 @@ namespace sphkern {
 struct SurfaceRequest {
     double k = 0;
     std::optional<CodeSetting> code; // instead of k: a code's own setting, its k from the bulk at the top site
-    int layers = 4; // at least this many layers below the surface
+    int layers = 4;                  // at least this many layers below the surface
     GradientForm form = GradientForm::sum;
     std::optional<int> termination; // which plane type is on top; none: the site's
-    EvaluationInputs evaluation;     // a_p, gravity and the site on top (every shell)
+    EvaluationInputs evaluation;    // a_p, gravity and the site on top (every shell)
 };
 
 // How the front end names each value in its errors.

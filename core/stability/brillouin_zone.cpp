@@ -127,7 +127,8 @@ std::vector<SymmetryPoint> high_symmetry_path(const ReciprocalLattice& r)
     }
     if (r.bravais == "fcc") {
         // With all direct angles at 60 degrees, the cube edge directions are b_i + b_j.
-        const Eigen::Vector3d x = (b.col(1) + b.col(2)) / 2, y = (b.col(0) + b.col(2)) / 2, z = (b.col(0) + b.col(1)) / 2;
+        const Eigen::Vector3d x = (b.col(1) + b.col(2)) / 2, y = (b.col(0) + b.col(2)) / 2,
+                              z = (b.col(0) + b.col(1)) / 2;
         // x, y, z are 2 pi / a times the conventional unit vectors: X, W, L, K as usual.
         const Eigen::Vector3d X = x, W = x + 0.5 * y, L = 0.5 * (x + y + z), K = 0.75 * (x + y);
         return {{gamma, G}, {"X", X}, {"W", W}, {"L", L}, {gamma, G}, {"K", K}};

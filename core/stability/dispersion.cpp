@@ -38,7 +38,8 @@ void check_gamma(double gamma, const std::string& what)
 {
     // 2 / gamma enters the pressure terms: below 1e-6 it nears overflow (1e-320 gave -nan and "stable").
     if (!std::isfinite(gamma) || gamma < min_gamma || gamma > max_gamma)
-        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a number in [1e-06, 1e+06]", what, gamma));
+        throw Error(ExitCode::usage,
+                    fmt::format("{} {} is not allowed, expected a number in [1e-06, 1e+06]", what, gamma));
 }
 
 Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension, const std::string& what)
@@ -49,7 +50,8 @@ Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int di
     Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
     for (int i = 0; i < dimension; ++i) kappa[i] = components[static_cast<std::size_t>(i)];
     if (!std::isfinite(kappa.norm()) || kappa.norm() == 0 || kappa.norm() > 1e6)
-        throw Error(ExitCode::usage, fmt::format("{}: expected a non-zero wave vector with |kappa| <= 1e6 (in 1/d)", what));
+        throw Error(ExitCode::usage,
+                    fmt::format("{}: expected a non-zero wave vector with |kappa| <= 1e6 (in 1/d)", what));
     return kappa;
 }
 
@@ -62,7 +64,8 @@ Dispersion::Dispersion(const Kernel& kernel, const Lattice& lattice, double k, d
     const int n_sites = lattice.sites();
     for (int s = 0; s < n_sites; ++s)
         for (int t = 0; t < n_sites; ++t)
-            offsets_.push_back(basis_ * (lattice.motif[static_cast<std::size_t>(t)] - lattice.motif[static_cast<std::size_t>(s)]));
+            offsets_.push_back(
+                basis_ * (lattice.motif[static_cast<std::size_t>(t)] - lattice.motif[static_cast<std::size_t>(s)]));
     neighbours_.resize(static_cast<std::size_t>(n_sites));
     const HDerivatives self = h_derivatives(0, kernel.w(0, dim_, k), 0, 0, k, dim_);
     SiteSums first_site;
@@ -105,27 +108,29 @@ void Dispersion::list_neighbours(const Kernel& kernel, const Lattice& lattice, i
     std::size_t visited = 0;
     for_each_lattice_point_of_site(lattice.basis, dim_, lattice.motif, s, kernel.support() * h * (1 + support_edge),
                                    [&](const Eigen::Vector3d& x, int t) {
-        // A large k has millions of neighbours: a signal is answered while they are listed.
-        if ((++visited & 0xFFFF) == 0) throw_if_interrupted();
-        const double q = x.norm() / h;
-        if (!kernel.inside(q)) return;
-        const double w = kernel.w(q, dim_, k_) / hd;
-        const double dw = kernel.dw(q, dim_, k_) / (hd * h);
-        const double d2w = kernel.d2w(q, dim_, k_) / (hd * h * h);
-        if (!std::isfinite(w)) fail_non_finite_kernel(kernel, "W", q, dim_, k_);
-        if (!std::isfinite(dw)) fail_non_finite_kernel(kernel, "dW/dr", q, dim_, k_);
-        if (!std::isfinite(d2w)) fail_non_finite_kernel(kernel, "d2W/dr2", q, dim_, k_);
-        Neighbour n = neighbour_at(x, s, t, to_cells, dw, d2w, cell_max);
-        if (adaptive) {
-            const HDerivatives dh = h_derivatives(q, w * hd, dw * hd * h, d2w * hd * h * h, h, dim_);
-            n.h_gradient = -mass_ * dh.dgrad_dh * (x / x.norm());
-            sums.first_h += n.h_gradient;
-            if (s == 0) sums.Z += mass_ * dh.dw_dh, sums.Z2 += mass_ * dh.d2w_dh2;
-        }
-        sums.density += mass_ * w;
-        sums.first += n.gradient;
-        list.push_back(n);
-    });
+                                       // A large k has millions of neighbours: a signal is answered while they are
+                                       // listed.
+                                       if ((++visited & 0xFFFF) == 0) throw_if_interrupted();
+                                       const double q = x.norm() / h;
+                                       if (!kernel.inside(q)) return;
+                                       const double w = kernel.w(q, dim_, k_) / hd;
+                                       const double dw = kernel.dw(q, dim_, k_) / (hd * h);
+                                       const double d2w = kernel.d2w(q, dim_, k_) / (hd * h * h);
+                                       if (!std::isfinite(w)) fail_non_finite_kernel(kernel, "W", q, dim_, k_);
+                                       if (!std::isfinite(dw)) fail_non_finite_kernel(kernel, "dW/dr", q, dim_, k_);
+                                       if (!std::isfinite(d2w)) fail_non_finite_kernel(kernel, "d2W/dr2", q, dim_, k_);
+                                       Neighbour n = neighbour_at(x, s, t, to_cells, dw, d2w, cell_max);
+                                       if (adaptive) {
+                                           const HDerivatives dh =
+                                               h_derivatives(q, w * hd, dw * hd * h, d2w * hd * h * h, h, dim_);
+                                           n.h_gradient = -mass_ * dh.dgrad_dh * (x / x.norm());
+                                           sums.first_h += n.h_gradient;
+                                           if (s == 0) sums.Z += mass_ * dh.dw_dh, sums.Z2 += mass_ * dh.d2w_dh2;
+                                       }
+                                       sums.density += mass_ * w;
+                                       sums.first += n.gradient;
+                                       list.push_back(n);
+                                   });
 }
 
 Dispersion::Neighbour Dispersion::neighbour_at(const Eigen::Vector3d& x, int s, int t, const Eigen::Matrix3d& to_cells,
@@ -175,7 +180,8 @@ void Dispersion::sum_long_wave_moments()
         gradient_moment_ += nb.gradient * nb.x.transpose();
         h_gradient_moment_ += nb.h_gradient * nb.x.transpose();
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) hessian_moments_[static_cast<std::size_t>(3 * a + b)] += 0.5 * nb.x[a] * nb.x[b] * nb.hessian;
+            for (int b = 0; b < 3; ++b)
+                hessian_moments_[static_cast<std::size_t>(3 * a + b)] += 0.5 * nb.x[a] * nb.x[b] * nb.hessian;
     }
 }
 
@@ -189,10 +195,11 @@ void Dispersion::check_one_density(const Lattice& lattice, const std::vector<dou
                                k_, lattice.name, density_ / mass_));
     for (std::size_t s = 1; s < densities.size(); ++s)
         if (std::abs(densities[s] - density_) > 1e-9 * density_)
-            fail_input(fmt::format("the sites of lattice {} do not see one SPH density (site 0: {:.10g}, site {}: {:.10g} "
-                                   "times rho0 at k = {}): one pressure cannot hold them at rest, so stability is "
-                                   "defined only for lattices whose sites are equivalent",
-                                   lattice.name, density_ / mass_, s, densities[s] / mass_, k_));
+            fail_input(
+                fmt::format("the sites of lattice {} do not see one SPH density (site 0: {:.10g}, site {}: {:.10g} "
+                            "times rho0 at k = {}): one pressure cannot hold them at rest, so stability is "
+                            "defined only for lattices whose sites are equivalent",
+                            lattice.name, density_ / mass_, s, densities[s] / mass_, k_));
 }
 
 void Dispersion::set_coefficients(double Z, double Z2)
@@ -202,21 +209,22 @@ void Dispersion::set_coefficients(double Z, double Z2)
     c_cross_ = coefficients_.cross;
     c_hessian_ = coefficients_.hessian;
     // Never a non-finite omega^2 printed as a result: the coefficients of every matrix are finite.
-    const bool alone = std::all_of(neighbours_.begin(), neighbours_.end(), [](const auto& list) { return list.empty(); });
+    const bool alone =
+        std::all_of(neighbours_.begin(), neighbours_.end(), [](const auto& list) { return list.empty(); });
     if (alone && (!std::isfinite(c_gradient_) || !std::isfinite(c_cross_) || !std::isfinite(c_hessian_)))
-        fail_input(fmt::format("k = {}: no neighbour lies inside the support, so no SPH force holds a particle and the "
-                               "linear stability has no meaning ({} h: Omega = {:.3g}); expected a k whose support reaches "
-                               "the nearest neighbours",
-                               k_, h_model_name(h_model_), coefficients_.omega));
+        fail_input(
+            fmt::format("k = {}: no neighbour lies inside the support, so no SPH force holds a particle and the "
+                        "linear stability has no meaning ({} h: Omega = {:.3g}); expected a k whose support reaches "
+                        "the nearest neighbours",
+                        k_, h_model_name(h_model_), coefficients_.omega));
     if (!std::isfinite(c_gradient_) || !std::isfinite(c_cross_) || !std::isfinite(c_hessian_))
-        fail_input(fmt::format("gamma = {} and the SPH density {:.6g} at k = {} give pressure coefficients that are not "
-                               "finite numbers", gamma_, density_, k_));
+        fail_input(
+            fmt::format("gamma = {} and the SPH density {:.6g} at k = {} give pressure coefficients that are not "
+                        "finite numbers",
+                        gamma_, density_, k_));
 }
 
-double Dispersion::eta() const
-{
-    return k_ / std::pow(mass_ / density_, 1.0 / dim_);
-}
+double Dispersion::eta() const { return k_ / std::pow(mass_ / density_, 1.0 / dim_); }
 
 bool Dispersion::fast_phases(const Eigen::Vector3d& kappa) const
 {

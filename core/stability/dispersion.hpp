@@ -17,8 +17,8 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <string>
 #include <complex>
+#include <string>
 #include <vector>
 
 namespace sphkern {
@@ -26,14 +26,14 @@ namespace sphkern {
 // Checks of the inputs the command line and the Python module take alike; Error(usage)
 // whose message starts with `what` (an option's name, or the option and its text).
 inline constexpr double min_gamma = 1e-6, max_gamma = 1e6;
-void check_gamma(double gamma, const std::string& what);                  // in [min_gamma, max_gamma]
+void check_gamma(double gamma, const std::string& what); // in [min_gamma, max_gamma]
 Eigen::Vector3d checked_wavevector(const std::vector<double>& components, int dimension,
-                                   const std::string& what);              // D finite components, 0 < |kappa| <= 1e6
+                                   const std::string& what); // D finite components, 0 < |kappa| <= 1e6
 
 struct DispersionModes {
-    std::vector<double> omega2;              // ascending, D * sites of them
-    std::vector<Eigen::VectorXcd> modes;     // unit polarisation of each (D per site)
-    std::vector<double> longitudinal;        // |kappa^ . xi|^2 summed over sites: 1 longitudinal, 0 transverse
+    std::vector<double> omega2;          // ascending, D * sites of them
+    std::vector<Eigen::VectorXcd> modes; // unit polarisation of each (D per site)
+    std::vector<double> longitudinal;    // |kappa^ . xi|^2 summed over sites: 1 longitudinal, 0 transverse
 };
 
 class Dispersion {
@@ -78,11 +78,11 @@ public:
 
 private:
     struct Neighbour {
-        Eigen::Vector3d x;        // x_j - x_i in units of d
-        int site;                 // the motif site of j
-        std::array<int, 3> cell;  // x = basis * cell + the sites' offset
-        Eigen::Vector3d gradient; // m grad_i W(r_ij)
-        Eigen::Matrix3d hessian;  // m H(r_ij)
+        Eigen::Vector3d x;                                    // x_j - x_i in units of d
+        int site;                                             // the motif site of j
+        std::array<int, 3> cell;                              // x = basis * cell + the sites' offset
+        Eigen::Vector3d gradient;                             // m grad_i W(r_ij)
+        Eigen::Matrix3d hessian;                              // m H(r_ij)
         Eigen::Vector3d h_gradient = Eigen::Vector3d::Zero(); // m d/dh grad_i W(r_ij) (adaptive h only)
     };
     // exp(i kappa.x) of every neighbour, as products of exp(i n kappa.a_j) over the cells'
@@ -111,11 +111,11 @@ private:
 
     std::vector<std::vector<Neighbour>> neighbours_; // per site
     Eigen::Matrix3d basis_;
-    std::vector<Eigen::Vector3d> offsets_;           // per site pair s * sites + t: x_t - x_s within a cell
+    std::vector<Eigen::Vector3d> offsets_; // per site pair s * sites + t: x_t - x_s within a cell
     std::array<int, 3> cell_min_{}, cell_span_{};
-    Eigen::Matrix3d gradient_moment_ = Eigen::Matrix3d::Zero();                  // site 0: sum m grad W x^T
-    Eigen::Matrix3d h_gradient_moment_ = Eigen::Matrix3d::Zero();                // site 0: sum m d/dh grad W x^T
-    std::array<Eigen::Matrix3d, 9> hessian_moments_{};                          // site 0: sum m H x_a x_b / 2
+    Eigen::Matrix3d gradient_moment_ = Eigen::Matrix3d::Zero();   // site 0: sum m grad W x^T
+    Eigen::Matrix3d h_gradient_moment_ = Eigen::Matrix3d::Zero(); // site 0: sum m d/dh grad W x^T
+    std::array<Eigen::Matrix3d, 9> hessian_moments_{};            // site 0: sum m H x_a x_b / 2
     bool integer_cells_ = true;
     int dim_;
     double k_, gamma_, mass_, density_;

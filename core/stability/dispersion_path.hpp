@@ -11,9 +11,9 @@
 namespace sphkern {
 
 struct DispersionPath {
-    std::vector<std::string> labels;       // the symmetry points, in path order
-    std::vector<double> label_positions;   // their distance along the path, in 1/d
-    std::vector<double> position;          // of every sample, in 1/d
+    std::vector<std::string> labels;         // the symmetry points, in path order
+    std::vector<double> label_positions;     // their distance along the path, in 1/d
+    std::vector<double> position;            // of every sample, in 1/d
     std::vector<std::vector<double>> omega2; // [sample][branch], ascending per sample
 };
 

@@ -8,17 +8,14 @@
 
 namespace sphkern {
 
-std::string h_model_name(HModel model)
-{
-    return model == HModel::fixed ? "fixed" : "adaptive";
-}
+std::string h_model_name(HModel model) { return model == HModel::fixed ? "fixed" : "adaptive"; }
 
 HModel parse_h_model(const std::string& text, const std::string& what)
 {
     if (text == "fixed") return HModel::fixed;
     if (text == "adaptive") return HModel::adaptive;
-    throw Error(ExitCode::usage, fmt::format("{} \"{}\" is not a smoothing-length model, expected fixed or adaptive",
-                                             what, text));
+    throw Error(ExitCode::usage,
+                fmt::format("{} \"{}\" is not a smoothing-length model, expected fixed or adaptive", what, text));
 }
 
 HDerivatives h_derivatives(double q, double w, double wq, double wqq, double h, int dim)
@@ -35,7 +32,7 @@ DispersionCoefficients dispersion_coefficients(HModel model, double gamma, doubl
     // h = eta (m/rho)^(1/D): dh/drho = -h / (D rho), so delta rho = -(C^H xi) / Omega, and
     // Omega, P / (Omega rho^2) and h are perturbed with it (the method document, "Adaptive h").
     const double D = dim, Omega = 1 + h * Z / (D * rho);
-    const double f0 = 1 / (gamma * Omega * rho);                                 // P / (Omega rho^2)
+    const double f0 = 1 / (gamma * Omega * rho);                                    // P / (Omega rho^2)
     const double c1 = ((1 + D) * h * Z + h * h * Z2) / (D * D * rho * rho * Omega); // d Omega per unit C^H xi
     const double alpha = ((gamma - 2) / rho + c1) / Omega, beta = h / (D * rho * Omega);
     return {f0 * alpha, f0 * beta, 2 * f0, Omega};

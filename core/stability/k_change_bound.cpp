@@ -26,7 +26,8 @@ OmegaRate from_pair(double low, double high, double eps)
 
 KChangeRates::KChangeRates(const Kernel& kernel, const Lattice& lattice, const RateGrid& grid, double k, double gamma,
                            HModel h_model)
-    : k_(k), eps_(1e-5 * k), lo_(kernel, lattice, k - eps_, gamma, h_model), hi_(kernel, lattice, k + eps_, gamma, h_model)
+    : k_(k), eps_(1e-5 * k), lo_(kernel, lattice, k - eps_, gamma, h_model),
+      hi_(kernel, lattice, k + eps_, gamma, h_model)
 {
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const Eigen::Vector3d& kappa = grid.kappa(i);

@@ -76,7 +76,7 @@ ModeCharacter mode_character(const Dispersion& dispersion, const ReciprocalLatti
         for (int a = 0; a < D; ++a) along += best.unfolded[a] / length * motion[a];
         best.longitudinal = std::norm(along) / motion.squaredNorm();
     }
-    best.kind = best.in_phase < 0.5      ? ModeKind::optical
+    best.kind = best.in_phase < 0.5       ? ModeKind::optical
                 : best.longitudinal > 0.5 ? ModeKind::longitudinal
                                           : ModeKind::transverse;
     return best;

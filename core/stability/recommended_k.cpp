@@ -19,16 +19,19 @@ RecommendedK recommend_k(const std::vector<KInterval>& both, double window_min, 
     r.neighbours = errors.at(r.k).neighbours;
     r.neighbours_from = errors.at(r.widest.from).neighbours;
     r.neighbours_to = errors.at(r.widest.to).neighbours;
-    r.at_window_edge = at_window_edge(r.widest.from, window_min, window_max) ||
-                       at_window_edge(r.widest.to, window_min, window_max);
+    r.at_window_edge =
+        at_window_edge(r.widest.from, window_min, window_max) || at_window_edge(r.widest.to, window_min, window_max);
     return r;
 }
 
 nlohmann::json recommended_json(const RecommendedK& r)
 {
     if (!r.found) return {{"found", false}, {"note", "no k of the window is both accurate and stable"}};
-    nlohmann::json j = {{"found", true}, {"k", r.k}, {"margin", r.margin},
-                        {"interval", {r.widest.from, r.widest.to}}, {"neighbours", r.neighbours},
+    nlohmann::json j = {{"found", true},
+                        {"k", r.k},
+                        {"margin", r.margin},
+                        {"interval", {r.widest.from, r.widest.to}},
+                        {"neighbours", r.neighbours},
                         {"neighbours_range", {r.neighbours_from, r.neighbours_to}},
                         {"at_window_edge", r.at_window_edge}};
     if (r.at_window_edge) j["note"] = window_edge_note;

@@ -16,8 +16,8 @@ namespace sphkern {
 struct RecommendedK {
     bool found = false;
     KInterval widest{0, 0};
-    double k = 0, margin = 0;               // centre and half width
-    int neighbours = 0;                     // N_H at k
+    double k = 0, margin = 0;                   // centre and half width
+    int neighbours = 0;                         // N_H at k
     int neighbours_from = 0, neighbours_to = 0; // at the ends of the interval
     bool at_window_edge = false;
 };

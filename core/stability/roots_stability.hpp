@@ -23,9 +23,9 @@ struct RootsStabilityOptions {
 };
 
 struct RootsStability {
-    nlohmann::json json;              // {"refused": why} for a lattice without a dispersion matrix
-    std::vector<KInterval> stable;    // at the horizon
-    std::vector<KInterval> both;      // and condition (22)
+    nlohmann::json json;           // {"refused": why} for a lattice without a dispersion matrix
+    std::vector<KInterval> stable; // at the horizon
+    std::vector<KInterval> both;   // and condition (22)
     RecommendedK recommended;
     bool refused() const { return json.contains("refused"); }
 };

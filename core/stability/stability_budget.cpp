@@ -33,8 +33,8 @@ double dispersion_neighbours(const Kernel& kernel, const Lattice& lattice, doubl
 
 void check_dispersion_neighbours(const Kernel& kernel, const Lattice& lattice, double k)
 {
-    check_work_budget(fmt::format("stability at k = {}", k), "neighbours within the support", dispersion_neighbours(kernel, lattice, k),
-                      max_dispersion_neighbours);
+    check_work_budget(fmt::format("stability at k = {}", k), "neighbours within the support",
+                      dispersion_neighbours(kernel, lattice, k), max_dispersion_neighbours);
 }
 
 double stability_neighbour_terms(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max, int steps,

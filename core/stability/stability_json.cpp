@@ -12,7 +12,6 @@
 
 #include <cmath>
 
-
 namespace sphkern {
 
 namespace {
@@ -26,7 +25,10 @@ nlohmann::json vector_json(const Eigen::Vector3d& v, int dim)
 
 nlohmann::json header(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h_model)
 {
-    return {{"kernel", kernel.label()}, {"lattice", lattice.name}, {"k", k}, {"gamma", gamma},
+    return {{"kernel", kernel.label()},
+            {"lattice", lattice.name},
+            {"k", k},
+            {"gamma", gamma},
             {"h_model", h_model_name(h_model)},
             {"second_derivative", kernel.provides_second_derivative() ? "plugin" : "numerical"}};
 }
@@ -58,7 +60,10 @@ std::vector<std::pair<std::string, Eigen::Vector3d>> symmetry_directions(const R
 
 nlohmann::json zone_scan_json(const StabilityScan& scan)
 {
-    return {{"grid", scan.grid}, {"grids", scan.levels}, {"converged", scan.converged}, {"change", scan.change},
+    return {{"grid", scan.grid},
+            {"grids", scan.levels},
+            {"converged", scan.converged},
+            {"change", scan.change},
             {"tolerance", {{"absolute", zone_tolerance_absolute}, {"relative", zone_tolerance_relative}}}};
 }
 
@@ -66,14 +71,19 @@ nlohmann::json zone_scan_json(const StabilityScan& scan)
 
 nlohmann::json mode_json(const ModeCharacter& mode, int dim)
 {
-    return {{"kind", mode_kind_name(mode.kind)}, {"unfolded_wavevector", vector_json(mode.unfolded, dim)},
-            {"in_phase", mode.in_phase}, {"longitudinal", mode.longitudinal}};
+    return {{"kind", mode_kind_name(mode.kind)},
+            {"unfolded_wavevector", vector_json(mode.unfolded, dim)},
+            {"in_phase", mode.in_phase},
+            {"longitudinal", mode.longitudinal}};
 }
 
 nlohmann::json stability_sample_json(const StabilitySample& s, int dim)
 {
-    nlohmann::json entry = {{"k", s.k}, {"min_omega2", s.branch_minima.front()}, {"stable", s.stable},
-                            {"verdict", verdict_name(s.verdict)}, {"longitudinal", s.longitudinal},
+    nlohmann::json entry = {{"k", s.k},
+                            {"min_omega2", s.branch_minima.front()},
+                            {"stable", s.stable},
+                            {"verdict", verdict_name(s.verdict)},
+                            {"longitudinal", s.longitudinal},
                             {"branch_minima", s.branch_minima}};
     if (std::isfinite(s.floor)) entry["valley_floor"] = s.floor;
     if (std::isfinite(s.growth_time)) {
@@ -99,8 +109,8 @@ nlohmann::json dispersion_document(const Kernel& kernel, const Lattice& lattice,
         nlohmann::json polarisation = nlohmann::json::array();
         for (Eigen::Index i = 0; i < modes.modes[b].size(); ++i)
             polarisation.push_back({modes.modes[b][i].real(), modes.modes[b][i].imag()});
-        list.push_back({{"omega2", modes.omega2[b]}, {"longitudinal", modes.longitudinal[b]},
-                        {"polarisation", polarisation}});
+        list.push_back(
+            {{"omega2", modes.omega2[b]}, {"longitudinal", modes.longitudinal[b]}, {"polarisation", polarisation}});
         if (modes.longitudinal[b] > modes.longitudinal[most]) most = b;
     }
     document["modes"] = list;
@@ -134,7 +144,9 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
     document["mode"] = mode_json(scan.mode, D);
     nlohmann::json branches = nlohmann::json::array();
     for (const auto& m : scan.minima)
-        branches.push_back({{"branch", m.branch}, {"min_omega2", m.omega2}, {"at", vector_json(m.kappa, D)},
+        branches.push_back({{"branch", m.branch},
+                            {"min_omega2", m.omega2},
+                            {"at", vector_json(m.kappa, D)},
                             {"longitudinal", m.longitudinal}});
     document["branches"] = branches;
     document["long_wave"] = {{"min_omega2_over_kappa2", scan.long_wave.omega2_over_kappa2},
@@ -148,7 +160,9 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
     nlohmann::json speeds = nlohmann::json::array();
     for (const auto& [label, n] : symmetry_directions(reciprocal)) {
         const auto s = long_wave_sound_speed(dispersion, n);
-        nlohmann::json entry = {{"direction", label}, {"unit_vector", vector_json(n, D)}, {"speeds", s.speeds},
+        nlohmann::json entry = {{"direction", label},
+                                {"unit_vector", vector_json(n, D)},
+                                {"speeds", s.speeds},
                                 {"longitudinal_error", s.longitudinal - 1}};
         if (errors) {
             const double eps_rho = errors->at(k).eps_rho;
@@ -166,8 +180,7 @@ nlohmann::json stability_document(const Kernel& kernel, const Lattice& lattice, 
 }
 
 nlohmann::json stability_over_k_document(const Kernel& kernel, const Lattice& lattice, double k_min, double k_max,
-                                         int steps, double gamma, int grid, int threads, double horizon,
-                                         HModel h_model)
+                                         int steps, double gamma, int grid, int threads, double horizon, HModel h_model)
 {
     const auto scan = stability_over_k(kernel, lattice, k_min, k_max, steps, gamma, grid, threads, horizon, h_model);
     auto document = header(kernel, lattice, k_min, gamma, h_model);
@@ -193,8 +206,8 @@ nlohmann::json dispersion_path_json(const DispersionPath& path)
     return {{"points", points}, {"position", path.position}, {"omega2", path.omega2}};
 }
 
-nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points,
-                                        HModel h_model)
+nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
+                                        int points, HModel h_model)
 {
     check_dispersion_work("the dispersion path", kernel, lattice, k, points);
     const Dispersion dispersion(kernel, lattice, k, gamma, h_model);

@@ -4,9 +4,9 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "lattices/lattice.hpp"
 #include "stability/dispersion_path.hpp"
 #include "stability/stability_over_k.hpp"
-#include "lattices/lattice.hpp"
 
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
@@ -32,8 +32,8 @@ nlohmann::json stability_sample_json(const StabilitySample& sample, int dim);
 nlohmann::json mode_json(const ModeCharacter& mode, int dim);
 
 // omega^2 of every branch along the high-symmetry path, about `points` samples.
-nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma, int points,
-                                        HModel h_model = HModel::fixed);
+nlohmann::json dispersion_path_document(const Kernel& kernel, const Lattice& lattice, double k, double gamma,
+                                        int points, HModel h_model = HModel::fixed);
 nlohmann::json dispersion_path_json(const DispersionPath& path);
 
 } // namespace sphkern

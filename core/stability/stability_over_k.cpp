@@ -78,7 +78,8 @@ StabilityOverK stability_over_k(const Kernel& kernel, const Lattice& lattice, do
     spdlog::debug("stability over k: {} samples for the curve, {} for the intervals", result.samples.size(),
                   cover.looked_at.size());
     for (const auto& s : cover.looked_at)
-        if (std::none_of(result.samples.begin(), result.samples.end(), [&](const StabilitySample& c) { return c.k == s.k; }))
+        if (std::none_of(result.samples.begin(), result.samples.end(),
+                         [&](const StabilitySample& c) { return c.k == s.k; }))
             result.between.push_back(s);
     result.stable = cover.stable;
     result.usable = cover.usable;

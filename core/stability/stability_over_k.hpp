@@ -18,15 +18,15 @@ inline constexpr double stability_k_tolerance = 1e-6;
 
 struct StabilitySample {
     double k = 0;
-    std::vector<double> branch_minima; // ascending branch order; only the lowest is refined
-    bool stable = true;                // no omega^2 below -1e-9 anywhere (long waves included)
-    Verdict verdict = Verdict::stable; // at the horizon
-    double longitudinal = 0;           // of the lowest branch's minimum, at the folded wave vector
+    std::vector<double> branch_minima;            // ascending branch order; only the lowest is refined
+    bool stable = true;                           // no omega^2 below -1e-9 anywhere (long waves included)
+    Verdict verdict = Verdict::stable;            // at the horizon
+    double longitudinal = 0;                      // of the lowest branch's minimum, at the folded wave vector
     Eigen::Vector3d at = Eigen::Vector3d::Zero(); // the wave vector of the lowest omega^2, first zone
-    ModeCharacter mode;                // of that mode
-    double growth_time = INFINITY;     // 1 / sqrt(-omega^2) in d/c
-    double floor = INFINITY;           // the lowest valley floor away from Γ
-    double long_wave = 0;              // the long-wave minimum of omega^2 / kappa^2
+    ModeCharacter mode;                           // of that mode
+    double growth_time = INFINITY;                // 1 / sqrt(-omega^2) in d/c
+    double floor = INFINITY;                      // the lowest valley floor away from Γ
+    double long_wave = 0;                         // the long-wave minimum of omega^2 / kappa^2
 };
 
 struct StabilityOverK {

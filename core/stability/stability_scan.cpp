@@ -66,8 +66,8 @@ std::string verdict_name(Verdict verdict)
 void check_horizon(double horizon, const std::string& what)
 {
     if (!std::isfinite(horizon) || horizon <= 0 || horizon > 1e12)
-        throw Error(ExitCode::usage, fmt::format("{} {} is not allowed, expected a growth time in (0, 1e12] (in d/c)",
-                                                 what, horizon));
+        throw Error(ExitCode::usage,
+                    fmt::format("{} {} is not allowed, expected a growth time in (0, 1e12] (in d/c)", what, horizon));
 }
 
 double StabilityScan::growth_time() const
@@ -102,8 +102,8 @@ StabilityScan scan_brillouin_zone(const Dispersion& dispersion, const Reciprocal
         double value = zone.omega2;
         if (br > 0) {
             const auto [v, at] = grid.branch_minimum(br);
-            std::tie(f, value) = refine_branch(dispersion, b, br, grid.fraction(at), v, 1.0 / grid.per_axis(),
-                                               refine_all ? 6 : 0);
+            std::tie(f, value) =
+                refine_branch(dispersion, b, br, grid.fraction(at), v, 1.0 / grid.per_axis(), refine_all ? 6 : 0);
         }
         m.kappa = fold_to_first_zone(reciprocal, b * f);
         const auto modes = dispersion.modes(m.kappa);
@@ -127,8 +127,9 @@ LongWaveMinimum long_wave_minimum(const Dispersion& dispersion)
     // several: omega^2 / kappa^2 of the lowest branch at kappa = 1e-3 and 2e-3,
     // Richardson-extrapolated to kappa -> 0.
     auto direction = [&](double theta, double phi) {
-        return D == 3 ? Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))
-                      : Eigen::Vector3d(std::cos(phi), std::sin(phi), 0);
+        return D == 3
+                   ? Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta))
+                   : Eigen::Vector3d(std::cos(phi), std::sin(phi), 0);
     };
     auto ratio = [&](double theta, double phi) {
         const Eigen::Vector3d n = direction(theta, phi);

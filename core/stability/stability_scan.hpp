@@ -18,7 +18,7 @@ namespace sphkern {
 inline constexpr double unstable_threshold = 1e-9;
 
 struct BranchMinimum {
-    int branch = 0;          // 0 = lowest eigenvalue
+    int branch = 0; // 0 = lowest eigenvalue
     double omega2 = 0;
     Eigen::Vector3d kappa;   // in the first Brillouin zone
     double longitudinal = 0; // of the mode there (1 longitudinal, 0 transverse), at the folded kappa
@@ -45,14 +45,14 @@ void check_horizon(double horizon, const std::string& what);
 struct StabilityScan {
     std::vector<BranchMinimum> minima; // one per branch, lowest first
     LongWaveMinimum long_wave;
-    bool stable = true; // no omega^2 and no long-wave omega^2 / kappa^2 below -unstable_threshold
+    bool stable = true;  // no omega^2 and no long-wave omega^2 / kappa^2 below -unstable_threshold
     int grid_points = 0; // points of the last grid
     int grid = 0;        // points per axis of the last grid
     int levels = 0;      // grids used
     bool converged = false;
-    double change = 0;   // of the minimum between the last two grids
+    double change = 0;       // of the minimum between the last two grids
     double floor = INFINITY; // the lowest valley floor of the lowest branch away from Γ
-    ModeCharacter mode;  // of the lowest branch at its minimum, judged at its unfolded wave vector
+    ModeCharacter mode;      // of the lowest branch at its minimum, judged at its unfolded wave vector
     const BranchMinimum& lowest() const { return minima.front(); }
     // 1 / sqrt(-omega^2) in d/c of the fastest growing mode; infinite when none grows at a finite kappa.
     double growth_time() const;
@@ -72,8 +72,8 @@ int default_grid(int dimension);
 // lowest D), from omega^2 / kappa^2 at kappa = 1e-3 and 2e-3 extrapolated to kappa -> 0.
 struct SoundSpeed {
     Eigen::Vector3d direction;
-    std::vector<double> speeds;  // ascending, in units of c; negative: omega^2 < 0 (its square root, signed)
-    double longitudinal = 0;     // the speed of the most longitudinal acoustic mode
+    std::vector<double> speeds; // ascending, in units of c; negative: omega^2 < 0 (its square root, signed)
+    double longitudinal = 0;    // the speed of the most longitudinal acoustic mode
 };
 SoundSpeed long_wave_sound_speed(const Dispersion& dispersion, const Eigen::Vector3d& direction);
 

@@ -54,8 +54,7 @@ public:
           const std::function<StabilitySample(double)>& at, const CoverRates* known)
         : kernel_(kernel), lattice_(lattice), model_(model), at_(at), known_(known),
           reciprocal_(reciprocal_lattice(lattice))
-    {
-    }
+    {}
 
     // Halves [a, b] until each part is settled or no wider than the tolerance.
     void refine(double a, double b)
@@ -242,8 +241,8 @@ std::shared_ptr<const CoverRates> prefetch_cover(const Kernel& kernel, const Lat
         }
         round = std::move(next);
     }
-    spdlog::debug("stability over k: {} samples and {} rates taken ahead in {} rounds{}", known.size(), rates->at.size(),
-                  rounds, rates->grid ? "" : " (no rate grid)");
+    spdlog::debug("stability over k: {} samples and {} rates taken ahead in {} rounds{}", known.size(),
+                  rates->at.size(), rounds, rates->grid ? "" : " (no rate grid)");
     return rates;
 }
 
@@ -260,7 +259,8 @@ VerdictCover cover_verdicts(const Kernel& kernel, const Lattice& lattice, double
     result.certain = cover.certain();
     if (!result.certain)
         spdlog::warn("stability over k: {} samples taken and some stretches of k are still not settled; a stable "
-                     "window narrower than them may be missed", cover_sample_limit);
+                     "window narrower than them may be missed",
+                     cover_sample_limit);
     result.stable = intervals_of(result.looked_at, StabilityRule::strict);
     result.usable = intervals_of(result.looked_at, StabilityRule::horizon);
     return result;

@@ -41,8 +41,8 @@ bool verdict_spans(StabilityRule rule, const StabilitySample& a, const Stability
                    double horizon)
 {
     // Unstable at the horizon: omega^2 below -1/T^2 (and below -1e-9, a growth time at all).
-    const double t = rule == StabilityRule::strict ? -unstable_threshold
-                                                   : std::min(-unstable_threshold, -1 / (horizon * horizon));
+    const double t =
+        rule == StabilityRule::strict ? -unstable_threshold : std::min(-unstable_threshold, -1 / (horizon * horizon));
     const double width = b.k - a.k;
     const bool strict = rule == StabilityRule::strict;
     if (rule_holds(a, rule)) {

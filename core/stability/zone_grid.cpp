@@ -111,10 +111,7 @@ ZoneGrid::ZoneGrid(const Dispersion& dispersion, const Eigen::Matrix3d& b, int n
     }
 }
 
-Eigen::Vector3d ZoneGrid::fraction(std::size_t index) const
-{
-    return centred(index, n_, D_).cast<double>() / n_;
-}
+Eigen::Vector3d ZoneGrid::fraction(std::size_t index) const { return centred(index, n_, D_).cast<double>() / n_; }
 
 std::size_t ZoneGrid::gamma_index() const { return index_of(Eigen::Vector3i::Zero(), n_, D_); }
 
@@ -148,7 +145,8 @@ std::vector<std::size_t> ZoneGrid::valleys(int count) const
     std::vector<std::size_t> distinct;
     for (std::size_t i : floors) {
         if (static_cast<int>(distinct.size()) == count) break;
-        if (!distinct.empty() && std::abs(lowest_[i] - lowest_[distinct.back()]) <= 1e-12 * std::abs(lowest_[i])) continue;
+        if (!distinct.empty() && std::abs(lowest_[i] - lowest_[distinct.back()]) <= 1e-12 * std::abs(lowest_[i]))
+            continue;
         distinct.push_back(i);
     }
     return distinct;
@@ -166,7 +164,8 @@ std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion, c
                 return dispersion.omega2(b * g)[br];
             };
             std::uintmax_t iterations = 60;
-            auto [x, fx] = boost::math::tools::brent_find_minima(along, f[axis] - reach, f[axis] + reach, 20, iterations);
+            auto [x, fx] =
+                boost::math::tools::brent_find_minima(along, f[axis] - reach, f[axis] + reach, 20, iterations);
             if (fx < value) value = fx, f[axis] = x;
         }
     return {f, value};

@@ -32,15 +32,16 @@ public:
 
 private:
     int n_, D_;
-    std::vector<double> lowest_;                 // the lowest branch at every point
-    std::vector<double> minimum_;                // per branch: the grid minimum
-    std::vector<std::size_t> minimum_at_;        // and where it is
+    std::vector<double> lowest_;          // the lowest branch at every point
+    std::vector<double> minimum_;         // per branch: the grid minimum
+    std::vector<std::size_t> minimum_at_; // and where it is
     std::size_t evaluated_ = 0;
 };
 
 // Coordinate-wise Brent minimisation of one branch from fractions f, within `reach` on each
 // axis, `sweeps` times over the axes; returns the fractions and the value found.
-std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion, const Eigen::Matrix3d& reciprocal_vectors,
-                                                 int branch, Eigen::Vector3d f, double value, double reach, int sweeps);
+std::pair<Eigen::Vector3d, double> refine_branch(const Dispersion& dispersion,
+                                                 const Eigen::Matrix3d& reciprocal_vectors, int branch,
+                                                 Eigen::Vector3d f, double value, double reach, int sweeps);
 
 } // namespace sphkern

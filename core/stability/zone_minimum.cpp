@@ -136,8 +136,9 @@ ZoneMinimum lowest_branch_minimum(const Dispersion& dispersion, const Reciprocal
     if (result.levels == 1) result.change = 0; // a single grid: nothing to compare it with
     // Where a mode grows, its growth time is reported: follow the valley to its floor.
     if (result.omega2 < 0)
-        std::tie(result.fraction, result.omega2) = polish_minimum(dispersion, reciprocal.vectors, result.fraction,
-                                                                  result.omega2, 1.0 / result.grid, polish_tolerance, 40);
+        std::tie(result.fraction, result.omega2) =
+            polish_minimum(dispersion, reciprocal.vectors, result.fraction, result.omega2, 1.0 / result.grid,
+                           polish_tolerance, 40);
     return result;
 }
 

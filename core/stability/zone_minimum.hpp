@@ -26,11 +26,11 @@ int zone_start_grid(int dimension);
 struct ZoneMinimum {
     double omega2 = 0;                                  // the lowest omega^2 found
     Eigen::Vector3d fraction = Eigen::Vector3d::Zero(); // where, in fractions of the reciprocal vectors
-    double floor = INFINITY; // the lowest refined valley floor away from Γ (a margin of stability)
-    int grid = 0;            // points per axis of the last grid
-    int levels = 0;          // grids used
-    bool converged = false;  // the last two grids agreed within the tolerance
-    double change = 0;       // how much the minimum moved between the last two grids
+    double floor = INFINITY;      // the lowest refined valley floor away from Γ (a margin of stability)
+    int grid = 0;                 // points per axis of the last grid
+    int levels = 0;               // grids used
+    bool converged = false;       // the last two grids agreed within the tolerance
+    double change = 0;            // how much the minimum moved between the last two grids
     std::optional<ZoneGrid> last; // the last grid, for the other branches
 };
 

@@ -15,8 +15,8 @@ namespace sphkern {
 // From fractions f with the lowest branch at `value`: rounds of one coordinate sweep and a
 // Brent search along that sweep's move (within `reach`), until a round improves the value by
 // at most `tolerance` (c^2/d^2) or after `rounds`; returns the fractions and the value.
-std::pair<Eigen::Vector3d, double> polish_minimum(const Dispersion& dispersion, const Eigen::Matrix3d& reciprocal_vectors,
-                                                  Eigen::Vector3d f, double value, double reach,
-                                                  double (*tolerance)(double), int rounds);
+std::pair<Eigen::Vector3d, double> polish_minimum(const Dispersion& dispersion,
+                                                  const Eigen::Matrix3d& reciprocal_vectors, Eigen::Vector3d f,
+                                                  double value, double reach, double (*tolerance)(double), int rounds);
 
 } // namespace sphkern

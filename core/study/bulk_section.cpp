@@ -31,7 +31,8 @@ std::vector<RootExplanation> explain(const HydrostaticErrors& mode, const Hydros
             const Shell& s = mode.terms()[i];
             if (s.radius <= R * root.k) continue;
             auto c = mode.shell_contribution(s, root.k);
-            e.differences.push_back({s.radius, s.count, "evaluated past R", s.radius / root.k, rho ? c.first : c.second});
+            e.differences.push_back(
+                {s.radius, s.count, "evaluated past R", s.radius / root.k, rho ? c.first : c.second});
         }
         for (const auto& s : automatic.terms()) {
             if (s.radius > R * root.k) break;
@@ -53,8 +54,8 @@ namespace {
 
 // One kernel x lattice x a_p x mode: the curve, roots, condition (22) and, for a fixed-shell
 // mode, why its roots differ from the automatic evaluation.
-StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey& key, const HydrostaticErrors& automatic,
-                    const RootScan& automatic_scan)
+StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey& key,
+                    const HydrostaticErrors& automatic, const RootScan& automatic_scan)
 {
     const Lattice& lattice = inputs.lattices[key.lattice];
     const Kernel& kernel = inputs.kernels[key.kernel];
@@ -76,8 +77,8 @@ StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey
     c.k_min = k_min;
     c.k_max = k_max;
     c.sites = sites;
-    auto errors = errors_per_site(kernel, lattice, sites, a_p, lattice.gravity, k_max,
-                                  inputs.evaluation[key.mode][key.kernel]);
+    auto errors =
+        errors_per_site(kernel, lattice, sites, a_p, lattice.gravity, k_max, inputs.evaluation[key.mode][key.kernel]);
     for (int i = 0; i < study.samples; ++i) {
         if (i % 64 == 0) throw_if_interrupted();
         double k = k_min + (k_max - k_min) * i / (study.samples - 1);
@@ -104,7 +105,8 @@ StudyCase bulk_case(const Study& study, const StudyInputs& inputs, const CaseKey
 void run_bulk_section(const Study& study, const StudyInputs& inputs, StudyResults& results)
 {
     Progress progress("study " + study.name + ", accuracy",
-                      inputs.lattices.size() * inputs.kernels.size() * study.volume_coefficients.size() * study.modes.size(),
+                      inputs.lattices.size() * inputs.kernels.size() * study.volume_coefficients.size() *
+                          study.modes.size(),
                       part_scope(inputs, "accuracy"));
     for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
         const Lattice& lattice = inputs.lattices[l];

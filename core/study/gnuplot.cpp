@@ -30,7 +30,8 @@ fs::path find_gnuplot()
     while (std::getline(list, folder, ':')) {
         fs::path candidate = fs::path(folder) / "gnuplot";
         // Absolute folders only: gnuplot runs from the staging folder, where "." means something else.
-        if (fs::path(folder).is_absolute() && fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
+        if (fs::path(folder).is_absolute() && fs::is_regular_file(candidate, ec) &&
+            ::access(candidate.c_str(), X_OK) == 0)
             return candidate;
     }
     return {};
@@ -43,7 +44,8 @@ std::vector<std::string> parse_figure_formats(const std::string& list, const std
     std::string item;
     while (std::getline(items, item, ',')) {
         if (item != "svg" && item != "png" && item != "pdf")
-            throw Error(ExitCode::usage, option + " " + list + ": \"" + item + "\" is not a figure format, expected svg, png or pdf");
+            throw Error(ExitCode::usage,
+                        option + " " + list + ": \"" + item + "\" is not a figure format, expected svg, png or pdf");
         if (std::find(formats.begin(), formats.end(), item) == formats.end()) formats.push_back(item);
     }
     if (formats.empty()) throw Error(ExitCode::usage, option + ": expected a list of svg, png and pdf");
@@ -55,9 +57,11 @@ namespace {
 std::string terminal(const std::string& format, int width, int height)
 {
     if (format == "png")
-        return fmt::format("set terminal pngcairo size {},{} enhanced font 'sans,10' background '#ffffff'", width, height);
+        return fmt::format("set terminal pngcairo size {},{} enhanced font 'sans,10' background '#ffffff'", width,
+                           height);
     if (format == "pdf")
-        return fmt::format("set terminal pdfcairo size {:.3f}in,{:.3f}in enhanced font 'sans,8'", width / 96.0, height / 96.0);
+        return fmt::format("set terminal pdfcairo size {:.3f}in,{:.3f}in enhanced font 'sans,8'", width / 96.0,
+                           height / 96.0);
     return fmt::format("set terminal svg size {},{} enhanced font 'sans,11' background '#ffffff'", width, height);
 }
 
@@ -66,7 +70,8 @@ std::string last_line(const std::string& text)
     const auto end = text.find_last_not_of(" \n\r\t");
     if (end == std::string::npos) return "no message";
     const auto start = text.find_last_of('\n', end);
-    return text.substr(start == std::string::npos ? 0 : start + 1, end + 1 - (start == std::string::npos ? 0 : start + 1));
+    return text.substr(start == std::string::npos ? 0 : start + 1,
+                       end + 1 - (start == std::string::npos ? 0 : start + 1));
 }
 
 } // namespace

@@ -59,8 +59,8 @@ void draw_bulk_figures(const Study& study, const StudyResults& results, Canvas& 
             for (const auto* c : cases)
                 if (c->kernel_label == kernel)
                     for (const auto& point : c->curve) axis.add(point.second.eps_rho), axis.add(point.second.eps_gradp);
-            std::string plot = fmt::format("plot {0} with filledcurves y1=-{0} lc rgb '#e8e8e8' notitle",
-                                           std::asinh(10.0));
+            std::string plot =
+                fmt::format("plot {0} with filledcurves y1=-{0} lc rgb '#e8e8e8' notitle", std::asinh(10.0));
             int colour = 0;
             for (const auto* c : cases) {
                 if (c->kernel_label != kernel) continue;

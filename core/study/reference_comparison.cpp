@@ -24,7 +24,8 @@ void compare_values(const ReferenceRow& row, const Root& computed, double tolera
 {
     c.compared = {"k"};
     if (std::abs(computed.k - row.k) > tolerance) c.differing.push_back("k");
-    const std::pair<const char*, std::optional<double>> printed[] = {{"eps_rho", row.eps_rho}, {"eps_gradp", row.eps_gradp}};
+    const std::pair<const char*, std::optional<double>> printed[] = {{"eps_rho", row.eps_rho},
+                                                                     {"eps_gradp", row.eps_gradp}};
     for (const auto& [key, v] : printed) {
         if (!v) continue; // the paper prints no number ("> 1"): nothing to compare
         c.compared.push_back(key);
@@ -95,8 +96,8 @@ void compare_with_reference(const ReferenceTable& table, StudyResults& results)
     results.reference = table.document;
     results.tolerance = table.tolerance;
     for (const auto& row : table.rows) {
-        const StudyCase* match = find_case(
-            results, {table.lattice_index, row.kernel_index, table.volume_coefficient_index, table.mode_index});
+        const StudyCase* match = find_case(results, {table.lattice_index, row.kernel_index,
+                                                     table.volume_coefficient_index, table.mode_index});
         if (!match) fail_input(table.file + ": " + row.json_path + ": the study has no case " + row.kernel);
         results.comparison.push_back(compare_row(row, *match, results.tolerance));
     }

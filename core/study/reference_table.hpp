@@ -14,11 +14,11 @@
 namespace sphkern {
 
 struct ReferenceRow {
-    nlohmann::json published; // the row as published
-    std::string json_path;    // "/rows/<i>" in the table's file
-    std::string kernel;       // the kernel's name
+    nlohmann::json published;     // the row as published
+    std::string json_path;        // "/rows/<i>" in the table's file
+    std::string kernel;           // the kernel's name
     std::size_t kernel_index = 0; // into the study's kernels (resolve_reference_table)
-    bool no_root = false;     // the paper finds no root in the interval
+    bool no_root = false;         // the paper finds no root in the interval
     double k = 0;
     std::optional<double> eps_rho, eps_gradp; // empty where the paper prints no number
     std::optional<std::string> erratum, erratum_eps_rho, erratum_eps_gradp;

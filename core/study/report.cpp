@@ -13,9 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace sphkern {
 
@@ -105,7 +105,7 @@ std::string replication_markdown(const StudyResults& results)
             continue;
         }
         std::string gradp_paper = p.contains("printed_eps_gradp") ? p["printed_eps_gradp"].get<std::string>()
-                                                                   : number(p.value("eps_gradp", nlohmann::json()));
+                                                                  : number(p.value("eps_gradp", nlohmann::json()));
         if (r.computed)
             s += fmt::format("| {} | {} | {} | {:.5f} | {:+.1e} | {} | {} | {} | {} | {} | {} |\n", r.kernel,
                              eps_name(*r.function), number(p["k"]), r.computed->k, r.computed->k - p["k"].get<double>(),
@@ -127,19 +127,22 @@ using CaseGroup = std::vector<const StudyCase*>;
 
 std::string verdicts_intro(const Study& study)
 {
-    std::string s = fmt::format("## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
-                                study.epsilon, study.epsilon, axis_name(study.axis), study.k_min, study.k_max);
+    std::string s = fmt::format(
+        "## Condition (22): |eps_rho| <= {:.6g} and |eps_gradP| <= {:.6g} for some {} in [{:.6g}, {:.6g}]\n\n",
+        study.epsilon, study.epsilon, axis_name(study.axis), study.k_min, study.k_max);
     if (study.axis != Axis::k)
         s += fmt::format("The window is given on the {} axis ({}); each table below names the k interval it is for "
                          "its kernel, lattice and a_p.\n\n",
-                         axis_name(study.axis), study.axis == Axis::eta ? "h_over_l = h / l, l = V^(1/D), V = a_p d^D the particle volume"
-                                                         : "nh = the number of neighbours inside the support");
-    s += fmt::format("The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
-                     "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
-                     "gradient-error tensor in place of |eps_gradP|) is in the column \"every direction\" of the "
-                     "tables below.\n\n",
-                     study.lateral ? ", the lateral error included" : "",
-                     study.sites ? "the sites listed in the study" : "every site of each lattice");
+                         axis_name(study.axis),
+                         study.axis == Axis::eta ? "h_over_l = h / l, l = V^(1/D), V = a_p d^D the particle volume"
+                                                 : "nh = the number of neighbours inside the support");
+    s += fmt::format(
+        "The verdict shown is the paper's: eps_gradP along the lattice's gravity{}, at every site studied at "
+        "once ({}). The same condition for every direction (the largest |eigenvalue| of the "
+        "gradient-error tensor in place of |eps_gradP|) is in the column \"every direction\" of the "
+        "tables below.\n\n",
+        study.lateral ? ", the lateral error included" : "",
+        study.sites ? "the sites listed in the study" : "every site of each lattice");
     return s;
 }
 
@@ -148,11 +151,13 @@ std::string verdicts_matrix(const Study& study, const StudyResults& results, con
 {
     std::vector<std::string> kernels;
     for (const auto& c : results.cases)
-        if (std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end()) kernels.push_back(c.kernel_label);
+        if (std::find(kernels.begin(), kernels.end(), c.kernel_label) == kernels.end())
+            kernels.push_back(c.kernel_label);
     std::string s = "| kernel |";
     std::string rule = "|---|";
     for (const auto& g : groups) {
-        s += fmt::format(" {} {}{} |", g[0]->lattice, g[0]->ap_name, study.modes.size() > 1 ? " (" + g[0]->mode + ")" : "");
+        s += fmt::format(" {} {}{} |", g[0]->lattice, g[0]->ap_name,
+                         study.modes.size() > 1 ? " (" + g[0]->mode + ")" : "");
         rule += "---|";
     }
     s += "\n" + rule + "\n";
@@ -160,7 +165,7 @@ std::string verdicts_matrix(const Study& study, const StudyResults& results, con
         s += "| " + kernel + " |";
         for (const auto& g : groups) {
             auto it = std::find_if(g.begin(), g.end(), [&](const StudyCase* c) { return c->kernel_label == kernel; });
-            s += it == g.end() ? " |"
+            s += it == g.end()                ? " |"
                  : (*it)->acceptance.passes() ? fmt::format(" **pass** k={:.3f}{} |", (*it)->acceptance.best_k,
                                                             on_axis(study, (*it)->acceptance.best_k, **it))
                                               : fmt::format(" fail ({:.2g}) |", (*it)->acceptance.best_error);
@@ -210,7 +215,8 @@ std::string group_verdicts(const Study& study, const CaseGroup& g)
 {
     std::string s = fmt::format("### {} ({}D), mode {}, a_p = {} = {:.6f}{}\n\n", g[0]->lattice, g[0]->dimension,
                                 g[0]->mode, g[0]->ap_name, g[0]->a_p, group_windows(study, g)) +
-                    "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k | every direction |\n"
+                    "| kernel | verdict | k where (22) holds | best k | max(\\|eps_rho\\|, \\|eps_gradP\\|) at best k "
+                    "| every direction |\n"
                     "|---|---|---|---|---|---|\n";
     for (const auto* c : g)
         s += fmt::format("| {} | {} | {}{} | {:.4f}{} | {:.2e} | {} {} |\n", c->kernel_label,
@@ -241,8 +247,8 @@ std::string header_markdown(const Study& study, const nlohmann::json& inputs)
                                 "Errors are the bulk relative errors of {} section 2 (a particle on a lattice "
                                 "site, gravity along the lattice's default direction).\n\n",
                                 study.title, version_text(), std::filesystem::path(study.file).filename().string(),
-                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", axis_name(study.axis), study.k_min,
-                                study.k_max, study.samples, study.epsilon, method_document());
+                                sha.empty() ? "" : " (SHA-256 " + sha.substr(0, 16) + "…)", axis_name(study.axis),
+                                study.k_min, study.k_max, study.samples, study.epsilon, method_document());
     s += "Modes: ";
     for (const auto& m : study.modes) {
         s += fmt::format("**{}** ", m.name);
@@ -303,14 +309,15 @@ std::string roots_markdown(const Study& study, const StudyResults& results)
     std::string s;
     s += "## Roots and jumps\n\n";
     for (const auto& g : grouped(results)) {
-        s += fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->mode, g[0]->ap_name, g[0]->a_p) +
-             "| kernel | zero of | k | eps_rho | eps_gradP | N_H | H/d |\n|---|---|---|---|---|---|---|\n";
+        s +=
+            fmt::format("### {}, mode {}, a_p = {} = {:.6f}\n\n", g[0]->lattice, g[0]->mode, g[0]->ap_name, g[0]->a_p) +
+            "| kernel | zero of | k | eps_rho | eps_gradP | N_H | H/d |\n|---|---|---|---|---|---|---|\n";
         for (const auto* c : g) {
             if (c->scan.roots.empty()) s += fmt::format("| {} | no root | | | | | |\n", c->kernel_label);
             for (const auto& r : c->scan.roots)
-                s += fmt::format("| {} | {} | {:.5f}{} | {} | {} | {} | {:.4f} |\n", c->kernel_label, eps_name(r.function),
-                                 r.k, on_axis(study, r.k, *c), fixed(r.values.eps_rho), fixed(r.values.eps_gradp), r.values.neighbours,
-                                 r.support_radius);
+                s += fmt::format("| {} | {} | {:.5f}{} | {} | {} | {} | {:.4f} |\n", c->kernel_label,
+                                 eps_name(r.function), r.k, on_axis(study, r.k, *c), fixed(r.values.eps_rho),
+                                 fixed(r.values.eps_gradp), r.values.neighbours, r.support_radius);
             for (const auto& j : c->scan.jumps)
                 s += fmt::format("| {} | jump of {} ({}) | {:.5f} | {} -> {} | | | |\n", c->kernel_label,
                                  eps_name(j.function), jump_kind_name(j.kind), j.k, fixed(j.left), fixed(j.right));
@@ -376,9 +383,9 @@ std::string glossary_markdown()
 
 std::string report_markdown(const Study& study, const StudyResults& results, const std::vector<std::string>& figures)
 {
-    return header_markdown(study, results.inputs) + glossary_markdown() + replication_markdown(results) + explanations_markdown(results) +
-           roots_markdown(study, results) + verdicts_markdown(study, results) + sections_markdown(study, results) +
-           figures_markdown(figures);
+    return header_markdown(study, results.inputs) + glossary_markdown() + replication_markdown(results) +
+           explanations_markdown(results) + roots_markdown(study, results) + verdicts_markdown(study, results) +
+           sections_markdown(study, results) + figures_markdown(figures);
 }
 
 } // namespace sphkern

@@ -6,8 +6,8 @@
 #include "support/io/json_input.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +36,8 @@ void compare_values(const nlohmann::json& a, const nlohmann::json& b, const std:
     if (a.type() != b.type()) return differ("recorded " + a.dump().substr(0, 60) + ", now " + b.dump().substr(0, 60));
     if (a.is_array()) {
         if (a.size() != b.size()) return differ(fmt::format("recorded {} entries, now {}", a.size(), b.size()));
-        for (std::size_t i = 0; i < a.size(); ++i) compare_values(a[i], b[i], path + "/" + std::to_string(i), limit, out);
+        for (std::size_t i = 0; i < a.size(); ++i)
+            compare_values(a[i], b[i], path + "/" + std::to_string(i), limit, out);
     } else if (a.is_object()) {
         for (const auto& [key, value] : a.items()) {
             if (!b.contains(key)) differ("\"" + key + "\" is no longer there");
@@ -97,7 +98,8 @@ NumberComparison compare_result_numbers(const nlohmann::json& recorded, const nl
     std::vector<std::string> parts = {"cases", "comparison"};
     for (const auto& kind : section_table()) parts.push_back(kind.key);
     for (const auto& part : parts)
-        compare_values(recorded.value(part, nlohmann::json()), now.value(part, nlohmann::json()), "/" + part, limit, out);
+        compare_values(recorded.value(part, nlohmann::json()), now.value(part, nlohmann::json()), "/" + part, limit,
+                       out);
     return out;
 }
 
@@ -112,7 +114,8 @@ Reproduction reproduce_study(const std::string& file, KernelRegistry& registry)
     write_study_results_json(text, study, results);
     const auto comparison = compare_result_numbers(recorded, nlohmann::json::parse(text.str()), 10);
     if (comparison.differing == 0)
-        return {true, fmt::format("reproduced: all {} numbers of {} agree within a relative 1e-9\n", comparison.compared, file)};
+        return {true, fmt::format("reproduced: all {} numbers of {} agree within a relative 1e-9\n",
+                                  comparison.compared, file)};
     std::string out = fmt::format("not reproduced: {} of {} numbers of {} differ; the first:\n", comparison.differing,
                                   comparison.compared, file);
     for (const auto& line : comparison.first) out += fmt::format("  {}\n", line);

@@ -26,9 +26,13 @@ nlohmann::json explanations_json(const StudyCase& c)
     for (const auto& e : c.explanations) {
         nlohmann::json diffs = nlohmann::json::array();
         for (const auto& d : e.differences)
-            diffs.push_back({{"radius", d.radius}, {"count", d.count}, {"reason", d.reason}, {"q", d.q},
+            diffs.push_back({{"radius", d.radius},
+                             {"count", d.count},
+                             {"reason", d.reason},
+                             {"q", d.q},
                              {"contribution", d.contribution}});
-        explanations.push_back({{"function", function_name(e.root.function)}, {"k", e.root.k},
+        explanations.push_back({{"function", function_name(e.root.function)},
+                                {"k", e.root.k},
                                 {"default_value", e.default_value},
                                 {"default_root_k", e.default_root_k ? nlohmann::json(*e.default_root_k) : nullptr},
                                 {"differences", diffs}});
@@ -40,8 +44,12 @@ nlohmann::json explanations_json(const StudyCase& c)
 std::string case_head(const StudyCase& c, double epsilon)
 {
     auto scan = root_scan_json(c.scan);
-    std::string head = nlohmann::json{{"lattice", c.lattice}, {"mode", c.mode}, {"kernel", c.kernel_label},
-                                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"roots", scan["roots"]},
+    std::string head = nlohmann::json{{"lattice", c.lattice},
+                                      {"mode", c.mode},
+                                      {"kernel", c.kernel_label},
+                                      {"volume_coefficient", c.ap_name},
+                                      {"a_p", c.a_p},
+                                      {"roots", scan["roots"]},
                                       {"jumps", scan["jumps"]},
                                       {"sites", c.sites},
                                       {"acceptance", acceptance_json(c.acceptance, epsilon)},
@@ -79,13 +87,14 @@ nlohmann::json comparison_json(const StudyResults& results)
 {
     nlohmann::json comparison = nlohmann::json::array();
     for (const auto& r : results.comparison)
-        comparison.push_back({{"reference", r.reference},
-                              {"function", r.function ? nlohmann::json(function_name(*r.function)) : nlohmann::json("none")},
-                              {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
-                              {"compared", r.compared},
-                              {"differs_in", r.differing},
-                              {"status", status_name(r.status)},
-                              {"note", r.note}});
+        comparison.push_back(
+            {{"reference", r.reference},
+             {"function", r.function ? nlohmann::json(function_name(*r.function)) : nlohmann::json("none")},
+             {"computed", r.computed ? root_json(*r.computed) : nlohmann::json(nullptr)},
+             {"compared", r.compared},
+             {"differs_in", r.differing},
+             {"status", status_name(r.status)},
+             {"note", r.note}});
     return comparison;
 }
 

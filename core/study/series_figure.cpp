@@ -15,7 +15,8 @@ std::string series_figure_format(const std::string& figure, const std::string& s
 {
     const std::string ext = std::filesystem::path(figure).extension().string();
     if (ext != ".svg" && ext != ".png" && ext != ".pdf")
-        throw Error(ExitCode::usage, fmt::format("{} {}: expected a figure file ending in .svg, .png or .pdf", setting, figure));
+        throw Error(ExitCode::usage,
+                    fmt::format("{} {}: expected a figure file ending in .svg, .png or .pdf", setting, figure));
     return ext.substr(1);
 }
 
@@ -23,7 +24,8 @@ void draw_series_figure(const std::string& figure, const std::string& setting, c
 {
     const auto gnuplot = find_gnuplot();
     if (gnuplot.empty())
-        throw Error(ExitCode::output, fmt::format("{} {}: gnuplot is not on PATH; expected it to draw the figure", setting, figure));
+        throw Error(ExitCode::output,
+                    fmt::format("{} {}: gnuplot is not on PATH; expected it to draw the figure", setting, figure));
     const std::filesystem::path target(figure);
     const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
     const std::string format = series_figure_format(figure, setting),
@@ -32,13 +34,15 @@ void draw_series_figure(const std::string& figure, const std::string& setting, c
     try {
         render_figure(folder, name, 900, 1000, script, {format}, gnuplot);
     } catch (...) {
-        std::filesystem::remove(folder / (name + ".gp"), ec), std::filesystem::remove(folder / (name + "." + format), ec);
+        std::filesystem::remove(folder / (name + ".gp"), ec),
+            std::filesystem::remove(folder / (name + "." + format), ec);
         throw;
     }
     std::filesystem::remove(folder / (name + ".gp"), ec);
     std::filesystem::rename(folder / (name + "." + format), target, ec);
     if (ec)
-        throw Error(ExitCode::output, fmt::format("{} {}: cannot put the figure in place ({})", setting, figure, ec.message()));
+        throw Error(ExitCode::output,
+                    fmt::format("{} {}: cannot put the figure in place ({})", setting, figure, ec.message()));
 }
 
 } // namespace sphkern

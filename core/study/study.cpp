@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 
 bool StudyMode::continues(const std::string& kernel) const
 {
-    return continue_all || std::find(continue_kernels.begin(), continue_kernels.end(), kernel) != continue_kernels.end();
+    return continue_all ||
+           std::find(continue_kernels.begin(), continue_kernels.end(), kernel) != continue_kernels.end();
 }
 
 const std::vector<double>* StudyMode::shells_for(double R) const
@@ -83,7 +84,8 @@ StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item)
         const double v = std::strtod(ap.name.c_str(), &end);
         if (*end == '\0') ap.value = v;
     }
-    if (ap.value && !(*ap.value > 0 && *ap.value <= 1e6)) item.error("expected a positive volume coefficient up to 1e6");
+    if (ap.value && !(*ap.value > 0 && *ap.value <= 1e6))
+        item.error("expected a positive volume coefficient up to 1e6");
     return ap;
 }
 
@@ -123,7 +125,8 @@ std::map<double, std::vector<double>> read_shells(const JsonNode& shells)
             if (!r) list[i].error("expected a shell radius in units of d: a positive number or \"sqrt(N)\"");
             radii.push_back(*r);
         }
-        if (!by_support.emplace(R, radii).second) list.error("a second shell list for R = " + key + ", expected one per R");
+        if (!by_support.emplace(R, radii).second)
+            list.error("a second shell list for R = " + key + ", expected one per R");
     }
     return by_support;
 }
@@ -249,7 +252,8 @@ ReferenceTable read_compare_with(const JsonNode& c, const fs::path& file)
         fs::path beside = file.parent_path() / reference;
         reference = fs::exists(beside) ? beside : data_folder("reference") / reference;
     }
-    if (!fs::is_regular_file(reference)) c.error("no reference table \"" + c.string() + "\" beside the study or in share/reference");
+    if (!fs::is_regular_file(reference))
+        c.error("no reference table \"" + c.string() + "\" beside the study or in share/reference");
     return read_reference_table(reference);
 }
 
@@ -277,8 +281,9 @@ void read_sections(const JsonNode& root, const fs::path& file, Study& study)
 // The study file's keys: the spine's, then one per section.
 std::vector<std::string> study_keys()
 {
-    std::vector<std::string> keys = {"$schema", "name",  "title",        "kernels", "lattices", "volume_coefficients",
-                                     "k",       "epsilon", "modes",      "compare_with", "plots", "sites", "lateral"};
+    std::vector<std::string> keys = {"$schema", "name",    "title", "kernels",      "lattices", "volume_coefficients",
+                                     "k",       "epsilon", "modes", "compare_with", "plots",    "sites",
+                                     "lateral"};
     for (const auto& kind : section_table()) keys.push_back(kind.key);
     return keys;
 }

@@ -96,8 +96,8 @@ std::optional<double> parse_radius(const nlohmann::json& value);
 // The readers the spine and the sections share.
 inline const std::vector<std::string> kernel_file_extensions = {".so", ".json"};
 std::vector<std::string> read_string_list(const JsonNode& node);
-std::map<std::string, double> read_parameter_values(const JsonNode& set);   // "set": {"parameter": value, ...}
-StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item);       // a name, or a number (as number or text)
-std::optional<double> read_k_or_best(const JsonNode& node);                 // a number, or "best" (empty)
+std::map<std::string, double> read_parameter_values(const JsonNode& set); // "set": {"parameter": value, ...}
+StudyVolumeCoefficient read_volume_coefficient(const JsonNode& item);     // a name, or a number (as number or text)
+std::optional<double> read_k_or_best(const JsonNode& node);               // a number, or "best" (empty)
 
 } // namespace sphkern

@@ -32,27 +32,31 @@ void check_names_differ(const Study& study, const StudyInputs& inputs)
     for (std::size_t i = 0; i < lattices.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (lattices[i].name == lattices[j].name)
-                study_source(study, lattice_path(i)).fail("lattice name \"" + lattices[i].name + "\" is already used by " + lattice_path(j) +
-                                     "; give each lattice its own name");
+                study_source(study, lattice_path(i))
+                    .fail("lattice name \"" + lattices[i].name + "\" is already used by " + lattice_path(j) +
+                          "; give each lattice its own name");
     const auto& kernels = inputs.kernels;
     for (std::size_t i = 0; i < kernels.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (kernels[i].label() == kernels[j].label())
-                study_source(study, study.kernels[i].json_path).fail("kernel \"" + kernels[i].label() + "\" is listed twice (also at " +
-                                     study.kernels[j].json_path + ")");
+                study_source(study, study.kernels[i].json_path)
+                    .fail("kernel \"" + kernels[i].label() + "\" is listed twice (also at " +
+                          study.kernels[j].json_path + ")");
 }
 
 void load_kernels_and_lattices(const Study& study, KernelRegistry& registry, StudyInputs& inputs)
 {
     for (const auto& k : study.kernels)
-        inputs.kernels.push_back(at_source(study_source(study, k.json_path), [&] { return Kernel(registry.find(k.spec), k.parameters); }));
+        inputs.kernels.push_back(
+            at_source(study_source(study, k.json_path), [&] { return Kernel(registry.find(k.spec), k.parameters); }));
     for (std::size_t i = 0; i < study.lattices.size(); ++i)
-        inputs.lattices.push_back(at_source(study_source(study, lattice_path(i)), [&] { return load_lattice(study.lattices[i]); }));
+        inputs.lattices.push_back(
+            at_source(study_source(study, lattice_path(i)), [&] { return load_lattice(study.lattices[i]); }));
     check_names_differ(study, inputs);
     for (std::size_t i = 0; i < inputs.kernels.size(); ++i)
         for (const auto& l : inputs.lattices)
             at_source(study_source(study, study.kernels[i].json_path),
-                          [&] { inputs.kernels[i].require_dimension(l.dimension, l.name); });
+                      [&] { inputs.kernels[i].require_dimension(l.dimension, l.name); });
 }
 
 // Each lattice's a_p and the sites studied.
@@ -62,7 +66,7 @@ void resolve_lattice_values(const Study& study, StudyInputs& inputs)
         auto& aps = inputs.a_p.emplace_back();
         for (std::size_t i = 0; i < study.volume_coefficients.size(); ++i)
             aps.push_back(at_source(study_source(study, "/volume_coefficients/" + std::to_string(i)),
-                                        [&] { return study.volume_coefficients[i].on(lattice); }));
+                                    [&] { return study.volume_coefficients[i].on(lattice); }));
     }
     for (const auto& lattice : inputs.lattices) {
         const std::vector<int> sites = study.sites ? *study.sites : every_site(lattice);
@@ -79,8 +83,9 @@ EvaluationMode evaluation_mode(const Study& study, const StudyMode& mode, const 
     const auto* radii = mode.shells_for(kernel.support());
     const std::string R = support_key(kernel.support());
     if (!radii)
-        study_source(study, mode.json_path + "/shells").fail("no shell list for kernel " + kernel.name() + " with support R = " + R +
-                             ", expected a key \"" + R + "\"");
+        study_source(study, mode.json_path + "/shells")
+            .fail("no shell list for kernel " + kernel.name() + " with support R = " + R + ", expected a key \"" + R +
+                  "\"");
     m.shell_radii = *radii;
     m.continue_past_support = mode.continues(kernel.name());
     return m;
@@ -95,7 +100,8 @@ void check_continued_kernels(const Study& study, const StudyMode& mode, const st
     for (std::size_t i = 0; i < mode.continue_kernels.size(); ++i) {
         const std::string& name = mode.continue_kernels[i];
         if (std::find(names.begin(), names.end(), name) == names.end())
-            study_source(study, mode.json_path + "/continue_past_support/" + std::to_string(i)).fail("\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
+            study_source(study, mode.json_path + "/continue_past_support/" + std::to_string(i))
+                .fail("\"" + name + "\" is not one of the study's kernels" + did_you_mean(name, names));
     }
 }
 
@@ -146,13 +152,16 @@ std::string part_scope(const StudyInputs& inputs, const std::string& part)
     return scope;
 }
 
-std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site, double a_p)
+std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site,
+                                       double a_p)
 {
-    return at_source(study_source(study, "/k"),
-                     [&] { return k_window(study.axis, study.k_min, study.k_max, kernel, lattice, site, a_p, "window"); });
+    return at_source(study_source(study, "/k"), [&] {
+        return k_window(study.axis, study.k_min, study.k_max, kernel, lattice, site, a_p, "window");
+    });
 }
 
-void resolve_window(const Study& study, StudyInputs& inputs, std::size_t lattice, std::size_t kernel, int site, double a_p)
+void resolve_window(const Study& study, StudyInputs& inputs, std::size_t lattice, std::size_t kernel, int site,
+                    double a_p)
 {
     const StudyInputs::WindowKey key{lattice, kernel, site, a_p};
     if (!inputs.windows.count(key))

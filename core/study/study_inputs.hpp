@@ -19,7 +19,7 @@
 namespace sphkern {
 
 struct StudyInputs {
-    std::vector<Kernel> kernels;   // in the study's order
+    std::vector<Kernel> kernels; // in the study's order
     std::vector<Lattice> lattices;
     std::vector<std::vector<double>> a_p;                // [lattice][volume coefficient]
     std::vector<std::vector<int>> sites;                 // [lattice]: the sites studied
@@ -33,7 +33,7 @@ struct StudyInputs {
     std::pair<double, double> window(std::size_t lattice, std::size_t kernel, int site, double a_p) const;
 
     using WindowKey = std::tuple<std::size_t, std::size_t, int, double>; // lattice, kernel, site, a_p
-    std::map<WindowKey, std::pair<double, double>> windows; // every window the sections use
+    std::map<WindowKey, std::pair<double, double>> windows;              // every window the sections use
 };
 
 // What a part's progress estimate covers: " in this part (2 of 3), then particles" (the parts
@@ -44,10 +44,12 @@ std::string part_scope(const StudyInputs& inputs, const std::string& part);
 StudyInputs load_study_inputs(const Study& study, KernelRegistry& registry);
 
 // The study's window in k for `kernel` on `lattice` at a site and a_p (Error naming "/k").
-std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site, double a_p);
+std::pair<double, double> study_window(const Study& study, const Kernel& kernel, const Lattice& lattice, int site,
+                                       double a_p);
 
 // Works out the window StudyInputs::window gives for these indices, once.
-void resolve_window(const Study& study, StudyInputs& inputs, std::size_t lattice, std::size_t kernel, int site, double a_p);
+void resolve_window(const Study& study, StudyInputs& inputs, std::size_t lattice, std::size_t kernel, int site,
+                    double a_p);
 
 // The index of the first automatic mode, the one whose condition (22) the stability and
 // surface sections read; empty if every mode has fixed shells.

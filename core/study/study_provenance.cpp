@@ -41,9 +41,10 @@ nlohmann::json kernel_input_json(const Kernel& kernel)
 {
     const auto& d = kernel.definition();
     nlohmann::json parameters = nlohmann::json::object();
-    for (std::size_t i = 0; i < d.parameters.size(); ++i) parameters[d.parameters[i].name] = kernel.parameter_values()[i];
-    nlohmann::json entry = {{"label", kernel.label()}, {"name", d.name},    {"source", d.source},
-                            {"abi", d.abi},            {"support", d.support}, {"parameters", parameters}};
+    for (std::size_t i = 0; i < d.parameters.size(); ++i)
+        parameters[d.parameters[i].name] = kernel.parameter_values()[i];
+    nlohmann::json entry = {{"label", kernel.label()}, {"name", d.name},          {"source", d.source}, {"abi", d.abi},
+                            {"support", d.support},    {"parameters", parameters}};
     if (is_file(d.source)) {
         entry["file"] = d.source;
         entry["sha256"] = file_sha256_hex(d.source);

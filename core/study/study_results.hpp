@@ -18,17 +18,17 @@ namespace sphkern {
 
 // Why a root of a non-automatic mode differs from the default evaluation at that k.
 struct ModeDifference {
-    double radius;      // shell radius in d
+    double radius; // shell radius in d
     int count;
-    std::string reason; // "evaluated past R" or "left out of the shell list"
-    double q;           // r / h at the root
+    std::string reason;  // "evaluated past R" or "left out of the shell list"
+    double q;            // r / h at the root
     double contribution; // to the function that vanished, in the mode (past R) or missing from it
 };
 
 struct RootExplanation {
     Root root;
-    double default_value = 0;              // the same function in the default evaluation at root.k
-    std::optional<double> default_root_k;  // nearest root of the same function in the default evaluation
+    double default_value = 0;             // the same function in the default evaluation at root.k
+    std::optional<double> default_root_k; // nearest root of the same function in the default evaluation
     std::vector<ModeDifference> differences;
 };
 
@@ -45,18 +45,18 @@ struct StudyCase {
     int dimension = 0;
     std::string mode;
     bool automatic = true;
-    std::string kernel;      // name
+    std::string kernel; // name
     std::string kernel_label;
     double support = 0;
     std::string ap_name;
     double a_p = 0;
     double k_min = 0, k_max = 0; // the study's window, in k for this kernel, lattice and a_p
     std::vector<std::pair<double, ErrorValues>> curve;
-    RootScan scan;                      // of the first site studied (the curve's site too)
-    std::vector<int> sites;             // the sites studied
-    Acceptance acceptance;              // condition (22) along gravity, at every site studied at once
-    Acceptance acceptance_every;        // the same for every direction (the gradient-error tensor)
-    std::vector<SiteRoots> per_site;    // each site on its own (lattices with several sites)
+    RootScan scan;                             // of the first site studied (the curve's site too)
+    std::vector<int> sites;                    // the sites studied
+    Acceptance acceptance;                     // condition (22) along gravity, at every site studied at once
+    Acceptance acceptance_every;               // the same for every direction (the gradient-error tensor)
+    std::vector<SiteRoots> per_site;           // each site on its own (lattices with several sites)
     std::vector<RootExplanation> explanations; // non-automatic modes only
 };
 
@@ -64,12 +64,12 @@ enum class ComparisonStatus { reproduced, differs, erratum };
 const char* status_name(ComparisonStatus status); // as in results.json
 
 struct ComparisonRow {
-    nlohmann::json reference;              // the row as published
+    nlohmann::json reference; // the row as published
     std::string kernel;
     std::optional<ErrorFunction> function; // the error the row zeroes; empty: the paper finds no root
     std::optional<Root> computed;          // the matching root in the compared mode
-    std::vector<std::string> compared;      // the values compared: "k", "eps_rho", "eps_gradp"
-    std::vector<std::string> differing;     // those outside the tolerance ("roots": a root where none is printed)
+    std::vector<std::string> compared;     // the values compared: "k", "eps_rho", "eps_gradp"
+    std::vector<std::string> differing;    // those outside the tolerance ("roots": a root where none is printed)
     ComparisonStatus status = ComparisonStatus::differs;
     std::string note;
 };

@@ -60,7 +60,8 @@ StudyRun run_study_folder(const StudyRunRequest& request, const StudyRunSources&
     if (study.plots && request.plots) {
         const auto gnuplot = find_gnuplot();
         run.gnuplot_missing = gnuplot.empty();
-        if (!gnuplot.empty()) run.figures = draw_study_plots(study, results, output.staging() / "plots", gnuplot, formats);
+        if (!gnuplot.empty())
+            run.figures = draw_study_plots(study, results, output.staging() / "plots", gnuplot, formats);
     }
     write_results_folder(output, study, results, run.figures);
     output.commit();

@@ -30,7 +30,7 @@ struct StudyRunSources {
 std::filesystem::path study_file(const std::string& study);
 
 struct StudyRun {
-    std::filesystem::path folder;     // the results folder, written
+    std::filesystem::path folder; // the results folder, written
     std::size_t cases = 0;
     std::vector<std::string> figures; // drawn into it
     bool gnuplot_missing = false;     // figures asked for, none drawn

@@ -9,11 +9,11 @@ namespace sphkern {
 
 enum class ExitCode : int {
     ok = 0,
-    check_failed = 1, // `check`: a kernel check failed (or warned, with --strict)
-    usage = 2,        // bad command-line arguments
-    input = 3,        // a bad input file, value or name (lattice, study, a_p, k, ...)
-    plugin = 4,       // a plugin that cannot be loaded, validated or run
-    output = 5,       // results could not be written, or the output exists
+    check_failed = 1,  // `check`: a kernel check failed (or warned, with --strict)
+    usage = 2,         // bad command-line arguments
+    input = 3,         // a bad input file, value or name (lattice, study, a_p, k, ...)
+    plugin = 4,        // a plugin that cannot be loaded, validated or run
+    output = 5,        // results could not be written, or the output exists
     interrupted = 130, // SIGINT or SIGTERM arrived; nothing was written
 };
 
@@ -41,8 +41,7 @@ public:
     // One line from the start: what() is a C string, which a NUL in a file's text would cut.
     Error(ExitCode code, const std::string& message, ErrorKind kind = ErrorKind::general)
         : std::runtime_error(one_line(message)), code_(code), kind_(kind)
-    {
-    }
+    {}
     ExitCode code() const { return code_; }
     ErrorKind kind() const { return kind_; }
 

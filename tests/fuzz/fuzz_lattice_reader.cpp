@@ -18,7 +18,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         auto lattice = sphkern::parse_lattice(document, "fuzz.json");
         for (int site = 0; site < lattice.sites() && site < 4; ++site) sphkern::lattice_shells(lattice, site, 2.5);
         for (const auto& c : lattice.volume_coefficients) lattice.volume_coefficient(c.name);
-    } catch (const sphkern::Error&) {
-    }
+    } catch (const sphkern::Error&) {}
     return 0;
 }

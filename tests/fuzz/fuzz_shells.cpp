@@ -40,7 +40,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
             if (std::abs(s.moment.trace() - s.count) > 1e-9 * s.count) std::abort();
             previous = s.radius;
         }
-    } catch (const sphkern::Error&) {
-    }
+    } catch (const sphkern::Error&) {}
     return 0;
 }

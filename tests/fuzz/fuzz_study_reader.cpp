@@ -14,7 +14,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     try {
         auto document = sphkern::parse_json_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
         sphkern::parse_study(std::move(document), "/nonexistent/fuzz.json");
-    } catch (const sphkern::Error&) {
-    }
+    } catch (const sphkern::Error&) {}
     return 0;
 }

@@ -11,9 +11,15 @@ SPHKERN_BATCH_FROM_SCALAR(dw_batch, dw)
 
 static const sphkern_kernel_descriptor descriptor = {
     SPHKERN_DESCRIPTOR_VERSION,
-    .name = "cxx_without_extern_c", .title = "broken", .reference = "",
-    .support = 1.0, .dimensions = SPHKERN_DIM(1),
-    .w = w, .dw = dw, .w_batch = w_batch, .dw_batch = dw_batch,
+    .name = "cxx_without_extern_c",
+    .title = "broken",
+    .reference = "",
+    .support = 1.0,
+    .dimensions = SPHKERN_DIM(1),
+    .w = w,
+    .dw = dw,
+    .w_batch = w_batch,
+    .dw_batch = dw_batch,
 };
 
 SPHKERN_PLUGIN_EXPORT const sphkern_kernel_descriptor* sphkern_kernel_entry() { return &descriptor; }

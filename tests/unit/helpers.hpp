@@ -3,17 +3,17 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
-#include "support/error.hpp"
 #include "kernels/kernel_registry.hpp"
 #include "lattices/lattice.hpp"
+#include "support/error.hpp"
 
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <utility>
-#include <cstdlib>
 
 namespace sphkern::test {
 

@@ -145,10 +145,11 @@ void compare_adaptive(const Kernel& kernel, const Lattice& lattice, double k, in
         }
         differs = std::max(differs, std::abs(modes.omega2[branch] - fixed[branch]));
         CHECK_MESSAGE(worst < 1e-7 * std::max(1.0, scale), lattice.name << " " << kernel.name() << " branch " << branch
-                                                                      << " omega2 " << modes.omega2[branch]
-                                                                      << " worst " << worst);
+                                                                        << " omega2 " << modes.omega2[branch]
+                                                                        << " worst " << worst);
     }
-    CHECK_MESSAGE(differs > 1e-4, lattice.name << " " << kernel.name() << ": adaptive and fixed h agree to " << differs);
+    CHECK_MESSAGE(differs > 1e-4,
+                  lattice.name << " " << kernel.name() << ": adaptive and fixed h agree to " << differs);
 }
 
 } // namespace

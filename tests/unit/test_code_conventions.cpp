@@ -18,22 +18,20 @@ using namespace sphkern::test;
 TEST_CASE("SWIFT's kernel gamma H / (2 sigma) is the value SWIFT lists for its 3D kernels")
 {
     // SWIFT's kernel_hydro.h, 3D: cubic, quartic and quintic spline, Wendland C2, C4, C6.
-    const std::pair<const char*, double> listed[] = {{"cubic_bspline", 1.825742},
-                                                     {"quartic_bspline", 2.018932},
-                                                     {"morris_quintic", 2.195775},
-                                                     {"wendland_c2", 1.936492},
-                                                     {"wendland_c4", 2.207940},
-                                                     {"wendland_c6", 2.449490}};
+    const std::pair<const char*, double> listed[] = {{"cubic_bspline", 1.825742},  {"quartic_bspline", 2.018932},
+                                                     {"morris_quintic", 2.195775}, {"wendland_c2", 1.936492},
+                                                     {"wendland_c4", 2.207940},    {"wendland_c6", 2.449490}};
     for (const auto& [name, gamma] : listed) {
         CAPTURE(name);
         CHECK(swift_gamma(shipped_kernel(name), 3) == doctest::Approx(gamma).epsilon(1e-6));
     }
 }
 
-TEST_CASE("each code's parameter at the rest density follows from h = k d and H = R h, and SWIFT's eta 1.2348 with the cubic spline is GADGET's 48 neighbours")
+TEST_CASE("each code's parameter at the rest density follows from h = k d and H = R h, and SWIFT's eta 1.2348 with the "
+          "cubic spline is GADGET's 48 neighbours")
 {
     const Kernel cubic = shipped_kernel("cubic_bspline"); // R = 2
-    const double k = 1.3, a_p = 1;                       // sc: dp = d
+    const double k = 1.3, a_p = 1;                        // sc: dp = d
     const double H = 2 * k;
     const auto source = ValueSource::option("--code");
     auto at_rest = [&](const char* code, int dim, double ap, double kk) {
@@ -108,7 +106,10 @@ TEST_CASE("a code's own setting gives the k at which that code's definition hold
         const auto kernel = shipped_kernel(c.kernel);
         EpsRequest request;
         request.code = CodeSetting{c.code, c.value};
-        const EpsSources sources{ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
+        const EpsSources sources{ValueSource::option("--k"),
+                                 ValueSource::option("--axis"),
+                                 {},
+                                 ValueSource::option("--code"),
                                  ValueSource::option("--x")};
         check_eps_request(request, sources);
         const double k = run_eps_at_k(request, sources, kernel, lattice).k;
@@ -117,26 +118,34 @@ TEST_CASE("a code's own setting gives the k at which that code's definition hold
         const std::string code = c.code;
         double value = 0;
         if (code == "swift") value = H / std::sqrt(15.0 / 4) / std::cbrt(m / rho); // SWIFT's gamma of Wendland C2 in 3D
-        if (code == "phantom") value = (H / 2) / std::cbrt(m / rho);                 // radkern = 2
+        if (code == "phantom") value = (H / 2) / std::cbrt(m / rho);               // radkern = 2
         if (code == "gadget2" || code == "gadget4") value = 4 * M_PI / 3 * H * H * H * rho / m;
-        if (code == "pysph") value = (H / 2) / dx;                                   // radius_scale = 2
-        if (code == "dualsphysics") value = (H / 2) / (std::sqrt(3.0) * dx);         // support 2 h
+        if (code == "pysph") value = (H / 2) / dx;                           // radius_scale = 2
+        if (code == "dualsphysics") value = (H / 2) / (std::sqrt(3.0) * dx); // support 2 h
         CHECK(value == doctest::Approx(c.value).epsilon(1e-10));
     }
     // The density the codes solve with is not rho0: SWIFT's eta 1.2348 with Wendland C2 on fcc is
     // another k than the one at rest, and its eps_rho fails condition (22).
     EpsRequest swift;
     swift.code = CodeSetting{"swift", 1.2348};
-    const auto at = run_eps_at_k(swift, {ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
-                                         ValueSource::option("--eta")},
+    const auto at = run_eps_at_k(swift,
+                                 {ValueSource::option("--k"),
+                                  ValueSource::option("--axis"),
+                                  {},
+                                  ValueSource::option("--code"),
+                                  ValueSource::option("--eta")},
                                  shipped_kernel("wendland_c2"), lattice);
     CHECK(std::abs(at.k - 1.2348 * std::sqrt(15.0 / 4) * std::cbrt(a_p) / 2) > 1e-3);
     CHECK(std::abs(at.chosen().eps_rho) > 0.01);
     // A kernel the code does not ship is refused, listing those it does.
     EpsRequest gadget;
     gadget.code = CodeSetting{"gadget2", 48};
-    CHECK_THROWS_WITH(run_eps_at_k(gadget, {ValueSource::option("--k"), ValueSource::option("--axis"), {}, ValueSource::option("--code"),
-                                            ValueSource::option("--nngb")},
+    CHECK_THROWS_WITH(run_eps_at_k(gadget,
+                                   {ValueSource::option("--k"),
+                                    ValueSource::option("--axis"),
+                                    {},
+                                    ValueSource::option("--code"),
+                                    ValueSource::option("--nngb")},
                                    shipped_kernel("wendland_c2"), lattice),
                       "wendland_c2: gadget2 does not ship it; its kernels are cubic_bspline");
 }
@@ -149,7 +158,10 @@ TEST_CASE("surface --code: the profile at the k where the code's definition hold
     SurfaceRequest request;
     request.code = CodeSetting{"swift", 1.2348};
     request.layers = 12;
-    const SurfaceSources sources{ValueSource::option("--k"), {}, ValueSource::option("--layers"), ValueSource::option("--code"),
+    const SurfaceSources sources{ValueSource::option("--k"),
+                                 {},
+                                 ValueSource::option("--layers"),
+                                 ValueSource::option("--code"),
                                  ValueSource::option("--eta")};
     check_surface_request(request, sources);
     const auto result = run_surface(request, sources, kernel, lattice);

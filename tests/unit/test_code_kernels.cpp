@@ -84,8 +84,7 @@ std::map<std::pair<std::string, std::string>, Form> written()
         {{"phantom", "WendlandC2"},
          phantom(2, 21 / (16 * pi), [](double q) { return std::pow(1 - q / 2, 4) * (2 * q + 1); })},
         {{"phantom", "WendlandC4"},
-         phantom(2, 495 / (256 * pi),
-                 [](double q) { return std::pow(1 - q / 2, 6) * (35 * q * q / 12 + 3 * q + 1); })},
+         phantom(2, 495 / (256 * pi), [](double q) { return std::pow(1 - q / 2, 6) * (35 * q * q / 12 + 3 * q + 1); })},
         {{"phantom", "WendlandC6"},
          phantom(2, 1365 / (512 * pi),
                  [](double q) { return std::pow(q / 2 - 1, 8) * (4 * cube(q) + 6.25 * q * q + 4 * q + 1); })},
@@ -97,15 +96,16 @@ std::map<std::pair<std::string, std::string>, Form> written()
         // DualSPHysics src/source/FunSphKernel.h (GetKernelCubic_Wab with GetKernelCubic_Ctes, 10/(7 pi) in 2D
         // and 1/pi in 3D; GetKernelWendland_Wab, awen (2q + 1)(1 - q/2)^4), q = r / h, H = 2 h. Its awen is
         // printed to the digits 0.557 (2D) and 0.41778 (3D): 7 / (4 pi) and 21 / (16 pi) rounded.
-        {{"dualsphysics", "Cubic"}, in_h(2, {NAN, 10 / (7 * pi), 1 / pi}, [](double q) {
-             return q < 1 ? 1 - 1.5 * q * q + 0.75 * cube(q) : 0.25 * cube(2 - q);
-         })},
+        {{"dualsphysics", "Cubic"},
+         in_h(2, {NAN, 10 / (7 * pi), 1 / pi},
+              [](double q) { return q < 1 ? 1 - 1.5 * q * q + 0.75 * cube(q) : 0.25 * cube(2 - q); })},
         {{"dualsphysics", "Wendland"},
          in_h(2, {NAN, 0.557, 0.41778}, [](double q) { return (2 * q + 1) * std::pow(1 - q / 2, 4); })},
         // SPlisHSPlasH/SPHKernels.h, its h the support radius: CubicKernel(2D) m_k 8 / pi (40 / (7 pi)) with
         // 6 q^3 - 6 q^2 + 1 and 2 (1 - q)^3; WendlandQuinticC2Kernel(2D) 21 / (2 pi) (7 / pi); Poly6Kernel
         // 315 / (64 pi h^9) (h^2 - r^2)^3; SpikyKernel 15 / (pi h^6) (h - r)^3.
-        {{"splishsplash", "CubicKernel"}, [](double q, int dim) {
+        {{"splishsplash", "CubicKernel"},
+         [](double q, int dim) {
              return (dim == 3 ? 8 / pi : 40 / (7 * pi)) * (q <= 0.5 ? 6 * cube(q) - 6 * q * q + 1 : 2 * cube(1 - q));
          }},
         {{"splishsplash", "WendlandQuinticC2Kernel"}, scaled({NAN, 7 / pi, 21 / (2 * pi)}, c2)},
@@ -158,7 +158,8 @@ TEST_CASE("a code refuses a dimension it does not run and a kernel it does not h
 {
     const auto source = ValueSource::option("--code");
     const Kernel cubic = shipped_kernel("cubic_bspline"), poly6 = shipped_kernel("muller_poly6");
-    // Phantom is 3D only (config.F90); SPlisHSPlasH's 2D simulation has the cubic and Wendland C2 only (Simulation.cpp).
+    // Phantom is 3D only (config.F90); SPlisHSPlasH's 2D simulation has the cubic and Wendland C2 only
+    // (Simulation.cpp).
     CHECK_FALSE(code_ships(code_profile("phantom", source), cubic, 2));
     CHECK(code_ships(code_profile("phantom", source), cubic, 3));
     CHECK_FALSE(code_ships(code_profile("splishsplash", source), poly6, 2));

@@ -26,8 +26,9 @@ double brute_sum(const Kernel& kernel, const ParticleSet& set, std::size_t i, do
         for (int a = -1; a <= 1; ++a)
             for (int b = -1; b <= 1; ++b)
                 for (int c = -1; c <= 1; ++c) {
-                    const Eigen::Vector3d r = Eigen::Vector3d(set.x[j] - set.x[i], set.y[j] - set.y[i], set.z[j] - set.z[i]) +
-                                              edges * Eigen::Vector3d(a, b, c);
+                    const Eigen::Vector3d r =
+                        Eigen::Vector3d(set.x[j] - set.x[i], set.y[j] - set.y[i], set.z[j] - set.z[i]) +
+                        edges * Eigen::Vector3d(a, b, c);
                     sum += (weights ? (*weights)[j] : 1.0) * kernel.w_truncated(r.norm() / h, 3, h) / (h * h * h);
                 }
     return sum;
@@ -99,7 +100,8 @@ TEST_CASE("SWIFT's eta on an fcc block gives every particle the k that eps --cod
     request.code = swift;
     const EvaluationSources evaluation{ValueSource::option("--gravity"), ValueSource::option("--site"),
                                        ValueSource::option("--shells")};
-    const EpsSources eps{ValueSource::option("--k"), ValueSource::option("--axis"), evaluation, sources.code, sources.value};
+    const EpsSources eps{ValueSource::option("--k"), ValueSource::option("--axis"), evaluation, sources.code,
+                         sources.value};
     const double k = run_eps_at_k(request, eps, kernel, lattice).k;
     for (std::size_t i = 0; i < block.size(); i += 17) CHECK(h[i] == doctest::Approx(k).epsilon(1e-9));
     // PySPH and DualSPHysics set h from the spacing: one h for all, no density solved.
@@ -107,7 +109,6 @@ TEST_CASE("SWIFT's eta on an fcc block gives every particle the k that eps --cod
 }
 
 namespace {
-
 
 // Particle i's h by its code's own rule, bisected here on [h0 / 4, 4 h0]: by mass
 // h = c (m_i / sum_j m_j W_ij)^(1/3) (Phantom's rhoh in part.F90; GADGET-4's NumNgb from the
@@ -129,7 +130,8 @@ double rule_h(const Kernel& kernel, const ParticleSet& set, std::size_t i, doubl
 
 } // namespace
 
-TEST_CASE("each code counts its neighbours as its source does: SWIFT and GADGET-2 by number, Phantom and GADGET-4 by mass")
+TEST_CASE(
+    "each code counts its neighbours as its source does: SWIFT and GADGET-2 by number, Phantom and GADGET-4 by mass")
 {
     const auto kernel = shipped_kernel("cubic_bspline");
     ParticleSet set = poisson_particles({3, 600, Eigen::Vector3d::Ones(), 11});
@@ -142,7 +144,10 @@ TEST_CASE("each code counts its neighbours as its source does: SWIFT and GADGET-
         CodeSetting setting;
         bool by_number;
     };
-    const Rule rules[] = {{{"swift", 1.2348}, true}, {{"gadget2", 48}, true}, {{"phantom", 1.2}, false}, {{"gadget4", 48}, false}};
+    const Rule rules[] = {{{"swift", 1.2348}, true},
+                          {{"gadget2", 48}, true},
+                          {{"phantom", 1.2}, false},
+                          {{"gadget4", 48}, false}};
     for (const auto& [setting, number] : rules) {
         CAPTURE(setting.code);
         const auto spec = code_smoothing(setting, sources, kernel, 3);
@@ -151,7 +156,8 @@ TEST_CASE("each code counts its neighbours as its source does: SWIFT and GADGET-
         const auto h = density_smoothing_lengths(kernel, set, spec.value, volume, 2, spec.by_number);
         for (std::size_t i = 0; i < set.size(); i += 26) {
             CAPTURE(i);
-            CHECK(h[i] == doctest::Approx(rule_h(kernel, set, i, spec.value, number, spec.value * std::cbrt(volume))).epsilon(1e-9));
+            CHECK(h[i] == doctest::Approx(rule_h(kernel, set, i, spec.value, number, spec.value * std::cbrt(volume)))
+                              .epsilon(1e-9));
         }
         // Where masses differ by 4, the other rule's h is off by more than 10% for some particle.
         double largest = 0;

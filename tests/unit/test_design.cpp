@@ -50,7 +50,8 @@ TEST_CASE("a blend's errors are linear in alpha and its kernel is the weighted s
         Kernel blend(blend_definition, {{"alpha", alpha}});
         // The one-formula Liu kernel is cut at its own R = 2 inside the blend.
         CHECK(blend.w(2.5, 2, 1.0) == doctest::Approx(alpha * b.w(2.5, 2, 1.0)).epsilon(1e-14));
-        CHECK(blend.w(0.7, 2, 1.0) == doctest::Approx((1 - alpha) * a.w(0.7, 2, 1.0) + alpha * b.w(0.7, 2, 1.0)).epsilon(1e-14));
+        CHECK(blend.w(0.7, 2, 1.0) ==
+              doctest::Approx((1 - alpha) * a.w(0.7, 2, 1.0) + alpha * b.w(0.7, 2, 1.0)).epsilon(1e-14));
         for (double k : {0.8, 1.05, 1.2}) {
             auto ea = HydrostaticErrors(a, lattice, 0, 0.866, lattice.gravity, 1.25).at(k);
             auto eb = HydrostaticErrors(b, lattice, 0, 0.866, lattice.gravity, 1.25).at(k);
@@ -112,7 +113,8 @@ TEST_CASE("design: the wendland_c2_shape family (not a blend) by bracketing and 
     CHECK(result.solutions.empty());
     CHECK(result.note.find("no (k, beta)") != std::string::npos);
     none.parameter = "gamma";
-    CHECK_THROWS_WITH_AS(design_kernel(shipped_kernel("wendland_c2_shape"), none), doctest::Contains("no parameter"), Error);
+    CHECK_THROWS_WITH_AS(design_kernel(shipped_kernel("wendland_c2_shape"), none), doctest::Contains("no parameter"),
+                         Error);
 }
 
 TEST_CASE("an expression kernel matches the cubic_bspline plugin to 1e-12 in both errors")
@@ -122,7 +124,8 @@ TEST_CASE("an expression kernel matches the cubic_bspline plugin to 1e-12 in bot
     for (const char* lattice_name : {"triangular", "fcc", "bcc"}) {
         auto lattice = load_lattice(lattice_name);
         double a_p = lattice.volume_coefficient("voronoi");
-        HydrostaticErrors ex(expression, lattice, 0, a_p, lattice.gravity, 1.25), pl(plugin, lattice, 0, a_p, lattice.gravity, 1.25);
+        HydrostaticErrors ex(expression, lattice, 0, a_p, lattice.gravity, 1.25),
+            pl(plugin, lattice, 0, a_p, lattice.gravity, 1.25);
         for (int i = 0; i <= 50; ++i) {
             double k = 0.75 + 0.5 * i / 50;
             CHECK(std::abs(ex.at(k).eps_rho - pl.at(k).eps_rho) < 1e-12);
@@ -139,7 +142,9 @@ TEST_CASE("an expression kernel matches the cubic_bspline plugin to 1e-12 in bot
     auto checked = check_kernel(power);
     CHECK(checked["verdict"] == "ok");
     bool stated = false;
-    for (const auto& c : checked["checks"]) stated |= c["check"] == "derivative" && c["detail"].get<std::string>().find("central difference") != std::string::npos;
+    for (const auto& c : checked["checks"])
+        stated |= c["check"] == "derivative" &&
+                  c["detail"].get<std::string>().find("central difference") != std::string::npos;
     CHECK(stated);
     // Its normalisation, by quadrature, agrees with the closed form for p = 4 (Wendland C2 in 2D: 7 / (4 pi)).
     CHECK(power.w(0, 2, 1.0) == doctest::Approx(7 / (4 * M_PI)).epsilon(1e-12));
@@ -154,7 +159,8 @@ std::string wendland_c4_file(const std::string& name, const std::string& constan
 {
     auto file = std::filesystem::temp_directory_path() / ("sphkern-test-" + name + ".json");
     std::ofstream(file) << R"({"name": ")" << name << R"(", "support": 2, "dimensions": )" << dimensions << ", "
-                        << extra << R"("w": "q < 2 ? )" << constant << R"( * (1 - q/2)^6 * (1 + 3*q + 35/12*q^2) : 0", )"
+                        << extra << R"("w": "q < 2 ? )" << constant
+                        << R"( * (1 - q/2)^6 * (1 + 3*q + 35/12*q^2) : 0", )"
                         << R"("dw": "q < 2 ? -)" << constant << " * " << dw_factor
                         << R"( * q * (1 - q/2)^5 * (1 + 2.5*q) : 0"})";
     return file.string();
@@ -280,10 +286,12 @@ TEST_CASE("every hint check gives an expression kernel names the file and its ke
         {"x_kink", R"j("support": 2, "normalise": true, "w": "q < 1 ? 1.5 - q : (q < 2 ? (2 - q)^2 / 2 : 0)",
                       "dw": "q < 1 ? -1 : (q < 2 ? q - 2 : 0)")j"},
         // Pieces that do not meet at the declared breakpoint.
-        {"x_jump", R"j("support": 2, "normalise": true, "breakpoints": [1], "w": "q < 1 ? 1 : (q < 2 ? (2 - q) / 2 : 0)",
+        {"x_jump",
+         R"j("support": 2, "normalise": true, "breakpoints": [1], "w": "q < 1 ? 1 : (q < 2 ? (2 - q) / 2 : 0)",
                       "dw": "q < 1 ? 0 : (q < 2 ? -0.5 : 0)")j"},
         // W ends at 2, the support says 3.
-        {"x_wide", R"j("support": 3, "normalise": true, "w": "q < 2 ? (2 - q)^3 : 0", "dw": "q < 2 ? -3*(2 - q)^2 : 0")j"},
+        {"x_wide",
+         R"j("support": 3, "normalise": true, "w": "q < 2 ? (2 - q)^3 : 0", "dw": "q < 2 ? -3*(2 - q)^2 : 0")j"},
         // Not finite at k = 0.75.
         {"x_pole", R"j("support": 2, "normalise": true, "w": "(q < 2 ? (2 - q)^3 : 0) / (k - 0.75)",
                       "dw": "(q < 2 ? -3*(2 - q)^2 : 0) / (k - 0.75)")j"}};
@@ -294,7 +302,8 @@ TEST_CASE("every hint check gives an expression kernel names the file and its ke
         auto result = check_kernel(Kernel(shipped_kernels().find(file)));
         std::filesystem::remove(file);
         for (const auto& c : result["checks"]) {
-            if (c["status"] == "ok" || c["check"] == "fourier") continue; // the spectrum's hint is about W, not the file
+            if (c["status"] == "ok" || c["check"] == "fourier")
+                continue; // the spectrum's hint is about W, not the file
             CAPTURE(c.dump());
             const std::string hint = c["hint"];
             CHECK(hint.find(file) != std::string::npos);

@@ -99,8 +99,7 @@ TEST_CASE("a sign change across a breakpoint is a jump, not a root, and the comp
     Kernel composite = shipped_kernel("composite");
     HydrostaticErrors errors(composite, lattice, 0, std::sqrt(3.0) / 2, lattice.gravity, 1.25);
     CHECK(std::isfinite(errors.at(63.0 / 74).eps_gradp));
-    for (const auto& r : find_roots(errors, 0.75, 1.25).roots)
-        CHECK(std::abs(value_of(r.values, r.function)) < 1e-8);
+    for (const auto& r : find_roots(errors, 0.75, 1.25).roots) CHECK(std::abs(value_of(r.values, r.function)) < 1e-8);
 }
 
 TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without tuning")
@@ -108,8 +107,9 @@ TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without t
     auto document = read_json_file(data_folder("reference") / "potapov2021-table1.json");
     auto lattice = load_lattice("triangular");
     const double a_p = lattice.volume_coefficient("voronoi");
-    const std::map<int, std::vector<double>> shells = {
-        {1, {1}}, {2, {1, std::sqrt(3.0), 2}}, {3, {1, std::sqrt(3.0), 2, std::sqrt(7.0), 3}}};
+    const std::map<int, std::vector<double>> shells = {{1, {1}},
+                                                       {2, {1, std::sqrt(3.0), 2}},
+                                                       {3, {1, std::sqrt(3.0), 2, std::sqrt(7.0), 3}}};
     const std::set<std::string> continued = {"super_gaussian", "liu_quartic", "johnson_quadratic", "muller_poly6"};
     int checked = 0;
     for (const auto& row : document["rows"]) {
@@ -126,10 +126,12 @@ TEST_CASE("Table 1 of the paper in the paper-compatible mode, to 1e-4, without t
             continue;
         }
         if (row.contains("erratum")) continue; // the composite gradient row: see share/docs/method.md, errata
-        const auto function = row["eps_gradp"].is_number() && row["eps_gradp"] == 0 ? ErrorFunction::gradp : ErrorFunction::rho;
+        const auto function =
+            row["eps_gradp"].is_number() && row["eps_gradp"] == 0 ? ErrorFunction::gradp : ErrorFunction::rho;
         const Root* best = nullptr;
         for (const auto& r : scan.roots)
-            if (r.function == function && (!best || std::abs(r.k - row["k"].get<double>()) < std::abs(best->k - row["k"].get<double>())))
+            if (r.function == function &&
+                (!best || std::abs(r.k - row["k"].get<double>()) < std::abs(best->k - row["k"].get<double>())))
                 best = &r;
         REQUIRE(best);
         CHECK(std::abs(best->k - row["k"].get<double>()) <= 1e-4);

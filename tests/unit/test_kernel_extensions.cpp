@@ -1,7 +1,7 @@
 // ABI 2 and its extensions, the second derivative and the Fourier transform of a kernel,
 // and the check-up's new failures, each against an independent value.
-#include "helpers.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "helpers.hpp"
 #include "kernels/kernel_check.hpp"
 #include "kernels/kernel_plugin.hpp"
 #include "kernels/kernel_spectrum.hpp"
@@ -134,7 +134,8 @@ TEST_CASE("the Fourier transform by quadrature matches the B-spline's closed for
     CHECK(spectrum_summary(shipped_kernel("wendland_c2"), 3, 1.0).minimum > -1e-12);
 }
 
-TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-declared support and a missing breakpoint")
+TEST_CASE(
+    "check fails a wrong derivative and warns of a hidden jump, an over-declared support and a missing breakpoint")
 {
     auto checked = [](const std::string& name) { return check_kernel(Kernel(load_kernel_plugin(fixture(name)))); };
     auto wrong = checked("wrong_derivative");
@@ -155,8 +156,8 @@ TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-de
     CHECK(statuses(missing, 1)["breakpoints"] == "warn");
     bool located = false;
     for (const auto& c : missing["checks"])
-        located |= c["check"] == "breakpoints" && c["detail"].get<std::string>().find("q = 0.4999") != std::string::npos &&
-                   c.contains("hint");
+        located |= c["check"] == "breakpoints" &&
+                   c["detail"].get<std::string>().find("q = 0.4999") != std::string::npos && c.contains("hint");
     CHECK(located);
     // The shipped kernels have none of these faults.
     for (const char* name : {"cubic_bspline", "wendland_c6", "morris_quintic", "desbrun_spiky"}) {
@@ -167,7 +168,8 @@ TEST_CASE("check fails a wrong derivative and warns of a hidden jump, an over-de
     }
 }
 
-TEST_CASE("the fused W and W' of every shipped plugin equal its scalar functions, and without the extension the batches give them")
+TEST_CASE("the fused W and W' of every shipped plugin equal its scalar functions, and without the extension the "
+          "batches give them")
 {
     std::vector<double> q;
     for (int i = 0; i <= 400; ++i) q.push_back(1.5 * i / 400); // in units of R below

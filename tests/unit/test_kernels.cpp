@@ -22,8 +22,9 @@ TEST_CASE("the shipped kernels and the designed family are discovered")
         if (p->source.ends_with(".so")) names.push_back(p->name);
     std::sort(names.begin(), names.end());
     CHECK(names == std::vector<std::string>{"composite", "cubic_bspline", "desbrun_spiky", "johnson_quadratic",
-                                            "liu_quartic", "morris_quintic", "muller_poly6", "pysph_super_gaussian", "quartic_bspline", "super_gaussian",
-                                            "wendland_c2", "wendland_c2_shape", "wendland_c4", "wendland_c6"});
+                                            "liu_quartic", "morris_quintic", "muller_poly6", "pysph_super_gaussian",
+                                            "quartic_bspline", "super_gaussian", "wendland_c2", "wendland_c2_shape",
+                                            "wendland_c4", "wendland_c6"});
 }
 
 TEST_CASE("conformance: normalisation, derivative consistency, finiteness for every plugin")
@@ -33,7 +34,8 @@ TEST_CASE("conformance: normalisation, derivative consistency, finiteness for ev
     const double tail = std::exp(-9.0) / std::sqrt(M_PI);
     const std::map<std::string, std::map<int, double>> truncated = {
         {"super_gaussian", {{1, 1 - std::erfc(3.0) + 3 * tail}, {2, 1.0021}, {3, 1 - std::erfc(3.0) + 48 * tail}}},
-        {"pysph_super_gaussian", {{1, 1 - std::erfc(3.0) + 3 * tail}, {2, 1 + 8 * std::exp(-9.0)}, {3, 1 - std::erfc(3.0) + 48 * tail}}}};
+        {"pysph_super_gaussian",
+         {{1, 1 - std::erfc(3.0) + 3 * tail}, {2, 1 + 8 * std::exp(-9.0)}, {3, 1 - std::erfc(3.0) + 48 * tail}}}};
     for (const auto& plugin : shipped_kernels().plugins()) {
         if (!plugin->source.ends_with(".so")) continue;
         Kernel kernel(plugin);
@@ -44,8 +46,7 @@ TEST_CASE("conformance: normalisation, derivative consistency, finiteness for ev
             double integral = result["normalization"][std::to_string(dim)];
             if (truncated.contains(plugin->name))
                 CHECK(integral == doctest::Approx(truncated.at(plugin->name).at(dim)).epsilon(1e-4));
-            else
-                CHECK(std::abs(integral - 1) <= 1e-9);
+            else CHECK(std::abs(integral - 1) <= 1e-9);
         }
         for (const auto& c : result["checks"]) {
             CAPTURE(c.dump());
@@ -62,49 +63,61 @@ TEST_CASE("spot values of every kernel against its formula")
     using F = std::function<double(double, int)>;
     auto pos = [](double x) { return x > 0 ? x : 0.0; };
     std::map<std::string, F> w = {
-        {"super_gaussian", [&](double q, int D) {
+        {"super_gaussian",
+         [&](double q, int D) {
              double s[] = {0, 1 / std::sqrt(pi), 2 / pi, std::pow(pi, -1.5)};
              return s[D] * ((D == 3 ? 2.5 : 1.5) - q * q) * std::exp(-q * q);
          }},
-        {"morris_quintic", [&](double q, int D) {
+        {"morris_quintic",
+         [&](double q, int D) {
              double s[] = {0, 1.0 / 120, 7 / (478 * pi), 1 / (120 * pi)};
              return s[D] * (std::pow(pos(3 - q), 5) - 6 * std::pow(pos(2 - q), 5) + 15 * std::pow(pos(1 - q), 5));
          }},
-        {"cubic_bspline", [&](double q, int D) {
+        {"cubic_bspline",
+         [&](double q, int D) {
              double s[] = {0, 1, 15 / (7 * pi), 3 / (2 * pi)};
              return s[D] * (q <= 1 ? 2.0 / 3 - q * q + q * q * q / 2 : q <= 2 ? std::pow(2 - q, 3) / 6 : 0.0);
          }},
-        {"quartic_bspline", [&](double q, int D) {
+        {"quartic_bspline",
+         [&](double q, int D) {
              double s[] = {0, 1.0 / 24, 96 / (1199 * pi), 1 / (20 * pi)};
              return s[D] * (std::pow(pos(2.5 - q), 4) - 5 * std::pow(pos(1.5 - q), 4) + 10 * std::pow(pos(0.5 - q), 4));
          }},
-        {"liu_quartic", [&](double q, int D) {
+        {"liu_quartic",
+         [&](double q, int D) {
              double s[] = {0, 1, 15 / (7 * pi), 315 / (208 * pi)};
              return s[D] * (2.0 / 3 - 9.0 / 8 * q * q + 19.0 / 24 * q * q * q - 5.0 / 32 * std::pow(q, 4));
          }},
-        {"johnson_quadratic", [&](double q, int D) {
+        {"johnson_quadratic",
+         [&](double q, int D) {
              double s[] = {0, 1, 2 / pi, 5 / (4 * pi)};
              return s[D] * (0.75 - 0.75 * q + 3.0 / 16 * q * q);
          }},
-        {"desbrun_spiky", [&](double q, int D) {
+        {"desbrun_spiky",
+         [&](double q, int D) {
              double s[] = {0, 1.0 / 8, 5 / (16 * pi), 15 / (64 * pi)};
              return q <= 2 ? s[D] * std::pow(2 - q, 3) : 0.0;
          }},
-        {"muller_poly6", [&](double q, int D) {
+        {"muller_poly6",
+         [&](double q, int D) {
              double s[] = {0, 35.0 / 32, 4 / pi, 315 / (64 * pi)};
              return s[D] * std::pow(1 - q * q, 3);
          }},
-        {"composite", [&](double q, int) {
+        {"composite",
+         [&](double q, int) {
              return q <= 1 ? 15.0 / 13 * std::pow(1 - q * q, 2) * (1 - (4 - 52 / (5 * pi)) * q * q) : 0.0;
          }},
-        {"wendland_c2", [&](double q, int D) {
+        {"wendland_c2",
+         [&](double q, int D) {
              return (D == 2 ? 7 / (4 * pi) : 21 / (16 * pi)) * std::pow(pos(1 - q / 2), 4) * (2 * q + 1);
          }},
-        {"wendland_c4", [&](double q, int D) {
+        {"wendland_c4",
+         [&](double q, int D) {
              return (D == 2 ? 9 / (4 * pi) : 495 / (256 * pi)) * std::pow(pos(1 - q / 2), 6) *
                     (35.0 / 12 * q * q + 3 * q + 1);
          }},
-        {"wendland_c6", [&](double q, int D) {
+        {"wendland_c6",
+         [&](double q, int D) {
              return (D == 2 ? 78 / (28 * pi) : 1365 / (512 * pi)) * std::pow(pos(1 - q / 2), 8) *
                     (4 * q * q * q + 25.0 / 4 * q * q + 4 * q + 1);
          }},

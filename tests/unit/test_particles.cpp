@@ -4,15 +4,15 @@
 // determinism, and the readers' round trips and refusals.
 #include "analysis/site_errors.hpp"
 #include "helpers.hpp"
-#include "particles/formats/particle_files.hpp"
+#include "lattices/rectangular_cell.hpp"
 #include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/neighbour_grid.hpp"
+#include "particles/formats/particle_files.hpp"
 #include "particles/particle_analysis.hpp"
-#include "particles/tiled_set.hpp"
-#include "lattices/rectangular_cell.hpp"
-#include "requests/particles_report.hpp"
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
+#include "particles/tiled_set.hpp"
+#include "requests/particles_report.hpp"
 #include "support/error.hpp"
 #include "support/process/block_random.hpp"
 #include "support/process/parallel_for.hpp"
@@ -24,19 +24,18 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstring>
-#include <random>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <numeric>
+#include <random>
 
 using namespace sphkern;
 using sphkern::test::shipped_kernel;
 
 namespace {
-
 
 // Every measure of particle i written out from the definitions: all pairs, every periodic
 // image in the 3^D neighbouring boxes, the support edge inside.
@@ -53,8 +52,13 @@ Brute brute_force(const Kernel& kernel, const ParticleSet& set, const MeasureInp
     const int dim = set.dimension;
     const double h = in.h[i], k = h / in.spacing, R = kernel.support(), hd = std::pow(h, dim);
     const std::span<const double> mass = in.mass.empty() ? in.volume.values : in.mass; // rho0 = 1 when empty
-    Brute b{in.volume[i] * kernel.w(0, dim, k) / hd - 1, mass[i] * kernel.w(0, dim, k) / hd / in.rho0 - 1, 0,
-            Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), -Eigen::Matrix3d::Identity(), 0};
+    Brute b{in.volume[i] * kernel.w(0, dim, k) / hd - 1,
+            mass[i] * kernel.w(0, dim, k) / hd / in.rho0 - 1,
+            0,
+            Eigen::Vector3d::Zero(),
+            Eigen::Vector3d::Zero(),
+            -Eigen::Matrix3d::Identity(),
+            0};
     if (dim == 2) b.E(2, 2) = 0;
     const int images = set.box ? 1 : 0;
     for (std::size_t j = 0; j < set.size(); ++j)
@@ -286,8 +290,8 @@ TEST_CASE("Poisson sets: the mean of e0 is V W(0) - 1/N and its variance V int W
         };
         const auto [mean, mean_error] = mean_and_error(means);
         const auto [variance, variance_error] = mean_and_error(variances);
-        MESSAGE("D = ", dim, ": mean e0 ", mean, " +- ", mean_error, " (exact ", expected_mean, "), variance ", variance,
-                " +- ", variance_error, " (exact ", expected_variance, ")");
+        MESSAGE("D = ", dim, ": mean e0 ", mean, " +- ", mean_error, " (exact ", expected_mean, "), variance ",
+                variance, " +- ", variance_error, " (exact ", expected_variance, ")");
         // Seven standard errors (Student's t with 15 degrees of freedom: p < 1e-5); the seeds
         // are fixed and Boost's generator portable, so the outcome is the same on every machine.
         CHECK(std::abs(mean - expected_mean) < 7 * mean_error);
@@ -318,7 +322,8 @@ TEST_CASE("statistics over several blocks: exact percentiles, and the same bits 
     // Spread values of both signs (zeros of both signs among them), and crowded ones: integers
     // in one narrow range, most of them in one bucket of the selection's histogram.
     std::vector<double> spread(300007), crowded(200003);
-    for (std::size_t i = 0; i < spread.size(); ++i) spread[i] = i % 1000 == 0 ? (i % 2000 ? -0.0 : 0.0) : normal(random);
+    for (std::size_t i = 0; i < spread.size(); ++i)
+        spread[i] = i % 1000 == 0 ? (i % 2000 ? -0.0 : 0.0) : normal(random);
     for (auto& v : crowded) v = 58.0 + static_cast<double>(random() % 5);
     // Neighbouring doubles on both sides of 1 (where a key's high bits carry), between two far
     // values: the cluster lies in one bucket of the histogram, its keys straddle a power of two.
@@ -358,7 +363,8 @@ TEST_CASE("parallel sums add fixed blocks in block order: the same bits on 1, 2 
     double expected = 0;
     for (std::size_t b = 0; b * particle_block_size < n; ++b) {
         double block = 0;
-        for (std::size_t i = b * particle_block_size; i < std::min(n, (b + 1) * particle_block_size); ++i) block += terms[i];
+        for (std::size_t i = b * particle_block_size; i < std::min(n, (b + 1) * particle_block_size); ++i)
+            block += terms[i];
         expected += block;
     }
     for (int threads : {1, 2, 7}) {
@@ -366,9 +372,8 @@ TEST_CASE("parallel sums add fixed blocks in block order: the same bits on 1, 2 
         CHECK(parallel_sum(n, threads, [&](std::size_t i) { return terms[i]; }) == expected);
         // Bad items in blocks 3 and 5 (and late in block 3): the lowest is found.
         const std::size_t early = 3 * particle_block_size + 17, later = 5 * particle_block_size + 1;
-        const auto first = first_index_where(n, threads, [&](std::size_t i) {
-            return i == early || i == early + 100 || i == later;
-        });
+        const auto first =
+            first_index_where(n, threads, [&](std::size_t i) { return i == early || i == early + 100 || i == later; });
         REQUIRE(first.has_value());
         CHECK(*first == early);
     }
@@ -400,7 +405,8 @@ TEST_CASE("sources, validation and the neighbour grid are the same on 1, 2 and 7
         REQUIRE(built.bins() == grid.bins());
         bool same = true;
         for (std::size_t p = 0; p < grid.points(); ++p)
-            same = same && built.source(p) == grid.source(p) && built.x()[p] == grid.x()[p] && built.z()[p] == grid.z()[p];
+            same =
+                same && built.source(p) == grid.source(p) && built.x()[p] == grid.x()[p] && built.z()[p] == grid.z()[p];
         for (std::size_t b = 0; b <= grid.bins(); ++b) same = same && built.bin_begin(b) == grid.bin_begin(b);
         CHECK(same);
     }
@@ -460,7 +466,8 @@ TEST_CASE("particles: a stated gravity direction gives eps_gradp = g.E.g with th
             CHECK(m.scalars[i].eps_gradp == doctest::Approx(expected).epsilon(1e-12).scale(1));
             // The sum form at depth D: eps_gradp + 2 D (e1 . g).
             const double e1_g = u.x() * m.e1[i][0] + u.y() * m.e1[i][1] + u.z() * m.e1[i][2];
-            CHECK(m.scalars[i].eps_gradp_sum == doctest::Approx(expected + 2 * request.depth * e1_g).epsilon(1e-12).scale(1));
+            CHECK(m.scalars[i].eps_gradp_sum ==
+                  doctest::Approx(expected + 2 * request.depth * e1_g).epsilon(1e-12).scale(1));
             largest_change = std::max(largest_change, std::abs(m.scalars[i].eps_gradp - E[2])); // the set's g is -z
         }
         CHECK(largest_change > 1e-3);
@@ -544,7 +551,8 @@ TEST_CASE("files: CSV and VTK round trips, DualSPHysics-style CSV, and one-line 
     refused("empty.csv", "", "empty.csv: no header line");
     refused("cut.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 double\n1 2 3 4 5 6\n",
             "unexpected end of file");
-    refused("grid.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n", "expected POLYDATA or UNSTRUCTURED_GRID");
+    refused("grid.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\n",
+            "expected POLYDATA or UNSTRUCTURED_GRID");
     refused("junk.h5", "not hdf5 at all", "not an HDF5 file");
     std::filesystem::remove_all(dir);
 }
@@ -585,9 +593,12 @@ TEST_CASE("a set's statistics, read from its records a run at a time, are each m
     const auto& m = *one.measures;
     const auto& stats = one.points[0].statistics;
     REQUIRE(stats.size() == 8);
-    const std::vector<double> columns[] = {values_of(m, &MeasureRecord::e0),      values_of(m, &MeasureRecord::e0),
-                                           values_of(m, &MeasureRecord::eps_gradp), values_of(m, &MeasureRecord::eps_gradp_sum),
-                                           values_of(m, &MeasureRecord::e1_norm), values_of(m, &MeasureRecord::m1_norm),
+    const std::vector<double> columns[] = {values_of(m, &MeasureRecord::e0),
+                                           values_of(m, &MeasureRecord::e0),
+                                           values_of(m, &MeasureRecord::eps_gradp),
+                                           values_of(m, &MeasureRecord::eps_gradp_sum),
+                                           values_of(m, &MeasureRecord::e1_norm),
+                                           values_of(m, &MeasureRecord::m1_norm),
                                            values_of(m, &MeasureRecord::E_norm)};
     std::vector<double> neighbours;
     for (const MeasureRecord& r : m.scalars) neighbours.push_back(r.neighbours);
@@ -619,7 +630,8 @@ TEST_CASE("statistics: percentiles interpolate between order statistics as numpy
     CHECK(s.std == doctest::Approx(std::sqrt(173.0 / 8 - 3.875 * 3.875)).epsilon(1e-14));
 }
 
-TEST_CASE("statistics: percentiles equal numpy's linear interpolation of the sorted values, for every size and with ties")
+TEST_CASE(
+    "statistics: percentiles equal numpy's linear interpolation of the sorted values, for every size and with ties")
 {
     // The reference sorts; summarise selects (nth_element).
     auto reference = [](std::vector<double> v, double p) {
@@ -635,7 +647,8 @@ TEST_CASE("statistics: percentiles equal numpy's linear interpolation of the sor
             CAPTURE(n);
             CAPTURE(ties);
             std::vector<double> values(n);
-            for (auto& v : values) v = ties ? static_cast<double>(random() % 5) : static_cast<double>(random() % 100000) / 7.0;
+            for (auto& v : values)
+                v = ties ? static_cast<double>(random() % 5) : static_cast<double>(random() % 100000) / 7.0;
             const auto s = summarise(values);
             CHECK(s.p1 == reference(values, 0.01));
             CHECK(s.p50 == reference(values, 0.5));
@@ -643,7 +656,8 @@ TEST_CASE("statistics: percentiles equal numpy's linear interpolation of the sor
         }
 }
 
-TEST_CASE("the runs cut to a point's support hold every point within it once, about 3 (3D) or 2 (2D) candidates a neighbour")
+TEST_CASE(
+    "the runs cut to a point's support hold every point within it once, about 3 (3D) or 2 (2D) candidates a neighbour")
 {
     for (int dim : {2, 3})
         for (bool periodic : {true, false}) {
@@ -692,7 +706,8 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
                 // Variable h: each particle's reach between 0.5 and 1 of the grid's.
                 const double reach = dim == 3 ? 0.18 : 0.12;
                 std::vector<double> reaches(set.size());
-                for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
+                for (std::size_t i = 0; i < set.size(); ++i)
+                    reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
                 const NeighbourGrid grid(set, reach);
                 const std::vector<double> point_reaches = grid.gather(reaches);
                 std::vector<double> ids(grid.points());
@@ -761,7 +776,8 @@ TEST_CASE("a long thin set gets no more bins than four per point, and every neig
     CHECK(found == expected);
 }
 
-TEST_CASE("copies of a periodic set side by side: each copy where its shift puts it, and every particle's sums as in the original")
+TEST_CASE("copies of a periodic set side by side: each copy where its shift puts it, and every particle's sums as in "
+          "the original")
 {
     const auto kernel = shipped_kernel("cubic_bspline");
     for (const int dim : {2, 3}) {
@@ -776,7 +792,8 @@ TEST_CASE("copies of a periodic set side by side: each copy where its shift puts
         const auto big = tiled_set(set, tiles, 3);
         const std::size_t n = set.size(), copies = static_cast<std::size_t>(tiles[0] * tiles[1] * tiles[2]);
         REQUIRE(big.size() == copies * n);
-        for (int a = 0; a < dim; ++a) CHECK(big.box->edges(a, a) == set.box->edges(a, a) * tiles[static_cast<std::size_t>(a)]);
+        for (int a = 0; a < dim; ++a)
+            CHECK(big.box->edges(a, a) == set.box->edges(a, a) * tiles[static_cast<std::size_t>(a)]);
         // Copy (i0, i1, i2) holds the original moved by i0 edges along x, i1 along y, i2 along z.
         std::size_t c = 0;
         for (int i2 = 0; i2 < (dim == 3 ? tiles[2] : 1); ++i2)
@@ -807,7 +824,8 @@ TEST_CASE("copies of a periodic set side by side: each copy where its shift puts
     CHECK_THROWS_AS(tiled_set(open, {2, 2, 2}), Error);
 }
 
-TEST_CASE("a rectangular cell holds the lattice's own points, and a block cut from it has the lattice's sums at every site")
+TEST_CASE(
+    "a rectangular cell holds the lattice's own points, and a block cut from it has the lattice's sums at every site")
 {
     const auto kernel = shipped_kernel("cubic_bspline");
     for (const std::string name : {"triangular", "square", "fcc", "bcc", "hcp", "sc", "hex_prism"}) {
@@ -823,7 +841,8 @@ TEST_CASE("a rectangular cell holds the lattice's own points, and a block cut fr
         // primitive site it is, by its fractional coordinates.
         const double cells = std::abs(cell.basis.topLeftCorner(dim, dim).determinant() /
                                       lattice.basis.topLeftCorner(dim, dim).determinant());
-        CHECK(static_cast<double>(cell.motif.size()) == doctest::Approx(cells * static_cast<double>(lattice.motif.size())));
+        CHECK(static_cast<double>(cell.motif.size()) ==
+              doctest::Approx(cells * static_cast<double>(lattice.motif.size())));
         std::vector<std::size_t> primitive_site;
         for (const auto& s : cell.motif) {
             const Eigen::Vector3d f = lattice.basis.inverse() * (cell.basis * s);
@@ -843,7 +862,9 @@ TEST_CASE("a rectangular cell holds the lattice's own points, and a block cut fr
         spec.cells = dim == 2 ? std::array<long long, 3>{8, 5, 1} : std::array<long long, 3>{6, 5, 5};
         spec.rectangular = true;
         const auto set = lattice_particles(block_cell(lattice, spec), spec);
-        for (int a = 0; a < dim; ++a) CHECK(set.box->edges(a, a) == cell.basis(a, a) * static_cast<double>(spec.cells[static_cast<std::size_t>(a)]));
+        for (int a = 0; a < dim; ++a)
+            CHECK(set.box->edges(a, a) ==
+                  cell.basis(a, a) * static_cast<double>(spec.cells[static_cast<std::size_t>(a)]));
         ParticleRequest request;
         request.smoothing = {SmoothingRule::k, k, 0};
         const auto answer = analyse_particles(kernel, set, request);

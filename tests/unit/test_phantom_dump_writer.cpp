@@ -1,5 +1,6 @@
 // A Phantom full dump sphkern writes, read back by sphkern's own Phantom reader: the positions
-// bit for bit, h as the real*4 Phantom writes, the mass and the box; and what cannot be a Phantom dump refused in one line.
+// bit for bit, h as the real*4 Phantom writes, the mass and the box; and what cannot be a Phantom dump refused in one
+// line.
 #include "helpers.hpp"
 #include "particles/formats/particle_files.hpp"
 #include "particles/formats/phantom_dump_writer.hpp"
@@ -95,7 +96,8 @@ TEST_CASE("a Phantom dump is a 3D set in a rectangular box with an HDF5-free nam
     free.box.reset();
     std::tie(message, code) = test::refusal([&] { write_particle_file(dir / "free_00000", free, out); });
     CHECK(code == ExitCode::input);
-    CHECK(message.find("the Phantom dump " + (dir / "free_00000").string() + " needs a periodic box") != std::string::npos);
+    CHECK(message.find("the Phantom dump " + (dir / "free_00000").string() + " needs a periodic box") !=
+          std::string::npos);
     std::tie(message, code) = test::refusal([&] { write_particle_file(dir / "ic.hdf5", set, out); });
     CHECK(code == ExitCode::usage);
     CHECK(message.find("ic.hdf5: Phantom starts from its own full dumps, not HDF5") != std::string::npos);

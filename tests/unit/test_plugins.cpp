@@ -97,7 +97,8 @@ TEST_CASE("the truncated super-Gaussian warns with the loss at R, not with a wro
         if (c["check"] == "normalization") {
             CAPTURE(c.dump());
             CHECK(c["status"] == "warn");
-            CHECK(c["hint"].get<std::string>().find("cutting the formula at R changes its integral") != std::string::npos);
+            CHECK(c["hint"].get<std::string>().find("cutting the formula at R changes its integral") !=
+                  std::string::npos);
             ++seen;
         }
     CHECK(seen == 3);
@@ -107,7 +108,8 @@ TEST_CASE("every warning or failure of check carries a hint")
 {
     std::vector<Kernel> kernels;
     for (const auto& p : test::shipped_kernels().plugins()) kernels.emplace_back(p);
-    for (const char* name : {"unnormalised", "wrong_derivative", "hidden_jump", "missing_breakpoint", "over_declared_support"})
+    for (const char* name :
+         {"unnormalised", "wrong_derivative", "hidden_jump", "missing_breakpoint", "over_declared_support"})
         kernels.emplace_back(load_kernel_plugin(broken(name)));
     int flagged = 0;
     for (const auto& kernel : kernels) {
@@ -124,6 +126,6 @@ TEST_CASE("every warning or failure of check carries a hint")
 
 TEST_CASE("unknown kernel names suggest the closest")
 {
-    CHECK_THROWS_WITH_AS(test::shipped_kernels().find("cubic_bsplin"), doctest::Contains("did you mean \"cubic_bspline\""),
-                         Error);
+    CHECK_THROWS_WITH_AS(test::shipped_kernels().find("cubic_bsplin"),
+                         doctest::Contains("did you mean \"cubic_bspline\""), Error);
 }

@@ -25,7 +25,8 @@ StudyResults compare(const std::vector<Root>& roots, const std::string& rows)
 {
     auto file = std::filesystem::temp_directory_path() / ("sphkern-reference-" + std::to_string(::getpid()) + ".json");
     std::ofstream(file) << R"({"source": "test", "lattice": "L", "volume_coefficient": "voronoi", "mode": "paper",
-                              "tolerance": 1e-4, "rows": [)" << rows << "]}";
+                              "tolerance": 1e-4, "rows": [)"
+                        << rows << "]}";
     auto table = read_reference_table(file);
     resolve_reference_table(table, {{"L"}, {"paper"}, {"voronoi"}, {"K"}});
     StudyResults results;
@@ -72,7 +73,8 @@ TEST_CASE("a comparison row is reproduced only if every printed value agrees")
     CHECK(r.comparison[0].status == ComparisonStatus::differs);
     CHECK(r.comparison[0].differing == std::vector<std::string>{"k", "eps_gradp"});
     // A value the paper prints as no number is not compared.
-    r = compare({rho_root}, R"({"kernel": "K", "k": 0.99963, "eps_rho": 0, "eps_gradp": null, "printed_eps_gradp": ">> 1"})");
+    r = compare({rho_root},
+                R"({"kernel": "K", "k": 0.99963, "eps_rho": 0, "eps_gradp": null, "printed_eps_gradp": ">> 1"})");
     CHECK(r.comparison[0].status == ComparisonStatus::reproduced);
     CHECK(r.comparison[0].compared == std::vector<std::string>{"k", "eps_rho"});
 }

@@ -6,9 +6,9 @@
 #include "particles/formats/particle_files.hpp"
 #include "particles/formats/particle_writers.hpp"
 #include "particles/poisson_reference.hpp"
+#include "particles/smoothing_lengths.hpp"
 #include "particles/sources/lattice_particles.hpp"
 #include "particles/sources/poisson_particles.hpp"
-#include "particles/smoothing_lengths.hpp"
 #include "relax/glass_quality.hpp"
 #include "relax/pairing_motion.hpp"
 #include "relax/relaxation.hpp"
@@ -29,7 +29,6 @@ using namespace sphkern;
 using sphkern::test::shipped_kernel;
 
 namespace {
-
 
 ParticleSet poisson_set(std::size_t n, int dim, double side, std::uint64_t seed)
 {
@@ -65,7 +64,8 @@ std::vector<BruteSums> brute_sums(const Kernel& kernel, const ParticleSet& set, 
                 for (int a = -1; a <= 1; ++a)
                     for (int b = -1; b <= 1; ++b)
                         for (int c = (dim == 3 ? -1 : 0); c <= (dim == 3 ? 1 : 0); ++c) {
-                            const Eigen::Vector3d r = set.position(i) - set.position(j) - set.box->edges * Eigen::Vector3d(a, b, c);
+                            const Eigen::Vector3d r =
+                                set.position(i) - set.position(j) - set.box->edges * Eigen::Vector3d(a, b, c);
                             const double d = r.norm();
                             if (d / m.h > kernel.support()) continue;
                             visit(i, j, r, d);
@@ -113,7 +113,8 @@ TEST_CASE("the relaxation sums agree with a brute-force sum over periodic images
             const auto brute = brute_sums(kernel, set, m);
             double worst = 0;
             for (std::size_t i = 0; i < set.size(); ++i) {
-                const Eigen::Vector3d g(field.gx[i], field.gy[i], field.gz[i]), a(field.ax[i], field.ay[i], field.az[i]);
+                const Eigen::Vector3d g(field.gx[i], field.gy[i], field.gz[i]),
+                    a(field.ax[i], field.ay[i], field.az[i]);
                 worst = std::max(worst, std::abs(field.density[i] - brute[i].density) / brute[i].density);
                 worst = std::max(worst, (g - brute[i].gradient).norm() / (1 + brute[i].gradient.norm()));
                 worst = std::max(worst, (a - brute[i].acceleration).norm() / (1 + brute[i].acceleration.norm()));
@@ -191,7 +192,8 @@ TEST_CASE("undamped pressure motion keeps its energy, and a run does not depend 
     for (double dt : {0.04, 0.02, 0.01}) {
         s.time_step = dt;
         std::vector<double> energies;
-        one = relax_particles(kernel, start, 1.4, s, [&](const RelaxState& st, const RelaxStep&) { energies.push_back(energy(st)); });
+        one = relax_particles(kernel, start, 1.4, s,
+                              [&](const RelaxState& st, const RelaxStep&) { energies.push_back(energy(st)); });
         double drift = 0;
         for (double e : energies) drift = std::max(drift, std::abs(e - energies.front()));
         drifts.push_back(drift);
@@ -286,7 +288,8 @@ TEST_CASE("g(r) is 1 for a Poisson set and peaks at the nearest-neighbour distan
     mean /= static_cast<double>(random.rdf.g.size() - 5);
     CHECK(mean == doctest::Approx(1).epsilon(0.01));
     // The nearest-neighbour distance of a Poisson set in 3D: mean Gamma(4/3) (3 / (4 pi n))^(1/3).
-    CHECK(random.nearest.mean == doctest::Approx(std::tgamma(4.0 / 3.0) * std::cbrt(3 / (4 * std::numbers::pi))).epsilon(0.01));
+    CHECK(random.nearest.mean ==
+          doctest::Approx(std::tgamma(4.0 / 3.0) * std::cbrt(3 / (4 * std::numbers::pi))).epsilon(0.01));
     // P(nearest < 0.5 l) = 1 - exp(-4 pi / 3 0.5^3).
     CHECK(random.paired == doctest::Approx(1 - std::exp(-4 * std::numbers::pi / 3 * 0.125)).epsilon(0.05));
     const ParticleSet fcc = lattice_block("fcc", 8);

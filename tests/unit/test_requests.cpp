@@ -1,5 +1,5 @@
-// The typed requests of eps, roots, surface, design, spectrum, check, block and stability: each refusal names its source (the command line's
-// option or Python's argument) and keeps its exit code; a good request's result equals an
+// The typed requests of eps, roots, surface, design, spectrum, check, block and stability: each refusal names its
+// source (the command line's option or Python's argument) and keeps its exit code; a good request's result equals an
 // independent brute-force lattice sum.
 #include "helpers.hpp"
 
@@ -34,7 +34,8 @@ EpsSources eps_options(const std::string& shells = "")
 
 EpsSources eps_arguments()
 {
-    return {ValueSource::argument("k"), ValueSource::argument("axis"),
+    return {ValueSource::argument("k"),
+            ValueSource::argument("axis"),
             {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")},
             {},
             {}};
@@ -94,8 +95,9 @@ TEST_CASE("eps request: the values that need the lattice are refused naming thei
     CHECK(refusal([&] { run_eps_series(a_p, eps_arguments(), kernel, lattice); }).first ==
           "volume coefficient a_p = -1 is not allowed, expected a positive number up to 1e6");
     a_p.evaluation.a_p = std::string("hexagon");
-    CHECK(refusal([&] { run_eps_at_k(a_p, eps_options(), kernel, lattice); }).first.find(
-              "lattice fcc has no volume coefficient \"hexagon\"") == 0);
+    CHECK(refusal([&] {
+              run_eps_at_k(a_p, eps_options(), kernel, lattice);
+          }).first.find("lattice fcc has no volume coefficient \"hexagon\"") == 0);
     auto eta = eps_at({60});
     eta.axis = Axis::eta;
     eta.evaluation.a_p = 8.0; // k = eta a_p^(1/3) = 120
@@ -148,13 +150,16 @@ namespace {
 RootsSources roots_options()
 {
     return {ValueSource::argument("--kmin/--kmax"), ValueSource::option("--epsilon"), ValueSource::option("--gamma"),
-            ValueSource::option("--horizon"), ValueSource::option("--steps"), option_evaluation("")};
+            ValueSource::option("--horizon"),       ValueSource::option("--steps"),   option_evaluation("")};
 }
 
 RootsSources roots_arguments()
 {
-    return {ValueSource::argument("kmin/kmax"), ValueSource::argument("epsilon"), ValueSource::argument("gamma"),
-            ValueSource::argument("horizon"), ValueSource::argument("steps"),
+    return {ValueSource::argument("kmin/kmax"),
+            ValueSource::argument("epsilon"),
+            ValueSource::argument("gamma"),
+            ValueSource::argument("horizon"),
+            ValueSource::argument("steps"),
             {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")}};
 }
 
@@ -190,8 +195,9 @@ TEST_CASE("roots request: each bad value is refused naming its option or argumen
     CHECK(refusal([&] { check_roots_request(steps, roots_arguments()); }).first == "steps = 0, expected 1 to 2000");
     RootsRequest site;
     site.evaluation.site = 3;
-    CHECK(refusal([&] { run_roots(site, roots_arguments(), test::shipped_kernel("cubic_bspline"), load_lattice("fcc")); })
-              .first == "site: site 3 does not exist; lattice fcc has sites 0 to 0");
+    CHECK(refusal([&] {
+              run_roots(site, roots_arguments(), test::shipped_kernel("cubic_bspline"), load_lattice("fcc"));
+          }).first == "site: site 3 does not exist; lattice fcc has sites 0 to 0");
 }
 
 TEST_CASE("roots request: every root found is a zero of the brute-force lattice sum")
@@ -225,31 +231,52 @@ TEST_CASE("surface request: k and the values that need the lattice are refused n
 {
     const auto kernel = test::shipped_kernel("cubic_bspline");
     const auto lattice = load_lattice("fcc");
-    const EvaluationSources evaluation{ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")};
+    const EvaluationSources evaluation{ValueSource::argument("gravity"), ValueSource::argument("site"),
+                                       ValueSource::argument("shells")};
     SurfaceRequest bad_k;
     bad_k.k = -1;
-    auto k = refusal([&] { check_surface_request(bad_k, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}); });
+    auto k = refusal([&] {
+        check_surface_request(bad_k, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"),
+                                      ValueSource::argument("code"), ValueSource::argument("value")});
+    });
     CHECK(k.first == "k = -1 is not allowed, expected a number in (0, 100]");
     CHECK(k.second == ExitCode::input);
     SurfaceRequest gravity;
     gravity.k = 1.2;
     gravity.evaluation.gravity = std::vector<double>{0, 0, 0};
-    CHECK_NOTHROW(check_surface_request(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}));
-    CHECK(refusal([&] { run_surface(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}, kernel, lattice); }).first ==
-          "gravity: expected a direction: finite components, not all zero");
+    CHECK_NOTHROW(
+        check_surface_request(gravity, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"),
+                                        ValueSource::argument("code"), ValueSource::argument("value")}));
+    CHECK(refusal([&] {
+              run_surface(gravity,
+                          {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"),
+                           ValueSource::argument("code"), ValueSource::argument("value")},
+                          kernel, lattice);
+          }).first == "gravity: expected a direction: finite components, not all zero");
     // The request names the site, not the profile in its own words.
     SurfaceRequest site;
     site.k = 1.2;
     site.evaluation.site = 3;
-    auto missing = refusal([&] { run_surface(site, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}, kernel, lattice); });
+    auto missing = refusal([&] {
+        run_surface(site,
+                    {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"),
+                     ValueSource::argument("code"), ValueSource::argument("value")},
+                    kernel, lattice);
+    });
     CHECK(missing.first == "site: site 3 does not exist; lattice fcc has sites 0 to 0");
     CHECK(missing.second == ExitCode::input);
-    auto option = refusal([&] { check_surface_request(bad_k, {ValueSource::option("--k"), evaluation, ValueSource::option("--layers"), ValueSource::option("--code"), ValueSource::option("--eta")}); });
+    auto option = refusal([&] {
+        check_surface_request(bad_k, {ValueSource::option("--k"), evaluation, ValueSource::option("--layers"),
+                                      ValueSource::option("--code"), ValueSource::option("--eta")});
+    });
     CHECK(option.first == "--k -1 is not allowed, expected a number in (0, 100]");
     CHECK(option.second == ExitCode::usage);
     SurfaceRequest layers = gravity;
     layers.layers = 10001;
-    auto too_many = refusal([&] { check_surface_request(layers, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"), ValueSource::argument("code"), ValueSource::argument("value")}); });
+    auto too_many = refusal([&] {
+        check_surface_request(layers, {ValueSource::argument("k"), evaluation, ValueSource::argument("layers"),
+                                       ValueSource::argument("code"), ValueSource::argument("value")});
+    });
     CHECK(too_many.first == "layers = 10001, expected 1 to 10000");
     CHECK(too_many.second == ExitCode::input);
 }
@@ -264,8 +291,12 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
         request.k = 1.2;
         request.layers = 16; // past 2 R k = 4.8 d on both lattices
         request.evaluation.a_p = 0.9;
-        const SurfaceSources sources{ValueSource::argument("k"), {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")},
-                                     ValueSource::option("--layers"), ValueSource::option("--code"), ValueSource::option("--eta")};
+        const SurfaceSources sources{ValueSource::argument("k"),
+                                     {ValueSource::argument("gravity"), ValueSource::argument("site"),
+                                      ValueSource::argument("shells")},
+                                     ValueSource::option("--layers"),
+                                     ValueSource::option("--code"),
+                                     ValueSource::option("--eta")};
         check_surface_request(request, sources);
         SurfaceRequest none = request;
         none.layers = 0;
@@ -302,7 +333,8 @@ TEST_CASE("surface request: deep below the surface the errors are the bulk's bru
 TEST_CASE("design request: a bad window is refused naming it, and each solution is a zero of both brute-force sums")
 {
     const DesignSources arguments{ValueSource::argument("kmin/kmax"),
-                                  {ValueSource::argument("gravity"), ValueSource::argument("site"), ValueSource::argument("shells")}};
+                                  {ValueSource::argument("gravity"), ValueSource::argument("site"),
+                                   ValueSource::argument("shells")}};
     DesignRequest window;
     window.k_min = 2;
     window.k_max = 1;
@@ -355,10 +387,12 @@ TEST_CASE("spectrum request: each value out of range is refused naming its optio
     CHECK(dimension.second == ExitCode::usage);
     auto points = spectrum_in(3);
     points.points = 0;
-    CHECK(refusal([&] { check_spectrum_request(points, spectrum_options); }).first == "--points 0, expected 1 to 100000");
+    CHECK(refusal([&] { check_spectrum_request(points, spectrum_options); }).first ==
+          "--points 0, expected 1 to 100000");
     auto kh_max = spectrum_in(3);
     kh_max.kh_max = std::numeric_limits<double>::quiet_NaN();
-    CHECK(refusal([&] { check_spectrum_request(kh_max, spectrum_options); }).first == "--max nan, expected 0.1 to 1000");
+    CHECK(refusal([&] { check_spectrum_request(kh_max, spectrum_options); }).first ==
+          "--max nan, expected 0.1 to 1000");
     auto k = spectrum_in(3);
     k.k = 200;
     CHECK(refusal([&] { check_spectrum_request(k, spectrum_options); }).first == "--k 200, expected 0.001 to 100");
@@ -422,7 +456,8 @@ TEST_CASE("check request: nothing to check is refused, and the verdict is a stat
     CHECK(check_fails(warned, true));
 }
 
-TEST_CASE("block request: sizes are refused naming the option, and deep inside a periodic block the errors are the bulk's")
+TEST_CASE(
+    "block request: sizes are refused naming the option, and deep inside a periodic block the errors are the bulk's")
 {
     const BlockSources sources{ValueSource::option("--size 10,10"), ValueSource::option("--threads"),
                                ValueSource::option("--k")};
@@ -435,7 +470,8 @@ TEST_CASE("block request: sizes are refused naming the option, and deep inside a
     CHECK(k.second == ExitCode::usage);
     request.k = 1.2;
     request.cells = {1, 2, 3, 4};
-    CHECK(refusal([&] { check_block_request(request, sources); }).first == "--size 10,10: expected N1,N2[,N3] integers");
+    CHECK(refusal([&] { check_block_request(request, sources); }).first ==
+          "--size 10,10: expected N1,N2[,N3] integers");
     request.cells = {10, 10};
     check_block_request(request, sources);
     auto dimension = refusal([&] { run_block(request, sources, kernel, load_lattice("fcc")); });
@@ -474,8 +510,8 @@ StabilitySources stability_sources(bool options)
     auto named = [&](const std::string& name) {
         return options ? ValueSource::option("--" + name) : ValueSource::argument(name);
     };
-    return {named("k"),       named("kmin"),  named("kmax"), named("gamma"), named("horizon"),
-            named("wavevector"), named("steps"), named("grid"), named("path"), ""};
+    return {named("k"),          named("kmin"),  named("kmax"), named("gamma"), named("horizon"),
+            named("wavevector"), named("steps"), named("grid"), named("path"),  ""};
 }
 
 } // namespace

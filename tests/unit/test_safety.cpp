@@ -1,10 +1,10 @@
 // The safety rules of the support layer: JSON duplicates and pointers, the parallel
 // executor's error handling, output folders that never replace what sphkern did not write.
+#include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "support/error.hpp"
 #include "support/io/json_input.hpp"
 #include "support/io/output_folder.hpp"
 #include "support/process/parallel_for.hpp"
-#include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "support/process/work_budget.hpp"
 
 #include <doctest/doctest.h>
@@ -15,8 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <thread>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 using namespace sphkern;
@@ -164,7 +164,9 @@ TEST_CASE("an output folder is committed without replacing anything, and --force
 
     // A failed run removes the parents it created, and not those that were there.
     fs::path deep = base / "new1" / "new2" / "results";
-    { OutputFolder abandoned(deep, false); }
+    {
+        OutputFolder abandoned(deep, false);
+    }
     CHECK(!fs::exists(base / "new1"));
     CHECK(fs::exists(base));
     fs::remove_all(base);

@@ -41,7 +41,8 @@ TEST_CASE("triangular shell radii are those of share/docs/method.md section 2")
     auto shells = lattice_shells(load_lattice("triangular"), 0, 4.0);
     std::vector<double> expected = {1, std::sqrt(3.0), 2, std::sqrt(7.0), 3, 2 * std::sqrt(3.0), std::sqrt(13.0), 4};
     REQUIRE(shells.size() == expected.size());
-    for (std::size_t i = 0; i < expected.size(); ++i) CHECK(shells[i].radius == doctest::Approx(expected[i]).epsilon(1e-13));
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        CHECK(shells[i].radius == doctest::Approx(expected[i]).epsilon(1e-13));
 }
 
 TEST_CASE("directional moments: the trace of sum r^ r^T is the shell count")
@@ -56,13 +57,16 @@ TEST_CASE("directional moments: the trace of sum r^ r^T is the shell count")
 
 TEST_CASE("voronoi volume coefficients of share/docs/method.md section 3")
 {
-    CHECK(load_lattice("triangular").volume_coefficient("voronoi") == doctest::Approx(std::sqrt(3.0) / 2).epsilon(1e-14));
+    CHECK(load_lattice("triangular").volume_coefficient("voronoi") ==
+          doctest::Approx(std::sqrt(3.0) / 2).epsilon(1e-14));
     CHECK(load_lattice("square").volume_coefficient("voronoi") == doctest::Approx(1.0).epsilon(1e-14));
     CHECK(load_lattice("sc").volume_coefficient("voronoi") == doctest::Approx(1.0).epsilon(1e-14));
     CHECK(load_lattice("fcc").volume_coefficient("voronoi") == doctest::Approx(1 / std::sqrt(2.0)).epsilon(1e-14));
     CHECK(load_lattice("hcp").volume_coefficient("voronoi") == doctest::Approx(1 / std::sqrt(2.0)).epsilon(1e-14));
-    CHECK(load_lattice("bcc").volume_coefficient("voronoi") == doctest::Approx(4 / (3 * std::sqrt(3.0))).epsilon(1e-14));
-    CHECK(load_lattice("hex_prism").volume_coefficient("voronoi") == doctest::Approx(std::sqrt(3.0) / 2).epsilon(1e-14));
+    CHECK(load_lattice("bcc").volume_coefficient("voronoi") ==
+          doctest::Approx(4 / (3 * std::sqrt(3.0))).epsilon(1e-14));
+    CHECK(load_lattice("hex_prism").volume_coefficient("voronoi") ==
+          doctest::Approx(std::sqrt(3.0) / 2).epsilon(1e-14));
     CHECK(load_lattice("triangular").volume_coefficient("ball") == doctest::Approx(M_PI / 4));
     CHECK(load_lattice("fcc").volume_coefficient("ball") == doctest::Approx(M_PI / 6));
     CHECK(load_lattice("fcc").volume_coefficient("cube") == 1.0);
@@ -74,8 +78,8 @@ TEST_CASE("voronoi volume coefficients of share/docs/method.md section 3")
 TEST_CASE("all seven lattices have the textbook first shell at d and shells up to 6 d at every site")
 {
     // Coordination numbers: the textbook values; hex_prism is 6 in the layer and 2 above and below.
-    const std::map<std::string, int> first = {{"triangular", 6}, {"square", 4}, {"fcc", 12}, {"bcc", 8},
-                                              {"sc", 6}, {"hcp", 12}, {"hex_prism", 8}};
+    const std::map<std::string, int> first = {{"triangular", 6}, {"square", 4}, {"fcc", 12},     {"bcc", 8},
+                                              {"sc", 6},         {"hcp", 12},   {"hex_prism", 8}};
     CHECK(shipped_lattice_names().size() == 7);
     for (const auto& name : shipped_lattice_names()) {
         CAPTURE(name);

@@ -73,7 +73,8 @@ TEST_CASE("every site's errors, tensor and first moment equal a brute-force sum"
                     CHECK(report.values.neighbours == expected.neighbours);
                     CHECK(report.values.eps_rho == doctest::Approx(expected.eps_rho).epsilon(1e-12));
                     CHECK((report.gradient.tensor - expected.tensor).norm() <= 1e-12 * (1 + expected.tensor.norm()));
-                    CHECK((report.gradient.first_moment - expected.first).norm() <= 1e-12 * (1 + expected.first.norm()));
+                    CHECK((report.gradient.first_moment - expected.first).norm() <=
+                          1e-12 * (1 + expected.first.norm()));
                     // Along gravity, the tensor gives the paper's error and the lateral part.
                     const Eigen::Vector3d e = lattice.gravity;
                     CHECK(report.values.eps_gradp == doctest::Approx(e.dot(expected.tensor * e)).epsilon(1e-12));
@@ -98,8 +99,9 @@ TEST_CASE("the tensor's eigenvalues bound eps_gradP over directions, and the eve
     HydrostaticErrors z(kernel, lattice, 0, a_p, Eigen::Vector3d(0, 0, -1), 1.3);
     for (double k : {0.85, 0.95, 1.2}) {
         auto g = z.tensor(k);
-        for (const Eigen::Vector3d& e : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, -1),
-                                         Eigen::Vector3d(1, 2, 3).normalized(), Eigen::Vector3d(-2, 1, 0.5).normalized()}) {
+        for (const Eigen::Vector3d& e :
+             {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 2, 3).normalized(),
+              Eigen::Vector3d(-2, 1, 0.5).normalized()}) {
             HydrostaticErrors along(kernel, lattice, 0, a_p, e, 1.3);
             const double v = along.at(k).eps_gradp;
             CHECK(v >= g.eigenvalues.front() - 1e-12);

@@ -1,8 +1,8 @@
 // Linear stability: the dispersion matrix against accelerations of a displaced periodic
 // block summed directly, the continuum limit, rotation invariance, the long-wave relation
 // with the hydrostatic errors, and eps_rho as a Poisson sum of the kernel's spectrum.
-#include "helpers.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "helpers.hpp"
 #include "lattices/shells.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
@@ -48,7 +48,8 @@ std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double
     std::vector<Eigen::Vector3d> shifts;
     for (int a = -1; a <= 1; ++a)
         for (int b = -1; b <= 1; ++b)
-            for (int c = (dim == 3 ? -1 : 0); c <= (dim == 3 ? 1 : 0); ++c) shifts.push_back(box * Eigen::Vector3d(a, b, c));
+            for (int c = (dim == 3 ? -1 : 0); c <= (dim == 3 ? 1 : 0); ++c)
+                shifts.push_back(box * Eigen::Vector3d(a, b, c));
     auto each_pair = [&](auto&& visit) {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j)
@@ -60,7 +61,9 @@ std::vector<Eigen::Vector3d> accelerations(const Kernel& kernel, int dim, double
                 }
     };
     std::vector<double> rho(n, mass * kernel.w(0, dim, k) / hd);
-    each_pair([&](std::size_t i, std::size_t, const Eigen::Vector3d&, double d) { rho[i] += mass * kernel.w(d / h, dim, k) / hd; });
+    each_pair([&](std::size_t i, std::size_t, const Eigen::Vector3d&, double d) {
+        rho[i] += mass * kernel.w(d / h, dim, k) / hd;
+    });
     std::vector<Eigen::Vector3d> a(n, Eigen::Vector3d::Zero());
     each_pair([&](std::size_t i, std::size_t j, const Eigen::Vector3d& r, double d) {
         const double pi_ = pressure(rho[i]) / (rho[i] * rho[i]);
@@ -125,8 +128,8 @@ void compare_with_block(const Kernel& kernel, const Lattice& lattice, double k, 
             }
         }
         CHECK_MESSAGE(worst < 1e-7 * std::max(1.0, scale), lattice.name << " " << kernel.name() << " branch " << branch
-                                                                      << " omega2 " << modes.omega2[branch]
-                                                                      << " worst " << worst);
+                                                                        << " omega2 " << modes.omega2[branch]
+                                                                        << " worst " << worst);
     }
 }
 
@@ -136,8 +139,8 @@ TEST_CASE("the dispersion matrix matches finite differences of directly summed S
 {
     for (const char* kernel_name : {"cubic_bspline", "wendland_c2"}) {
         const Kernel kernel = shipped_kernel(kernel_name);
-        compare_with_block(kernel, load_lattice("sc"), 1.1, 6, {1, 2, 0});           // a general direction
-        compare_with_block(kernel, load_lattice("sc"), 1.1, 6, {3, 0, 0});           // the zone boundary X
+        compare_with_block(kernel, load_lattice("sc"), 1.1, 6, {1, 2, 0}); // a general direction
+        compare_with_block(kernel, load_lattice("sc"), 1.1, 6, {3, 0, 0}); // the zone boundary X
         compare_with_block(kernel, load_lattice("fcc"), 1.05, 8, {1, 3, -2});
         compare_with_block(kernel, load_lattice("triangular"), 1.2, 8, {2, 3, 0});
     }
@@ -146,7 +149,8 @@ TEST_CASE("the dispersion matrix matches finite differences of directly summed S
     compare_with_block(shipped_kernel("cubic_bspline"), load_lattice("hcp"), 1.05, 5, {1, 0, 1});
 }
 
-TEST_CASE("with Tait's pressure at rest (DualSPHysics' CoefSound 20) the dispersion matrix, at gamma = rho c^2 / P0, matches directly summed accelerations")
+TEST_CASE("with Tait's pressure at rest (DualSPHysics' CoefSound 20) the dispersion matrix, at gamma = rho c^2 / P0, "
+          "matches directly summed accelerations")
 {
     // P0 = rho c^2 / 400, the top of DualSPHysics' hydrostatic range by default, and 0.01 rho c^2.
     for (const double p0 : {1.0 / 400, 0.01}) {
@@ -173,7 +177,8 @@ TEST_CASE("long waves: the sound speed follows from eps_rho, the gradient-error 
             for (const auto& p : high_symmetry_path(reciprocal_lattice(lattice))) {
                 if (p.kappa.norm() == 0) continue;
                 const Eigen::Vector3d n = p.kappa.normalized();
-                // omega^2 / kappa^2 -> (1 - 2/gamma) (I + E) n n^T (I + E) / (1 + eps_rho)^2 + (2/gamma) T / (1 + eps_rho).
+                // omega^2 / kappa^2 -> (1 - 2/gamma) (I + E) n n^T (I + E) / (1 + eps_rho)^2 + (2/gamma) T / (1 +
+                // eps_rho).
                 const Eigen::Vector3d g = (Eigen::Matrix3d::Identity() + E) * n;
                 const Eigen::Matrix3d limit = (1 - 2 / gamma) * g * g.transpose() / std::pow(1 + eps_rho, 2) +
                                               (2 / gamma) * dispersion.long_wave_stiffness(n) / (1 + eps_rho);
@@ -182,7 +187,9 @@ TEST_CASE("long waves: the sound speed follows from eps_rho, the gradient-error 
                 for (int i = 0; i < D; ++i) {
                     const double w2 = solver.eigenvalues()[i]; // a negative one is reported as -sqrt(-w2)
                     CHECK(speeds[static_cast<std::size_t>(i)] ==
-                          doctest::Approx(std::copysign(std::sqrt(std::abs(w2)), w2)).epsilon(1e-8).scale(1)); // in units of c
+                          doctest::Approx(std::copysign(std::sqrt(std::abs(w2)), w2))
+                              .epsilon(1e-8)
+                              .scale(1)); // in units of c
                 }
             }
         }
@@ -322,7 +329,7 @@ TEST_CASE("eps_rho is the Poisson sum of the kernel's spectrum over the reciproc
         if (lattice.dimension == 2) unit.basis.col(2) = Eigen::Vector3d::UnitZ();
         for (const auto& shell : lattice_shells(unit, 0, g_max / shortest))
             sum += shell.count * kernel.fourier(shell.radius * shortest * k, lattice.dimension, k);
-        CHECK_MESSAGE(std::abs(sum - errors.at(k).eps_rho) < 1e-9, lattice_name << ": Poisson " << sum << " shells "
-                                                                               << errors.at(k).eps_rho);
+        CHECK_MESSAGE(std::abs(sum - errors.at(k).eps_rho) < 1e-9,
+                      lattice_name << ": Poisson " << sum << " shells " << errors.at(k).eps_rho);
     }
 }

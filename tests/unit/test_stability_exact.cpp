@@ -3,9 +3,9 @@
 // the same for 3, 10 and 30 steps (and 1000 on one case, 500 in each half of a window on a
 // lattice of two sites); a window narrower than the step is found, with edges an independent
 // fine scan confirms; the recommended interval lies inside a stable and an accurate interval.
-#include "helpers.hpp"
 #include "analysis/acceptance.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "helpers.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/roots_stability.hpp"
@@ -59,7 +59,8 @@ void same_for_every_step_count(const char* kernel_name, const char* lattice_name
     const auto accurate = evaluate_acceptance(errors, k_min, k_max, 0.05).intervals;
     std::vector<RootsStability> runs;
     for (int s : steps) {
-        runs.push_back(roots_stability(kernel, lattice, k_min, k_max, {5.0 / 3.0, 100, s, HModel::fixed}, accurate, errors));
+        runs.push_back(
+            roots_stability(kernel, lattice, k_min, k_max, {5.0 / 3.0, 100, s, HModel::fixed}, accurate, errors));
         REQUIRE_FALSE(runs.back().refused());
     }
     for (std::size_t i = 1; i < runs.size(); ++i) {
@@ -114,23 +115,23 @@ double independent_lowest(const Kernel& kernel, const Lattice& lattice, double k
 } // namespace
 
 // One case per kernel and lattice, each well under the suite's 20 s a test.
-#define STEP_COUNT_CASE(LATTICE, KERNEL)                                                                              \
-    TEST_CASE("stable intervals and the recommended k do not depend on the step count: " KERNEL " on " LATTICE)      \
-    {                                                                                                                 \
-        same_for_every_step_count(KERNEL, LATTICE, 0.9, 1.1, {3, 10, 30});                                            \
+#define STEP_COUNT_CASE(LATTICE, KERNEL)                                                                               \
+    TEST_CASE("stable intervals and the recommended k do not depend on the step count: " KERNEL " on " LATTICE)        \
+    {                                                                                                                  \
+        same_for_every_step_count(KERNEL, LATTICE, 0.9, 1.1, {3, 10, 30});                                             \
     }
-#define STEP_COUNT_CASES(LATTICE)                                                                                     \
-    STEP_COUNT_CASE(LATTICE, "cubic_bspline")                                                                         \
-    STEP_COUNT_CASE(LATTICE, "desbrun_spiky")                                                                         \
-    STEP_COUNT_CASE(LATTICE, "johnson_quadratic")                                                                     \
-    STEP_COUNT_CASE(LATTICE, "liu_quartic")                                                                           \
-    STEP_COUNT_CASE(LATTICE, "morris_quintic")                                                                        \
-    STEP_COUNT_CASE(LATTICE, "muller_poly6")                                                                          \
-    STEP_COUNT_CASE(LATTICE, "quartic_bspline")                                                                       \
-    STEP_COUNT_CASE(LATTICE, "super_gaussian")                                                                        \
-    STEP_COUNT_CASE(LATTICE, "wendland_c2")                                                                           \
-    STEP_COUNT_CASE(LATTICE, "wendland_c2_shape")                                                                     \
-    STEP_COUNT_CASE(LATTICE, "wendland_c4")                                                                           \
+#define STEP_COUNT_CASES(LATTICE)                                                                                      \
+    STEP_COUNT_CASE(LATTICE, "cubic_bspline")                                                                          \
+    STEP_COUNT_CASE(LATTICE, "desbrun_spiky")                                                                          \
+    STEP_COUNT_CASE(LATTICE, "johnson_quadratic")                                                                      \
+    STEP_COUNT_CASE(LATTICE, "liu_quartic")                                                                            \
+    STEP_COUNT_CASE(LATTICE, "morris_quintic")                                                                         \
+    STEP_COUNT_CASE(LATTICE, "muller_poly6")                                                                           \
+    STEP_COUNT_CASE(LATTICE, "quartic_bspline")                                                                        \
+    STEP_COUNT_CASE(LATTICE, "super_gaussian")                                                                         \
+    STEP_COUNT_CASE(LATTICE, "wendland_c2")                                                                            \
+    STEP_COUNT_CASE(LATTICE, "wendland_c2_shape")                                                                      \
+    STEP_COUNT_CASE(LATTICE, "wendland_c4")                                                                            \
     STEP_COUNT_CASE(LATTICE, "wendland_c6")
 
 STEP_COUNT_CASES("sc")

@@ -25,7 +25,10 @@ namespace {
 
 constexpr double gamma_53 = 5.0 / 3.0;
 
-double lowest(const Dispersion& d, const Eigen::Matrix3d& b, const Eigen::Vector3d& f) { return d.omega2(b * f).front(); }
+double lowest(const Dispersion& d, const Eigen::Matrix3d& b, const Eigen::Vector3d& f)
+{
+    return d.omega2(b * f).front();
+}
 
 // From fractions f: steps of s along each axis while one improves, halving s otherwise.
 double pattern_search(const Dispersion& d, const Eigen::Matrix3d& b, Eigen::Vector3d f, double s)
@@ -69,8 +72,8 @@ double independent_minimum(const Dispersion& d, const Eigen::Matrix3d& b, int n)
     }
     std::sort(valleys.begin(), valleys.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     double best = points.empty() ? 0 : std::min_element(points.begin(), points.end(), [](const auto& x, const auto& y) {
-                                            return x.first < y.first;
-                                        })->first;
+                                           return x.first < y.first;
+                                       })->first;
     for (std::size_t i = 0; i < std::min<std::size_t>(16, valleys.size()); ++i)
         best = std::min(best, pattern_search(d, b, valleys[i].second, 0.5 / n));
     return best;
@@ -141,7 +144,8 @@ TEST_CASE("the k once reported stable in three unstable intervals are unstable, 
                                   << scan.lowest().omega2 / independent);
         }
         // The scan over k: none of these k is in a stable interval.
-        const auto over_k = stability_over_k(kernel, lattice, c.ks.front() - 0.01, c.ks.back() + 0.01, 4, gamma_53, 0, 1);
+        const auto over_k =
+            stability_over_k(kernel, lattice, c.ks.front() - 0.01, c.ks.back() + 0.01, 4, gamma_53, 0, 1);
         for (double k : c.ks) CHECK_FALSE(inside(over_k.stable, k));
     }
 }
@@ -192,23 +196,27 @@ int edges_against_independent_scan(const char* kernel_name, const char* lattice_
 } // namespace
 
 // One case per window, each well under the suite's 20 s a test.
-TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: morris_quintic on fcc")
+TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: "
+          "morris_quintic on fcc")
 {
     CHECK(edges_against_independent_scan("morris_quintic", "fcc", 0.86, 0.92, 6) == 2);
 }
 
-TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: cubic_bspline on fcc")
+TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: "
+          "cubic_bspline on fcc")
 {
     CHECK(edges_against_independent_scan("cubic_bspline", "fcc", 0.85, 1.10, 5) == 2);
 }
 
-TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: wendland_c2 on hcp")
+TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: "
+          "wendland_c2 on hcp")
 {
     // No stable interval in this window: every k looked at still agrees with its scan alone.
     CHECK(edges_against_independent_scan("wendland_c2", "hcp", 1.88, 1.93, 5) == 0);
 }
 
-TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: cubic_bspline on triangular")
+TEST_CASE("stable interval edges agree with a fine independent scan, and one k agrees with the scan over k: "
+          "cubic_bspline on triangular")
 {
     CHECK(edges_against_independent_scan("cubic_bspline", "triangular", 0.8, 1.3, 10) == 3);
 }
@@ -240,7 +248,8 @@ TEST_CASE("hcp: the long-wave figure is the acoustic branches', finite, while an
         std::vector<std::pair<double, double>> together; // (-in phase, omega^2 / kappa^2)
         for (int b = 0; b < d.branches(); ++b) {
             const auto& xi = modes.modes[static_cast<std::size_t>(b)];
-            together.emplace_back(-(xi.segment(0, 3) + xi.segment(3, 3)).squaredNorm(), modes.omega2[static_cast<std::size_t>(b)] / 1e-8);
+            together.emplace_back(-(xi.segment(0, 3) + xi.segment(3, 3)).squaredNorm(),
+                                  modes.omega2[static_cast<std::size_t>(b)] / 1e-8);
         }
         std::sort(together.begin(), together.end());
         return std::min({together[0].second, together[1].second, together[2].second});
@@ -248,7 +257,8 @@ TEST_CASE("hcp: the long-wave figure is the acoustic branches', finite, while an
     double brute = INFINITY;
     for (int i = 0; i < 400; ++i) {
         const double z = 1 - (2.0 * i + 1) / 400, phi = i * M_PI * (3 - std::sqrt(5.0));
-        brute = std::min(brute, acoustic({std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z}));
+        brute =
+            std::min(brute, acoustic({std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z}));
     }
     const auto found = long_wave_minimum(d);
     CHECK(std::isfinite(found.omega2_over_kappa2));
@@ -261,7 +271,8 @@ TEST_CASE("hcp: the long-wave figure is the acoustic branches', finite, while an
     CHECK(scan.growth_time() == doctest::Approx(1 / std::sqrt(-scan.lowest().omega2)));
 }
 
-TEST_CASE("mode kinds: bcc's two-site cubic cell has no optical modes once unfolded, and one site: kappa and its polarisation")
+TEST_CASE("mode kinds: bcc's two-site cubic cell has no optical modes once unfolded, and one site: kappa and its "
+          "polarisation")
 {
     const Kernel kernel = shipped_kernel("wendland_c2");
     const auto bcc = load_lattice("bcc");
@@ -295,7 +306,8 @@ TEST_CASE("the horizon: a slow instability is weak, listed with its growth time,
     // morris_quintic on fcc at k = 0.892: a transverse mode grows in about 330 d/c.
     const Kernel kernel = shipped_kernel("morris_quintic");
     const auto lattice = load_lattice("fcc");
-    const auto scan = scan_brillouin_zone(Dispersion(kernel, lattice, 0.892, gamma_53), reciprocal_lattice(lattice), 0, 1);
+    const auto scan =
+        scan_brillouin_zone(Dispersion(kernel, lattice, 0.892, gamma_53), reciprocal_lattice(lattice), 0, 1);
     REQUIRE_FALSE(scan.stable);
     const double tau = scan.growth_time();
     CHECK(tau == doctest::Approx(1 / std::sqrt(-scan.lowest().omega2)));
@@ -306,13 +318,14 @@ TEST_CASE("the horizon: a slow instability is weak, listed with its growth time,
     CHECK(inside(over_k.usable, 0.892));
 }
 
-TEST_CASE("the spectrum's symmetries are the crystal point groups, and a grid filled in by them is the grid computed in full")
+TEST_CASE(
+    "the spectrum's symmetries are the crystal point groups, and a grid filled in by them is the grid computed in full")
 {
     const Kernel kernel = shipped_kernel("cubic_bspline");
     // Oh (48) for sc, fcc and bcc written as a cubic cell; D6h (24) for hcp and the hexagonal
     // prism; C6v (12) for the triangular lattice, C4v (8) for the square one.
-    const std::pair<const char*, std::size_t> groups[] = {{"sc", 48},        {"fcc", 48},       {"bcc", 48},
-                                                          {"hcp", 24},       {"hex_prism", 24}, {"triangular", 12},
+    const std::pair<const char*, std::size_t> groups[] = {{"sc", 48},   {"fcc", 48},       {"bcc", 48},
+                                                          {"hcp", 24},  {"hex_prism", 24}, {"triangular", 12},
                                                           {"square", 8}};
     for (const auto& [name, order] : groups) {
         const std::string lattice_name = name;

@@ -1,10 +1,10 @@
 // The scans shared out over threads give the same answers, bit for bit, on 1, 2 and 3 threads:
 // the scan over k (its curve, the k looked at between and both kinds of interval), roots
 // --stability's document, and design's scan along the parameter.
-#include "helpers.hpp"
 #include "analysis/acceptance.hpp"
 #include "analysis/design.hpp"
 #include "analysis/hydrostatic_errors.hpp"
+#include "helpers.hpp"
 #include "stability/roots_stability.hpp"
 #include "stability/stability_over_k.hpp"
 
@@ -51,7 +51,8 @@ TEST_CASE("the scan over k is the same on 1, 2 and 3 threads: the quartic spline
     const Kernel kernel = shipped_kernel("quartic_bspline");
     const auto lattice = load_lattice("fcc");
     std::vector<StabilityOverK> runs;
-    for (int threads : {1, 2, 3}) runs.push_back(stability_over_k(kernel, lattice, 0.8, 1.3, 10, 5.0 / 3.0, 0, threads));
+    for (int threads : {1, 2, 3})
+        runs.push_back(stability_over_k(kernel, lattice, 0.8, 1.3, 10, 5.0 / 3.0, 0, threads));
     REQUIRE_FALSE(runs[0].between.empty());
     for (std::size_t i = 1; i < runs.size(); ++i) {
         CAPTURE(i + 1);
@@ -71,9 +72,9 @@ TEST_CASE("roots --stability is the same document on 1, 2 and 3 threads: the cub
     const auto accurate = evaluate_acceptance(errors, k_min, k_max, 0.05).intervals;
     std::vector<std::string> documents;
     for (int threads : {1, 2, 3})
-        documents.push_back(
-            roots_stability(kernel, lattice, k_min, k_max, {5.0 / 3.0, 100, 10, HModel::fixed, threads}, accurate, errors)
-                .json.dump());
+        documents.push_back(roots_stability(kernel, lattice, k_min, k_max, {5.0 / 3.0, 100, 10, HModel::fixed, threads},
+                                            accurate, errors)
+                                .json.dump());
     CHECK(documents[0].find("stable_intervals") != std::string::npos);
     CHECK(documents[1] == documents[0]);
     CHECK(documents[2] == documents[0]);

@@ -32,9 +32,11 @@ TEST_CASE("a study's stable k intervals hold up under a finer scan, and the over
         const auto lattice = load_lattice(c.lattice);
         const Kernel kernel = shipped_kernel(c.kernel_label);
         const auto reciprocal = reciprocal_lattice(lattice);
-        // A finer first grid (24 in 3D, 96 in 2D, three times the default) on each side of every edge inside the window.
+        // A finer first grid (24 in 3D, 96 in 2D, three times the default) on each side of every edge inside the
+        // window.
         auto stable_at = [&](double k) {
-            return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal, 3 * default_grid(lattice.dimension))
+            return scan_brillouin_zone(Dispersion(kernel, lattice, k, gamma), reciprocal,
+                                       3 * default_grid(lattice.dimension))
                 .stable;
         };
         CHECK(c.over_k.samples.front().k == doctest::Approx(0.8));

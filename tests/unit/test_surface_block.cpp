@@ -44,7 +44,8 @@ struct HalfSpace {
             for (int b = -box; b <= box; ++b)
                 for (int c = (dim == 3 ? -box : 0); c <= (dim == 3 ? box : 0); ++c)
                     for (std::size_t t = 0; t < lattice.motif.size(); ++t) {
-                        Eigen::Vector3d x = lattice.basis * (Eigen::Vector3d(a, b, c) + lattice.motif[t] - lattice.motif[s]);
+                        Eigen::Vector3d x =
+                            lattice.basis * (Eigen::Vector3d(a, b, c) + lattice.motif[t] - lattice.motif[s]);
                         double r = x.norm();
                         if (r < 1e-12 || r / k > kernel.support() * (1 + 1e-12)) continue;
                         visit(x, r, static_cast<int>(t));
@@ -67,10 +68,10 @@ struct HalfSpace {
         neighbours(s, [&](const Eigen::Vector3d& x, double r, int t) {
             double depth_j = depth_i + e.dot(x);
             if (depth_j < -1e-9) return;
-            double weight = form == GradientForm::sum          ? depth_i + depth_j
-                            : form == GradientForm::difference ? depth_j - depth_i
-                                                               : rho_i * (depth_i / (rho_i * rho_i) +
-                                                                          depth_j / std::pow(density(t, depth_j), 2));
+            double weight = form == GradientForm::sum ? depth_i + depth_j
+                            : form == GradientForm::difference
+                                ? depth_j - depth_i
+                                : rho_i * (depth_i / (rho_i * rho_i) + depth_j / std::pow(density(t, depth_j), 2));
             gradient += weight * kernel.dw(r / k, dim, k) * (-e.dot(x)) / r;
         });
         return {rho_i - 1, a_p * gradient / (std::pow(k, dim) * k) - 1};
@@ -102,9 +103,9 @@ TEST_CASE("surface profiles equal a half-space brute-force sum, every form, ever
         const char* lattice;
         Eigen::Vector3d gravity;
     };
-    const Case cases[] = {{"triangular", {0, -1, 0}}, {"square", {0, -1, 0}},  {"fcc", {0, 0, -1}},
-                          {"hcp", {0, 0, -1}},        {"hcp", {-1, 0, 0}},     {"honeycomb", {0, -1, 0}},
-                          {"honeycomb", {-1, 0, 0}},  {"kagome", {0, -1, 0}},  {"lieb", {0, -1, 0}},
+    const Case cases[] = {{"triangular", {0, -1, 0}},  {"square", {0, -1, 0}}, {"fcc", {0, 0, -1}},
+                          {"hcp", {0, 0, -1}},         {"hcp", {-1, 0, 0}},    {"honeycomb", {0, -1, 0}},
+                          {"honeycomb", {-1, 0, 0}},   {"kagome", {0, -1, 0}}, {"lieb", {0, -1, 0}},
                           {"skewed_pair", {0, -1, 0}}, {"diamond", {0, 0, -1}}};
     int multi_site_planes = 0;
     for (const auto& c : cases)
@@ -144,10 +145,12 @@ TEST_CASE("surface profiles equal a half-space brute-force sum, every form, ever
                         if (profile.first_moments[static_cast<std::size_t>(v.site)].norm() > 1e-9) continue;
                         if (form == GradientForm::monaghan && !equal_densities) continue;
                         auto b = HydrostaticErrors(kernel, lattice, v.site, a_p, c.gravity, k).at(k);
-                        double gradp = form == GradientForm::monaghan ? (1 + b.eps_gradp) / (1 + b.eps_rho) - 1 : b.eps_gradp;
+                        double gradp =
+                            form == GradientForm::monaghan ? (1 + b.eps_gradp) / (1 + b.eps_rho) - 1 : b.eps_gradp;
                         CHECK(v.eps_rho == doctest::Approx(b.eps_rho).epsilon(1e-12));
                         CHECK(v.eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
-                        CHECK(profile.bulk.sites[static_cast<std::size_t>(v.site)].eps_gradp == doctest::Approx(gradp).epsilon(1e-12));
+                        CHECK(profile.bulk.sites[static_cast<std::size_t>(v.site)].eps_gradp ==
+                              doctest::Approx(gradp).epsilon(1e-12));
                     }
                 }
             }
@@ -199,9 +202,9 @@ TEST_CASE("block: interior particles equal the bulk shell sums, top layers the s
         const char* lattice;
         std::array<long long, 3> cells;
     };
-    for (const auto& c : {Case{"triangular", {16, 24, 1}}, Case{"fcc", {8, 8, 20}}, Case{"hcp", {8, 8, 11}},
-                          Case{"bcc", {8, 8, 18}}, Case{"honeycomb", {12, 16, 1}}, Case{"kagome", {10, 14, 1}},
-                          Case{"hcp_a", {8, 8, 32}}})
+    for (const auto& c :
+         {Case{"triangular", {16, 24, 1}}, Case{"fcc", {8, 8, 20}}, Case{"hcp", {8, 8, 11}}, Case{"bcc", {8, 8, 18}},
+          Case{"honeycomb", {12, 16, 1}}, Case{"kagome", {10, 14, 1}}, Case{"hcp_a", {8, 8, 32}}})
         for (auto form : {GradientForm::sum, GradientForm::difference, GradientForm::monaghan}) {
             auto lattice = test_lattice(c.lattice);
             Kernel kernel = shipped_kernel("cubic_bspline");
@@ -228,13 +231,15 @@ TEST_CASE("block: interior particles equal the bulk shell sums, top layers the s
                 if (deepest - n < settled + 2) continue; // near the free bottom
                 if (n < settled) {
                     const auto& sites = profile.layers[static_cast<std::size_t>(n)].sites;
-                    auto v = std::find_if(sites.begin(), sites.end(), [&](const SiteLayerErrors& x) { return x.site == site; });
+                    auto v = std::find_if(sites.begin(), sites.end(),
+                                          [&](const SiteLayerErrors& x) { return x.site == site; });
                     REQUIRE(v != sites.end()); // the block's plane n holds the profile's sites
                     CHECK(std::abs(block.eps_rho[i] - v->eps_rho) <= 1e-12 * (1 + std::abs(v->eps_rho)));
                     CHECK(std::abs(block.eps_gradp[i] - v->eps_gradp) <= 1e-12 * (1 + std::abs(v->eps_gradp)));
                     ++compared_top;
                 } else {
-                    auto expected = HydrostaticErrors(kernel, lattice, site, options.a_p, block.gravity, options.k).at(options.k);
+                    auto expected =
+                        HydrostaticErrors(kernel, lattice, site, options.a_p, block.gravity, options.k).at(options.k);
                     CHECK(std::abs(block.eps_rho[i] - expected.eps_rho) <= 1e-12);
                     CHECK(std::abs(block.eps_gradp[i] - profile.bulk.sites[static_cast<std::size_t>(site)].eps_gradp) <=
                           1e-12 * (1 + n));
@@ -273,15 +278,17 @@ TEST_CASE("block sizes are checked before anything is allocated")
     BlockOptions options;
     options.k = 1.2;
     options.cells = {0, 10, 10};
-    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("positive number of cells"), Error);
+    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("positive number of cells"),
+                         Error);
     options.cells = {-3, 10, 10};
-    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("positive number of cells"), Error);
+    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("positive number of cells"),
+                         Error);
     options.cells = {100000, 100000, 100000};
     CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("more than the limit"), Error);
     options.cells = {4, 4, 4};
     options.periodic = true;
-    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options), doctest::Contains("a periodic block needs more than"),
-                         Error);
+    CHECK_THROWS_WITH_AS(evaluate_block(kernel, lattice, options),
+                         doctest::Contains("a periodic block needs more than"), Error);
 }
 
 // Every pair of the block (and, for a periodic block, of its lateral images), summed
@@ -298,7 +305,8 @@ BruteForceBlock brute_force_block(const Kernel& kernel, const Lattice& lattice, 
     const double k = options.k, reach = kernel.support() * k;
     const Eigen::Vector3d g = block.gravity;
     double top = -INFINITY;
-    for (std::size_t i = 0; i < n; ++i) top = std::max(top, -g.dot(Eigen::Vector3d(block.x[i], block.y[i], block.z[i])));
+    for (std::size_t i = 0; i < n; ++i)
+        top = std::max(top, -g.dot(Eigen::Vector3d(block.x[i], block.y[i], block.z[i])));
     std::vector<Eigen::Vector3d> shifts{Eigen::Vector3d::Zero()};
     if (options.periodic) {
         shifts.clear();
@@ -343,8 +351,8 @@ TEST_CASE("block: every particle equals a brute-force sum over all pairs, free a
         const char* lattice;
         std::array<long long, 3> cells;
     };
-    for (const auto& c : {Case{"triangular", {9, 7, 1}}, Case{"honeycomb", {7, 6, 1}}, Case{"fcc", {6, 6, 4}},
-                          Case{"hcp", {6, 6, 3}}})
+    for (const auto& c :
+         {Case{"triangular", {9, 7, 1}}, Case{"honeycomb", {7, 6, 1}}, Case{"fcc", {6, 6, 4}}, Case{"hcp", {6, 6, 3}}})
         for (bool periodic : {false, true})
             for (auto form : {GradientForm::sum, GradientForm::difference, GradientForm::monaghan}) {
                 auto lattice = test_lattice(c.lattice);
@@ -363,8 +371,9 @@ TEST_CASE("block: every particle equals a brute-force sum over all pairs, free a
                 const auto expected = brute_force_block(kernel, lattice, options, block);
                 double worst = 0;
                 for (std::size_t i = 0; i < block.particles(); ++i)
-                    worst = std::max({worst, std::abs(block.eps_rho[i] - expected.eps_rho[i]) / (1 + std::abs(expected.eps_rho[i])),
-                                      std::abs(block.eps_gradp[i] - expected.eps_gradp[i]) / (1 + std::abs(expected.eps_gradp[i]))});
+                    worst = std::max(
+                        {worst, std::abs(block.eps_rho[i] - expected.eps_rho[i]) / (1 + std::abs(expected.eps_rho[i])),
+                         std::abs(block.eps_gradp[i] - expected.eps_gradp[i]) / (1 + std::abs(expected.eps_gradp[i]))});
                 CHECK(worst < 1e-12);
             }
 }

@@ -41,10 +41,11 @@ TEST_CASE("value checks: k intervals as one named value or two options")
     });
     CHECK(pair.first == "--kmin 2 --kmax 1: expected 0 < kmin <= kmax <= 100");
     CHECK(pair.second == ExitCode::usage);
-    CHECK(refusal([] { check_k_interval(1, 101, ValueSource::option("--kmin"), ValueSource::option("--kmax")); })
-              .first == "--kmin 1 --kmax 101: expected 0 < kmin < kmax <= 100");
-    CHECK(refusal([] { check_k_interval(0, 1, ValueSource::argument("kmin"), ValueSource::argument("kmax")); })
-              .first == "kmin = 0, kmax = 1: expected 0 < kmin < kmax <= 100");
+    CHECK(refusal([] {
+              check_k_interval(1, 101, ValueSource::option("--kmin"), ValueSource::option("--kmax"));
+          }).first == "--kmin 1 --kmax 101: expected 0 < kmin < kmax <= 100");
+    CHECK(refusal([] { check_k_interval(0, 1, ValueSource::argument("kmin"), ValueSource::argument("kmax")); }).first ==
+          "kmin = 0, kmax = 1: expected 0 < kmin < kmax <= 100");
 }
 
 TEST_CASE("value checks: identifiers and suggestions")

@@ -71,7 +71,8 @@ TEST_CASE("vtk xml: a .pvd lists its files in order with their times, and a seri
     write_pvd(out, {{0, "a_0.vtu"}, {0.25, "a&b_1.vtu"}});
     CHECK(out.str().find("<VTKFile type=\"Collection\"") != std::string::npos);
     CHECK(out.str().find("<DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"a_0.vtu\"/>\n"
-                         "    <DataSet timestep=\"0.25\" group=\"\" part=\"0\" file=\"a&amp;b_1.vtu\"/>") != std::string::npos);
+                         "    <DataSet timestep=\"0.25\" group=\"\" part=\"0\" file=\"a&amp;b_1.vtu\"/>") !=
+          std::string::npos);
     CHECK(pvd_member_path("out/run.pvd", 7, 200) == std::filesystem::path("out/run_007.vtu"));
     CHECK(pvd_member_path("run.pvd", 0, 9) == std::filesystem::path("run_0.vtu"));
 }
@@ -85,6 +86,7 @@ TEST_CASE("vtk xml: --vtk takes .vtk and .vtu, in any case, and names the option
         FAIL("a.txt was taken");
     } catch (const Error& e) {
         CHECK(e.code() == ExitCode::usage);
-        CHECK(std::string(e.what()) == "--vtk a.txt: expected a file name ending in .vtk (legacy VTK) or .vtu (ParaView's XML format)");
+        CHECK(std::string(e.what()) ==
+              "--vtk a.txt: expected a file name ending in .vtk (legacy VTK) or .vtu (ParaView's XML format)");
     }
 }

@@ -25,17 +25,19 @@ double wendland_bias(const Kernel& kernel, int dimension, double nngb, const Val
         const char* kernel;
         double eps100, alpha;
     };
-    static constexpr Parameters table[] = {{"wendland_c2", 0.0294, 0.977}, {"wendland_c4", 0.01342, 1.579},
+    static constexpr Parameters table[] = {{"wendland_c2", 0.0294, 0.977},
+                                           {"wendland_c4", 0.01342, 1.579},
                                            {"wendland_c6", 0.0116, 2.236}};
-    const auto* p =
-        std::find_if(std::begin(table), std::end(table), [&](const Parameters& e) { return kernel.name() == e.kernel; });
+    const auto* p = std::find_if(std::begin(table), std::end(table),
+                                 [&](const Parameters& e) { return kernel.name() == e.kernel; });
     if (p == std::end(table) || dimension != 3)
         throw Error(source.code, fmt::format("GADGET-4's WENDLAND_BIAS_CORRECTION is for its Wendland C2, C4 and C6 "
                                              "kernels in 3D only (src/sph/kernel.h), not {} in {}D",
                                              kernel.name(), dimension));
     if (nngb != std::floor(nngb))
-        source.fail(fmt::format("{:g}: GADGET-4's DesNumNgb is an integer (src/data/allvars.h); expected a whole number",
-                                nngb));
+        source.fail(
+            fmt::format("{:g}: GADGET-4's DesNumNgb is an integer (src/data/allvars.h); expected a whole number",
+                        nngb));
     return p->eps100 * std::pow(nngb / 100, -p->alpha);
 }
 

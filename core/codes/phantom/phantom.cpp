@@ -16,9 +16,9 @@ CodeProfile phantom_code()
     p.from_sph_density = true;
     p.count_source = "part.F90, rhoh: rho = m (hfact / h)^3 against dens.F90's sum_j m_j W_ij";
     p.dimensions = space;
-    p.kernels = {{"cubic", "cubic_bspline", space},         {"quartic", "quartic_bspline", space},
-                 {"quintic", "morris_quintic", space},      {"WendlandC2", "wendland_c2", space},
-                 {"WendlandC4", "wendland_c4", space},      {"WendlandC6", "wendland_c6", space}};
+    p.kernels = {{"cubic", "cubic_bspline", space},    {"quartic", "quartic_bspline", space},
+                 {"quintic", "morris_quintic", space}, {"WendlandC2", "wendland_c2", space},
+                 {"WendlandC4", "wendland_c4", space}, {"WendlandC6", "wendland_c6", space}};
     p.layout = CodeLayout::phantom; // a full dump (write_fulldump), which read_dump starts from
     p.support_per_h = [](const Kernel& kernel, int) { return kernel.support(); }; // its radkern
     p.parameter_of = [](const Kernel&, int, double k, double spacing) { return k / spacing; };

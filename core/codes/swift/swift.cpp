@@ -22,8 +22,8 @@ CodeProfile swift_code()
     // runner_ghost.c then takes wcount = rho / m_i: h^D sum_j (m_j / m_i) W_ij = eta^D, h = eta (m_i / rho_i)^(1/D).
     p.count_switch = "SPH:use_mass_weighted_num_ngb: 1";
     p.dimensions = all;
-    p.kernels = {{"Cubic spline (M4)", "cubic_bspline", all},  {"Quartic spline (M5)", "quartic_bspline", all},
-                 {"Quintic spline (M6)", "morris_quintic", all}, {"Wendland C2", "wendland_c2", plane_and_space},
+    p.kernels = {{"Cubic spline (M4)", "cubic_bspline", all},     {"Quartic spline (M5)", "quartic_bspline", all},
+                 {"Quintic spline (M6)", "morris_quintic", all},  {"Wendland C2", "wendland_c2", plane_and_space},
                  {"Wendland C4", "wendland_c4", plane_and_space}, {"Wendland C6", "wendland_c6", plane_and_space}};
     p.layout = CodeLayout::swift;
     p.support_per_h = swift_gamma;

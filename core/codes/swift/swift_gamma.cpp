@@ -53,7 +53,8 @@ double swift_gamma(const Kernel& kernel, int dim)
     const double gamma = gamma_by_quadrature(kernel, dim);
     std::lock_guard lock(mutex);
     if (known.size() >= 16) known.erase(known.begin());
-    known.push_back({kernel.shared_definition(), kernel.shared_definition().get(), kernel.parameter_values(), dim, gamma});
+    known.push_back(
+        {kernel.shared_definition(), kernel.shared_definition().get(), kernel.parameter_values(), dim, gamma});
     return gamma;
 }
 

@@ -21,7 +21,7 @@ namespace {
 
 CallSlot watched[watched_threads];
 thread_local CallSlot* my_slot = nullptr; // trivial: cheap to reach, and from a signal handler
-thread_local CallSlot unwatched;           // for a thread that found every watched slot taken
+thread_local CallSlot unwatched;          // for a thread that found every watched slot taken
 
 // A stack for the fault handler, so that a plugin that overflows its stack is still reported.
 constexpr std::size_t handler_stack_bytes = 64 * 1024;
@@ -75,8 +75,7 @@ CallSlot* claim_slot()
 
 PluginCall::PluginCall(const std::string& file, const std::string& kernel, const char* function)
     : plugin_(printable_text(file) + ": plugin kernel " + printable_text(kernel)), function_(function)
-{
-}
+{}
 
 PluginCallGuard::PluginCallGuard(const PluginCall& call) noexcept : slot_(my_slot ? my_slot : claim_slot())
 {

@@ -73,17 +73,18 @@ void patch(void** slot, void* target, const Range& relro)
     ::mprotect(start, page, PROT_READ);
 }
 
-void redirect_table(const link_map* map, const ElfW(Rela)* table, std::size_t bytes, const ElfW(Sym)* symbols,
+void redirect_table(const link_map* map, const ElfW(Rela) * table, std::size_t bytes, const ElfW(Sym) * symbols,
                     const char* names, const Range& relro)
 {
     for (std::size_t i = 0; i < bytes / sizeof(ElfW(Rela)); ++i) {
         const auto type = ELF64_R_TYPE(table[i].r_info);
         if (type != R_X86_64_JUMP_SLOT && type != R_X86_64_GLOB_DAT) continue;
         const char* name = names + symbols[ELF64_R_SYM(table[i].r_info)].st_name;
-        void* target = std::strcmp(name, "exit") == 0 ? reinterpret_cast<void*>(exit_from_plugin)
-                       : std::strcmp(name, "_exit") == 0 || std::strcmp(name, "_Exit") == 0 || std::strcmp(name, "quick_exit") == 0
-                           ? reinterpret_cast<void*>(quick_exit_from_plugin)
-                           : nullptr;
+        void* target =
+            std::strcmp(name, "exit") == 0 ? reinterpret_cast<void*>(exit_from_plugin)
+            : std::strcmp(name, "_exit") == 0 || std::strcmp(name, "_Exit") == 0 || std::strcmp(name, "quick_exit") == 0
+                ? reinterpret_cast<void*>(quick_exit_from_plugin)
+                : nullptr;
         if (target) patch(reinterpret_cast<void**>(map->l_addr + table[i].r_offset), target, relro);
     }
 }

@@ -1,8 +1,8 @@
 #include "kernels/plugin_host/plugin_faults.hpp"
 
+#include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
-#include "kernels/plugin_host/plugin_call_guard.hpp"
 
 #include <atomic>
 #include <cstdlib>

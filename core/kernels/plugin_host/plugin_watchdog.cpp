@@ -1,9 +1,9 @@
 #include "kernels/plugin_host/plugin_watchdog.hpp"
 
-#include "support/error.hpp"
-#include "support/process/interruption.hpp"
 #include "kernels/plugin_host/plugin_call_guard.hpp"
 #include "kernels/plugin_host/plugin_faults.hpp"
+#include "support/error.hpp"
+#include "support/process/interruption.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -18,7 +18,7 @@ namespace sphkern {
 namespace {
 
 constexpr auto tick = std::chrono::milliseconds(100);
-constexpr int interrupt_ticks = 8; // a signal is obeyed within 0.8 s and a tick
+constexpr int interrupt_ticks = 8;  // a signal is obeyed within 0.8 s and a tick
 constexpr int long_call_ticks = 10; // a call this long is logged (tests wait for the line)
 
 // How long each watched thread has been inside one and the same call.
@@ -38,7 +38,9 @@ struct Watch {
 [[noreturn]] void end_for_interrupt(const PluginCall& call)
 {
     const int sig = interrupting_signal();
-    const char* name = sig == SIGINT ? "interrupted (SIGINT)" : sig == SIGTERM ? "terminated (SIGTERM)" : "hung up (SIGHUP)";
+    const char* name = sig == SIGINT    ? "interrupted (SIGINT)"
+                       : sig == SIGTERM ? "terminated (SIGTERM)"
+                                        : "hung up (SIGHUP)";
     const char* parts[] = {name, " while ", call.plugin(), " was in ", call.function(), ": nothing was written"};
     end_process_with_line(static_cast<int>(ExitCode::interrupted), parts, 6);
 }

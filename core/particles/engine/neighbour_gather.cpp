@@ -50,9 +50,9 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
     const double* __restrict x = in.x;
     const double* __restrict y = in.y;
     const double* __restrict z = in.z;
-    const double *__restrict a = in.a, *__restrict b = in.b;
-    double *__restrict dx = out.dx, *__restrict dy = out.dy, *__restrict dz = out.dz;
-    double *__restrict r2_out = out.r2, *__restrict va = out.a, *__restrict vb = out.b;
+    const double* __restrict a = in.a, * __restrict b = in.b;
+    double* __restrict dx = out.dx, * __restrict dy = out.dy, * __restrict dz = out.dz;
+    double* __restrict r2_out = out.r2, * __restrict va = out.a, * __restrict vb = out.b;
     std::size_t at_zero = 0;
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
@@ -73,7 +73,7 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 // memory is slow on some processors); the outputs have room for eight more.
 template <bool with_b, bool with_r2>
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
-                                                                     std::size_t& zeros)
+                                                                    std::size_t& zeros)
 {
     const double *x = in.x, *y = in.y, *z = in.z, *a = in.a, *b = in.b;
     double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
@@ -86,7 +86,8 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
         const __m512d ex = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, x + c), xi);
         const __m512d ey = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, y + c), yi);
         const __m512d ez = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, z + c), zi);
-        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
+        const __m512d r2 =
+            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
         const __mmask8 zeros_here = _mm512_mask_cmp_pd_mask(live, r2, zero, _CMP_EQ_OQ);
         const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, r2, reach2, _CMP_LE_OQ) & __mmask8(~zeros_here);
         at_zero += static_cast<unsigned>(std::popcount(static_cast<unsigned>(zeros_here)));
@@ -137,14 +138,15 @@ __attribute__((target("avx2"))) inline __m256i live_lanes(std::size_t left)
 }
 
 // The mask of four r2 at most reach2 (near) and of those at 0.
-__attribute__((target("avx2"))) inline void near_and_zero(const double* x, const double* y, const double* z,
-                                                         __m256d xi, __m256d yi, __m256d zi, __m256d reach2,
-                                                         unsigned& near, unsigned& zero)
+__attribute__((target("avx2"))) inline void near_and_zero(const double* x, const double* y, const double* z, __m256d xi,
+                                                          __m256d yi, __m256d zi, __m256d reach2, unsigned& near,
+                                                          unsigned& zero)
 {
     const __m256d ex = _mm256_sub_pd(_mm256_loadu_pd(x), xi);
     const __m256d ey = _mm256_sub_pd(_mm256_loadu_pd(y), yi);
     const __m256d ez = _mm256_sub_pd(_mm256_loadu_pd(z), zi);
-    const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+    const __m256d r2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
     near = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, reach2, _CMP_LE_OQ)));
     zero = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_setzero_pd(), _CMP_EQ_OQ)));
 }
@@ -177,11 +179,11 @@ __attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& i
     }
     zeros += at_zero;
     // Local copies: the compiler need not reload them after every store.
-    const double *__restrict x = in.x, *__restrict y = in.y, *__restrict z = in.z;
-    const double *__restrict a = in.a, *__restrict b = in.b;
+    const double* __restrict x = in.x, * __restrict y = in.y, * __restrict z = in.z;
+    const double* __restrict a = in.a, * __restrict b = in.b;
     const double x0 = in.xi, y0 = in.yi, z0 = in.zi;
-    double *__restrict dx = out.dx + m, *__restrict dy = out.dy + m, *__restrict dz = out.dz + m;
-    double *__restrict r2 = out.r2 + m, *__restrict va = out.a + m, *__restrict vb = out.b + m;
+    double* __restrict dx = out.dx + m, * __restrict dy = out.dy + m, * __restrict dz = out.dz + m;
+    double* __restrict r2 = out.r2 + m, * __restrict va = out.a + m, * __restrict vb = out.b + m;
     const std::uint32_t* __restrict kept_index = index;
     for (std::size_t j = 0; j < kept; ++j) {
         const std::uint32_t k = kept_index[j];
@@ -230,10 +232,11 @@ AppendWithin append_within_for(CompressPath path)
             throw CoincidentParticles(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})",
                                                   set_name, std::min(i, k), std::max(i, k), xi, yi, zi),
                                       std::min(i, k), std::max(i, k));
-        throw CoincidentParticles(fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance "
-                                              "to be a number (it underflows to 0); expected distinct positions",
-                                              set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)),
-                                  std::min(i, k), std::max(i, k));
+        throw CoincidentParticles(
+            fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance "
+                        "to be a number (it underflows to 0); expected distinct positions",
+                        set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)),
+            std::min(i, k), std::max(i, k));
     }
     throw std::logic_error("a duplicate position that is not there");
 }
@@ -276,10 +279,10 @@ namespace {
 std::size_t append_near_box_scalar(const RunInput& in, const double* lo, const double* hi, ClusterCandidates& out,
                                    std::size_t m)
 {
-    const double *__restrict x = in.x, *__restrict y = in.y, *__restrict z = in.z;
-    const double *__restrict a = in.a, *__restrict b = in.b;
-    double *__restrict ox = out.x.data(), *__restrict oy = out.y.data(), *__restrict oz = out.z.data();
-    double *__restrict oa = out.a.data(), *__restrict ob = out.b.data();
+    const double* __restrict x = in.x, * __restrict y = in.y, * __restrict z = in.z;
+    const double* __restrict a = in.a, * __restrict b = in.b;
+    double* __restrict ox = out.x.data(), * __restrict oy = out.y.data(), * __restrict oz = out.z.data();
+    double* __restrict oa = out.a.data(), * __restrict ob = out.b.data();
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = std::max({0.0, lo[0] - x[c], x[c] - hi[0]});
         const double ey = std::max({0.0, lo[1] - y[c], y[c] - hi[1]});
@@ -311,10 +314,14 @@ __attribute__((target("avx512f"))) std::size_t append_near_box_avx512(const RunI
         // How far outside [lo, hi] along each axis (0 inside); maskz_max, as plain max reads an
         // undefined register that GCC 12 warns about.
         const __mmask8 all = 0xff;
-        const __m512d ex = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lx, px)), _mm512_sub_pd(px, hx));
-        const __m512d ey = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(ly, py)), _mm512_sub_pd(py, hy));
-        const __m512d ez = _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lz, pz)), _mm512_sub_pd(pz, hz));
-        const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
+        const __m512d ex =
+            _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lx, px)), _mm512_sub_pd(px, hx));
+        const __m512d ey =
+            _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(ly, py)), _mm512_sub_pd(py, hy));
+        const __m512d ez =
+            _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lz, pz)), _mm512_sub_pd(pz, hz));
+        const __m512d d2 =
+            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
         const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, d2, reach2, _CMP_LE_OQ);
         _mm512_storeu_pd(ox + m, _mm512_maskz_compress_pd(inside, px));
         _mm512_storeu_pd(oy + m, _mm512_maskz_compress_pd(inside, py));
@@ -344,7 +351,8 @@ __attribute__((target("avx2"))) std::size_t append_near_box_avx2(const RunInput&
         const __m256d ex = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(lx, px)), _mm256_sub_pd(px, hx));
         const __m256d ey = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(ly, py)), _mm256_sub_pd(py, hy));
         const __m256d ez = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(lz, pz)), _mm256_sub_pd(pz, hz));
-        const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+        const __m256d d2 =
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
         const unsigned inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live))) &
                                 static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, reach2, _CMP_LE_OQ)));
         const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(compress_table.row[inside]));
@@ -386,7 +394,8 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
     for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
         if (!grid.visited(p)) continue;
         const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
-        for (int d = 0; d < 3; ++d) lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
+        for (int d = 0; d < 3; ++d)
+            lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
         out.reach = std::max(out.reach, reach[p]);
         any = true;
     }
@@ -408,17 +417,19 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
                          const std::string& set_name, Neighbours& nb, bool with_r2)
 {
     const CompressPath path = chosen_path();
-    const AppendWithin append = cluster.with_b ? (with_r2 ? append_within_for<true, true>(path) : append_within_for<true, false>(path))
-                                               : (with_r2 ? append_within_for<false, true>(path) : append_within_for<false, false>(path));
-    const RunInput in{cluster.x.data(), cluster.y.data(), cluster.z.data(), cluster.with_a ? cluster.a.data() : nullptr,
-                      cluster.b.data(),
-                      cluster.count, grid.x()[p], grid.y()[p], grid.z()[p], reach2};
+    const AppendWithin append =
+        cluster.with_b ? (with_r2 ? append_within_for<true, true>(path) : append_within_for<true, false>(path))
+                       : (with_r2 ? append_within_for<false, true>(path) : append_within_for<false, false>(path));
+    const RunInput in{cluster.x.data(), cluster.y.data(),
+                      cluster.z.data(), cluster.with_a ? cluster.a.data() : nullptr,
+                      cluster.b.data(), cluster.count,
+                      grid.x()[p],      grid.y()[p],
+                      grid.z()[p],      reach2};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m = append(in,
-                                 {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(),
-                                  nb.index.data()},
-                                 0, zeros);
+    const std::size_t m =
+        append(in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(), nb.index.data()},
+               0, zeros);
     require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)
         nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
@@ -429,8 +440,8 @@ double search_reach(double support_radius) { return support_radius * std::sqrt(1
 
 SPHKERN_ENGINE_CLONES void distances(Neighbours& nb, std::size_t padded, double inv_h)
 {
-    const double *__restrict dx = nb.dx.data(), *__restrict dy = nb.dy.data(), *__restrict dz = nb.dz.data();
-    double *__restrict q = nb.q.data(), *__restrict inv_r = nb.inv_r.data();
+    const double* __restrict dx = nb.dx.data(), * __restrict dy = nb.dy.data(), * __restrict dz = nb.dz.data();
+    double* __restrict q = nb.q.data(), * __restrict inv_r = nb.inv_r.data();
     for (std::size_t j = 0; j < padded; ++j) {
         const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
         q[j] = r * inv_h;
@@ -446,7 +457,8 @@ SPHKERN_ENGINE_CLONES void fill_distances(Neighbours& nb)
     for (std::size_t j = 0; j < nb.count; ++j) r[j] = std::sqrt(r2[j]);
 }
 
-SPHKERN_ENGINE_CLONES void scale_distances(const double* __restrict r, std::size_t n, double factor, double* __restrict q)
+SPHKERN_ENGINE_CLONES void scale_distances(const double* __restrict r, std::size_t n, double factor,
+                                           double* __restrict q)
 {
     for (std::size_t j = 0; j < n; ++j) q[j] = r[j] * factor;
 }

@@ -17,7 +17,9 @@ namespace sphkern {
 // sum over them is defined. Its ids let a caller that moved the particles say how they got there.
 class CoincidentParticles : public Error {
 public:
-    CoincidentParticles(const std::string& message, std::uint64_t a, std::uint64_t b) : Error(ExitCode::input, message), first(a), second(b) {}
+    CoincidentParticles(const std::string& message, std::uint64_t a, std::uint64_t b)
+        : Error(ExitCode::input, message), first(a), second(b)
+    {}
     std::uint64_t first, second;
 };
 

@@ -91,7 +91,8 @@ GridGeometry GridGeometry::of(const std::array<double, 6>& range, std::size_t co
         g.lo[a] = range[2 * a];
         // Bins at least reach / stencil_reach wide (a quarter of that along x), so that the
         // block of bins around a bin holds every neighbour (wider bins are never wrong).
-        const double per_reach = static_cast<double>(NeighbourGrid::stencil_reach * (a == 0 ? NeighbourGrid::x_bins_per_reach : 1));
+        const double per_reach =
+            static_cast<double>(NeighbourGrid::stencil_reach * (a == 0 ? NeighbourGrid::x_bins_per_reach : 1));
         g.n[a] = static_cast<std::size_t>(std::clamp(std::floor(extent[a] / reach * per_reach), 1.0, 1e9));
     }
     // Not many more bins than points, so that sparse or long thin sets stay small: the axis
@@ -108,10 +109,12 @@ GridGeometry GridGeometry::of(const std::array<double, 6>& range, std::size_t co
 
 NeighbourGrid::NeighbourGrid(const ParticleSet& set, double reach, int threads, const GridWindow* window)
     // A thread for every 4096 particles at most: on a small set, waking threads costs more than they save.
-    : threads_(static_cast<int>(std::clamp<std::size_t>(set.size() / 4096 + 1, 1, static_cast<std::size_t>(std::max(1, threads))))),
+    : threads_(static_cast<int>(
+          std::clamp<std::size_t>(set.size() / 4096 + 1, 1, static_cast<std::size_t>(std::max(1, threads))))),
       ids_(set.ids)
 {
-    if (!std::isfinite(reach) || reach <= 0) fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
+    if (!std::isfinite(reach) || reach <= 0)
+        fail_input(fmt::format("{}: the support radius {} is not positive", set.name, reach));
     if (set.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
         fail_input(fmt::format("{}: {} particles, more than this engine indexes", set.name, set.size()));
     particles_ = set.size();
@@ -171,7 +174,8 @@ void NeighbourGrid::size_bins(const Unsorted& points, std::size_t count, double 
             }
         },
         [](Range& r, const Range& block) {
-            for (int a = 0; a < 3; ++a) r[2 * a] = std::min(r[2 * a], block[2 * a]), r[2 * a + 1] = std::max(r[2 * a + 1], block[2 * a + 1]);
+            for (int a = 0; a < 3; ++a)
+                r[2 * a] = std::min(r[2 * a], block[2 * a]), r[2 * a + 1] = std::max(r[2 * a + 1], block[2 * a + 1]);
         });
     geometry_ = GridGeometry::of(range, count, reach);
     std::copy(geometry_.n, geometry_.n + 3, n_);
@@ -188,7 +192,8 @@ void NeighbourGrid::sort_into_bins(const Unsorted& points, std::size_t count)
 {
     const std::size_t rows = n_[1] * n_[2];
     // Each thread counts its run of points per row; fewer threads where the rows outnumber the points.
-    const int counting = static_cast<int>(std::clamp<std::size_t>(count / (rows + 1), 1, static_cast<std::size_t>(threads_)));
+    const int counting =
+        static_cast<int>(std::clamp<std::size_t>(count / (rows + 1), 1, static_cast<std::size_t>(threads_)));
     FirstTouchVector<std::uint32_t> row(count);
     std::vector<std::vector<std::uint32_t>> counts(static_cast<std::size_t>(counting));
     ParallelFor count_rows;

@@ -63,7 +63,7 @@ public:
     // is a slab of a larger one and only the window's rows are kept.
     NeighbourGrid(const ParticleSet& set, double reach, int threads = 1, const GridWindow* window = nullptr);
 
-    std::size_t points() const { return x_.size(); }  // particles and ghosts
+    std::size_t points() const { return x_.size(); } // particles and ghosts
     std::size_t particles() const { return particles_; }
     // The particle a point (particle or ghost) stands for.
     std::uint32_t source(std::size_t point) const { return source_[point] & ~unvisited_bit; }
@@ -135,7 +135,8 @@ private:
     double gap(int a, std::size_t cell, std::size_t own, double c, double reach) const
     {
         if (cell == own) return 0.0;
-        const double edge = geometry_.lo[a] + static_cast<double>(offset_[a] + (cell < own ? cell + 1 : cell)) / geometry_.scale[a];
+        const double edge =
+            geometry_.lo[a] + static_cast<double>(offset_[a] + (cell < own ? cell + 1 : cell)) / geometry_.scale[a];
         return std::max(0.0, std::abs(c - edge) - 1e-9 * reach);
     }
     struct Unsorted;
@@ -153,10 +154,10 @@ private:
     std::size_t measured_ = 0; // particles [0, measured_) are visited
     FirstTouchVector<std::uint32_t> source_;
     std::vector<std::uint32_t> start_; // first point of each bin, and one past the last (points number fewer than 2^32)
-    GridGeometry geometry_;               // the whole set's bins
-    std::size_t n_[3] = {1, 1, 1};        // the bins kept along each axis (a window's rows, or all)
-    std::size_t offset_[3] = {0, 0, 0};   // the whole set's bin of the first kept one
-    std::vector<std::uint64_t> ids_;      // ParticleSet::ids
+    GridGeometry geometry_;            // the whole set's bins
+    std::size_t n_[3] = {1, 1, 1};     // the bins kept along each axis (a window's rows, or all)
+    std::size_t offset_[3] = {0, 0, 0}; // the whole set's bin of the first kept one
+    std::vector<std::uint64_t> ids_;    // ParticleSet::ids
 };
 
 } // namespace sphkern

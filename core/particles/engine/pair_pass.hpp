@@ -20,11 +20,11 @@
 namespace sphkern {
 
 struct PairPassInputs {
-    PointValues reach;         // each particle's search reach (search_reach of its support radius)
-    const double* a = nullptr; // gathered per neighbour into nb.a, unless null (grid's point order)
-    const double* b = nullptr; // likewise into nb.b
-    bool with_r2 = true;       // nb.r2 written (else the visitor takes distances from dx, dy, dz)
-    std::string progress;      // the progress line's label; empty: none
+    PointValues reach;                  // each particle's search reach (search_reach of its support radius)
+    const double* a = nullptr;          // gathered per neighbour into nb.a, unless null (grid's point order)
+    const double* b = nullptr;          // likewise into nb.b
+    bool with_r2 = true;                // nb.r2 written (else the visitor takes distances from dx, dy, dz)
+    std::string progress;               // the progress line's label; empty: none
     const std::uint8_t* only = nullptr; // per point: visit where nonzero (null: every particle)
 };
 

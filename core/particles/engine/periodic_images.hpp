@@ -53,7 +53,8 @@ inline std::optional<PeriodicImages> periodic_images_of(const ParticleSet& set, 
 
 // visit(x, y, z) for particle i's own point, then each of its images near the box.
 template <class Visit>
-void for_each_point(const ParticleSet& set, std::size_t i, const std::optional<PeriodicImages>& images, const Visit& visit)
+void for_each_point(const ParticleSet& set, std::size_t i, const std::optional<PeriodicImages>& images,
+                    const Visit& visit)
 {
     visit(set.x[i], set.y[i], set.z[i]);
     if (images) images->of(set.position(i), visit);

@@ -114,8 +114,8 @@ ParticleSet read_csv_particles(const std::filesystem::path& file, const Particle
         if (auto field = particle_field(names[c])) {
             int& slot = column_of[static_cast<std::size_t>(*field)];
             if (slot >= 0)
-                fail_input(fmt::format("{}: line {}: columns {} and {} both give {}", name, line_number, slot + 1, c + 1,
-                                       field_name(*field)));
+                fail_input(fmt::format("{}: line {}: columns {} and {} both give {}", name, line_number, slot + 1,
+                                       c + 1, field_name(*field)));
             slot = static_cast<int>(c);
         }
     if (column_of[0] < 0 || column_of[1] < 0)
@@ -131,14 +131,15 @@ ParticleSet read_csv_particles(const std::filesystem::path& file, const Particle
         if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
         const auto fields = split(line, separator);
         if (fields.size() != names.size())
-            fail_input(fmt::format("{}: line {} (particle {}): {} fields, expected {} as in the header", name, line_number,
-                                   set.x.size(), fields.size(), names.size()));
+            fail_input(fmt::format("{}: line {} (particle {}): {} fields, expected {} as in the header", name,
+                                   line_number, set.x.size(), fields.size(), names.size()));
         const std::size_t id = set.x.size();
         for (std::size_t f = 0; f < 6; ++f)
             if (column_of[f] >= 0)
-                targets[f]->push_back(parse_number(fields[static_cast<std::size_t>(column_of[f])],
-                                                   fmt::format("{}: line {}, column {} (particle {})", name, line_number,
-                                                               field_name(static_cast<ParticleField>(f)), id)));
+                targets[f]->push_back(
+                    parse_number(fields[static_cast<std::size_t>(column_of[f])],
+                                 fmt::format("{}: line {}, column {} (particle {})", name, line_number,
+                                             field_name(static_cast<ParticleField>(f)), id)));
     }
     if (set.dimension == 2) set.z.assign(set.x.size(), 0.0);
     return set;

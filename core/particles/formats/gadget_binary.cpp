@@ -27,8 +27,8 @@ constexpr int types = 6;
 
 // struct io_header (allvars.h): the fields sphkern reads.
 struct GadgetHeader {
-    std::array<std::int32_t, types> npart{};       // in this file
-    std::array<double, types> mass{};              // the MassTable: 0 where the MASS block holds the masses
+    std::array<std::int32_t, types> npart{};          // in this file
+    std::array<double, types> mass{};                 // the MassTable: 0 where the MASS block holds the masses
     std::array<std::uint32_t, types> total{}, high{}; // npartTotal and npartTotalHighWord
     std::int32_t num_files = 0;
     double time = 0, box = 0;
@@ -37,7 +37,8 @@ struct GadgetHeader {
 };
 
 // Byte offsets in the 256-byte header.
-constexpr std::size_t npart_at = 0, mass_at = 24, time_at = 72, total_at = 96, num_files_at = 124, box_at = 128, high_at = 168;
+constexpr std::size_t npart_at = 0, mass_at = 24, time_at = 72, total_at = 96, num_files_at = 124, box_at = 128,
+                      high_at = 168;
 
 GadgetHeader read_header(const GadgetRecords& f)
 {
@@ -53,19 +54,22 @@ GadgetHeader read_header(const GadgetRecords& f)
         h.total[t] = f.word(bytes, total_at + 4 * t);
         h.high[t] = f.word(bytes, high_at + 4 * t);
         if (h.npart[t] < 0)
-            fail_input(fmt::format("{}: its header's npart[{}] is {}; expected a number of particles", f.name(), t, h.npart[t]));
+            fail_input(fmt::format("{}: its header's npart[{}] is {}; expected a number of particles", f.name(), t,
+                                   h.npart[t]));
     }
     h.num_files = static_cast<std::int32_t>(f.word(bytes, num_files_at));
     h.box = f.real(bytes, box_at);
     h.time = f.real(bytes, time_at);
     if (!std::isfinite(h.mass[0]) || h.mass[0] < 0)
-        fail_input(fmt::format("{}: its header's MassTable[0] is negative or not a finite number; expected the gas particles' "
-                               "mass, or 0 where the MASS block holds them",
-                               f.name()));
+        fail_input(
+            fmt::format("{}: its header's MassTable[0] is negative or not a finite number; expected the gas particles' "
+                        "mass, or 0 where the MASS block holds them",
+                        f.name()));
     if (!std::isfinite(h.box) || h.box < 0)
-        fail_input(fmt::format("{}: its header's BoxSize is negative or not a finite number; expected the periodic box's "
-                               "side, or 0 for none",
-                               f.name()));
+        fail_input(
+            fmt::format("{}: its header's BoxSize is negative or not a finite number; expected the periodic box's "
+                        "side, or 0 for none",
+                        f.name()));
     return h;
 }
 
@@ -81,10 +85,11 @@ struct BlockKind {
     const char* label;
     std::size_t values; // per particle
     Holds holds;
-    bool real;          // floating point (else IDs: ints or long longs)
+    bool real; // floating point (else IDs: ints or long longs)
 };
-constexpr BlockKind kinds[] = {{"POS", 3, Holds::all, true},  {"VEL", 3, Holds::all, true},   {"ID", 1, Holds::all, false},
-                               {"MASS", 1, Holds::with_mass, true}, {"U", 1, Holds::gas, true}, {"RHO", 1, Holds::gas, true},
+constexpr BlockKind kinds[] = {{"POS", 3, Holds::all, true}, {"VEL", 3, Holds::all, true},
+                               {"ID", 1, Holds::all, false}, {"MASS", 1, Holds::with_mass, true},
+                               {"U", 1, Holds::gas, true},   {"RHO", 1, Holds::gas, true},
                                {"HSML", 1, Holds::gas, true}};
 
 std::size_t particles_in(const GadgetHeader& h, Holds holds)
@@ -98,7 +103,9 @@ std::size_t particles_in(const GadgetHeader& h, Holds holds)
 
 const char* whose(Holds holds)
 {
-    return holds == Holds::all ? "particles" : holds == Holds::gas ? "gas particles" : "particles of types with no MassTable entry";
+    return holds == Holds::all   ? "particles"
+           : holds == Holds::gas ? "gas particles"
+                                 : "particles of types with no MassTable entry";
 }
 
 // The width of a block's values from its length: GADGET-2 writes floats, other writers doubles.
@@ -109,8 +116,9 @@ Block checked_block(const GadgetRecords& f, std::size_t index, const BlockKind& 
     if (n == 0 && record.bytes == 0) return {index, 4};
     for (const std::size_t width : {std::size_t{4}, std::size_t{8}})
         if (per > 0 && record.bytes == per * width) return {index, width};
-    fail_input(fmt::format("{}: block {} (record {}) is {} bytes; expected {} or {} bytes per particle for {} {}", f.name(),
-                           kind.label, record.number, record.bytes, 4 * kind.values, 8 * kind.values, n, whose(kind.holds)));
+    fail_input(fmt::format("{}: block {} (record {}) is {} bytes; expected {} or {} bytes per particle for {} {}",
+                           f.name(), kind.label, record.number, record.bytes, 4 * kind.values, 8 * kind.values, n,
+                           whose(kind.holds)));
 }
 
 // One file of the snapshot: its header and the blocks sphkern reads.
@@ -124,9 +132,11 @@ struct GadgetPart {
 void keep(GadgetPart& part, const BlockKind& kind, const Block& block)
 {
     const std::string label = kind.label;
-    std::optional<Block>* slot = label == "POS" ? &part.pos : label == "MASS" ? &part.mass : label == "RHO" ? &part.rho
-                                 : label == "HSML"                          ? &part.hsml
-                                                                            : nullptr;
+    std::optional<Block>* slot = label == "POS"    ? &part.pos
+                                 : label == "MASS" ? &part.mass
+                                 : label == "RHO"  ? &part.rho
+                                 : label == "HSML" ? &part.hsml
+                                                   : nullptr;
     if (slot && !*slot) *slot = block;
 }
 
@@ -158,10 +168,12 @@ void find_labelled_blocks(GadgetPart& part)
     const auto& h = part.header;
     const std::string& name = part.records.name();
     if (!part.pos && particles_in(h, Holds::all) > 0)
-        fail_input(fmt::format("{}: no block labelled POS; expected the positions of its {} particles", name, particles_in(h, Holds::all)));
+        fail_input(fmt::format("{}: no block labelled POS; expected the positions of its {} particles", name,
+                               particles_in(h, Holds::all)));
     if (!part.mass && h.mass[0] == 0 && h.npart[0] > 0)
-        fail_input(fmt::format("{}: no block labelled MASS, and MassTable[0] is 0; expected the masses of its {} gas particles",
-                               name, h.npart[0]));
+        fail_input(fmt::format(
+            "{}: no block labelled MASS, and MassTable[0] is 0; expected the masses of its {} gas particles", name,
+            h.npart[0]));
 }
 
 GadgetPart read_part(const std::filesystem::path& path)
@@ -185,8 +197,8 @@ void check_same_header(const GadgetPart& first, const GadgetPart& part)
                         : a.box != b.box           ? "BoxSize"
                                                    : nullptr;
     if (field)
-        fail_input(fmt::format("{}: its header's {} differs from {}'s; expected the parts of one snapshot", part.records.name(),
-                               field, first.records.name()));
+        fail_input(fmt::format("{}: its header's {} differs from {}'s; expected the parts of one snapshot",
+                               part.records.name(), field, first.records.name()));
 }
 
 // Parts with gas particles must all store what the first one does.
@@ -195,8 +207,9 @@ void check_same_blocks(const GadgetPart& first, const GadgetPart& part)
     for (const auto& [label, mine, theirs] : {std::tuple{"RHO", first.rho.has_value(), part.rho.has_value()},
                                               std::tuple{"HSML", first.hsml.has_value(), part.hsml.has_value()}})
         if (mine != theirs)
-            fail_input(fmt::format("{}: block {} is {} where {} has it {}; expected the parts of one snapshot", part.records.name(),
-                                   label, theirs ? "present" : "missing", first.records.name(), mine ? "present" : "missing"));
+            fail_input(fmt::format("{}: block {} is {} where {} has it {}; expected the parts of one snapshot",
+                                   part.records.name(), label, theirs ? "present" : "missing", first.records.name(),
+                                   mine ? "present" : "missing"));
 }
 
 // The files of the snapshot `file` names: itself, or the parts BASE.0 ... of the snapshot it is
@@ -216,11 +229,13 @@ std::vector<GadgetPart> read_parts(const std::filesystem::path& file)
     std::string base;
     if (by_base) base = file.string();
     else if (std::regex_match(named, m, numbered)) base = m[1].str();
-    else if (static_cast<std::uint64_t>(h.npart[0]) == h.gas_total()) return parts; // one file holding every gas particle
+    else if (static_cast<std::uint64_t>(h.npart[0]) == h.gas_total())
+        return parts; // one file holding every gas particle
     else
-        fail_input(fmt::format("{}: one of {} files of a snapshot (its header's num_files), but not named BASE.K; expected the "
-                               "parts' own names",
-                               named, h.num_files));
+        fail_input(fmt::format(
+            "{}: one of {} files of a snapshot (its header's num_files), but not named BASE.K; expected the "
+            "parts' own names",
+            named, h.num_files));
     if (h.num_files > 100000)
         fail_input(fmt::format("{}: its header's num_files is {}; expected a number of files", named, h.num_files));
     std::vector<GadgetPart> all;
@@ -246,9 +261,10 @@ std::vector<GadgetPart> read_parts(const std::filesystem::path& file)
         else with_gas = &part;
     }
     if (gas != all.front().header.gas_total())
-        fail_input(fmt::format("{}: the snapshot's {} files hold {} gas particles but their headers' npartTotal[0] declares {}; "
-                               "expected the parts of one snapshot",
-                               named, all.size(), gas, all.front().header.gas_total()));
+        fail_input(fmt::format(
+            "{}: the snapshot's {} files hold {} gas particles but their headers' npartTotal[0] declares {}; "
+            "expected the parts of one snapshot",
+            named, all.size(), gas, all.front().header.gas_total()));
     return all;
 }
 
@@ -260,7 +276,8 @@ void append_part(const GadgetPart& part, ParticleSet& set)
     const auto& f = part.records;
     // Gas particles come first in every block (write_file writes the types in order).
     const auto xyz = f.reals(f.blocks()[part.pos->index], 0, 3 * n, part.pos->width);
-    for (std::size_t i = 0; i < n; ++i) set.x.push_back(xyz[3 * i]), set.y.push_back(xyz[3 * i + 1]), set.z.push_back(xyz[3 * i + 2]);
+    for (std::size_t i = 0; i < n; ++i)
+        set.x.push_back(xyz[3 * i]), set.y.push_back(xyz[3 * i + 1]), set.z.push_back(xyz[3 * i + 2]);
     auto append = [&](const std::optional<Block>& block, ParticleValues& into) {
         if (!block) return;
         const auto values = f.reals(f.blocks()[block->index], 0, n, block->width);
@@ -280,13 +297,16 @@ ParticleSet read_gadget_binary_particles(const std::filesystem::path& file, cons
     std::uint64_t gas = 0;
     for (const auto& part : parts) gas += static_cast<std::uint64_t>(part.header.npart[0]);
     if (gas == 0)
-        fail_input(fmt::format("{}: no gas particles (npart[0] is 0); expected GADGET's SPH particles, type 0", file.string()));
+        fail_input(fmt::format("{}: no gas particles (npart[0] is 0); expected GADGET's SPH particles, type 0",
+                               file.string()));
     if (gas > max_particles())
-        fail_input(fmt::format("{}: its header declares {} gas particles{} ({:.4g} bytes for the particles); over the memory "
-                               "budget of {:.4g} bytes ({})",
-                               file.string(), gas, parts.size() > 1 ? fmt::format(" in {} parts", parts.size()) : std::string(),
-                               static_cast<double>(gas) * bytes_per_particle, static_cast<double>(memory_limit_bytes()),
-                               setting_named("memory_limit")));
+        fail_input(
+            fmt::format("{}: its header declares {} gas particles{} ({:.4g} bytes for the particles); over the memory "
+                        "budget of {:.4g} bytes ({})",
+                        file.string(), gas,
+                        parts.size() > 1 ? fmt::format(" in {} parts", parts.size()) : std::string(),
+                        static_cast<double>(gas) * bytes_per_particle, static_cast<double>(memory_limit_bytes()),
+                        setting_named("memory_limit")));
     ParticleSet set;
     set.name = file.string();
     for (ParticleValues* column : {&set.x, &set.y, &set.z}) column->reserve(gas);
@@ -300,7 +320,8 @@ ParticleSet read_gadget_binary_particles(const std::filesystem::path& file, cons
     // GADGET's HSML is the radius where its kernel reaches zero.
     set.support_per_h = 1;
     if (parts.size() > 1)
-        for (const auto& part : parts) set.linked_files.push_back(std::filesystem::path(part.records.name()).lexically_normal().string());
+        for (const auto& part : parts)
+            set.linked_files.push_back(std::filesystem::path(part.records.name()).lexically_normal().string());
     std::sort(set.linked_files.begin(), set.linked_files.end());
     return set;
 }

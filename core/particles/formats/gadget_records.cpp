@@ -50,8 +50,8 @@ std::string label_of(const char* p)
 }
 
 // One run of bytes from `file`, named `name` and its record in errors.
-std::vector<char> read_span(const std::filesystem::path& file, const std::string& name, std::size_t record, std::uint64_t at,
-                            std::size_t count)
+std::vector<char> read_span(const std::filesystem::path& file, const std::string& name, std::size_t record,
+                            std::uint64_t at, std::size_t count)
 {
     std::vector<char> data(count);
     std::ifstream in(file, std::ios::binary);
@@ -77,6 +77,40 @@ bool is_gadget_binary(const std::filesystem::path& file)
     return got == 8 && std::all_of(head + 4, head + 8, [](char c) { return c >= 0x20 && c < 0x7f; });
 }
 
+namespace {
+
+// The four bytes of a record marker at byte `at`.
+void read_marker(std::ifstream& in, const std::string& name, std::uint64_t at, char (&marker)[4])
+{
+    in.seekg(static_cast<std::streamoff>(at));
+    in.read(marker, sizeof marker);
+    if (!in) fail_input(fmt::format("{}: the marker at byte {} cannot be read", name, at));
+}
+
+// The length of record `number` at byte `at` of a file of `size` bytes, from its start marker,
+// checked against the file's end and its end marker.
+std::uint32_t record_length(std::ifstream& in, const std::string& name, std::uint64_t at, std::uint64_t size,
+                            std::size_t number, bool swapped)
+{
+    char marker[4];
+    if (size - at < 4)
+        fail_input(fmt::format("{}: record {}'s start marker is cut off after {} bytes (a truncated file?)", name,
+                               number, size - at));
+    read_marker(in, name, at, marker);
+    const std::uint32_t bytes = load_word(marker, swapped);
+    if (size - at - 4 < std::uint64_t{bytes} + 4)
+        fail_input(fmt::format("{}: record {} declares {} bytes, but the file ends {} bytes into it with no end marker "
+                               "(a truncated file?)",
+                               name, number, bytes, size - at - 4));
+    read_marker(in, name, at + 4 + bytes, marker);
+    if (const std::uint32_t end = load_word(marker, swapped); end != bytes)
+        fail_input(fmt::format("{}: record {}'s end marker is {}, its start marker {} (a truncated or corrupt file?)",
+                               name, number, end, bytes));
+    return bytes;
+}
+
+} // namespace
+
 GadgetRecords::GadgetRecords(const std::filesystem::path& file) : name_(file.string()), path_(file)
 {
     std::ifstream in(file, std::ios::binary);
@@ -84,43 +118,28 @@ GadgetRecords::GadgetRecords(const std::filesystem::path& file) : name_(file.str
     const std::uint64_t size = std::filesystem::file_size(file, ec);
     if (!in || ec) fail_input(name_ + ": cannot be opened for reading");
     char marker[4];
-    auto read_marker = [&](std::uint64_t at) {
-        in.seekg(static_cast<std::streamoff>(at));
-        in.read(marker, sizeof marker);
-        if (!in) fail_input(fmt::format("{}: the marker at byte {} cannot be read", name_, at));
-        return marker;
-    };
     if (size < 4) fail_input(fmt::format("{}: {} bytes; expected a GADGET binary snapshot's records", name_, size));
-    const std::uint32_t first = load_word(read_marker(0), false);
+    read_marker(in, name_, 0, marker);
+    const std::uint32_t first = load_word(marker, false);
     const auto swapped = swapped_for(first);
     if (!swapped)
-        fail_input(fmt::format("{}: its first record marker is {}; expected 256 (GADGET SnapFormat 1) or 8 (SnapFormat 2), "
-                               "in either byte order",
-                               name_, first));
+        fail_input(
+            fmt::format("{}: its first record marker is {}; expected 256 (GADGET SnapFormat 1) or 8 (SnapFormat 2), "
+                        "in either byte order",
+                        name_, first));
     swapped_ = *swapped;
     format_ = load_word(marker, swapped_) == header_bytes ? 1 : 2;
     std::string label;
     bool label_next = format_ == 2;
     std::size_t number = 0;
     for (std::uint64_t at = 0; at < size;) {
-        ++number;
-        if (size - at < 4)
-            fail_input(fmt::format("{}: record {}'s start marker is cut off after {} bytes (a truncated file?)", name_, number,
-                                   size - at));
-        const std::uint32_t bytes = load_word(read_marker(at), swapped_);
-        if (size - at - 4 < std::uint64_t{bytes} + 4)
-            fail_input(fmt::format("{}: record {} declares {} bytes, but the file ends {} bytes into it with no end marker "
-                                   "(a truncated file?)",
-                                   name_, number, bytes, size - at - 4));
-        const std::uint32_t end = load_word(read_marker(at + 4 + bytes), swapped_);
-        if (end != bytes)
-            fail_input(fmt::format("{}: record {}'s end marker is {}, its start marker {} (a truncated or corrupt file?)", name_,
-                                   number, end, bytes));
+        const std::uint32_t bytes = record_length(in, name_, at, size, ++number, swapped_);
         if (label_next) {
             if (bytes != label_bytes)
-                fail_input(fmt::format("{}: record {} is {} bytes where SnapFormat 2 puts an 8-byte block label; expected "
-                                       "labels and blocks in turn",
-                                       name_, number, bytes));
+                fail_input(
+                    fmt::format("{}: record {} is {} bytes where SnapFormat 2 puts an 8-byte block label; expected "
+                                "labels and blocks in turn",
+                                name_, number, bytes));
             char text[4];
             in.seekg(static_cast<std::streamoff>(at + 4));
             in.read(text, sizeof text);
@@ -142,7 +161,8 @@ std::vector<char> GadgetRecords::bytes(const GadgetRecord& record) const
     return read_span(path_, name_, record.number, record.offset, record.bytes);
 }
 
-std::vector<double> GadgetRecords::reals(const GadgetRecord& record, std::size_t first, std::size_t count, std::size_t width) const
+std::vector<double> GadgetRecords::reals(const GadgetRecord& record, std::size_t first, std::size_t count,
+                                         std::size_t width) const
 {
     const auto data = read_span(path_, name_, record.number, record.offset + first * width, count * width);
     std::vector<double> values(count);
@@ -150,8 +170,14 @@ std::vector<double> GadgetRecords::reals(const GadgetRecord& record, std::size_t
     return values;
 }
 
-std::uint32_t GadgetRecords::word(const std::vector<char>& bytes, std::size_t at) const { return load_word(bytes.data() + at, swapped_); }
+std::uint32_t GadgetRecords::word(const std::vector<char>& bytes, std::size_t at) const
+{
+    return load_word(bytes.data() + at, swapped_);
+}
 
-double GadgetRecords::real(const std::vector<char>& bytes, std::size_t at) const { return load_real(bytes.data() + at, 8, swapped_); }
+double GadgetRecords::real(const std::vector<char>& bytes, std::size_t at) const
+{
+    return load_real(bytes.data() + at, 8, swapped_);
+}
 
 } // namespace sphkern

@@ -19,8 +19,8 @@ bool is_gadget_binary(const std::filesystem::path& file);
 struct GadgetRecord {
     std::uint64_t offset = 0; // of its first byte of data
     std::uint32_t bytes = 0;
-    std::size_t number = 0;   // counted from 1 among all the file's records, labels included
-    std::string label;        // SnapFormat 2: the block's name, its trailing blanks dropped; else ""
+    std::size_t number = 0; // counted from 1 among all the file's records, labels included
+    std::string label;      // SnapFormat 2: the block's name, its trailing blanks dropped; else ""
 };
 
 class GadgetRecords {
@@ -38,7 +38,8 @@ public:
     // none of them open.
     std::vector<char> bytes(const GadgetRecord& record) const;
     // `count` floating-point values of `width` bytes (4 or 8) from value `first` on, as doubles.
-    std::vector<double> reals(const GadgetRecord& record, std::size_t first, std::size_t count, std::size_t width) const;
+    std::vector<double> reals(const GadgetRecord& record, std::size_t first, std::size_t count,
+                              std::size_t width) const;
     // A 4-byte integer at `at` in the header's bytes, in the file's byte order.
     std::uint32_t word(const std::vector<char>& bytes, std::size_t at) const;
     double real(const std::vector<char>& bytes, std::size_t at) const;

@@ -137,8 +137,9 @@ struct File {
         Handle type(H5Dget_type(set.get()), H5Tclose);
         const H5T_class_t kind = H5Tget_class(type.get());
         if (kind != H5T_FLOAT && kind != H5T_INTEGER)
-            fail_input(fmt::format("{}: dataset {} does not hold numbers (its values are {}); expected integers or floats",
-                                   name, path, kind == H5T_COMPOUND ? "records of several fields" : "not numbers"));
+            fail_input(
+                fmt::format("{}: dataset {} does not hold numbers (its values are {}); expected integers or floats",
+                            name, path, kind == H5T_COMPOUND ? "records of several fields" : "not numbers"));
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
         if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} is not a table of rows", name, path));
@@ -157,11 +158,13 @@ struct File {
         check_sources(set.get(), path);
         Handle type(H5Dget_type(set.get()), H5Tclose);
         const H5T_class_t kind = H5Tget_class(type.get());
-        if (kind != H5T_FLOAT && kind != H5T_INTEGER) fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
+        if (kind != H5T_FLOAT && kind != H5T_INTEGER)
+            fail_input(fmt::format("{}: dataset {} does not hold numbers", name, path));
         return set;
     }
     // Reads the selection `space` of `set` into `values` (memory laid out as `memory`).
-    void read_numbers(const Handle& set, hid_t memory, hid_t space, ParticleValues& values, const std::string& path) const
+    void read_numbers(const Handle& set, hid_t memory, hid_t space, ParticleValues& values,
+                      const std::string& path) const
     {
         if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, values.data()) < 0)
             fail_input(fmt::format("{}: dataset {} cannot be read (a truncated file?)", name, path));
@@ -171,7 +174,8 @@ struct File {
         const Handle set = open_numbers(path);
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
-        if (rank < 1 || rank > 2) fail_input(fmt::format("{}: dataset {} has rank {}; expected 1 or 2", name, path, rank));
+        if (rank < 1 || rank > 2)
+            fail_input(fmt::format("{}: dataset {} has rank {}; expected 1 or 2", name, path, rank));
         shape.assign(static_cast<std::size_t>(rank), 0);
         H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
         // A declared size is checked against the budget before anything is allocated for it.
@@ -199,7 +203,8 @@ struct File {
         const int rank = H5Sget_simple_extent_ndims(space.get());
         const hsize_t start[2] = {begin, 0}, extent[2] = {count, columns};
         if (H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, extent, nullptr) < 0)
-            fail_input(fmt::format("{}: rows {} to {} of dataset {} cannot be selected", name, begin, begin + count, path));
+            fail_input(
+                fmt::format("{}: rows {} to {} of dataset {} cannot be selected", name, begin, begin + count, path));
         Handle memory(H5Screate_simple(rank, extent, nullptr), H5Sclose);
         ParticleValues values(count * columns);
         read_numbers(set, memory.get(), space.get(), values, path);
@@ -210,8 +215,8 @@ struct File {
         std::vector<hsize_t> shape;
         auto values = dataset(path, shape);
         if (!(shape.size() == 1 || (shape.size() == 2 && shape[1] == 1)) || shape[0] != count)
-            fail_input(fmt::format("{}: dataset {} has shape {}; expected ({}) or ({}, 1)", name, path, shape_text(shape),
-                                   count, count));
+            fail_input(fmt::format("{}: dataset {} has shape {}; expected ({}) or ({}, 1)", name, path,
+                                   shape_text(shape), count, count));
         return values;
     }
     // A numeric attribute of `object` with up to `max` values.

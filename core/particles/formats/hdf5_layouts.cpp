@@ -95,7 +95,8 @@ void write_file(const std::filesystem::path& path, const std::function<void(hid_
     {
         Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "a file access list");
         check(H5Pset_fapl_core(access.get(), 1 << 20, 0), "an in-memory file");
-        Id file(H5Fcreate("sphkern-particles.h5", H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose, "an in-memory file");
+        Id file(H5Fcreate("sphkern-particles.h5", H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose,
+                "an in-memory file");
         fill(file.get());
         check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "the file");
         const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
@@ -104,14 +105,16 @@ void write_file(const std::filesystem::path& path, const std::function<void(hid_
         if (H5Fget_file_image(file.get(), image.data(), image.size()) != size)
             throw Error(ExitCode::output, "HDF5 cannot write the file image");
     }
-    write_file_atomically(path, [&](std::ostream& out) { out.write(image.data(), static_cast<std::streamsize>(image.size())); });
+    write_file_atomically(path, [&](std::ostream& out) {
+        out.write(image.data(), static_cast<std::streamsize>(image.size()));
+    });
 }
-
 
 std::vector<double> coordinates_of(const ParticleSet& set)
 {
     std::vector<double> xyz(3 * set.size());
-    for (std::size_t i = 0; i < set.size(); ++i) xyz[3 * i] = set.x[i], xyz[3 * i + 1] = set.y[i], xyz[3 * i + 2] = set.z[i];
+    for (std::size_t i = 0; i < set.size(); ++i)
+        xyz[3 * i] = set.x[i], xyz[3 * i + 1] = set.y[i], xyz[3 * i + 2] = set.z[i];
     return xyz;
 }
 
@@ -127,7 +130,8 @@ void write_swift(hid_t file, const ParticleSet& set, const ParticleOutput& outpu
 {
     Id header = new_group(file, "/Header");
     const Eigen::Matrix3d& e = set.box->edges;
-    write_attribute(header.get(), "BoxSize", H5T_NATIVE_DOUBLE, std::vector<double>{e(0, 0), e(1, 1), set.dimension == 3 ? e(2, 2) : 1.0});
+    write_attribute(header.get(), "BoxSize", H5T_NATIVE_DOUBLE,
+                    std::vector<double>{e(0, 0), e(1, 1), set.dimension == 3 ? e(2, 2) : 1.0});
     write_attribute(header.get(), "Dimension", H5T_NATIVE_INT, std::vector<int>{set.dimension});
     std::vector<unsigned long long> counts(6, 0);
     counts[0] = set.size();
@@ -164,7 +168,8 @@ double gadget_box_side(const ParticleSet& set)
     if (e(1, 1) != side || (set.dimension == 3 && e(2, 2) != side))
         fail_input(fmt::format("{}: GADGET's periodic box is a cube of side BoxSize; this box is {:.10g} x {:.10g}{}; "
                                "expected equal sides (tile the set to make them equal)",
-                               set.name, e(0, 0), e(1, 1), set.dimension == 3 ? fmt::format(" x {:.10g}", e(2, 2)) : ""));
+                               set.name, e(0, 0), e(1, 1),
+                               set.dimension == 3 ? fmt::format(" x {:.10g}", e(2, 2)) : ""));
     return side;
 }
 
@@ -175,12 +180,15 @@ void write_gadget(hid_t file, const ParticleSet& set, const ParticleOutput& outp
     Id header = new_group(file, "/Header");
     std::vector<int> this_file(6, 0);
     std::vector<unsigned> low(6, 0u), high(6, 0u);
-    this_file[0] = static_cast<int>(n), low[0] = static_cast<unsigned>(n & 0xffffffffu), high[0] = static_cast<unsigned>(n >> 32);
+    this_file[0] = static_cast<int>(n), low[0] = static_cast<unsigned>(n & 0xffffffffu),
+    high[0] = static_cast<unsigned>(n >> 32);
     write_attribute(header.get(), "NumPart_ThisFile", H5T_NATIVE_INT, this_file);
     write_attribute(header.get(), "NumPart_Total", H5T_NATIVE_UINT, low);
     write_attribute(header.get(), "NumPart_Total_HighWord", H5T_NATIVE_UINT, high);
-    write_attribute(header.get(), "MassTable", H5T_NATIVE_DOUBLE, std::vector<double>(6, 0.0)); // the masses per particle
-    for (const char* name : {"Time", "Redshift", "Omega0", "OmegaLambda"}) write_scalar_attribute(header.get(), name, H5T_NATIVE_DOUBLE, 0.0);
+    write_attribute(header.get(), "MassTable", H5T_NATIVE_DOUBLE,
+                    std::vector<double>(6, 0.0)); // the masses per particle
+    for (const char* name : {"Time", "Redshift", "Omega0", "OmegaLambda"})
+        write_scalar_attribute(header.get(), name, H5T_NATIVE_DOUBLE, 0.0);
     write_scalar_attribute(header.get(), "HubbleParam", H5T_NATIVE_DOUBLE, 1.0);
     write_scalar_attribute(header.get(), "BoxSize", H5T_NATIVE_DOUBLE, side);
     write_scalar_attribute(header.get(), "NumFilesPerSnapshot", H5T_NATIVE_INT, 1);
@@ -188,7 +196,8 @@ void write_gadget(hid_t file, const ParticleSet& set, const ParticleOutput& outp
     // 3D one when the file is read back, as SWIFT's Dimension does.
     write_scalar_attribute(header.get(), "Dimension", H5T_NATIVE_INT, set.dimension);
     // read_ic reads Flag_Entropy_ICs into one int: a scalar (0: InternalEnergy is u).
-    for (const char* name : {"Flag_Entropy_ICs", "Flag_Sfr", "Flag_Cooling", "Flag_StellarAge", "Flag_Metals", "Flag_Feedback"})
+    for (const char* name :
+         {"Flag_Entropy_ICs", "Flag_Sfr", "Flag_Cooling", "Flag_StellarAge", "Flag_Metals", "Flag_Feedback"})
         write_scalar_attribute(header.get(), name, H5T_NATIVE_INT, 0);
     write_scalar_attribute(header.get(), "Flag_DoublePrecision", H5T_NATIVE_INT, 1);
     Id group = new_group(file, "/PartType0");
@@ -228,7 +237,8 @@ void write_pysph(hid_t file, const ParticleSet& set, const ParticleOutput& outpu
     write_pysph_array(arrays.get(), "x", H5T_NATIVE_DOUBLE, "double", set.x);
     write_pysph_array(arrays.get(), "y", H5T_NATIVE_DOUBLE, "double", set.y);
     write_pysph_array(arrays.get(), "z", H5T_NATIVE_DOUBLE, "double", set.z);
-    for (const char* name : {"u", "v", "w", "p"}) write_pysph_array(arrays.get(), name, H5T_NATIVE_DOUBLE, "double", zeros);
+    for (const char* name : {"u", "v", "w", "p"})
+        write_pysph_array(arrays.get(), name, H5T_NATIVE_DOUBLE, "double", zeros);
     write_pysph_array(arrays.get(), "m", H5T_NATIVE_DOUBLE, "double", std::vector<double>(n, output.mass));
     write_pysph_array(arrays.get(), "h", H5T_NATIVE_DOUBLE, "double", output.h);
     write_pysph_array(arrays.get(), "rho", H5T_NATIVE_DOUBLE, "double", std::vector<double>(n, output.density));
@@ -249,7 +259,8 @@ void write_hdf5_particles(const std::filesystem::path& file, const ParticleSet& 
 {
     if (output.layout == ParticleLayout::phantom) throw std::logic_error("a Phantom dump is not an HDF5 file");
     const char* layouts[] = {"SWIFT's", "GADGET's", "PySPH's"};
-    require_layout_box(set, output.layout, fmt::format("an HDF5 file in {} layout", layouts[static_cast<int>(output.layout)]));
+    require_layout_box(set, output.layout,
+                       fmt::format("an HDF5 file in {} layout", layouts[static_cast<int>(output.layout)]));
     if (output.h.size() != set.size()) throw std::logic_error("a particle file needs one h per particle");
     write_file(file, [&](hid_t f) {
         if (output.layout == ParticleLayout::swift) write_swift(f, set, output);
@@ -259,4 +270,3 @@ void write_hdf5_particles(const std::filesystem::path& file, const ParticleSet& 
 }
 
 } // namespace sphkern
-

@@ -46,7 +46,9 @@ std::vector<std::string> pysph_array_names(const File& f)
         name.resize(static_cast<std::size_t>(length));
         names.push_back(std::move(name));
     }
-    if (names.empty()) fail_input(fmt::format("{}: /particles holds no particle array; expected /particles/<array>/arrays/x, y[, z]", f.name));
+    if (names.empty())
+        fail_input(fmt::format("{}: /particles holds no particle array; expected /particles/<array>/arrays/x, y[, z]",
+                               f.name));
     return names;
 }
 
@@ -62,7 +64,9 @@ std::vector<std::string> chosen_pysph_arrays(const File& f, const std::string& r
     if (chosen.empty()) {
         if (names.size() == 1) chosen = names;
         else if (std::find(names.begin(), names.end(), "fluid") != names.end()) chosen = {"fluid"};
-        else fail_input(fmt::format("{}: several particle arrays ({}); choose one with {} NAME", f.name, listed, setting_named("array")));
+        else
+            fail_input(fmt::format("{}: several particle arrays ({}); choose one with {} NAME", f.name, listed,
+                                   setting_named("array")));
     }
     for (const auto& array : chosen)
         if (std::find(names.begin(), names.end(), array) == names.end())
@@ -102,15 +106,19 @@ ParticleSet read_pysph_array(const File& f, const std::string& array)
 // has must be in every array (each particle needs it); one it lacks is left out of all.
 void append_pysph_array(ParticleSet& set, ParticleSet&& more, const std::string& first, const std::string& array)
 {
-    const std::pair<ParticleValues*, ParticleValues*> columns[] = {{&set.h, &more.h}, {&set.mass, &more.mass}, {&set.density, &more.density}};
+    const std::pair<ParticleValues*, ParticleValues*> columns[] = {{&set.h, &more.h},
+                                                                   {&set.mass, &more.mass},
+                                                                   {&set.density, &more.density}};
     const char* names[] = {"h", "m", "rho"};
     for (std::size_t c = 0; c < 3; ++c)
         if (!columns[c].first->empty() && columns[c].second->empty())
-            fail_input(fmt::format("{}: particle array \"{}\" has no {}, which \"{}\" has; expected it in every array read",
-                                   set.name, array, names[c], first));
+            fail_input(
+                fmt::format("{}: particle array \"{}\" has no {}, which \"{}\" has; expected it in every array read",
+                            set.name, array, names[c], first));
     for (const auto& [whole, piece] : columns)
         if (!whole->empty()) whole->insert(whole->end(), piece->begin(), piece->end());
-    for (const auto& [whole, piece] : {std::pair{&set.x, &more.x}, std::pair{&set.y, &more.y}, std::pair{&set.z, &more.z}})
+    for (const auto& [whole, piece] :
+         {std::pair{&set.x, &more.x}, std::pair{&set.y, &more.y}, std::pair{&set.z, &more.z}})
         whole->insert(whole->end(), piece->begin(), piece->end());
     set.neighbours_only += more.size();
 }
@@ -147,7 +155,8 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     // A snapshot named by its base (snap.hdf5 for snap.0.hdf5 ...): its parts are named instead.
     const std::filesystem::path first = file.parent_path() / (file.stem().string() + ".0" + file.extension().string());
     if (!std::filesystem::exists(file, ec) && std::filesystem::is_regular_file(first, ec))
-        fail_missing(fmt::format("{}: no such file; the snapshot is in parts: name one of them, such as {}", name, first.string()));
+        fail_missing(fmt::format("{}: no such file; the snapshot is in parts: name one of them, such as {}", name,
+                                 first.string()));
     if (!std::filesystem::exists(file, ec)) fail_missing(name + ": no such file");
     const OpenFile named(file);
     const File& f = named.file();
@@ -155,21 +164,23 @@ ParticleSet read_hdf5_particles(const std::filesystem::path& file, const Particl
     ParticleSet set;
     if (f.exists("/PartType0")) {
         if (!options.array.empty())
-            throw Error(ExitCode::usage, fmt::format("{} {}: names PySPH's particle arrays; {} is a SWIFT or GADGET snapshot, "
-                                                     "whose gas (PartType0) is the set",
-                                                     setting_named("array"), options.array, name));
+            throw Error(ExitCode::usage,
+                        fmt::format("{} {}: names PySPH's particle arrays; {} is a SWIFT or GADGET snapshot, "
+                                    "whose gas (PartType0) is the set",
+                                    setting_named("array"), options.array, name));
         if (!f.exists("/PartType0/Coordinates"))
             fail_input(name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
         const SnapshotRows snapshot(file);
         // The budget is checked against the declared total before anything is read.
         if (snapshot.size() > max_particles())
-            fail_input(fmt::format("{}: /PartType0/Coordinates declares {} particles{} ({:.4g} bytes for the particles); over "
-                                   "the {} particles ({:.4g} bytes) the memory budget of {:.4g} bytes holds ({})",
-                                   name, snapshot.size(),
-                                   snapshot.parts() > 1 ? fmt::format(" in {} parts", snapshot.parts()) : std::string(),
-                                   static_cast<double>(snapshot.size()) * bytes_per_particle, max_particles(),
-                                   static_cast<double>(max_particles()) * bytes_per_particle,
-                                   static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
+            fail_input(
+                fmt::format("{}: /PartType0/Coordinates declares {} particles{} ({:.4g} bytes for the particles); over "
+                            "the {} particles ({:.4g} bytes) the memory budget of {:.4g} bytes holds ({})",
+                            name, snapshot.size(),
+                            snapshot.parts() > 1 ? fmt::format(" in {} parts", snapshot.parts()) : std::string(),
+                            static_cast<double>(snapshot.size()) * bytes_per_particle, max_particles(),
+                            static_cast<double>(max_particles()) * bytes_per_particle,
+                            static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
         set = snapshot.rows(0, snapshot.size());
         inputs = snapshot.sample().linked_files;
     } else if (f.exists("/particles")) {

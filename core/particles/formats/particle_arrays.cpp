@@ -21,7 +21,8 @@ std::string particle_array_list_problem(const std::string& list)
     const auto names = particle_array_names(list);
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (names[i].empty()) return "an empty array name; expected names separated by commas";
-        if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(i), names[i]) != names.begin() + static_cast<std::ptrdiff_t>(i))
+        if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(i), names[i]) !=
+            names.begin() + static_cast<std::ptrdiff_t>(i))
             return "array \"" + names[i] + "\" named twice; expected each array once";
     }
     return {};

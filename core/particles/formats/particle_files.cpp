@@ -24,7 +24,8 @@ std::optional<ParticleFileFormat> particle_file_format(const std::filesystem::pa
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) {
         const std::filesystem::path first_part = file.string() + ".0";
-        if (std::filesystem::is_regular_file(first_part, ec) && is_gadget_binary(first_part)) return ParticleFileFormat::gadget_binary;
+        if (std::filesystem::is_regular_file(first_part, ec) && is_gadget_binary(first_part))
+            return ParticleFileFormat::gadget_binary;
         return std::nullopt;
     }
     if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
@@ -42,7 +43,8 @@ std::filesystem::path particle_file_named(const std::filesystem::path& file)
 {
     std::error_code ec;
     const std::filesystem::path first_part = file.string() + ".0";
-    if (!std::filesystem::exists(file, ec) && particle_file_format(file) == ParticleFileFormat::gadget_binary) return first_part;
+    if (!std::filesystem::exists(file, ec) && particle_file_format(file) == ParticleFileFormat::gadget_binary)
+        return first_part;
     return file;
 }
 
@@ -56,23 +58,23 @@ ParticleSet read_particle_file(const std::filesystem::path& file, const Particle
         fail_missing(file.string() + ": no such file");
     if (!format)
         fail_input(file.string() + ": not a particle file; expected .h5/.hdf5 (SWIFT, GADGET, PySPH), .csv, .vtk "
-                                  "a GADGET binary snapshot or a Phantom dump");
+                                   "a GADGET binary snapshot or a Phantom dump");
     if (!options.array.empty() && *format != ParticleFileFormat::hdf5)
-        throw Error(ExitCode::usage, fmt::format("{} {}: names PySPH's particle arrays; {} holds one set", setting_named("array"),
-                                                 options.array, file.string()));
+        throw Error(ExitCode::usage, fmt::format("{} {}: names PySPH's particle arrays; {} holds one set",
+                                                 setting_named("array"), options.array, file.string()));
     if (options.particle_radius && *format != ParticleFileFormat::vtk)
         throw Error(ExitCode::usage, fmt::format("{}: {} is not a VTK file; the radius gives the h of "
                                                  "SPlisHSPlasH's VTK files only",
                                                  setting_named("particle_radius"), file.string()));
-    ParticleSet set = *format == ParticleFileFormat::hdf5  ? read_hdf5_particles(file, options)
-                      : *format == ParticleFileFormat::csv ? read_csv_particles(file, options)
-                      : *format == ParticleFileFormat::vtk ? read_vtk_particles(file, options)
+    ParticleSet set = *format == ParticleFileFormat::hdf5            ? read_hdf5_particles(file, options)
+                      : *format == ParticleFileFormat::csv           ? read_csv_particles(file, options)
+                      : *format == ParticleFileFormat::vtk           ? read_vtk_particles(file, options)
                       : *format == ParticleFileFormat::gadget_binary ? read_gadget_binary_particles(file, options)
                                                                      : read_phantom_dump_particles(file, options);
     apply_dimension(set, options);
     if (options.max_particles && set.size() > options.max_particles)
-        fail_input(fmt::format("{}: {} particles, more than the memory limit of {} ({})", file.string(),
-                               set.size(), options.max_particles, setting_named("memory_limit")));
+        fail_input(fmt::format("{}: {} particles, more than the memory limit of {} ({})", file.string(), set.size(),
+                               options.max_particles, setting_named("memory_limit")));
     return set;
 }
 
@@ -82,7 +84,9 @@ void apply_dimension(ParticleSet& set, const ParticleFileOptions& options)
     if (*options.dimension != 2 || set.dimension != 3)
         fail_input(fmt::format("{0}: {3} {1} for a set with {2} coordinates; expected {3} 2 for a 3-column set",
                                set.name, *options.dimension, set.dimension, setting_named("dim")));
-    auto constant = [](const ParticleValues& v) { return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; }); };
+    auto constant = [](const ParticleValues& v) {
+        return std::all_of(v.begin(), v.end(), [&](double c) { return c == v[0]; });
+    };
     if (constant(set.z)) {
     } else if (constant(set.y)) {
         set.y.swap(set.z); // a 2D set in the x-z plane (DualSPHysics)

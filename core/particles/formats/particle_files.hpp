@@ -1,6 +1,6 @@
 // Particle sets from files: SWIFT, GADGET and PySPH HDF5, GADGET-2's binary snapshots, Phantom's
-// dumps, CSV with a header line, and legacy VTK (ASCII or big-endian BINARY, POLYDATA or UNSTRUCTURED_GRID). Every error names the
-// file, the dataset, column or array, and the particle id where there is one.
+// dumps, CSV with a header line, and legacy VTK (ASCII or big-endian BINARY, POLYDATA or UNSTRUCTURED_GRID). Every
+// error names the file, the dataset, column or array, and the particle id where there is one.
 #pragma once
 
 #include "particles/particle_set.hpp"

@@ -47,8 +47,12 @@ void write_csv_particles(const std::filesystem::path& file, const ParticleSet& s
                   three ? fmt::format(" {:.17g}", e(2, 2)) : std::string(), output.support_per_h);
         out.text(three ? "x,y,z,h,m\n" : "x,y,h,m\n");
         out.rows(set.size(), worker_threads(threads), [&](fmt::memory_buffer& row, std::size_t i) {
-            if (three) fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], set.z[i], output.h[i], output.mass);
-            else fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i], output.h[i], output.mass);
+            if (three)
+                fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i],
+                               set.z[i], output.h[i], output.mass);
+            else
+                fmt::format_to(std::back_inserter(row), "{:.17g},{:.17g},{:.17g},{:.17g}\n", set.x[i], set.y[i],
+                               output.h[i], output.mass);
         });
     });
 }
@@ -58,8 +62,9 @@ void check_particle_output_name(const std::filesystem::path& file, ParticleLayou
     const std::string ext = file.extension().string();
     const bool hdf5 = ext == ".h5" || ext == ".hdf5";
     if (layout == ParticleLayout::phantom && hdf5)
-        throw Error(ExitCode::usage, file.string() + ": Phantom starts from its own full dumps, not HDF5; expected a "
-                                                     "name without .h5 or .hdf5 (NAME_00000.tmp) or one ending in .csv");
+        throw Error(ExitCode::usage, file.string() +
+                                         ": Phantom starts from its own full dumps, not HDF5; expected a "
+                                         "name without .h5 or .hdf5 (NAME_00000.tmp) or one ending in .csv");
     if (layout != ParticleLayout::phantom && !hdf5 && ext != ".csv")
         throw Error(ExitCode::usage, file.string() + ": expected a name ending in .h5, .hdf5 or .csv");
 }

@@ -21,11 +21,11 @@ enum class ParticleLayout { swift, gadget, pysph, phantom };
 // what the layout's code reads as initial conditions (velocities zero).
 struct ParticleOutput {
     std::vector<double> h;
-    double support_per_h = 0;  // the support radius over h: SWIFT's "Kernel gamma", GADGET's 1
+    double support_per_h = 0; // the support radius over h: SWIFT's "Kernel gamma", GADGET's 1
     double mass = 0;
-    double density = 0;        // of every particle at rest (PySPH's rho)
-    std::string kernel_label;  // SWIFT's "Kernel function", if the kernel is one of SWIFT's
-    double internal_energy = 0; // u of every particle (SWIFT's and GADGET's InternalEnergy), at rest
+    double density = 0;                            // of every particle at rest (PySPH's rho)
+    std::string kernel_label;                      // SWIFT's "Kernel function", if the kernel is one of SWIFT's
+    double internal_energy = 0;                    // u of every particle (SWIFT's and GADGET's InternalEnergy), at rest
     ParticleLayout layout = ParticleLayout::swift; // of a .h5 or .hdf5 file, or a Phantom dump
     // Phantom's dump only: its hfact, h = hfact (m / rho)^(1/D) for the rho the written h is of,
     // and the gas at rest that u is of (adiabatic index, sound speed).

@@ -39,7 +39,8 @@ public:
     {
         const auto& record = take(what);
         if (record.bytes != bytes)
-            fail_input(fmt::format("{}: record {} ({}) is {} bytes; expected {}", f_.name(), record.number, what, record.bytes, bytes));
+            fail_input(fmt::format("{}: record {} ({}) is {} bytes; expected {}", f_.name(), record.number, what,
+                                   record.bytes, bytes));
         return f_.bytes(record);
     }
 
@@ -102,9 +103,10 @@ void read_fileid(const PhantomRecords& f, Cursor& c)
     const auto bytes = f.bytes(record);
     const std::string id = tag_of(bytes.data(), std::min<std::size_t>(bytes.size(), lenid));
     if (id.size() < 2 || (id[0] != 'F' && id[0] != 'S') || (id[1] != 'T' && id[1] != 't'))
-        fail_input(fmt::format("{}: its file id (record {}) is \"{}\"; expected a tagged dump, \"FT:...\" or \"ST:...\" "
-                               "(untagged sphNG dumps are not read)",
-                               f.name(), record.number, id.substr(0, 20)));
+        fail_input(
+            fmt::format("{}: its file id (record {}) is \"{}\"; expected a tagged dump, \"FT:...\" or \"ST:...\" "
+                        "(untagged sphNG dumps are not read)",
+                        f.name(), record.number, id.substr(0, 20)));
 }
 
 Header read_header(const PhantomRecords& f, Cursor& c, std::size_t real_width)
@@ -140,6 +142,32 @@ struct HydroBlock {
     Array x, y, z, h, itype;
 };
 
+// Block b's headers (write_block_header): for each array length, its particles and how many
+// arrays of each type it holds.
+struct BlockHeaders {
+    std::array<std::uint64_t, max_arraylengths> length{};
+    std::array<std::array<std::int64_t, ntypes>, max_arraylengths> count{};
+};
+BlockHeaders read_block_headers(const PhantomRecords& f, Cursor& c, std::int64_t b, std::size_t arraylengths)
+{
+    BlockHeaders h;
+    for (std::size_t j = 0; j < arraylengths; ++j) {
+        const auto bytes = c.take(fmt::format("the header of block {}.{}", b, j + 1), 8 + 4 * ntypes);
+        const auto n = f.integer(bytes.data(), 8);
+        if (n < 0)
+            fail_input(
+                fmt::format("{}: block {}.{} declares {} particles; expected a number >= 0", f.name(), b, j + 1, n));
+        h.length[j] = static_cast<std::uint64_t>(n);
+        for (int t = 0; t < ntypes; ++t) {
+            h.count[j][t] = f.integer(bytes.data() + 8 + 4 * t, 4);
+            if (h.count[j][t] < 0)
+                fail_input(fmt::format("{}: block {}.{} declares {} {} arrays; expected a number >= 0", f.name(), b,
+                                       j + 1, h.count[j][t], type_names[t]));
+        }
+    }
+    return h;
+}
+
 // Each MPI block: `arraylengths` block headers (write_block_header: an int*8 length and the
 // count of arrays of each type), then for each array length, for each type, its arrays as a
 // tag record and a values record. The first array length is the hydrodynamic particles'.
@@ -148,50 +176,44 @@ std::vector<HydroBlock> read_blocks(const PhantomRecords& f, Cursor& c, const He
     const std::int64_t nblocks = header.integer("nblocks").value_or(1);
     const auto arrays = f.integer(c.take("the number of blocks", 4).data(), 4);
     if (nblocks < 1 || arrays < 1 || arrays % nblocks != 0 || arrays / nblocks > max_arraylengths)
-        fail_input(fmt::format("{}: {} array blocks for the header's nblocks {}; expected 1 to {} a block", f.name(), arrays, nblocks,
-                               max_arraylengths));
+        fail_input(fmt::format("{}: {} array blocks for the header's nblocks {}; expected 1 to {} a block", f.name(),
+                               arrays, nblocks, max_arraylengths));
     const auto arraylengths = static_cast<std::size_t>(arrays / nblocks);
     std::vector<HydroBlock> blocks;
     for (std::int64_t b = 1; b <= nblocks; ++b) {
-        std::array<std::uint64_t, max_arraylengths> length{};
-        std::array<std::array<std::int64_t, ntypes>, max_arraylengths> count{};
-        for (std::size_t j = 0; j < arraylengths; ++j) {
-            const auto bytes = c.take(fmt::format("the header of block {}.{}", b, j + 1), 8 + 4 * ntypes);
-            const auto n = f.integer(bytes.data(), 8);
-            if (n < 0) fail_input(fmt::format("{}: block {}.{} declares {} particles; expected a number >= 0", f.name(), b, j + 1, n));
-            length[j] = static_cast<std::uint64_t>(n);
-            for (int t = 0; t < ntypes; ++t) {
-                count[j][t] = f.integer(bytes.data() + 8 + 4 * t, 4);
-                if (count[j][t] < 0)
-                    fail_input(fmt::format("{}: block {}.{} declares {} {} arrays; expected a number >= 0", f.name(), b, j + 1,
-                                           count[j][t], type_names[t]));
-            }
-        }
+        const auto [length, count] = read_block_headers(f, c, b, arraylengths);
         HydroBlock hydro{length[0], {}, {}, {}, {}, {}};
         for (std::size_t j = 0; j < arraylengths; ++j)
             for (int t = 0; t < ntypes; ++t)
                 for (std::int64_t a = 0; a < count[j][t]; ++a) {
-                    const std::string what = fmt::format("the tag of {} array {} of block {}.{}", type_names[t], a + 1, b, j + 1);
+                    const std::string what =
+                        fmt::format("the tag of {} array {} of block {}.{}", type_names[t], a + 1, b, j + 1);
                     const auto tag = tag_of(c.take(what, lentag).data(), lentag);
                     const auto& values = c.take(fmt::format("array {} of block {}.{}", tag, b, j + 1));
                     const std::size_t w = width(t, real_width);
                     if (values.bytes != length[j] * w)
-                        fail_input(fmt::format("{}: array {} (record {}) of block {}.{} is {} bytes; expected {} ({}) for "
-                                               "each of the block's {} particles",
-                                               f.name(), tag, values.number, b, j + 1, values.bytes, w, type_names[t], length[j]));
+                        fail_input(
+                            fmt::format("{}: array {} (record {}) of block {}.{} is {} bytes; expected {} ({}) for "
+                                        "each of the block's {} particles",
+                                        f.name(), tag, values.number, b, j + 1, values.bytes, w, type_names[t],
+                                        length[j]));
                     if (j != 0) continue;
-                    Array* slot = tag == "x" ? &hydro.x : tag == "y" ? &hydro.y : tag == "z" ? &hydro.z : tag == "h" ? &hydro.h
-                                  : tag == "itype"                                                          ? &hydro.itype
-                                                                                                            : nullptr;
+                    Array* slot = tag == "x"       ? &hydro.x
+                                  : tag == "y"     ? &hydro.y
+                                  : tag == "z"     ? &hydro.z
+                                  : tag == "h"     ? &hydro.h
+                                  : tag == "itype" ? &hydro.itype
+                                                   : nullptr;
                     const bool fits = tag == "itype" ? !is_real(t) : is_real(t);
                     if (slot && !slot->record && fits) *slot = {&values, t};
                 }
         if (hydro.particles > 0)
             for (const auto& [tag, array] : {std::pair{"x", hydro.x}, {"y", hydro.y}, {"z", hydro.z}})
                 if (!array.record)
-                    fail_input(fmt::format("{}: block {} has no real array {}; expected the positions x, y, z of its {} "
-                                           "particles",
-                                           f.name(), b, tag, hydro.particles));
+                    fail_input(
+                        fmt::format("{}: block {} has no real array {}; expected the positions x, y, z of its {} "
+                                    "particles",
+                                    f.name(), b, tag, hydro.particles));
         blocks.push_back(hydro);
     }
     return blocks;
@@ -244,26 +266,32 @@ ParticleSet read_phantom_dump_particles(const std::filesystem::path& file, const
     const Header header = read_header(f, c, real_width);
     const auto mass = header.real("massoftype");
     if (!mass)
-        fail_input(fmt::format("{}: its header has no massoftype; expected the gas particle mass, massoftype(1)", file.string()));
+        fail_input(fmt::format("{}: its header has no massoftype; expected the gas particle mass, massoftype(1)",
+                               file.string()));
     if (!std::isfinite(*mass) || *mass <= 0)
-        fail_input(fmt::format("{}: its header's massoftype(1) is {}; expected the gas particles' mass, > 0", file.string(), *mass));
+        fail_input(fmt::format("{}: its header's massoftype(1) is {}; expected the gas particles' mass, > 0",
+                               file.string(), *mass));
     const auto blocks = read_blocks(f, c, header, real_width);
     std::uint64_t hydro = 0;
     for (const auto& b : blocks) hydro += b.particles;
     if (const auto total = header.integer("nparttot"); total && static_cast<std::uint64_t>(*total) != hydro)
-        fail_input(fmt::format("{}: its blocks hold {} particles but the header's nparttot is {}; expected the same", file.string(),
-                               hydro, *total));
-    const std::uint64_t gas_bound = std::min<std::uint64_t>(hydro, static_cast<std::uint64_t>(std::max<std::int64_t>(
-                                                                      header.integer("npartoftype").value_or(static_cast<std::int64_t>(hydro)), 0)));
+        fail_input(fmt::format("{}: its blocks hold {} particles but the header's nparttot is {}; expected the same",
+                               file.string(), hydro, *total));
+    const std::uint64_t gas_bound =
+        std::min<std::uint64_t>(hydro,
+                                static_cast<std::uint64_t>(std::max<std::int64_t>(
+                                    header.integer("npartoftype").value_or(static_cast<std::int64_t>(hydro)), 0)));
     if (gas_bound > max_particles())
-        fail_input(fmt::format("{}: its header declares {} gas particles ({:.4g} bytes for the particles); over the memory budget "
-                               "of {:.4g} bytes ({})",
-                               file.string(), gas_bound, static_cast<double>(gas_bound) * bytes_per_particle,
-                               static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
+        fail_input(fmt::format(
+            "{}: its header declares {} gas particles ({:.4g} bytes for the particles); over the memory budget "
+            "of {:.4g} bytes ({})",
+            file.string(), gas_bound, static_cast<double>(gas_bound) * bytes_per_particle,
+            static_cast<double>(memory_limit_bytes()), setting_named("memory_limit")));
     ParticleSet set;
     set.name = file.string();
     set.time = header.real("time");
-    const bool with_h = std::all_of(blocks.begin(), blocks.end(), [](const HydroBlock& b) { return b.particles == 0 || b.h.record; });
+    const bool with_h =
+        std::all_of(blocks.begin(), blocks.end(), [](const HydroBlock& b) { return b.particles == 0 || b.h.record; });
     std::uint64_t row = 0;
     bool skipped = false;
     std::vector<std::uint64_t> rows;
@@ -284,8 +312,9 @@ ParticleSet read_phantom_dump_particles(const std::filesystem::path& file, const
         }
     }
     if (set.x.empty())
-        fail_input(fmt::format("{}: no gas particles (itype 1, h > 0) among its {} particles; expected Phantom's SPH gas",
-                               file.string(), hydro));
+        fail_input(
+            fmt::format("{}: no gas particles (itype 1, h > 0) among its {} particles; expected Phantom's SPH gas",
+                        file.string(), hydro));
     if (skipped) set.ids = std::move(rows);
     set.mass.assign(set.x.size(), *mass);
     if (const auto b = bounds(header); b && b->at(1) > b->at(0) && b->at(3) > b->at(2) && b->at(5) > b->at(4)) {

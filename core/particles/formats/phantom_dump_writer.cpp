@@ -42,42 +42,68 @@ void append(std::string& bytes, int type, double value)
     bytes.append(raw, n);
 }
 
-// fill_header's values for a hydro run of gas alone, no dust, no MHD, no sinks, no external
-// force, in its order within each type (an array repeats its tag, one value per element).
-std::vector<Value> header_values(const ParticleSet& set, const ParticleOutput& output)
+constexpr int maxtypes = 8; // config.F90's 7 + 2 maxdustlarge - 1 without dust
+
+// An array of the header (one value per particle type): `first` for gas, 0 for the others.
+void per_type(std::vector<Value>& v, const char* tag, int type, double first)
 {
-    constexpr int maxtypes = 8; // config.F90's 7 + 2 maxdustlarge - 1 without dust
-    constexpr int idust = 7;    // part.F90
+    for (int t = 1; t <= maxtypes; ++t) v.push_back({tag, type, t == phantom::igas ? first : 0});
+}
+
+// fill_header's integers, in its order within each type.
+void integer_values(const ParticleSet& set, const ParticleOutput& output, std::vector<Value>& v)
+{
+    constexpr int idust = 7; // part.F90
     const auto n = static_cast<double>(set.size());
-    std::vector<Value> v;
-    auto per_type = [&](const char* tag, int type, double first) {
-        for (int t = 1; t <= maxtypes; ++t) v.push_back({tag, type, t == phantom::igas ? first : 0});
-    };
     // default integers
     v.push_back({"nparttot", phantom::i_int, n});
     v.push_back({"ntypes", phantom::i_int, maxtypes});
-    per_type("npartoftype", phantom::i_int, n);
-    for (const auto& [tag, value] : {std::pair{"nblocks", 1}, {"nptmass", 0}, {"ndustlarge", 0}, {"ndustsmall", 0},
-                                     {"idust", idust}, {"idtmax_n", 1}, {"idtmax_frac", 0}, {"idumpfile", 0}, {"isink", 0}})
+    per_type(v, "npartoftype", phantom::i_int, n);
+    for (const auto& [tag, value] : {std::pair{"nblocks", 1},
+                                     {"nptmass", 0},
+                                     {"ndustlarge", 0},
+                                     {"ndustsmall", 0},
+                                     {"idust", idust},
+                                     {"idtmax_n", 1},
+                                     {"idtmax_frac", 0},
+                                     {"idumpfile", 0},
+                                     {"isink", 0}})
         v.push_back({tag, phantom::i_int, static_cast<double>(value)});
     // int*8: the counts again, for a run with more than 2^31 particles
     v.push_back({"nparttot", phantom::i_int8, n});
     v.push_back({"ntypes", phantom::i_int8, maxtypes});
-    per_type("npartoftype", phantom::i_int8, n);
+    per_type(v, "npartoftype", phantom::i_int8, n);
     // int*4: Phantom reads ieos from its .in file, not from here; 2 is adiabatic, 1 isothermal.
     v.push_back({"iexternalforce", phantom::i_int4, 0});
     v.push_back({"ieos", phantom::i_int4, output.eos_gamma > 1 ? 2.0 : 1.0});
+}
+
+// fill_header's reals, in its order within each type.
+void real_values(const ParticleSet& set, const ParticleOutput& output, std::vector<Value>& v)
+{
     // default reals: the equation of state first (write_headeropts_eos), read back by
     // read_headeropts_eos: gamma, and RK2 = 3/2 polyk for the pressure at rest
     // P = polyk rho^gamma = rho0 c^2 / gamma (rho / rho0)^gamma (isothermal: polyk = c^2).
     const double gamma = output.eos_gamma, c = output.sound_speed, rho0 = output.density;
     const double polyk = c * c * std::pow(rho0, 1 - gamma) / gamma;
-    for (const auto& [tag, value] : {std::pair{"gamma", gamma}, {"RK2", 1.5 * polyk}, {"polyk2", 0.0}, {"qfacdisc", 0.75},
-                                     {"qfacdisc2", 0.75}, {"cs_min", 0.0}, {"time", 0.0}, {"dtmax", 0.0}, {"rhozero", rho0},
-                                     {"hfact", output.hfact}, {"tolh", 1e-4}, {"C_cour", 0.3}, {"C_force", 0.25},
-                                     {"alpha", 1.0}, {"alphau", 1.0}, {"alphaB", 1.0}})
+    for (const auto& [tag, value] : {std::pair{"gamma", gamma},
+                                     {"RK2", 1.5 * polyk},
+                                     {"polyk2", 0.0},
+                                     {"qfacdisc", 0.75},
+                                     {"qfacdisc2", 0.75},
+                                     {"cs_min", 0.0},
+                                     {"time", 0.0},
+                                     {"dtmax", 0.0},
+                                     {"rhozero", rho0},
+                                     {"hfact", output.hfact},
+                                     {"tolh", 1e-4},
+                                     {"C_cour", 0.3},
+                                     {"C_force", 0.25},
+                                     {"alpha", 1.0},
+                                     {"alphau", 1.0},
+                                     {"alphaB", 1.0}})
         v.push_back({tag, phantom::i_real, value});
-    per_type("massoftype", phantom::i_real, output.mass);
+    per_type(v, "massoftype", phantom::i_real, output.mass);
     for (const char* tag : {"Bextx", "Bexty", "Bextz", "dum"}) v.push_back({tag, phantom::i_real, 0});
     // A periodic build reads the box here (unfill_rheader); sphkern's box starts at the origin.
     const Eigen::Matrix3d& e = set.box->edges;
@@ -87,12 +113,21 @@ std::vector<Value> header_values(const ParticleSet& set, const ParticleOutput& o
         v.push_back({fmt::format("{}max", bounds[d]), phantom::i_real, e(d, d)});
     }
     // get_conserv = 1: Phantom takes the conserved totals at its first step.
-    for (const auto& [tag, value] : {std::pair{"get_conserv", 1.0}, {"mtot_in", 0.0}, {"etot_in", 0.0}, {"angtot_in", 0.0},
-                                     {"totmom_in", 0.0}})
+    for (const auto& [tag, value] :
+         {std::pair{"get_conserv", 1.0}, {"mtot_in", 0.0}, {"etot_in", 0.0}, {"angtot_in", 0.0}, {"totmom_in", 0.0}})
         v.push_back({tag, phantom::i_real, value});
     // real*8: code units of 1 (cm, g, s), and set_units_extra's field unit for them, sqrt(4 pi).
     for (const char* tag : {"udist", "umass", "utime"}) v.push_back({tag, phantom::i_real8, 1});
     v.push_back({"umagfd", phantom::i_real8, std::sqrt(4 * std::numbers::pi)});
+}
+
+// fill_header's values for a hydro run of gas alone, no dust, no MHD, no sinks, no external
+// force, in its order within each type (an array repeats its tag, one value per element).
+std::vector<Value> header_values(const ParticleSet& set, const ParticleOutput& output)
+{
+    std::vector<Value> v;
+    integer_values(set, output, v);
+    real_values(set, output, v);
     return v;
 }
 
@@ -160,8 +195,9 @@ void write_phantom_dump(const std::filesystem::path& file, const ParticleSet& se
     if (output.h.size() != set.size()) throw std::logic_error("a Phantom dump needs one h per particle");
     // read_dump reads nparttot as a default (4-byte) integer too.
     if (set.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-        fail_input(fmt::format("{}: {} particles; Phantom's header holds nparttot as a 4-byte integer, expected at most {}",
-                               name, set.size(), std::numeric_limits<std::int32_t>::max()));
+        fail_input(
+            fmt::format("{}: {} particles; Phantom's header holds nparttot as a 4-byte integer, expected at most {}",
+                        name, set.size(), std::numeric_limits<std::int32_t>::max()));
     const std::size_t n = set.size();
     std::vector<std::int64_t> iorig(n);
     for (std::size_t i = 0; i < n; ++i) iorig[i] = static_cast<std::int64_t>(i + 1); // Phantom's ids count from 1
@@ -172,9 +208,11 @@ void write_phantom_dump(const std::filesystem::path& file, const ParticleSet& se
     for (std::size_t i = 0; i < n; ++i) h4[i] = static_cast<float>(output.h[i]);
     // write_fulldump's order within each type: iorig; x, y, z, vx, vy, vz, u; then h (real*4).
     const std::vector<phantom_writing::Array> hydro{
-        {"iorig", phantom::i_int8, iorig.data()}, {"x", phantom::i_real, set.x.data()},  {"y", phantom::i_real, set.y.data()},
-        {"z", phantom::i_real, set.z.data()},      {"vx", phantom::i_real, rest.data()},  {"vy", phantom::i_real, rest.data()},
-        {"vz", phantom::i_real, rest.data()},      {"u", phantom::i_real, u.data()},      {"h", phantom::i_real4, h4.data()}};
+        {"iorig", phantom::i_int8, iorig.data()}, {"x", phantom::i_real, set.x.data()},
+        {"y", phantom::i_real, set.y.data()},     {"z", phantom::i_real, set.z.data()},
+        {"vx", phantom::i_real, rest.data()},     {"vy", phantom::i_real, rest.data()},
+        {"vz", phantom::i_real, rest.data()},     {"u", phantom::i_real, u.data()},
+        {"h", phantom::i_real4, h4.data()}};
     write_file_atomically(file, [&](std::ostream& stream) {
         PhantomRecordWriter out(stream, name);
         // open_dumpfile_w: int1, int2 as a default real, int2, iversion, int1o; then the file id.

@@ -27,8 +27,9 @@ std::optional<bool> phantom_order(const char* head)
 {
     for (const bool swapped : {false, true}) {
         const std::uint32_t magic = phantom_word(head + 4, swapped);
-        if (phantom_first_record(phantom_word(head, swapped)) && (magic == static_cast<std::uint32_t>(phantom::magic) ||
-                                                             magic == static_cast<std::uint32_t>(phantom::magic_old)))
+        if (phantom_first_record(phantom_word(head, swapped)) &&
+            (magic == static_cast<std::uint32_t>(phantom::magic) ||
+             magic == static_cast<std::uint32_t>(phantom::magic_old)))
             return swapped;
     }
     return std::nullopt;
@@ -69,8 +70,8 @@ PhantomRecords::PhantomRecords(const std::filesystem::path& file) : name_(file.s
     for (std::uint64_t at = 0; at < size;) {
         ++number;
         if (size - at < 4)
-            fail_input(fmt::format("{}: record {}'s start marker is cut off after {} bytes (a truncated file?)", name_, number,
-                                   size - at));
+            fail_input(fmt::format("{}: record {}'s start marker is cut off after {} bytes (a truncated file?)", name_,
+                                   number, size - at));
         const std::uint32_t bytes = read_marker(at);
         // gfortran splits a record over 2 GiB into subrecords, marked by a negative length.
         if (bytes >= 0x80000000u)
@@ -78,13 +79,15 @@ PhantomRecords::PhantomRecords(const std::filesystem::path& file) : name_(file.s
                                    "records under 2 GiB",
                                    name_, number));
         if (size - at - 4 < std::uint64_t{bytes} + 4)
-            fail_input(fmt::format("{}: record {} declares {} bytes, but the file ends {} bytes into it with no end marker "
-                                   "(a truncated file?)",
-                                   name_, number, bytes, size - at - 4));
+            fail_input(
+                fmt::format("{}: record {} declares {} bytes, but the file ends {} bytes into it with no end marker "
+                            "(a truncated file?)",
+                            name_, number, bytes, size - at - 4));
         const std::uint32_t end = read_marker(at + 4 + bytes);
         if (end != bytes)
-            fail_input(fmt::format("{}: record {}'s end marker is {}, its start marker {} (a truncated or corrupt file?)", name_,
-                                   number, end, bytes));
+            fail_input(
+                fmt::format("{}: record {}'s end marker is {}, its start marker {} (a truncated or corrupt file?)",
+                            name_, number, end, bytes));
         records_.push_back({at + 4, bytes, number});
         at += std::uint64_t{bytes} + 8;
     }

@@ -65,7 +65,7 @@ bool is_phantom_dump(const std::filesystem::path& file);
 struct PhantomRecord {
     std::uint64_t offset = 0; // of its first byte of data
     std::uint32_t bytes = 0;
-    std::size_t number = 0;   // counted from 1
+    std::size_t number = 0; // counted from 1
 };
 
 class PhantomRecords {

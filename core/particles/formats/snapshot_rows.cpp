@@ -45,20 +45,23 @@ SnapshotPart snapshot_part(const File& f)
     SnapshotPart part;
     ParticleSet& set = part.header;
     set.name = f.name;
-    if (!f.exists(coordinates_path)) fail_input(f.name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
+    if (!f.exists(coordinates_path))
+        fail_input(f.name + ": /PartType0/Coordinates is missing; expected a SWIFT or GADGET snapshot");
     const auto dimension = f.attribute("/Header", "Dimension");
     if (!dimension.empty() && dimension[0] != 2 && dimension[0] != 3)
         fail_input(fmt::format("{}: /Header Dimension is {}; expected 2 or 3", f.name, dimension[0]));
     set.dimension = dimension.empty() ? 3 : static_cast<int>(dimension[0]);
     const auto shape = f.shape(coordinates_path);
     if (shape.size() != 2 || (shape[1] != 3 && shape[1] != static_cast<hsize_t>(set.dimension)))
-        fail_input(fmt::format("{}: /PartType0/Coordinates has shape {}; expected (N, 3)", f.name, File::shape_text(shape)));
+        fail_input(
+            fmt::format("{}: /PartType0/Coordinates has shape {}; expected (N, 3)", f.name, File::shape_text(shape)));
     const std::size_t n = static_cast<std::size_t>(shape[0]);
     part.rows = n, part.columns = static_cast<std::size_t>(shape[1]);
     const auto this_file = f.attribute("/Header", "NumPart_ThisFile");
     if (!this_file.empty() && static_cast<std::size_t>(this_file[0]) != n)
-        fail_input(fmt::format("{}: /Header NumPart_ThisFile[0] is {} but /PartType0/Coordinates has {} rows; expected the two equal",
-                               f.name, this_file[0], n));
+        fail_input(fmt::format(
+            "{}: /Header NumPart_ThisFile[0] is {} but /PartType0/Coordinates has {} rows; expected the two equal",
+            f.name, this_file[0], n));
     if (set.dimension == 2) set.gravity = Eigen::Vector3d(0, -1, 0);
     // A column's dataset under any of its names, checked to hold one number per particle.
     auto column = [&](std::initializer_list<const char*> names) -> std::string {
@@ -144,22 +147,26 @@ std::optional<PartName> part_name(const std::filesystem::path& file)
 // Every part's header must be the first's: the parts of one snapshot.
 void check_same_header(const File& first, const File& part)
 {
-    for (const char* attr : {"NumFilesPerSnapshot", "NumPart_Total", "NumPart_Total_HighWord", "BoxSize", "MassTable", "Dimension"})
+    for (const char* attr :
+         {"NumFilesPerSnapshot", "NumPart_Total", "NumPart_Total_HighWord", "BoxSize", "MassTable", "Dimension"})
         if (part.attribute("/Header", attr) != first.attribute("/Header", attr))
-            fail_input(fmt::format("{}: /Header {} differs from {}'s; expected the parts of one snapshot", part.name, attr,
-                                   first.name));
+            fail_input(fmt::format("{}: /Header {} differs from {}'s; expected the parts of one snapshot", part.name,
+                                   attr, first.name));
 }
 
 // Every part must hold what the first holds.
 void check_same_columns(const SnapshotPart& first, const SnapshotPart& part)
 {
-    const std::pair<const std::string*, const std::string*> columns[] = {
-        {&first.h, &part.h}, {&first.mass, &part.mass}, {&first.density, &part.density}};
+    const std::pair<const std::string*, const std::string*> columns[] = {{&first.h, &part.h},
+                                                                         {&first.mass, &part.mass},
+                                                                         {&first.density, &part.density}};
     for (const auto& [mine, theirs] : columns)
         if (mine->empty() != theirs->empty())
-            fail_input(fmt::format("{}: its smoothing lengths, masses or densities are {} where the first part's are {}; "
-                                   "expected the parts of one snapshot",
-                                   part.header.name, theirs->empty() ? "missing" : "present", mine->empty() ? "missing" : "present"));
+            fail_input(
+                fmt::format("{}: its smoothing lengths, masses or densities are {} where the first part's are {}; "
+                            "expected the parts of one snapshot",
+                            part.header.name, theirs->empty() ? "missing" : "present",
+                            mine->empty() ? "missing" : "present"));
 }
 
 } // namespace
@@ -198,8 +205,9 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
     const auto name = part_name(f.name);
     // A file not named as a part that holds the declared rows is the whole snapshot (SWIFT's
     // virtual file over its parts, or the parts joined), whatever NumFilesPerSnapshot says.
-    const bool whole = files.empty() || files[0] <= 1 ||
-                       (!name && f.exists(coordinates_path) && static_cast<double>(f.rows(coordinates_path)) >= total.value_or(0.0));
+    const bool whole =
+        files.empty() || files[0] <= 1 ||
+        (!name && f.exists(coordinates_path) && static_cast<double>(f.rows(coordinates_path)) >= total.value_or(0.0));
     if (whole) {
         parts.list.push_back({file, 0, snapshot_part(f)});
         const std::size_t rows = parts.list.back().layout.rows;
@@ -210,16 +218,19 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
     } else {
         const auto count = static_cast<std::size_t>(files[0]);
         if (files[0] != std::floor(files[0]) || files[0] > 1e5)
-            fail_input(fmt::format("{}: /Header NumFilesPerSnapshot is {}; expected a whole number of files", f.name, files[0]));
+            fail_input(fmt::format("{}: /Header NumFilesPerSnapshot is {}; expected a whole number of files", f.name,
+                                   files[0]));
         if (!name)
-            fail_input(fmt::format("{}: one of {} files of a snapshot (/Header NumFilesPerSnapshot), but not named BASE.K.hdf5; "
-                                   "expected the parts' own names",
-                                   f.name, count));
+            fail_input(fmt::format(
+                "{}: one of {} files of a snapshot (/Header NumFilesPerSnapshot), but not named BASE.K.hdf5; "
+                "expected the parts' own names",
+                f.name, count));
         // A file beside the parts, its header copied from theirs, would otherwise read as them.
         if (name->k >= count)
-            fail_input(fmt::format("{}: part {} of a snapshot whose header says {} files (/Header NumFilesPerSnapshot), parts 0 "
-                                   "to {}; expected one of those",
-                                   f.name, name->k, count, count - 1));
+            fail_input(fmt::format(
+                "{}: part {} of a snapshot whose header says {} files (/Header NumFilesPerSnapshot), parts 0 "
+                "to {}; expected one of those",
+                f.name, name->k, count, count - 1));
         // Every part is opened and checked, whichever was named: each holds the rows its
         // NumPart_ThisFile says, and together they hold NumPart_Total.
         std::size_t first = 0;
@@ -227,8 +238,9 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
             const std::filesystem::path path = name->of(k);
             std::error_code ec;
             if (!std::filesystem::is_regular_file(path, ec))
-                fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, {}; expected every part", f.name, k, count,
-                                       path.string(), std::filesystem::is_directory(path, ec) ? "is a folder" : "does not exist"));
+                fail_input(fmt::format("{}: part {} of the snapshot's {} files, {}, {}; expected every part", f.name, k,
+                                       count, path.string(),
+                                       std::filesystem::is_directory(path, ec) ? "is a folder" : "does not exist"));
             const OpenFile part(path);
             check_same_header(f, part.file());
             SnapshotPart layout = snapshot_part(part.file());
@@ -239,9 +251,10 @@ SnapshotRows::SnapshotRows(const std::filesystem::path& file) : parts_(std::make
             inputs.insert(inputs.end(), part.linked_files().begin(), part.linked_files().end());
         }
         if (total && static_cast<double>(first) != *total)
-            fail_input(fmt::format("{}: the snapshot's {} files hold {} particles but /Header NumPart_Total declares {:.0f}; "
-                                   "expected the parts of one snapshot",
-                                   f.name, count, first, *total));
+            fail_input(
+                fmt::format("{}: the snapshot's {} files hold {} particles but /Header NumPart_Total declares {:.0f}; "
+                            "expected the parts of one snapshot",
+                            f.name, count, first, *total));
     }
     inputs.insert(inputs.end(), named->linked_files().begin(), named->linked_files().end());
     parts.total = parts.list.back().first + parts.list.back().layout.rows;

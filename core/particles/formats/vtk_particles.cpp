@@ -102,7 +102,8 @@ private:
     }
     std::size_t type_size(std::string_view type, const std::string& what) const
     {
-        if (type == "double" || type == "long" || type == "unsigned_long" || type == "vtktypeint64" || type == "vtktypeuint64")
+        if (type == "double" || type == "long" || type == "unsigned_long" || type == "vtktypeint64" ||
+            type == "vtktypeuint64")
             return 8;
         if (type == "float" || type == "int" || type == "unsigned_int" || type == "vtkIdType" || type == "vtktypeint32")
             return 4;
@@ -119,7 +120,8 @@ private:
         };
         if (type == "double") return std::bit_cast<double>(load(std::uint64_t{}));
         if (type == "float") return std::bit_cast<float>(load(std::uint32_t{}));
-        if (type == "long" || type == "vtktypeint64") return static_cast<double>(static_cast<std::int64_t>(load(std::uint64_t{})));
+        if (type == "long" || type == "vtktypeint64")
+            return static_cast<double>(static_cast<std::int64_t>(load(std::uint64_t{})));
         if (type == "unsigned_long" || type == "vtktypeuint64") return static_cast<double>(load(std::uint64_t{}));
         if (type == "unsigned_int") return load(std::uint32_t{});
         if (type == "int" || type == "vtkIdType" || type == "vtktypeint32")
@@ -145,7 +147,8 @@ private:
 // "# vtk DataFile Version", the title (returned), the encoding and an ASCII or BINARY point dataset.
 std::string read_vtk_header(VtkCursor& in)
 {
-    if (in.line().rfind("# vtk DataFile", 0) != 0) in.fail("not a legacy VTK file; expected \"# vtk DataFile Version\"");
+    if (in.line().rfind("# vtk DataFile", 0) != 0)
+        in.fail("not a legacy VTK file; expected \"# vtk DataFile Version\"");
     std::string title(in.line());
     const auto encoding = in.token();
     if (encoding != "ASCII" && encoding != "BINARY") in.fail(fmt::format("\"{}\": expected ASCII or BINARY", encoding));
@@ -177,8 +180,8 @@ private:
         if (keyword == "POINTS") {
             count = in_.count("POINTS");
             in_.values(in_.token(), 3 * count, &points, "POINTS");
-        } else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS" ||
-                   keyword == "CELLS") {
+        } else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" ||
+                   keyword == "TRIANGLE_STRIPS" || keyword == "CELLS") {
             in_.count(keyword.c_str());
             in_.values("int", in_.count(keyword.c_str()), nullptr, keyword);
         } else if (keyword == "CELL_TYPES") {
@@ -254,7 +257,8 @@ ParticleSet vtk_particle_set(const std::string& name, VtkSections& sections)
     }
     for (auto& [field, values] : sections.arrays) {
         if (values.size() != count)
-            fail_input(fmt::format("{}: array {} has {} values for {} points", name, field_name(field), values.size(), count));
+            fail_input(
+                fmt::format("{}: array {} has {} values for {} points", name, field_name(field), values.size(), count));
         (field == ParticleField::h ? set.h : field == ParticleField::mass ? set.mass : set.density) = std::move(values);
     }
     // VTK points are always 3D.
@@ -273,9 +277,10 @@ void apply_particle_radius(ParticleSet& set, const std::string& title, const Par
 {
     const bool splishsplash = title == "SPlisHSPlasH particle data";
     if (options.particle_radius && !splishsplash)
-        throw Error(ExitCode::usage, fmt::format("{}: {} is not SPlisHSPlasH's (its title is not "
-                                                 "\"SPlisHSPlasH particle data\"); the radius gives the h of its files only",
-                                                 setting_named("particle_radius"), set.name));
+        throw Error(ExitCode::usage,
+                    fmt::format("{}: {} is not SPlisHSPlasH's (its title is not "
+                                "\"SPlisHSPlasH particle data\"); the radius gives the h of its files only",
+                                setting_named("particle_radius"), set.name));
     if (!splishsplash || !set.h.empty()) return;
     if (!options.particle_radius) {
         set.support_per_radius = 4;

@@ -31,7 +31,7 @@ std::size_t slab_spill_bytes(std::size_t particles, bool per_particle);
 // One h (eta, N_H or the file's, not solved from the density), volumes uniform or the file's;
 // Error(input) for what a slab cannot give, naming it. `rows`, where given, receives every
 // particle's values in file order (a per-particle output).
-ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRows& file, const ParticleRequest& request,
-                                          const MeasuredRowsSink& rows);
+ParticleAnswer analyse_particles_in_slabs(const Kernel& kernel, const SnapshotRows& file,
+                                          const ParticleRequest& request, const MeasuredRowsSink& rows);
 
 } // namespace sphkern

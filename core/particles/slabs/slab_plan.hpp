@@ -6,8 +6,8 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
-#include "particles/formats/snapshot_rows.hpp"
 #include "particles/engine/neighbour_grid.hpp"
+#include "particles/formats/snapshot_rows.hpp"
 #include "particles/particle_volumes.hpp"
 #include "particles/smoothing_lengths.hpp"
 #include "support/process/parallel_for.hpp"
@@ -24,7 +24,7 @@ namespace sphkern {
 std::size_t slab_run_rows(int threads, std::size_t row_bytes, std::size_t room);
 
 struct SlabPlanInputs {
-    SmoothingSpec smoothing; // eta, N_H or the file's h
+    SmoothingSpec smoothing;                   // eta, N_H or the file's h
     VolumeModel volume = VolumeModel::uniform; // uniform or file
     std::optional<double> rho0;
     int threads = 1;
@@ -50,7 +50,8 @@ struct SlabPlan {
 
 // Throws Error(input) naming the file and the particle (its row) at fault, as the whole set's
 // checks would, and for a row of bins that alone exceeds the budget `slab_bytes`.
-SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPlanInputs& inputs, std::size_t slab_bytes);
+SlabPlan plan_slabs(const SnapshotRows& file, const Kernel& kernel, const SlabPlanInputs& inputs,
+                    std::size_t slab_bytes);
 
 // Rows [begin, end) of the file, validated and wrapped into the box, as the whole set's would be.
 ParticleSet read_valid_rows(const SnapshotRows& file, std::size_t begin, std::size_t end, int threads);

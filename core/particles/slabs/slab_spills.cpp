@@ -19,9 +19,12 @@ namespace {
 // Records read back a buffer at a time, the next record always at hand.
 class SpillReader {
 public:
-    SpillReader(const std::filesystem::path& file, std::size_t fields) : fields_(fields), file_(std::fopen(file.c_str(), "rb"))
+    SpillReader(const std::filesystem::path& file, std::size_t fields)
+        : fields_(fields), file_(std::fopen(file.c_str(), "rb"))
     {
-        if (!file_) throw Error(ExitCode::output, fmt::format("{}: cannot be read back ({})", file.string(), std::strerror(errno)));
+        if (!file_)
+            throw Error(ExitCode::output,
+                        fmt::format("{}: cannot be read back ({})", file.string(), std::strerror(errno)));
         buffer_.resize(fields * records_per_read);
         fill();
     }
@@ -60,9 +63,10 @@ std::filesystem::path SlabSpills::folder_parent()
     std::error_code error;
     const auto status = std::filesystem::status(given, error);
     if (!std::filesystem::exists(status))
-        throw Error(ExitCode::output, fmt::format("TMPDIR={}: no such folder; expected a folder for the slabs' temporary "
-                                                  "files (or TMPDIR unset, for /tmp)",
-                                                  given));
+        throw Error(ExitCode::output,
+                    fmt::format("TMPDIR={}: no such folder; expected a folder for the slabs' temporary "
+                                "files (or TMPDIR unset, for /tmp)",
+                                given));
     if (!std::filesystem::is_directory(status))
         throw Error(ExitCode::output, fmt::format("TMPDIR={}: not a folder; expected a folder for the slabs' temporary "
                                                   "files (or TMPDIR unset, for /tmp)",
@@ -74,7 +78,8 @@ SlabSpills::SlabSpills(std::size_t fields, std::size_t slabs) : fields_(fields)
 {
     std::string pattern = (folder_parent() / "sphkern-slabs-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
-        throw Error(ExitCode::output, fmt::format("{}: cannot make a folder for the slabs' results ({})", pattern, std::strerror(errno)));
+        throw Error(ExitCode::output,
+                    fmt::format("{}: cannot make a folder for the slabs' results ({})", pattern, std::strerror(errno)));
     folder_ = pattern;
     register_staging_path(folder_);
     for (std::size_t s = 0; s < slabs; ++s) {
@@ -96,17 +101,20 @@ void SlabSpills::append(std::size_t slab, std::span<const double> records)
 {
     std::FILE*& f = open_[slab];
     if (!f && !(f = std::fopen(files_[slab].c_str(), "wb")))
-        throw Error(ExitCode::output, fmt::format("{}: cannot be written ({})", files_[slab].string(), std::strerror(errno)));
+        throw Error(ExitCode::output,
+                    fmt::format("{}: cannot be written ({})", files_[slab].string(), std::strerror(errno)));
     if (std::fwrite(records.data(), sizeof(double), records.size(), f) != records.size())
-        throw Error(ExitCode::output, fmt::format("{}: the slabs' results cannot be written ({}); expected room in {}",
-                                                  files_[slab].string(), std::strerror(errno), folder_parent().string()));
+        throw Error(ExitCode::output,
+                    fmt::format("{}: the slabs' results cannot be written ({}); expected room in {}",
+                                files_[slab].string(), std::strerror(errno), folder_parent().string()));
 }
 
 void SlabSpills::close_slab(std::size_t slab)
 {
     std::FILE*& f = open_[slab];
     if (!f && !(f = std::fopen(files_[slab].c_str(), "wb")))
-        throw Error(ExitCode::output, fmt::format("{}: cannot be written ({})", files_[slab].string(), std::strerror(errno)));
+        throw Error(ExitCode::output,
+                    fmt::format("{}: cannot be written ({})", files_[slab].string(), std::strerror(errno)));
     const bool written = std::fclose(f) == 0;
     f = nullptr;
     if (!written)

@@ -34,7 +34,8 @@ public:
     // The rows [0, n) in file order, in runs of `run` rows: visit(begin, count, columns), with
     // columns[f][k] field f of row begin + k (every row in exactly one slab). The slabs' files
     // are read into a run's columns on `threads` threads, each slab's on one.
-    using Visit = std::function<void(std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& columns)>;
+    using Visit =
+        std::function<void(std::size_t begin, std::size_t count, const std::vector<std::vector<double>>& columns)>;
     void merge(std::size_t n, std::size_t run, int threads, const Visit& visit) const;
 
     // Slab s's records in the order appended: visit(record) for each.

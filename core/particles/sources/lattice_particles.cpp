@@ -28,7 +28,8 @@ ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& sp
     set.gravity = lattice.gravity;
     PeriodicBox box;
     for (int a = 0; a < 3; ++a)
-        box.edges.col(a) = lattice.basis.col(a) * static_cast<double>(a < dim ? spec.cells[static_cast<std::size_t>(a)] : 1);
+        box.edges.col(a) =
+            lattice.basis.col(a) * static_cast<double>(a < dim ? spec.cells[static_cast<std::size_t>(a)] : 1);
     set.box = box;
     const std::size_t n = static_cast<std::size_t>(count), sites = lattice.motif.size();
     const auto n1 = static_cast<std::size_t>(spec.cells[0]), n2 = static_cast<std::size_t>(spec.cells[1]);
@@ -43,7 +44,8 @@ ParticleSet lattice_particles(const Lattice& lattice, const LatticeBlockSpec& sp
         for (std::size_t i = begin; i < end; ++i) {
             const std::size_t cell = i / sites;
             const Eigen::Vector3d& site = lattice.motif[i % sites];
-            const Eigen::Vector3d f(static_cast<double>(cell % n1) + site.x(), static_cast<double>(cell / n1 % n2) + site.y(),
+            const Eigen::Vector3d f(static_cast<double>(cell % n1) + site.x(),
+                                    static_cast<double>(cell / n1 % n2) + site.y(),
                                     dim == 3 ? static_cast<double>(cell / (n1 * n2)) + site.z() : 0.0);
             Eigen::Vector3d p = lattice.basis * f;
             if (spec.sigma > 0) {

@@ -12,7 +12,7 @@ namespace sphkern {
 
 struct LatticeBlockSpec {
     std::array<long long, 3> cells = {1, 1, 1};
-    double sigma = 0;       // standard deviation per axis, in units of d
+    double sigma = 0; // standard deviation per axis, in units of d
     std::uint64_t seed = 1;
     bool rectangular = false; // cells of the lattice's rectangular cell (rectangular_cell), not its primitive one
 };

@@ -4,7 +4,6 @@
 #include "particles/particles_memory.hpp"
 #include "support/process/parallel_for.hpp"
 
-
 namespace sphkern {
 
 SourceKind source_kind(const std::string& spec)
@@ -20,7 +19,8 @@ ParticleSet load_particles(const ParticleSource& source, int threads)
 {
     threads = worker_threads(threads);
     switch (source.kind) {
-    case SourceKind::lattice: return lattice_particles(block_cell(load_lattice(source.spec), source.block), source.block, threads);
+    case SourceKind::lattice:
+        return lattice_particles(block_cell(load_lattice(source.spec), source.block), source.block, threads);
     case SourceKind::poisson: return poisson_particles(source.poisson, threads);
     case SourceKind::file: break;
     }

@@ -16,12 +16,12 @@ enum class SourceKind { lattice, poisson, file };
 
 struct ParticleSource {
     SourceKind kind = SourceKind::lattice;
-    std::string spec;                     // the lattice (name or file) or the particle file
-    LatticeBlockSpec block;               // lattice
-    std::size_t cell_counts = 0;          // lattice: how many counts were given (block.cells holds 1 for the rest)
-    PoissonSpec poisson;                  // poisson
-    ParticleFileOptions file;             // file
-    std::optional<Eigen::Vector3d> box;   // a periodic rectangular box for a file (or poisson's sides)
+    std::string spec;                   // the lattice (name or file) or the particle file
+    LatticeBlockSpec block;             // lattice
+    std::size_t cell_counts = 0;        // lattice: how many counts were given (block.cells holds 1 for the rest)
+    PoissonSpec poisson;                // poisson
+    ParticleFileOptions file;           // file
+    std::optional<Eigen::Vector3d> box; // a periodic rectangular box for a file (or poisson's sides)
 };
 
 // "poisson", a particle file (by extension or content), else a lattice name or file.

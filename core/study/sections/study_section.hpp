@@ -24,9 +24,9 @@ class KernelRegistry;
 class SectionResults {
 public:
     virtual ~SectionResults() = default;
-    virtual nlohmann::json json(const Study& study) const = 0;          // its entry in results.json
-    virtual std::string markdown(const Study& study) const = 0;         // its part of the report
-    virtual void draw(const Study& study, Canvas& canvas) const = 0;    // its figures
+    virtual nlohmann::json json(const Study& study) const = 0;       // its entry in results.json
+    virtual std::string markdown(const Study& study) const = 0;      // its part of the report
+    virtual void draw(const Study& study, Canvas& canvas) const = 0; // its figures
 };
 
 // A section with its inputs resolved and checked: run after the bulk cases, which it may read.

@@ -20,8 +20,11 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
     const std::string name = file.string();
     struct stat st {};
     if (::lstat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-        throw Error(ExitCode::output, name + ": " + (S_ISDIR(st.st_mode) ? "is a folder, expected a file name"
-                                                                          : "is not a regular file (a link, device or pipe); refusing to replace it"));
+        throw Error(ExitCode::output,
+                    name + ": " +
+                        (S_ISDIR(st.st_mode)
+                             ? "is a folder, expected a file name"
+                             : "is not a regular file (a link, device or pipe); refusing to replace it"));
     if (target.filename().empty()) throw Error(ExitCode::output, name + ": expected a file name");
     std::string name_pattern = ".";
     name_pattern += target.filename().string();
@@ -54,7 +57,8 @@ void write_file_atomically(const fs::path& file, const std::function<void(std::o
     // Looked at again just before: a link or device put there meanwhile is not replaced.
     if (::lstat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
         discard();
-        throw Error(ExitCode::output, name + ": is not a regular file (a link, device or pipe); refusing to replace it");
+        throw Error(ExitCode::output,
+                    name + ": is not a regular file (a link, device or pipe); refusing to replace it");
     }
     if (std::rename(partial.c_str(), target.c_str()) != 0) {
         int error = errno;

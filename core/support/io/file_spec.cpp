@@ -26,7 +26,8 @@ std::string resolve_beside(const std::string& spec, const fs::path& file, const 
         for (std::size_t plus;; from = plus + 1) {
             plus = spec.find('+', from);
             const std::string part = spec.substr(from, plus == std::string::npos ? std::string::npos : plus - from);
-            joined += (from ? "+" : "") + (part.find('+') == std::string::npos ? resolve_beside(part, file, extensions) : part);
+            joined += (from ? "+" : "") +
+                      (part.find('+') == std::string::npos ? resolve_beside(part, file, extensions) : part);
             if (plus == std::string::npos) break;
         }
         return joined;

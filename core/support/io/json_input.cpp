@@ -7,16 +7,16 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fcntl.h>
-#include <set>
-#include <nlohmann/json.hpp>
-#include <sys/stat.h>
-#include <unistd.h>
-#include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <sys/stat.h>
 #include <system_error>
+#include <unistd.h>
 
 namespace sphkern {
 namespace fs = std::filesystem;

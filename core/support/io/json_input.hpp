@@ -35,7 +35,8 @@ inline constexpr int max_json_depth = 64;
 class JsonNode {
 public:
     JsonNode(const nlohmann::json& value, std::string file, std::string path = "")
-        : value_(&value), file_(std::move(file)), path_(std::move(path)) {}
+        : value_(&value), file_(std::move(file)), path_(std::move(path))
+    {}
 
     const nlohmann::json& value() const { return *value_; }
     const std::string& file() const { return file_; }
@@ -54,11 +55,11 @@ public:
 
     void expect_object() const;
     std::size_t expect_array(std::size_t min_size, std::size_t max_size = 100000) const;
-    double number() const;                 // finite number
+    double number() const; // finite number
     double number_in(double lo, double hi) const;
     long long integer_in(long long lo, long long hi) const;
-    std::string string() const;            // non-empty string
-    std::string text() const;              // any string, empty too
+    std::string string() const; // non-empty string
+    std::string text() const;   // any string, empty too
     bool boolean() const;
     bool is_string() const { return value_->is_string(); }
     bool is_number() const { return value_->is_number(); }
@@ -73,6 +74,5 @@ private:
 };
 
 std::string json_type_name(const nlohmann::json& value);
-
 
 } // namespace sphkern

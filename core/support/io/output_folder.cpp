@@ -75,25 +75,31 @@ OutputFolder::OutputFolder(const fs::path& target, bool overwrite) : overwrite_(
     if (ec || target_.filename().empty() || target_.filename() == "..")
         throw Error(ExitCode::output, target.string() + ": not a usable name for a results folder");
     if (lexists(target_)) {
-        if (!overwrite_) throw Error(ExitCode::output, target_.string() + ": already exists; use " + setting_named("force") + " to replace it");
+        if (!overwrite_)
+            throw Error(ExitCode::output,
+                        target_.string() + ": already exists; use " + setting_named("force") + " to replace it");
         if (!written_by_sphkern(target_))
             throw Error(ExitCode::output, target_.string() + ": exists and is not a results folder sphkern wrote (no " +
                                               marker_name + " inside); refusing to replace it");
     }
     make_parents();
     remove_stale_staging(target_);
-    std::string pattern = (target_.parent_path() / (staging_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
+    std::string pattern =
+        (target_.parent_path() / (staging_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
     if (!::mkdtemp(pattern.data())) {
         int error = errno;
         remove_created_parents();
-        throw Error(ExitCode::output, target_.parent_path().string() + ": cannot create a folder there: " + std::strerror(error));
+        throw Error(ExitCode::output,
+                    target_.parent_path().string() + ": cannot create a folder there: " + std::strerror(error));
     }
     staging_ = pattern;
     register_staging_path(staging_);
     spdlog::debug("staging results in {}", staging_.string());
     // mkdtemp makes it private; results are ordinary files (the umask still applies to them).
-    fs::permissions(staging_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                  fs::perms::others_read | fs::perms::others_exec, ec);
+    fs::permissions(staging_,
+                    fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                        fs::perms::others_exec,
+                    ec);
     try {
         write(marker_name, "This folder was written by sphkern, which may replace it when told to.\n");
     } catch (...) { // the destructor does not run for a constructor that throws
@@ -123,13 +129,15 @@ void OutputFolder::make_parents()
         created_parents_.push_back(p);
     }
     // A run that dies at a signal or a plugin's crash removes them too, from the handler.
-    if (!created_parents_.empty()) register_created_folders(created_parents_.back(), static_cast<int>(created_parents_.size()));
+    if (!created_parents_.empty())
+        register_created_folders(created_parents_.back(), static_cast<int>(created_parents_.size()));
 }
 
 void OutputFolder::remove_created_parents()
 {
     if (!created_parents_.empty()) unregister_created_folders();
-    for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it) ::rmdir(it->c_str()); // only if empty
+    for (auto it = created_parents_.rbegin(); it != created_parents_.rend(); ++it)
+        ::rmdir(it->c_str()); // only if empty
     created_parents_.clear();
 }
 
@@ -174,16 +182,19 @@ void OutputFolder::commit()
     }
     if (error == EEXIST && !overwrite_)
         throw Error(ExitCode::output, target_.string() + ": already exists (it appeared while this run worked); use " +
-                                                         setting_named("force") + " to replace it");
+                                          setting_named("force") + " to replace it");
     if (error != EEXIST && error != ENOTEMPTY)
-        throw Error(ExitCode::output, target_.string() + ": cannot move the results into place: " + std::strerror(error));
+        throw Error(ExitCode::output,
+                    target_.string() + ": cannot move the results into place: " + std::strerror(error));
     // --force: exchange with the existing folder if it is one sphkern wrote, then remove the
     // old one, which now sits at the staging path. What was replaced is checked again after
     // the exchange: another process may have moved a folder of its own to the target in
     // between. Such a folder is exchanged back, never removed, and the signal handler leaves
     // the staging path alone while a folder not ours may sit there.
-    const std::string not_ours = std::string(": exists and is not a results folder sphkern wrote (no ") + marker_name + " inside); ";
-    if (!written_by_sphkern(target_)) throw Error(ExitCode::output, target_.string() + not_ours + "refusing to replace it");
+    const std::string not_ours =
+        std::string(": exists and is not a results folder sphkern wrote (no ") + marker_name + " inside); ";
+    if (!written_by_sphkern(target_))
+        throw Error(ExitCode::output, target_.string() + not_ours + "refusing to replace it");
     unregister_staging_path(staging_);
     if (rename_with(staging_, target_, RENAME_EXCHANGE) != 0) {
         const int error = errno;
@@ -193,13 +204,15 @@ void OutputFolder::commit()
     if (!written_by_sphkern(staging_)) {
         if (rename_with(staging_, target_, RENAME_EXCHANGE) == 0) {
             register_staging_path(staging_);
-            throw Error(ExitCode::output, target_.string() + not_ours + "it was moved there while the results were "
-                                                                         "moved in, and is back in place");
+            throw Error(ExitCode::output, target_.string() + not_ours +
+                                              "it was moved there while the results were "
+                                              "moved in, and is back in place");
         }
         keep_staging_ = true; // the other folder sits at the staging path: it is never removed
-        throw Error(ExitCode::output, target_.string() + not_ours + "it was moved there while the results were moved "
-                                                                     "in; it is now at " + staging_.string() +
-                                          " (nothing was removed)");
+        throw Error(ExitCode::output, target_.string() + not_ours +
+                                          "it was moved there while the results were moved "
+                                          "in; it is now at " +
+                                          staging_.string() + " (nothing was removed)");
     }
     committed_ = true;
     std::error_code ec;

@@ -41,9 +41,9 @@ std::string file_sha256_hex(const std::filesystem::path& file, const std::functi
 }
 
 FileDigest::FileDigest(const std::filesystem::path& file)
-    : digest_(std::async(std::launch::async, [this, file] { return file_sha256_hex(file, [this] { return stop_.load(); }); }))
-{
-}
+    : digest_(std::async(std::launch::async,
+                         [this, file] { return file_sha256_hex(file, [this] { return stop_.load(); }); }))
+{}
 
 FileDigest::~FileDigest()
 {

@@ -15,8 +15,9 @@ VtkFormat vtk_format_of(const std::string& path, const std::string& option)
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension == ".vtk") return VtkFormat::legacy;
     if (extension == ".vtu") return VtkFormat::xml;
-    throw Error(ExitCode::usage, option + " " + path +
-                                     ": expected a file name ending in .vtk (legacy VTK) or .vtu (ParaView's XML format)");
+    throw Error(ExitCode::usage,
+                option + " " + path +
+                    ": expected a file name ending in .vtk (legacy VTK) or .vtu (ParaView's XML format)");
 }
 
 } // namespace sphkern

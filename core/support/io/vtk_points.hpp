@@ -18,7 +18,8 @@ inline void write_vtk_points(ChunkedWriter& out, const char* title, std::size_t 
         fmt::format_to(std::back_inserter(row), "{} {} {}\n", x[i], y[i], z[i]);
     });
     out.print("VERTICES {} {}\n", n, 2 * n);
-    out.rows(n, threads, [](fmt::memory_buffer& row, std::size_t i) { fmt::format_to(std::back_inserter(row), "1 {}\n", i); });
+    out.rows(n, threads,
+             [](fmt::memory_buffer& row, std::size_t i) { fmt::format_to(std::back_inserter(row), "1 {}\n", i); });
     out.print("POINT_DATA {}\n", n);
 }
 

@@ -73,12 +73,14 @@ void write_vtu(std::ostream& out, const VtuPoints& points, const std::vector<Vtu
         << "  <UnstructuredGrid>\n"
         << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n) << "      <PointData>\n";
     for (const auto& a : arrays)
-        out << fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
-                           "offset=\"{}\"/>\n",
-                           xml_attribute(a.name), a.components, next(n * a.components * sizeof(double)));
+        out << fmt::format(
+            "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
+            "offset=\"{}\"/>\n",
+            xml_attribute(a.name), a.components, next(n * a.components * sizeof(double)));
     out << "      </PointData>\n      <Points>\n"
-        << fmt::format("        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n",
-                       next(n * 3 * sizeof(double)))
+        << fmt::format(
+               "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n",
+               next(n * 3 * sizeof(double)))
         << "      </Points>\n      <Cells>\n"
         << fmt::format("        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"{}\"/>\n",
                        next(n * sizeof(std::int64_t)))
@@ -112,7 +114,8 @@ void write_pvd(std::ostream& out, const std::vector<PvdEntry>& entries)
         << fmt::format("<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"{}\">\n", native_byte_order)
         << "  <Collection>\n";
     for (const auto& e : entries)
-        out << fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time, xml_attribute(e.file));
+        out << fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", e.time,
+                           xml_attribute(e.file));
     out << "  </Collection>\n</VTKFile>\n";
 }
 

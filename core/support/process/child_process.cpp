@@ -23,8 +23,7 @@ void kill_and_reap(pid_t pid)
 {
     ::kill(pid, SIGKILL);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
 }
 
 // The child's side: its own process group, stdin from /dev/null, stdout and stderr into

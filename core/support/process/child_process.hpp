@@ -12,7 +12,7 @@ struct ProgramResult {
     int exit_status = -1; // -1 when killed by a signal
     int signal = 0;
     bool timed_out = false;
-    std::string output;   // stdout and stderr together, at most the first 64 KiB
+    std::string output; // stdout and stderr together, at most the first 64 KiB
 };
 
 // Runs `argv[0]` (a path, not searched on PATH) with `argv` in `folder`. Throws

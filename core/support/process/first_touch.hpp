@@ -25,7 +25,8 @@ struct FirstTouchAllocator : std::allocator<T> {
     };
     FirstTouchAllocator() = default;
     template <class U>
-    FirstTouchAllocator(const FirstTouchAllocator<U>&) noexcept {}
+    FirstTouchAllocator(const FirstTouchAllocator<U>&) noexcept
+    {}
 
     T* allocate(std::size_t n)
     {

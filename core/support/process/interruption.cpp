@@ -5,10 +5,10 @@
 #include <atomic>
 #include <csignal>
 #include <cstring>
-#include <exception>
-#include <mutex>
 #include <dirent.h>
+#include <exception>
 #include <fcntl.h>
+#include <mutex>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -180,7 +180,9 @@ void throw_if_interrupted()
 {
     int sig = received.load();
     if (sig == 0) return;
-    const char* name = sig == SIGINT ? "interrupted (SIGINT)" : sig == SIGTERM ? "terminated (SIGTERM)" : "hung up (SIGHUP)";
+    const char* name = sig == SIGINT    ? "interrupted (SIGINT)"
+                       : sig == SIGTERM ? "terminated (SIGTERM)"
+                                        : "hung up (SIGHUP)";
     throw Error(ExitCode::interrupted, std::string(name) + ": nothing was written");
 }
 

@@ -63,7 +63,8 @@ void unregister_staging_path(const std::filesystem::path& path);
 void register_created_folders(const std::filesystem::path& innermost, int levels);
 void unregister_created_folders();
 
-// Removes the registered staging paths (and created folders) now; async-signal-safe (for handlers that end the process).
+// Removes the registered staging paths (and created folders) now; async-signal-safe (for handlers that end the
+// process).
 void remove_staging_now();
 
 } // namespace sphkern

@@ -57,8 +57,7 @@ void write_all(int fd, const std::string& data)
 
 void wait_for(pid_t pid, int* status)
 {
-    while (::waitpid(pid, status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, status, 0) < 0 && errno == EINTR) {}
 }
 
 struct ChildAnswer {
@@ -108,8 +107,8 @@ std::variant<std::string, IsolatedFailure> outcome(const ChildAnswer& answer, in
         return IsolatedFailure{"crashed with signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")"};
     }
     const std::string& received = answer.received;
-    if (received.empty()) return IsolatedFailure{"exited with status " + std::to_string(WEXITSTATUS(status)) +
-                                                  " before answering"};
+    if (received.empty())
+        return IsolatedFailure{"exited with status " + std::to_string(WEXITSTATUS(status)) + " before answering"};
     if (received[0] == 'e') return IsolatedFailure{"threw an exception: " + received.substr(1)};
     return received.substr(1);
 }
@@ -144,8 +143,7 @@ std::variant<std::string, IsolatedFailure> run_isolated(const std::function<std:
     // What the work left in the child's process group (a plugin's forked children) ends with
     // it: the group is killed while the child, exited but not reaped, still holds its id.
     siginfo_t exited{};
-    while (::waitid(P_PID, static_cast<id_t>(pid), &exited, WEXITED | WNOWAIT) != 0 && errno == EINTR) {
-    }
+    while (::waitid(P_PID, static_cast<id_t>(pid), &exited, WEXITED | WNOWAIT) != 0 && errno == EINTR) {}
     ::kill(-pid, SIGKILL);
     int status = 0;
     wait_for(pid, &status);

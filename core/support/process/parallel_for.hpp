@@ -84,7 +84,8 @@ public:
     {
         const std::size_t blocks = (n + block_size - 1) / block_size;
         std::atomic<std::size_t> next{0};
-        const int workers = static_cast<int>(std::clamp<std::size_t>(blocks, 1, static_cast<std::size_t>(std::max(1, threads))));
+        const int workers =
+            static_cast<int>(std::clamp<std::size_t>(blocks, 1, static_cast<std::size_t>(std::max(1, threads))));
         run(static_cast<std::size_t>(workers), workers, [&](int thread, std::size_t, std::size_t) {
             for (std::size_t b; keep_going() && (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
                 const std::size_t begin = b * block_size, end = std::min(n, (b + 1) * block_size);
@@ -141,8 +142,9 @@ Accumulator parallel_reduce(std::size_t n, int threads, const Accumulator& zero,
 template <class Term>
 double parallel_sum(std::size_t n, int threads, const Term& term)
 {
-    return parallel_reduce(n, threads, 0.0, [&](std::size_t i, double& sum) { sum += term(i); },
-                           [](double& total, double block) { total += block; });
+    return parallel_reduce(
+        n, threads, 0.0, [&](std::size_t i, double& sum) { sum += term(i); },
+        [](double& total, double block) { total += block; });
 }
 
 // The first i in [0, n) (the lowest) for which bad(i) holds, none if none: blocks are checked

@@ -18,14 +18,15 @@ std::string estimate(double elapsed, std::size_t done, std::size_t total, const 
     if (done == 0 || done >= total) return "";
     const double left = elapsed / double(done) * double(total - done);
     return (left < 90 ? fmt::format(", about {:.0f} s left", std::ceil(left))
-                      : fmt::format(", about {:.0f} min left", std::ceil(left / 60))) + scope;
+                      : fmt::format(", about {:.0f} min left", std::ceil(left / 60))) +
+           scope;
 }
 
 } // namespace
 
 Progress::Progress(std::string what, std::size_t total, std::string scope)
-    : what_(std::move(what)), scope_(std::move(scope)), total_(total), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()),
-      last_line_(start_)
+    : what_(std::move(what)), scope_(std::move(scope)), total_(total), terminal_(::isatty(STDERR_FILENO) == 1),
+      start_(Clock::now()), last_line_(start_)
 {
     if (const char* seconds = std::getenv("SPHKERN_PROGRESS_SECONDS")) {
         char* end = nullptr;

@@ -16,10 +16,10 @@ struct WorkerPool {
     std::atomic<bool> busy{false};
     std::mutex mutex;
     std::condition_variable wake, finished;
-    int workers = 0;                 // threads 1 .. workers
-    int taking_part = 0;             // of this pass: threads 1 .. taking_part - 1
-    int running = 0;                 // of this pass, not yet returned
-    std::uint64_t pass = 0;          // counts the passes, so that a woken thread knows a new one came
+    int workers = 0;        // threads 1 .. workers
+    int taking_part = 0;    // of this pass: threads 1 .. taking_part - 1
+    int running = 0;        // of this pass, not yet returned
+    std::uint64_t pass = 0; // counts the passes, so that a woken thread knows a new one came
     const std::function<void(int)>* job = nullptr;
 
     // `seen`: the last pass before this thread started.

@@ -42,15 +42,13 @@ void require_at_most_one(std::initializer_list<std::pair<bool, const ValueSource
     if (count > 1) throw Error(first->code, "give one of " + names);
 }
 
-bool k_in_range(double k)
-{
-    return std::isfinite(k) && k > 0 && k <= k_limit;
-}
+bool k_in_range(double k) { return std::isfinite(k) && k > 0 && k <= k_limit; }
 
 void check_k(double k, const ValueSource& source, std::string_view hint)
 {
     if (!k_in_range(k))
-        throw Error(source.code, fmt::format("{} is not allowed, expected a number in (0, 100]{}", source.about(k), hint));
+        throw Error(source.code,
+                    fmt::format("{} is not allowed, expected a number in (0, 100]{}", source.about(k), hint));
 }
 
 void check_range(double value, double min, double max, const ValueSource& source)
@@ -73,10 +71,7 @@ void check_positive(double value, const ValueSource& source)
         throw Error(source.code, source.about(value) + ": expected a positive finite number");
 }
 
-void check_steps(int steps, const ValueSource& source)
-{
-    check_range(steps, 1, max_scan_steps, source);
-}
+void check_steps(int steps, const ValueSource& source) { check_range(steps, 1, max_scan_steps, source); }
 
 namespace {
 
@@ -96,8 +91,9 @@ std::string bare(const std::string& option)
 void check_k_interval(double k_min, double k_max, const ValueSource& interval, IntervalEnds kind)
 {
     if (!valid_interval(k_min, k_max, kind))
-        throw Error(interval.code, fmt::format("{}: [{}, {}] is not allowed, expected 0 < min {} max <= 100", interval.name,
-                                               k_min, k_max, kind == IntervalEnds::distinct ? "<" : "<="));
+        throw Error(interval.code,
+                    fmt::format("{}: [{}, {}] is not allowed, expected 0 < min {} max <= 100", interval.name, k_min,
+                                k_max, kind == IntervalEnds::distinct ? "<" : "<="));
 }
 
 void check_k_interval(double k_min, double k_max, const ValueSource& min, const ValueSource& max, IntervalEnds kind)
@@ -166,8 +162,8 @@ std::vector<double> parse_number_list(const std::string& text, const ValueSource
         char* end = nullptr;
         const double v = std::strtod(item.c_str(), &end);
         if (item.empty() || !end || *end != '\0' || !std::isfinite(v))
-            throw Error(source.code, source.name + " " + one_line(text) + ": \"" + one_line(item) +
-                                         "\" is not a finite number");
+            throw Error(source.code,
+                        source.name + " " + one_line(text) + ": \"" + one_line(item) + "\" is not a finite number");
         values.push_back(v);
     }
     if (values.size() < min_count || values.size() > max_count)

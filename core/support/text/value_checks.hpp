@@ -66,7 +66,8 @@ void check_range(double value, double min, double max, const ValueSource& source
 // A number in [min, max], or (min, max] where `low` is open (NaN refused), with the unit after
 // the interval: "--dt 0.6: expected a number in (0, 0.5] (units of h / c)", "eta = 0: expected ...".
 enum class LowEnd { closed, open };
-void check_number(double value, double min, double max, LowEnd low, const ValueSource& source, std::string_view unit = {});
+void check_number(double value, double min, double max, LowEnd low, const ValueSource& source,
+                  std::string_view unit = {});
 // A positive finite number: "--rho0 0: expected a positive finite number".
 void check_positive(double value, const ValueSource& source);
 // The intervals of a k scan (roots --stability, stability over k): 1 to 2000.
@@ -76,7 +77,8 @@ void check_steps(int steps, const ValueSource& source);
 // A k interval: 0 < min < max <= 100, or min <= max where one point is a valid interval.
 enum class IntervalEnds { distinct, may_meet };
 // Named as one value: "k interval: [1.3, 1] is not allowed, expected 0 < min < max <= 100".
-void check_k_interval(double k_min, double k_max, const ValueSource& interval, IntervalEnds kind = IntervalEnds::distinct);
+void check_k_interval(double k_min, double k_max, const ValueSource& interval,
+                      IntervalEnds kind = IntervalEnds::distinct);
 // Two values: "--kmin 1.2 --kmax 1: expected 0 < kmin < kmax <= 100" for options, "kmin = 1.2,
 // kmax = 1: ..." for arguments (the exit code is min's).
 void check_k_interval(double k_min, double k_max, const ValueSource& min, const ValueSource& max,

@@ -16,7 +16,8 @@ namespace sphkern {
 namespace {
 
 // The sources in the order of the study, each with its cases.
-std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source(const std::vector<ParticlesCase>& cases)
+std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> by_source(
+    const std::vector<ParticlesCase>& cases)
 {
     std::vector<std::pair<std::string, std::vector<const ParticlesCase*>>> groups;
     for (const auto& c : cases) {
@@ -70,17 +71,20 @@ std::string ParticlesResults::markdown(const Study&) const
         "sum form one h below the surface, as RMS over the set, against the neighbour number "
         "N_H = c_D (R h)^D / V (Dehnen & Aly 2012).\n\n";
     for (const auto& [source, group] : by_source(cases)) {
-        s += fmt::format("### {} ({} particles, {}D, volumes {})\n\n{}| kernel | N_H | h/l | neighbours | mean e0 | RMS e0 | "
-                         "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) |\n|---|---|---|---|---|---|---|---|---|---|\n",
-                         source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume),
-                         group.front()->code.empty() ? "" : "At " + group.front()->code + ".\n\n");
+        s += fmt::format(
+            "### {} ({} particles, {}D, volumes {})\n\n{}| kernel | N_H | h/l | neighbours | mean e0 | RMS e0 | "
+            "RMS e0 of a Poisson set | RMS eps_gradp | RMS eps_gradp_sum | RMS abs(e1) "
+            "|\n|---|---|---|---|---|---|---|---|---|---|\n",
+            source, group.front()->particles, group.front()->dimension, volume_model_name(group.front()->volume),
+            group.front()->code.empty() ? "" : "At " + group.front()->code + ".\n\n");
         for (const auto* c : group)
             for (std::size_t j = 0; j < c->points.size(); ++j) {
                 const auto& p = c->points[j];
-                s += fmt::format("| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
-                                 c->kernel_label, p.nh, p.eta, p.mean_neighbours, p.statistic("e0").mean,
-                                 p.statistic("e0").rms, c->poisson_rms_e0[j], p.statistic("eps_gradp").rms,
-                                 p.statistic("eps_gradp_sum").rms, p.statistic("|e1|").rms);
+                s += fmt::format(
+                    "| {} | {:.1f} | {:.4f} | {:.2f} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |\n",
+                    c->kernel_label, p.nh, p.eta, p.mean_neighbours, p.statistic("e0").mean, p.statistic("e0").rms,
+                    c->poisson_rms_e0[j], p.statistic("eps_gradp").rms, p.statistic("eps_gradp_sum").rms,
+                    p.statistic("|e1|").rms);
             }
         s += "\n";
     }
@@ -89,7 +93,8 @@ std::string ParticlesResults::markdown(const Study&) const
 
 void ParticlesResults::draw(const Study&, Canvas& canvas) const
 {
-    static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+    static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                    "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
     std::set<std::string> taken;
     for (const auto& [source, group] : by_source(cases)) {
         std::string data, e0_plot, gradp_plot;
@@ -102,10 +107,10 @@ void ParticlesResults::draw(const Study&, Canvas& canvas) const
             }
             data += "EOD\n";
             const char* colour = colours[i % 8];
-            const std::string style = fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour,
-                                                  group[i]->kernel_label);
-            e0_plot += fmt::format("{}$c{} using 1:2 {}, $c{} using 1:4 with lines dt 2 lw 1 lc rgb '{}' notitle", i ? ", " : "",
-                                   i, style, i, colour);
+            const std::string style =
+                fmt::format("with linespoints lw 2 pt 7 ps 0.5 lc rgb '{}' title '{}'", colour, group[i]->kernel_label);
+            e0_plot += fmt::format("{}$c{} using 1:2 {}, $c{} using 1:4 with lines dt 2 lw 1 lc rgb '{}' notitle",
+                                   i ? ", " : "", i, style, i, colour);
             gradp_plot += fmt::format("{}$c{} using 1:3 {}", i ? ", " : "", i, style);
         }
         double lo = INFINITY, hi = 0;
@@ -113,7 +118,8 @@ void ParticlesResults::draw(const Study&, Canvas& canvas) const
             for (const auto& p : c->points) lo = std::min(lo, p.nh), hi = std::max(hi, p.nh);
         const std::string body = fmt::format(
             "{}set multiplot layout 1,2 title 'Consistency errors on {}, against the neighbour number' noenhanced\n"
-            "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\n{}set xlabel 'neighbour number N_H (dimensionless)'\n"
+            "set logscale xy\nset grid\nset xrange [{:.6g}:{:.6g}]\n{}set xlabel 'neighbour number N_H "
+            "(dimensionless)'\n"
             "set key outside right top noenhanced\n"
             "set title 'density of a constant field (dashed: a Poisson set of as many particles)'\n"
             "set ylabel 'RMS of e0 (relative)'\nplot {}\n"
@@ -136,11 +142,18 @@ nlohmann::json ParticlesResults::json(const Study&) const
             for (const auto& [key, s] : p.statistics)
                 statistics[key] = {{"mean", s.mean}, {"std", s.std}, {"rms", s.rms}, {"min", s.min},
                                    {"max", s.max},   {"p1", s.p1},   {"p50", s.p50}, {"p99", s.p99}};
-            points.push_back({{"nh", p.nh}, {"h_over_l", p.eta}, {"mean_neighbours", p.mean_neighbours},
-                              {"poisson_rms_e0", c.poisson_rms_e0[j]}, {"statistics", statistics}});
+            points.push_back({{"nh", p.nh},
+                              {"h_over_l", p.eta},
+                              {"mean_neighbours", p.mean_neighbours},
+                              {"poisson_rms_e0", c.poisson_rms_e0[j]},
+                              {"statistics", statistics}});
         }
-        list.push_back({{"source", c.source}, {"kernel", c.kernel_label}, {"dimension", c.dimension},
-                        {"particles", c.particles}, {"volume", volume_model_name(c.volume)}, {"points", points}});
+        list.push_back({{"source", c.source},
+                        {"kernel", c.kernel_label},
+                        {"dimension", c.dimension},
+                        {"particles", c.particles},
+                        {"volume", volume_model_name(c.volume)},
+                        {"points", points}});
         if (!c.code.empty()) list.back()["code"] = c.code;
     }
     return list;

@@ -26,8 +26,9 @@ std::uint64_t seed_of(const JsonNode& node)
 void refuse_old_eta(const JsonNode& node)
 {
     if (auto eta = node.find("eta"))
-        eta->error("\"eta\" is the old name of sphkern's own h over the mean spacing; expected \"h_over_l\" (SWIFT's eta "
-                   "is a code's setting: \"code\": {\"name\": \"swift\", \"eta\": ...})");
+        eta->error(
+            "\"eta\" is the old name of sphkern's own h over the mean spacing; expected \"h_over_l\" (SWIFT's eta "
+            "is a code's setting: \"code\": {\"name\": \"swift\", \"eta\": ...})");
 }
 
 // Read as numbers and strings, checked by the relax request's own checks, named by pointer.
@@ -43,8 +44,12 @@ StudyRelax read_relax(const JsonNode& node)
     RelaxSources sources = relax_sources(FrontEnd::python);
     sources.smoothing = {source("h_over_l"), source("nh"), source("k"), source("support_per_h"), ValueSource{}};
     sources.steps = source("steps");
-    auto number = [&](const char* key) { const auto n = node.find(key); return n ? std::optional(n->number()) : std::nullopt; };
-    r.smoothing = smoothing_spec({number("h_over_l"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
+    auto number = [&](const char* key) {
+        const auto n = node.find(key);
+        return n ? std::optional(n->number()) : std::nullopt;
+    };
+    r.smoothing =
+        smoothing_spec({number("h_over_l"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
     if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(INT_MIN, INT_MAX));
     if (auto method = node.find("method")) r.settings.method = relax_method_of(method->string(), source("method"));
     check_relax_settings(r.settings, sources);
@@ -55,7 +60,8 @@ StudyRelax read_relax(const JsonNode& node)
 SourceSources sources_at(const JsonNode& node, const std::string& dim)
 {
     auto at = [&](const std::string& key) { return ValueSource::json(node.file(), node.path() + key); };
-    return {at("/size"), at("/sigma"), at("/count"), at(dim), at("/box"), at("/array"), at("/particle_radius"), at("/cell"), ""};
+    return {at("/size"),  at("/sigma"),           at("/count"), at(dim), at("/box"),
+            at("/array"), at("/particle_radius"), at("/cell"),  ""};
 }
 
 // A lattice block: its size in cells, the cell, the disorder and the seed; returns its label.
@@ -176,10 +182,11 @@ StudyParticles read_study_particles(const JsonNode& node, const std::filesystem:
     if (auto range = node.find("nh") ? node.find("nh") : node.find("h_over_l")) {
         range->expect_keys({"min", "max", "steps"});
         const auto steps = range->find("steps");
-        particles.sweep = checked_sweep(node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta, range->at("min").number(),
-                                        range->at("max").number(), steps ? static_cast<int>(steps->integer_in(INT_MIN, INT_MAX)) : 9,
-                                        ValueSource::json(range->file(), range->path()),
-                                        ValueSource::json(range->file(), range->path() + "/steps"));
+        particles.sweep =
+            checked_sweep(node.find("nh") ? SmoothingRule::nh : SmoothingRule::eta, range->at("min").number(),
+                          range->at("max").number(), steps ? static_cast<int>(steps->integer_in(INT_MIN, INT_MAX)) : 9,
+                          ValueSource::json(range->file(), range->path()),
+                          ValueSource::json(range->file(), range->path() + "/steps"));
     }
     if (auto volume = node.find("volume")) {
         try {

@@ -96,8 +96,8 @@ void analyse_case(const StudyParticles& p, const Study& study, const StudyPartic
 }
 
 // Every kernel of the study that supports the set's dimension, on one source.
-void analyse_source(const StudyParticles& p, const Study& study, const StudyInputs& inputs, const StudyParticleSource& s,
-                    const ParticleSet& set, ParticlesResults& results, Progress& progress)
+void analyse_source(const StudyParticles& p, const Study& study, const StudyInputs& inputs,
+                    const StudyParticleSource& s, const ParticleSet& set, ParticlesResults& results, Progress& progress)
 {
     for (const auto& kernel : inputs.kernels) {
         if (kernel.supports(set.dimension)) analyse_case(p, study, s, set, kernel, results);
@@ -118,15 +118,14 @@ ResolvedSources resolve_sources(const StudyParticles& particles, const Study& st
     ResolvedSources r;
     std::size_t total = 0;
     for (const auto& s : particles.sources) {
-        r.sets.push_back(at_source(study_source(study, s.json_path), [&] {
-            return load_source(s.source, source_sources(FrontEnd::python), 0);
-        }));
+        r.sets.push_back(at_source(study_source(study, s.json_path),
+                                   [&] { return load_source(s.source, source_sources(FrontEnd::python), 0); }));
         total += r.sets.back().size() * (s.relax ? 2 : 1);
         if (total > max_particles())
-            study_source(study, s.json_path).fail("the particle sources up to this one hold " + std::to_string(total) +
-                                 " particles (a relaxed one counted twice), more than the " +
-                                 std::to_string(max_particles()) +
-                                 " the memory budget allows (three quarters of the available memory)");
+            study_source(study, s.json_path)
+                .fail("the particle sources up to this one hold " + std::to_string(total) +
+                      " particles (a relaxed one counted twice), more than the " + std::to_string(max_particles()) +
+                      " the memory budget allows (three quarters of the available memory)");
     }
     for (const auto& s : particles.sources) { // "relax" names a study kernel by its label or name
         auto& index = r.relax_kernel.emplace_back();
@@ -138,8 +137,9 @@ ResolvedSources resolve_sources(const StudyParticles& particles, const Study& st
         if (it == k.end()) {
             std::vector<std::string> labels;
             for (const auto& kernel : k) labels.push_back(kernel.label());
-            study_source(study, s.relax->json_path).fail("kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
-                                 did_you_mean(s.relax->kernel, labels));
+            study_source(study, s.relax->json_path)
+                .fail("kernel: \"" + s.relax->kernel + "\" is not one of the study's kernels" +
+                      did_you_mean(s.relax->kernel, labels));
         }
         index = static_cast<std::size_t>(it - k.begin());
     }
@@ -178,8 +178,8 @@ public:
     {
         const double evaluations = double(study.kernels.size()) * study_particle_evaluations(particles_);
         if (evaluations > max_particle_evaluations)
-            root.error("the study " + over_budget("kernels x particles x N_H values, over all particle sources", evaluations,
-                                                  max_particle_evaluations));
+            root.error("the study " + over_budget("kernels x particles x N_H values, over all particle sources",
+                                                  evaluations, max_particle_evaluations));
     }
 
     SectionRun resolve(const Study& study, KernelRegistry&, StudyInputs& inputs) const override
@@ -192,10 +192,9 @@ public:
             for (std::size_t i = 0; i < p.sources.size(); ++i) {
                 const ParticleSet& set = sources->sets[i];
                 if (const auto kernel = sources->relax_kernel[i])
-                    analyse_source(p, study, inputs, p.sources[i], relaxed(study, inputs.kernels[*kernel], p.sources[i], set),
-                                   *results, progress);
-                else
-                    analyse_source(p, study, inputs, p.sources[i], set, *results, progress);
+                    analyse_source(p, study, inputs, p.sources[i],
+                                   relaxed(study, inputs.kernels[*kernel], p.sources[i], set), *results, progress);
+                else analyse_source(p, study, inputs, p.sources[i], set, *results, progress);
             }
             return std::shared_ptr<const SectionResults>(results);
         };
@@ -207,7 +206,8 @@ private:
 
 } // namespace
 
-std::shared_ptr<const StudySection> read_particles_section(const JsonNode& node, const std::filesystem::path& study_file)
+std::shared_ptr<const StudySection> read_particles_section(const JsonNode& node,
+                                                           const std::filesystem::path& study_file)
 {
     return std::make_shared<ParticlesSection>(read_study_particles(node, study_file));
 }

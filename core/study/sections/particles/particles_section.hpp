@@ -27,7 +27,7 @@ struct StudyRelax {
 };
 
 struct StudyParticleSource {
-    std::string label;     // "fcc, sigma = 0.1 d, 20x20x20", "poisson, 3D, 20000", the file
+    std::string label; // "fcc, sigma = 0.1 d, 20x20x20", "poisson, 3D, 20000", the file
     std::string json_path;
     ParticleSource source;
     std::optional<StudyRelax> relax;
@@ -56,7 +56,7 @@ struct ParticlesCase {
     VolumeModel volume = VolumeModel::uniform;
     std::vector<ParticlePoint> points;
     std::vector<double> poisson_rms_e0; // per point: a Poisson set of as many particles at that h
-    std::string code;                   // the code's setting the one point is at ("swift eta = 1.2348: ..."); empty: a sweep
+    std::string code; // the code's setting the one point is at ("swift eta = 1.2348: ..."); empty: a sweep
 };
 
 struct ParticlesResults : SectionResults {
@@ -78,6 +78,7 @@ StudyParticles read_study_particles(const JsonNode& node, const std::filesystem:
 double study_particle_evaluations(const StudyParticles& particles);
 
 // The section, read (read_study_particles) for the table of sections.
-std::shared_ptr<const StudySection> read_particles_section(const JsonNode& node, const std::filesystem::path& study_file);
+std::shared_ptr<const StudySection> read_particles_section(const JsonNode& node,
+                                                           const std::filesystem::path& study_file);
 
 } // namespace sphkern

@@ -17,15 +17,17 @@ namespace {
 
 nlohmann::json stability_json(const StabilityCase& c)
 {
-    nlohmann::json entry = {{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"gamma", c.gamma},
+    nlohmann::json entry = {{"lattice", c.lattice},
+                            {"kernel", c.kernel_label},
+                            {"gamma", c.gamma},
                             {"h_model", c.h_model}};
     if (c.refused) {
         entry["refused"] = *c.refused;
         return entry;
     }
     nlohmann::json ks = nlohmann::json::array(), minima = nlohmann::json::array(), stable = nlohmann::json::array(),
-                   verdicts = nlohmann::json::array(), growth = nlohmann::json::array(), kinds = nlohmann::json::array(),
-                   overlap = nlohmann::json::array();
+                   verdicts = nlohmann::json::array(), growth = nlohmann::json::array(),
+                   kinds = nlohmann::json::array(), overlap = nlohmann::json::array();
     for (const auto& s : c.over_k.samples) {
         ks.push_back(s.k);
         minima.push_back(s.branch_minima);
@@ -39,13 +41,22 @@ nlohmann::json stability_json(const StabilityCase& c)
         auto recommended = recommended_json(o.recommended);
         for (std::size_t i = 0; i < o.in_codes.size(); ++i) // a code that does not ship the kernel is left out
             if (std::isfinite(o.in_codes[i])) recommended["codes"][study_codes()[i]->name] = o.in_codes[i];
-        overlap.push_back({{"volume_coefficient", o.ap_name}, {"accurate", intervals_json(o.accurate)},
-                           {"accurate_and_stable", intervals_json(o.both)}, {"recommended", recommended}});
+        overlap.push_back({{"volume_coefficient", o.ap_name},
+                           {"accurate", intervals_json(o.accurate)},
+                           {"accurate_and_stable", intervals_json(o.both)},
+                           {"recommended", recommended}});
     }
-    entry.update({{"bravais", c.over_k.bravais}, {"k", ks}, {"branch_minima", minima}, {"stable", stable},
-                  {"horizon", c.over_k.horizon}, {"verdict", verdicts}, {"growth_time", growth}, {"mode", kinds},
+    entry.update({{"bravais", c.over_k.bravais},
+                  {"k", ks},
+                  {"branch_minima", minima},
+                  {"stable", stable},
+                  {"horizon", c.over_k.horizon},
+                  {"verdict", verdicts},
+                  {"growth_time", growth},
+                  {"mode", kinds},
                   {"stable_intervals", intervals_json(c.over_k.stable)},
-                  {"stable_at_horizon", intervals_json(c.over_k.usable)}, {"overlap", overlap},
+                  {"stable_at_horizon", intervals_json(c.over_k.usable)},
+                  {"overlap", overlap},
                   {"dispersion", {{"k", c.path_k}, {"path", dispersion_path_json(c.path)}}}});
     return entry;
 }
@@ -53,10 +64,12 @@ nlohmann::json stability_json(const StabilityCase& c)
 // One recommended k per kernel, lattice and a_p, and the same resolution in each code's own setting.
 std::string recommended_markdown(const std::vector<StabilityCase>& cases)
 {
-    std::string s = "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
-                    "faster than the horizon, with its margin in k and N_H, and the same resolution in each code's own "
-                    "setting, with the lattice's SPH density where the code solves for h with it (" + method_document() +
-                    " section 9; blank where the code does not ship the kernel).\n\n| lattice | kernel | a_p | k | N_H |";
+    std::string s =
+        "### Recommended k\n\nThe centre of the widest interval where condition (22) holds and no mode grows "
+        "faster than the horizon, with its margin in k and N_H, and the same resolution in each code's own "
+        "setting, with the lattice's SPH density where the code solves for h with it (" +
+        method_document() +
+        " section 9; blank where the code does not ship the kernel).\n\n| lattice | kernel | a_p | k | N_H |";
     for (const CodeProfile* c : study_codes()) s += fmt::format(" {} {} |", c->name, c->parameter);
     s += "\n|---|---|---|---|---|";
     for (std::size_t i = 0; i < study_codes().size(); ++i) s += "---|";
@@ -71,8 +84,8 @@ std::string recommended_markdown(const std::vector<StabilityCase>& cases)
                 s += "\n";
                 continue;
             }
-            s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label, o.ap_name,
-                             r.k, r.margin, r.at_window_edge ? fmt::format(" ({})", window_edge_note) : "",
+            s += fmt::format("| {} | {} | {} | {:.4f} ± {:.4f}{} | {} ({} to {}) |", c.lattice, c.kernel_label,
+                             o.ap_name, r.k, r.margin, r.at_window_edge ? fmt::format(" ({})", window_edge_note) : "",
                              r.neighbours, r.neighbours_from, r.neighbours_to);
             for (double v : o.in_codes) s += std::isfinite(v) ? fmt::format(" {:.4g} |", v) : " |";
             s += "\n";
@@ -81,9 +94,10 @@ std::string recommended_markdown(const std::vector<StabilityCase>& cases)
 }
 
 // Legend entries for the shaded bands and bars of the stability panels.
-const char* stability_legend = "keyentry with boxes fs solid 1.0 noborder lc rgb '#d9f0d3' title 'condition (22) holds', "
-                               "keyentry with boxes fs solid 1.0 noborder lc rgb '#4575b4' title 'stable k', "
-                               "keyentry with boxes fs solid 1.0 noborder lc rgb '#d73027' title 'unstable sample'";
+const char* stability_legend =
+    "keyentry with boxes fs solid 1.0 noborder lc rgb '#d9f0d3' title 'condition (22) holds', "
+    "keyentry with boxes fs solid 1.0 noborder lc rgb '#4575b4' title 'stable k', "
+    "keyentry with boxes fs solid 1.0 noborder lc rgb '#d73027' title 'unstable sample'";
 
 // One stability panel: min omega^2 of each branch against k (symmetric log), the accurate
 // k shaded, the stable intervals as a blue bar with a red mark on every unstable sample.
@@ -101,23 +115,28 @@ std::string stability_panel(const StabilityCase& c, const std::string& id)
     if (!c.overlap.empty())
         for (const auto& i : c.overlap.front().accurate)
             script += fmt::format("set object {} rect from {},graph 0 to {},graph 1 fc rgb '#d9f0d3' fs solid noborder "
-                                  "behind\n", object++, i.from, i.to);
+                                  "behind\n",
+                                  object++, i.from, i.to);
     for (const auto& i : c.over_k.stable)
         script += fmt::format("set object {} rect from {},graph 0 to {},graph 0.04 fc rgb '#4575b4' fs solid noborder "
-                              "front\n", object++, i.from, i.to);
+                              "front\n",
+                              object++, i.from, i.to);
     const auto& samples = c.over_k.samples;
-    const double half = samples.size() > 1 ? (samples.back().k - samples.front().k) / double(samples.size() - 1) / 2 : 0.005;
+    const double half =
+        samples.size() > 1 ? (samples.back().k - samples.front().k) / double(samples.size() - 1) / 2 : 0.005;
     for (const auto& s : samples)
         if (!s.stable)
             script += fmt::format("set object {} rect from {},graph 0 to {},graph 0.06 fc rgb '#d73027' fs solid "
-                                  "noborder front\n", object++, s.k - half, s.k + half);
+                                  "noborder front\n",
+                                  object++, s.k - half, s.k + half);
     std::string plot;
     for (std::size_t b = 0; b < samples.front().branch_minima.size(); ++b)
         plot += fmt::format("${} using 1:{} with lines lw 2 lc rgb '{}' title 'branch {}{}', ", id,
-                            axis.using_column(static_cast<int>(b) + 2), branch_colours[b % 6], b + 1, b == 0 ? " (lowest)" : "");
+                            axis.using_column(static_cast<int>(b) + 2), branch_colours[b % 6], b + 1,
+                            b == 0 ? " (lowest)" : "");
     return script + axis.tics() +
-           fmt::format("set xrange [{}:{}]\nset title '{}' noenhanced\nplot {}{}\n", samples.front().k, samples.back().k,
-                       c.kernel_label, plot, stability_legend);
+           fmt::format("set xrange [{}:{}]\nset title '{}' noenhanced\nplot {}{}\n", samples.front().k,
+                       samples.back().k, c.kernel_label, plot, stability_legend);
 }
 
 // One dispersion panel: omega^2 of every branch along the high-symmetry path.
@@ -163,15 +182,16 @@ std::string StabilityResults::markdown(const Study&) const
         "A mode that grows more slowly than the horizon ({:g} d/c: growth time 1 / sqrt(-omega^2)) is weak: such k are "
         "not in the stable k, but count as stable where they meet condition (22). "
         "Accurate: condition (22) holds (first automatic mode, each a_p). The stable k do not depend on a_p.\n\n",
-        cases.front().h_model, cases.front().gamma, method_document(),
-        cases.front().over_k.horizon);
+        cases.front().h_model, cases.front().gamma, method_document(), cases.front().over_k.horizon);
     std::string lattice;
     for (const auto& c : cases) {
         if (c.lattice != lattice) {
             s += lattice.empty() ? "" : "\n";
             lattice = c.lattice;
-            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | dispersion curves at k |\n"
-                             "|---|---|---|---|---|\n", lattice);
+            s += fmt::format("### {}\n\n| kernel | k scanned | stable k | accurate and stable (at the horizon) k | "
+                             "dispersion curves at k |\n"
+                             "|---|---|---|---|---|\n",
+                             lattice);
         }
         if (c.refused) {
             s += fmt::format("| {} | | not available: {} | | |\n", c.kernel_label, *c.refused);
@@ -206,7 +226,8 @@ void StabilityResults::draw(const Study&, Canvas& canvas) const
             "set multiplot layout {},{} title '{}: the lowest squared frequency of each branch over the Brillouin "
             "zone against k (below zero: unstable); condition (22) at a_p = {}' noenhanced\n"
             "set grid\nset xlabel 'k = h / d'\nset ylabel 'min ω² [c²/d²] (symmetric log scale)'\n{}",
-            rows, columns, lattice, panels.front()->overlap.empty() ? "-" : panels.front()->overlap.front().ap_name, key_setup);
+            rows, columns, lattice, panels.front()->overlap.empty() ? "-" : panels.front()->overlap.front().ap_name,
+            key_setup);
         for (const auto* c : panels) script += stability_panel(*c, fmt::format("m{}", block++));
         canvas.draw(lattice + "-stability", panel_width * columns, panel_height * rows, script + "unset multiplot\n");
         script = fmt::format("set multiplot layout {},{} title '{}: squared frequency of each branch along the "

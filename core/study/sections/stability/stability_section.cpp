@@ -33,12 +33,13 @@ struct StabilitySpec {
     int grid = 0;                       // first zone grid per reciprocal axis; 0: 8 in 3D, 32 in 2D
     std::optional<double> path_k;       // the dispersion curves' k; empty: the best k of condition (22)
     int path_points = 120;
-    double horizon = 100;               // growth time in d/c: slower instabilities are weak (default_horizon)
-    HModel h_model = HModel::fixed;     // fixed or adaptive h
+    double horizon = 100;           // growth time in d/c: slower instabilities are weak (default_horizon)
+    HModel h_model = HModel::fixed; // fixed or adaptive h
 };
 
 // The bulk cases of the first automatic mode, one per a_p: their windows and condition (22).
-std::vector<const StudyCase*> accurate_cases(const Study& study, const StudyResults& results, std::size_t l, std::size_t k)
+std::vector<const StudyCase*> accurate_cases(const Study& study, const StudyResults& results, std::size_t l,
+                                             std::size_t k)
 {
     std::vector<const StudyCase*> accurate;
     if (const auto mode = first_automatic_mode(study))
@@ -64,7 +65,8 @@ std::pair<double, double> scanned_k(const StabilitySpec& spec, const StudyInputs
 StabilityOverlap overlap(const StudyCase& b, const StabilityCase& c, const Kernel& kernel, const Lattice& lattice,
                          double k_max)
 {
-    StabilityOverlap o{b.ap_name, b.acceptance.intervals, accurate_and_stable(b.acceptance.intervals, c.over_k), {}, {}};
+    StabilityOverlap o{
+        b.ap_name, b.acceptance.intervals, accurate_and_stable(b.acceptance.intervals, c.over_k), {}, {}};
     const HydrostaticErrors errors(kernel, lattice, b.sites.empty() ? 0 : b.sites.front(), b.a_p, lattice.gravity,
                                    std::max(k_max, b.k_max));
     o.recommended = recommend_k(o.both, b.k_min, b.k_max, errors);
@@ -90,7 +92,9 @@ StabilityCase stability_case(const StabilitySpec& spec, const Study& study, cons
     c.over_k.horizon = spec.horizon; // also for a lattice that is refused
     const auto accurate = accurate_cases(study, results, l, k);
     const auto [k_min, k_max] = scanned_k(spec, inputs, l, k);
-    c.path_k = spec.path_k ? *spec.path_k : !accurate.empty() ? accurate.front()->acceptance.best_k : 0.5 * (k_min + k_max);
+    c.path_k = spec.path_k         ? *spec.path_k
+               : !accurate.empty() ? accurate.front()->acceptance.best_k
+                                   : 0.5 * (k_min + k_max);
     try {
         c.over_k = stability_over_k(kernel, lattice, k_min, k_max, spec.steps, spec.gamma, spec.grid, 1, spec.horizon,
                                     spec.h_model);
@@ -106,8 +110,8 @@ StabilityCase stability_case(const StabilitySpec& spec, const Study& study, cons
 }
 
 // Every lattice x kernel case, on every thread.
-std::shared_ptr<const SectionResults> run_stability(const StabilitySpec& spec, const Study& study, const StudyInputs& inputs,
-                                                    const StudyResults& results)
+std::shared_ptr<const SectionResults> run_stability(const StabilitySpec& spec, const Study& study,
+                                                    const StudyInputs& inputs, const StudyResults& results)
 {
     const std::size_t kernels = inputs.kernels.size();
     std::vector<StabilityCase> cases(inputs.lattices.size() * kernels);
@@ -121,10 +125,9 @@ std::shared_ptr<const SectionResults> run_stability(const StabilitySpec& spec, c
     // One case per thread at a time, taken in turn: their costs differ by orders of magnitude.
     std::atomic<std::size_t> next{0};
     ParallelFor pool;
-    pool.run(cases.size(), worker_threads(0),
-             [&](int, std::size_t, std::size_t) {
-                 for (std::size_t i; pool.keep_going() && (i = next++) < cases.size();) run_case(i);
-             });
+    pool.run(cases.size(), worker_threads(0), [&](int, std::size_t, std::size_t) {
+        for (std::size_t i; pool.keep_going() && (i = next++) < cases.size();) run_case(i);
+    });
     auto out = std::make_shared<StabilityResults>();
     out->cases = std::move(cases);
     return out;

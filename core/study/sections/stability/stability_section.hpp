@@ -33,7 +33,7 @@ struct StabilityCase {
     std::string h_model = "fixed";
     std::optional<std::string> refused; // why the lattice has no dispersion matrix; empty when it has one
     StabilityOverK over_k;
-    double path_k = 0;        // where the dispersion curves are drawn
+    double path_k = 0; // where the dispersion curves are drawn
     DispersionPath path;
     std::vector<StabilityOverlap> overlap;
 };
@@ -48,6 +48,7 @@ struct StabilityResults : SectionResults {
 
 // {"gamma", "k": {"min", "max", "steps"}, "grid", "dispersion_k": a number or "best",
 // "path_points", "horizon", "h_model"}.
-std::shared_ptr<const StudySection> read_stability_section(const JsonNode& node, const std::filesystem::path& study_file);
+std::shared_ptr<const StudySection> read_stability_section(const JsonNode& node,
+                                                           const std::filesystem::path& study_file);
 
 } // namespace sphkern

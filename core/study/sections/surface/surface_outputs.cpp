@@ -15,8 +15,12 @@ nlohmann::json SurfaceResults::json(const Study&) const
     nlohmann::json surface = nlohmann::json::array();
     for (const auto& c : cases) {
         auto entry = surface_json(c.profile);
-        entry.update({{"lattice", c.lattice}, {"kernel", c.kernel_label}, {"form", c.form},
-                      {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.k}});
+        entry.update({{"lattice", c.lattice},
+                      {"kernel", c.kernel_label},
+                      {"form", c.form},
+                      {"volume_coefficient", c.ap_name},
+                      {"a_p", c.a_p},
+                      {"k", c.k}});
         surface.push_back(entry);
     }
     return surface;
@@ -26,16 +30,18 @@ std::string SurfaceResults::markdown(const Study&) const
 {
     std::string s;
     if (!cases.empty()) {
-        s += "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
-             "P = 0 there), by lattice sums over the half-space (" + method_document() + " section 6). Each cell: eps_rho / eps_gradP.\n\n";
+        s +=
+            "## Free-surface profiles\n\nA particle on layer n below a free surface normal to gravity (layer 0 on top, "
+            "P = 0 there), by lattice sums over the half-space (" +
+            method_document() + " section 6). Each cell: eps_rho / eps_gradP.\n\n";
         std::size_t columns = 0;
         for (const auto& c : cases) columns = std::max(columns, c.profile.layers.size());
         std::string current;
         for (const auto& c : cases) {
             if (c.lattice != current) {
                 current = c.lattice;
-                s += fmt::format("### {} (a_p = {} = {:.6f}, layer spacing {:.4f} d)\n\n| kernel | form | k |", c.lattice,
-                                 c.ap_name, c.a_p, c.profile.spacing);
+                s += fmt::format("### {} (a_p = {} = {:.6f}, layer spacing {:.4f} d)\n\n| kernel | form | k |",
+                                 c.lattice, c.ap_name, c.a_p, c.profile.spacing);
                 for (std::size_t n = 0; n < columns; ++n) s += fmt::format(" n = {} |", n);
                 s += " bulk |\n|---|---|---|";
                 for (std::size_t n = 0; n <= columns; ++n) s += "---|";
@@ -83,7 +89,8 @@ void SurfaceResults::draw(const Study&, Canvas& canvas) const
                 k = c.k;
                 std::string id = fmt::format("s{}", block++);
                 script += "$" + id + " << EOD\n";
-                for (const auto& l : c.profile.layers) script += fmt::format("{} {:.10g} {:.10g}\n", l.n, l.eps_rho, l.eps_gradp);
+                for (const auto& l : c.profile.layers)
+                    script += fmt::format("{} {:.10g} {:.10g}\n", l.n, l.eps_rho, l.eps_gradp);
                 script += "EOD\n";
                 const char* rgb = curve_colours[colour++ % 6];
                 plot += fmt::format("{}${} using 1:2 with linespoints lw 2 dt 1 lc rgb '{}' title 'density, {} form', "

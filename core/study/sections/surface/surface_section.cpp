@@ -25,7 +25,8 @@ std::shared_ptr<const SectionResults> run_surface(const SurfaceSpec& spec, const
                                                   const Study& study, const StudyInputs& inputs)
 {
     auto results = std::make_shared<SurfaceResults>();
-    const std::string ap_name = spec.volume_coefficient ? spec.volume_coefficient->name : study.volume_coefficients[0].name;
+    const std::string ap_name =
+        spec.volume_coefficient ? spec.volume_coefficient->name : study.volume_coefficients[0].name;
     for (std::size_t l = 0; l < inputs.lattices.size(); ++l) {
         const Lattice& lattice = inputs.lattices[l];
         const double a_p = a_p_of[l];
@@ -58,10 +59,11 @@ public:
 
     void check_budget(const Study& study, const JsonNode& root) const override
     {
-        const double layers = double(study.kernels.size()) * double(study.lattices.size()) * double(spec_.forms.size()) *
-                              spec_.layers;
+        const double layers =
+            double(study.kernels.size()) * double(study.lattices.size()) * double(spec_.forms.size()) * spec_.layers;
         if (layers > max_surface_layers)
-            root.error("the study " + over_budget("kernels x lattices x surface forms x layers", layers, max_surface_layers));
+            root.error("the study " +
+                       over_budget("kernels x lattices x surface forms x layers", layers, max_surface_layers));
     }
 
     SectionRun resolve(const Study& study, KernelRegistry&, StudyInputs& inputs) const override
@@ -73,7 +75,8 @@ public:
                                           [&] { return spec_.volume_coefficient->on(inputs.lattices[l]); })
                               : inputs.a_p[l].front());
             if (!spec_.k)
-                for (std::size_t k = 0; k < inputs.kernels.size(); ++k) resolve_window(study, inputs, l, k, 0, a_p.back());
+                for (std::size_t k = 0; k < inputs.kernels.size(); ++k)
+                    resolve_window(study, inputs, l, k, 0, a_p.back());
         }
         return [spec = spec_, a_p](const Study& study, const StudyInputs& inputs, const StudyResults&) {
             return run_surface(spec, a_p, study, inputs);
@@ -97,7 +100,8 @@ std::shared_ptr<const StudySection> read_surface_section(const JsonNode& node, c
         spec.forms.clear();
         for (std::size_t i = 0; i < names.size(); ++i) {
             const auto item = (*forms)[i];
-            spec.forms.push_back(at_study_path(item.file(), item.path(), [&] { return parse_gradient_form(names[i]); }));
+            spec.forms.push_back(
+                at_study_path(item.file(), item.path(), [&] { return parse_gradient_form(names[i]); }));
         }
     }
     if (auto ap = node.find("volume_coefficient")) spec.volume_coefficient = read_volume_coefficient(*ap);

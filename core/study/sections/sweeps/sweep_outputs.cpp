@@ -16,14 +16,25 @@ nlohmann::json SweepResults::json(const Study& study) const
         nlohmann::json solutions = nlohmann::json::array();
         for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
             const auto& s = c.design.solutions[i];
-            solutions.push_back({{"k", s.k}, {"parameter", s.parameter}, {"eps_rho", s.values.eps_rho},
-                                 {"eps_gradp", s.values.eps_gradp}, {"jacobian_condition", s.jacobian_condition},
+            solutions.push_back({{"k", s.k},
+                                 {"parameter", s.parameter},
+                                 {"eps_rho", s.values.eps_rho},
+                                 {"eps_gradp", s.values.eps_gradp},
+                                 {"jacobian_condition", s.jacobian_condition},
                                  {"non_negative", s.non_negative},
                                  {"acceptance", acceptance_json(c.designed_acceptance[i], study.epsilon)}});
         }
-        sweeps.push_back({{"lattice", c.lattice}, {"kernel", c.kernel}, {"parameter", c.parameter},
-                          {"volume_coefficient", c.ap_name}, {"a_p", c.a_p}, {"k", c.ks}, {"values", c.values},
-                          {"eps_rho", c.rho}, {"eps_gradp", c.gradp}, {"solutions", solutions}, {"note", c.design.note}});
+        sweeps.push_back({{"lattice", c.lattice},
+                          {"kernel", c.kernel},
+                          {"parameter", c.parameter},
+                          {"volume_coefficient", c.ap_name},
+                          {"a_p", c.a_p},
+                          {"k", c.ks},
+                          {"values", c.values},
+                          {"eps_rho", c.rho},
+                          {"eps_gradp", c.gradp},
+                          {"solutions", solutions},
+                          {"note", c.design.note}});
     }
     return sweeps;
 }
@@ -35,11 +46,13 @@ std::string SweepResults::markdown(const Study&) const
         s += "## Kernel design: parameter sweeps\n\nFor each swept parameter, the (k, parameter) where eps_rho and "
              "eps_gradP vanish together (sphkern design), with the designed kernel's condition (22) intervals; "
              "the maps in the figures show both errors over (k, parameter) with both zero contours.\n\n"
-             "| lattice | kernel | a_p | k | parameter | cond(J) | dk, dparameter for a_p + 1% | W >= 0 | k where (22) holds |\n"
+             "| lattice | kernel | a_p | k | parameter | cond(J) | dk, dparameter for a_p + 1% | W >= 0 | k where (22) "
+             "holds |\n"
              "|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& c : cases) {
             if (c.design.solutions.empty())
-                s += fmt::format("| {} | {} | {} | - | - | | | | {} |\n", c.lattice, c.kernel, c.ap_name, c.design.note);
+                s +=
+                    fmt::format("| {} | {} | {} | - | - | | | | {} |\n", c.lattice, c.kernel, c.ap_name, c.design.note);
             for (std::size_t i = 0; i < c.design.solutions.size(); ++i) {
                 const auto& d = c.design.solutions[i];
                 s += fmt::format("| {} | {} | {} | {:.6f} | {} = {:.6f} | {:.3g} | {:+.2e}, {:+.2e} | {} | {} |\n",
@@ -70,7 +83,8 @@ void SweepResults::draw(const Study&, Canvas& canvas) const
             grid_gradp += "\n";
         }
         const double dk = c.ks.size() > 1 ? (c.ks.back() - c.ks.front()) / double(c.ks.size() - 1) / 2 : 0;
-        const double dv = c.values.size() > 1 ? (c.values.back() - c.values.front()) / double(c.values.size() - 1) / 2 : 0;
+        const double dv =
+            c.values.size() > 1 ? (c.values.back() - c.values.front()) / double(c.values.size() - 1) / 2 : 0;
         std::string script = fmt::format(
             "{}EOD\n{}EOD\n"
             // The zero contours of both errors, as lines to draw over each map.

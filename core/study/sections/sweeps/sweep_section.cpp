@@ -16,7 +16,7 @@ namespace {
 constexpr double max_sweep_points = 2e6; // lattices x sweep samples x k samples, over all sweeps
 
 struct SweepSpec {
-    std::string kernel; // name, plugin or expression file, or a blend A+B
+    std::string kernel;                       // name, plugin or expression file, or a blend A+B
     std::map<std::string, double> parameters; // other parameter values
     std::string parameter;
     double min = 0, max = 1;
@@ -86,10 +86,11 @@ public:
     void check_budget(const Study& study, const JsonNode& root) const override
     {
         double points = 0;
-        for (const auto& s : sweeps_) points += double(study.lattices.size()) * s.samples * std::min(study.samples, 201);
+        for (const auto& s : sweeps_)
+            points += double(study.lattices.size()) * s.samples * std::min(study.samples, 201);
         if (points > max_sweep_points)
-            root.error("the study " + over_budget("lattices x sweep samples x k samples, over all sweeps", points,
-                                                  max_sweep_points));
+            root.error("the study " +
+                       over_budget("lattices x sweep samples x k samples, over all sweeps", points, max_sweep_points));
     }
 
     SectionRun resolve(const Study& study, KernelRegistry& registry, StudyInputs& inputs) const override
@@ -103,9 +104,10 @@ public:
             });
             std::vector<std::optional<std::pair<double, double>>> windows;
             for (std::size_t l = 0; l < inputs.lattices.size(); ++l)
-                windows.push_back(kernel.supports(inputs.lattices[l].dimension)
-                                      ? std::optional(study_window(study, kernel, inputs.lattices[l], 0, inputs.a_p[l].front()))
-                                      : std::nullopt);
+                windows.push_back(
+                    kernel.supports(inputs.lattices[l].dimension)
+                        ? std::optional(study_window(study, kernel, inputs.lattices[l], 0, inputs.a_p[l].front()))
+                        : std::nullopt);
             resolved.push_back({sweep, std::move(kernel), std::move(windows)});
         }
         return [resolved](const Study& study, const StudyInputs& inputs, const StudyResults&) {

@@ -18,10 +18,10 @@ struct SweepCase {
     std::string parameter;
     std::string ap_name;
     double a_p = 0;
-    std::vector<double> ks, values;                 // the grid
-    std::vector<std::vector<double>> rho, gradp;    // [value index][k index]
+    std::vector<double> ks, values;              // the grid
+    std::vector<std::vector<double>> rho, gradp; // [value index][k index]
     DesignResult design;
-    std::vector<Acceptance> designed_acceptance;    // condition (22) of each designed kernel
+    std::vector<Acceptance> designed_acceptance; // condition (22) of each designed kernel
 };
 
 struct SweepResults : SectionResults {
