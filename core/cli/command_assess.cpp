@@ -23,6 +23,7 @@ struct AssessOptions : CommonOptions {
     SettingOptions setting;
     std::map<std::string, std::vector<double>> ranges; // a code's parameter swept on a file
     int steps = 10, threads = 0;
+    std::size_t glass = 0;
     double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound;
     std::vector<std::string> sets;
@@ -37,7 +38,7 @@ AssessRequest request_from(const AssessOptions& o)
     r.setting.evaluation = evaluation_inputs(o.evaluation);
     r.window_min = o.k_min, r.window_max = o.k_max;
     r.epsilon = o.epsilon, r.gamma = o.gamma, r.horizon = o.horizon, r.coef_sound = o.coef_sound;
-    r.threads = o.threads;
+    r.threads = o.threads, r.glass = o.glass;
     return r;
 }
 
@@ -49,7 +50,8 @@ AssessSources option_sources(const AssessOptions& o)
             ValueSource::option("--epsilon"),
             ValueSource::option("--gamma"),
             ValueSource::option("--horizon"),
-            ValueSource::option("--coef-sound")};
+            ValueSource::option("--coef-sound"),
+            ValueSource::option("--glass")};
 }
 
 // A code's setting on a particle file: h as `particles --code` sets it, judged on the set.
@@ -100,7 +102,7 @@ int assess_file(const AssessOptions& o)
 void refuse_lattice_options(const Command& command, const std::string& file)
 {
     for (const char* name : {"--ap", "--gravity", "--site", "--shells", "--continue-past-support", "--kmin", "--kmax",
-                             "--gamma", "--coef-sound", "--horizon"})
+                             "--gamma", "--coef-sound", "--horizon", "--glass"})
         if (command.count(name) > 0)
             throw Error(ExitCode::usage, fmt::format("{} is for a lattice; on a particle file ({}) assess judges "
                                                      "the set's own sums, expected none",
@@ -163,6 +165,9 @@ Action add_assess_command(Command app)
         "20, 10 sqrt(2))");
     command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
         .capture_default_str();
+    command.add_option("--glass", options->glass,
+                       "Also relax a glass of this many particles at the recommended setting and measure it "
+                       "there (100 to 10^6; default none)");
     add_evaluation_options(command, options->evaluation);
     command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");

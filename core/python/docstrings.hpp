@@ -211,6 +211,9 @@ shells : sequence of float, optional
     the support.
 continue_past_support : bool, default False
     With shells: the kernel's formula evaluated past q = R instead of truncated.
+glass : int, default 0
+    Lattice: also relax a glass of this many particles (100 to 10^6) at the recommended
+    setting until its RMS e0 settles, and measure it there (0: none).
 
 Returns
 -------
@@ -220,7 +223,8 @@ dict
     lattice, the document of `assess --json`: eps (as `eps --json`, with code), pressure (the model at
     rest the stability assumes), condition_22
     (epsilon, holds, margin), stability (per h model: verdict, growth_time and mode where a
-    mode grows), window, recommended (found, k, interval, and code), verdict (the line).
+    mode grows), window, recommended (found, k, interval, and code), glass (with glass:
+    particles, h_over_l, steps, settled, e0 and eps_gradp, the lattice's), verdict (the line).
 
 Examples
 --------

@@ -383,7 +383,7 @@ void bind_roots(py::module_& m, const Guard& guard)
 // and the stability's settings.
 AssessRequest assess_request_of(std::optional<double> k, const std::optional<std::string>& code,
                                 std::optional<double> value, double kmin, double kmax, double epsilon, double gamma,
-                                std::optional<double> coef_sound, double horizon, int threads)
+                                std::optional<double> coef_sound, double horizon, int threads, std::size_t glass)
 {
     AssessRequest request;
     if (k.has_value() == (code.has_value() || value.has_value()))
@@ -394,7 +394,7 @@ AssessRequest assess_request_of(std::optional<double> k, const std::optional<std
     request.window_min = kmin, request.window_max = kmax;
     request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
     check_threads(threads, ValueSource::argument("threads"));
-    request.threads = threads;
+    request.threads = threads, request.glass = glass;
     return request;
 }
 
@@ -434,19 +434,19 @@ void bind_assess(py::module_& m, const Guard& guard)
            std::optional<std::string> array, std::optional<std::string> neighbours_by, bool bias_correction,
            int threads, int steps, const OptionalSequence& eta_range, const OptionalSequence& hfact_range,
            const OptionalSequence& nngb_range, const OptionalSequence& hdx_range, const OptionalSequence& coefh_range,
-           const OptionalSequence& particle_radius_range, const OptionalSequence& shells,
-           bool continue_past_support) -> py::dict {
+           const OptionalSequence& particle_radius_range, const OptionalSequence& shells, bool continue_past_support,
+           std::size_t glass) -> py::dict {
             const auto lattice_spec =
                 py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
             if (source_kind(lattice_spec) == SourceKind::file) {
                 // The lattice's keywords mean nothing on a particle set: said, not ignored.
-                const bool lattice_keywords = k || coef_sound || !gravity.is_none() || !shells.is_none() ||
+                const bool lattice_keywords = k || coef_sound || glass || !gravity.is_none() || !shells.is_none() ||
                                               continue_past_support || kmin != 0.75 || kmax != 2.0 ||
                                               gamma != 5.0 / 3.0 || horizon != default_horizon || site != 0 ||
                                               !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == "voronoi");
                 if (lattice_keywords)
                     fail_input(fmt::format(
-                        "k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site and shells are for a "
+                        "k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site, shells and glass are for a "
                         "lattice; on a particle file ({}) assess judges the set's own sums, expected none",
                         lattice_spec));
                 FileAssess f{code, value, epsilon, {}, array, neighbours_by, bias_correction, threads, steps, {}};
@@ -466,7 +466,7 @@ void bind_assess(py::module_& m, const Guard& guard)
                                        lattice_spec));
             return assess_on_lattice(kernel_spec, lattice_spec, params,
                                      assess_request_of(k, code, value, kmin, kmax, epsilon, gamma, coef_sound, horizon,
-                                                       threads),
+                                                       threads, glass),
                                      a_p, gravity, site, shells, continue_past_support);
         },
         py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
@@ -478,7 +478,7 @@ void bind_assess(py::module_& m, const Guard& guard)
         py::arg("steps") = 10, py::arg("eta_range") = py::none(), py::arg("hfact_range") = py::none(),
         py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(), py::arg("coefh_range") = py::none(),
         py::arg("particle_radius_range") = py::none(), py::arg("shells") = py::none(),
-        py::arg("continue_past_support") = false, doc::assess, guard);
+        py::arg("continue_past_support") = false, py::arg("glass") = 0, doc::assess, guard);
 }
 
 // Linear stability through the one stability request.

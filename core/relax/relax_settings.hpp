@@ -24,6 +24,10 @@ struct RelaxSettings {
     double alpha = 0.1;
     double max_move = 0.1;
     int threads = 0; // 0: every core
+    // Settled: stop once the RMS e0 of the last settle_steps + 1 steps spans less than
+    // settle_change of its largest (0: never). The glass's errors then no longer move.
+    int settle_steps = 0;
+    double settle_change = 0.01;
 };
 
 } // namespace sphkern

@@ -193,6 +193,17 @@ bool take_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& setting
     }
 }
 
+// Whether the RMS e0 of the last settle_steps + 1 steps spans less than settle_change of its largest.
+bool settled(const std::vector<RelaxStep>& history, const RelaxSettings& settings)
+{
+    const auto window = static_cast<std::size_t>(settings.settle_steps) + 1;
+    if (settings.settle_steps <= 0 || history.size() < window) return false;
+    double low = INFINITY, high = 0;
+    for (auto s = history.end() - static_cast<std::ptrdiff_t>(window); s != history.end(); ++s)
+        low = std::min(low, s->rms_e0), high = std::max(high, s->rms_e0);
+    return high - low < settings.settle_change * high;
+}
+
 } // namespace
 
 RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
@@ -238,6 +249,10 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
         progress.step(fmt::format("step {}: RMS move {:.3g} h, RMS e0 {:.3g}", n, step.rms_move, step.rms_e0));
         if (settings.tolerance > 0 && step.rms_move < settings.tolerance) {
             result.stop = "tolerance";
+            break;
+        }
+        if (settled(result.history, settings)) {
+            result.stop = "settled";
             break;
         }
     }

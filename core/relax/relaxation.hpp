@@ -42,7 +42,7 @@ struct RelaxResult {
     double spacing = 1;             // d: the set's, else the mean spacing
     double h = 1;
     double dt = 0;    // in d / c (pressure)
-    std::string stop; // why it stopped: "tolerance" or "steps"
+    std::string stop; // why it stopped: "tolerance", "settled" or "steps"
     // Seconds of the start (its first sums), and over the steps of the grid, the density and
     // force passes, and the rest (kicks, moves, wrapping, each step's errors).
     PhaseTimes phases;

@@ -1,5 +1,7 @@
 #include "requests/assess_request.hpp"
 
+#include "analysis/resolution_axis.hpp"
+#include "requests/code_setting.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/stability_over_k.hpp"
@@ -126,6 +128,38 @@ void find_windows(AssessResult& a)
     }
 }
 
+// The glass at the recommended setting: its h over l from the recommended k at the lattice's
+// a_p, relaxed under the user's gamma, measured with the code's own h where the code solves h
+// from the density; the lattice's errors at that k beside it.
+GlassAtSetting glass_of(const AssessRequest& r, const AssessSources& sources, const AssessResult& a,
+                        const Kernel& kernel, const Lattice& lattice)
+{
+    const double k = a.window.stability.recommended.k;
+    const double h_over_l = eta_of_k(k, a.at.a_p, lattice.dimension);
+    SmoothingSpec measure{SmoothingRule::eta, h_over_l, 0};
+    if (const auto& c = a.window.in_code; a.code && a.code->from_sph_density && c && c->recommended)
+        measure = code_smoothing({r.setting.code->code, c->recommended_value},
+                                 {sources.setting.code, sources.setting.code_value}, kernel, lattice.dimension);
+    GlassAtSetting glass = glass_at(kernel, lattice.dimension, h_over_l, measure, r.glass, r.gamma, r.threads);
+    EpsRequest at_k = r.setting;
+    at_k.code.reset(), at_k.k = {k}, at_k.axis = Axis::k;
+    const ErrorValues lattice_errors = run_eps_at_k(at_k, sources.setting, kernel, lattice).chosen();
+    glass.lattice_eps_rho = lattice_errors.eps_rho, glass.lattice_eps_gradp = lattice_errors.eps_gradp;
+    return glass;
+}
+
+void print_glass(const GlassAtSetting& g)
+{
+    const std::string how =
+        g.settled ? fmt::format("settled after {} steps", g.steps) : fmt::format("not settled in {} steps", g.steps);
+    fmt::print(results_file(),
+               "on a relaxed glass ({} particles, h over l {:.4g}, {}): e0 p1 {:.3g}, p50 {:.3g}, p99 {:.3g} (RMS "
+               "{:.3g}; the Poisson start's {:.3g}), eps_gradp p1 {:.3g}, p50 {:.3g}, p99 {:.3g} (RMS {:.3g}); the "
+               "lattice's eps_rho {:.3g}, eps_gradP {:.3g}\n",
+               g.particles, g.h_over_l, how, g.e0.p1, g.e0.p50, g.e0.p99, g.e0.rms, g.poisson_rms_e0, g.eps_gradp.p1,
+               g.eps_gradp.p50, g.eps_gradp.p99, g.eps_gradp.rms, g.lattice_eps_rho, g.lattice_eps_gradp);
+}
+
 } // namespace
 
 AssessStability stability_at(const Kernel& kernel, const Lattice& lattice, double k, double gamma, HModel h,
@@ -151,6 +185,8 @@ void check_assess_request(const AssessRequest& r, const AssessSources& sources)
     check_epsilon(r.epsilon, sources.epsilon);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
+    if (r.glass != 0 && (r.glass < 100 || r.glass > 1000000))
+        sources.glass.fail(fmt::format("{} particles; expected 100 to 1000000 (0: no glass)", r.glass));
 }
 
 AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel,
@@ -167,10 +203,31 @@ AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, co
         a.stability.push_back(stability_at(kernel, lattice, a.at.k, a.pressure.gamma, h, r.horizon));
     a.window = run_roots(window_request(r, a.code, a.pressure.gamma), window_sources(sources), kernel, lattice);
     find_windows(a);
+    if (r.glass > 0 && a.window.stability.recommended.found) a.glass = glass_of(r, sources, a, kernel, lattice);
     a.verdict = fmt::format("{} with {} on {}: {}, {}; {}", setting_text(a), a.at.kernel, a.at.lattice,
                             stability_text(own_model(a)), accuracy_text(a, r.epsilon), recommendation_text(a, r));
     return a;
 }
+
+namespace {
+
+nlohmann::json glass_json(const GlassAtSetting& g)
+{
+    auto summary = [](const Summary& s) {
+        return nlohmann::json{{"rms", s.rms}, {"p1", s.p1}, {"p50", s.p50}, {"p99", s.p99}};
+    };
+    return {{"particles", g.particles},
+            {"h_over_l", g.h_over_l},
+            {"steps", g.steps},
+            {"settled", g.settled},
+            {"settle_steps", glass_settle_steps},
+            {"e0", summary(g.e0)},
+            {"eps_gradp", summary(g.eps_gradp)},
+            {"poisson_rms_e0", g.poisson_rms_e0},
+            {"lattice", {{"eps_rho", g.lattice_eps_rho}, {"eps_gradp", g.lattice_eps_gradp}}}};
+}
+
+} // namespace
 
 nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
 {
@@ -216,6 +273,7 @@ nlohmann::json assess_document(const AssessRequest& r, const AssessResult& a)
             {"windows", windows},
             {"nearest_window", a.nearest ? nlohmann::json(*a.nearest) : nlohmann::json()},
             {"robust_half_width", robust_half_width},
+            {"glass", a.glass ? glass_json(*a.glass) : nlohmann::json()},
             {"verdict", a.verdict}};
 }
 
@@ -230,6 +288,7 @@ void print_assess(const AssessRequest& r, const AssessResult& a)
         fmt::print(results_file(), "linear stability, {} h ({}): {}\n", h_model_name(s.h_model), pressure,
                    stability_text(s));
     fmt::print(results_file(), "{}\n", a.verdict);
+    if (a.glass) print_glass(*a.glass);
 }
 
 } // namespace sphkern

@@ -5,6 +5,7 @@
 // person can act on.
 #pragma once
 
+#include "requests/assess_glass.hpp"
 #include "requests/eps_request.hpp"
 #include "requests/roots_request.hpp"
 #include "stability/h_model.hpp"
@@ -25,12 +26,14 @@ struct AssessRequest {
     double gamma = 5.0 / 3.0, horizon = default_horizon;
     std::optional<double> coef_sound; // a Tait code's c / sqrt(g H), default the code's
     int threads = 0;                  // of the window's scan over k (0: every core)
+    std::size_t glass = 0;            // particles of a glass relaxed and measured at the recommended setting (0: none)
 };
 
 struct AssessSources {
     EpsSources setting;
     ValueSource window, epsilon, gamma, horizon;
     ValueSource coef_sound = ValueSource::argument("coef_sound");
+    ValueSource glass = ValueSource::argument("glass");
 };
 
 struct AssessStability {
@@ -67,8 +70,9 @@ struct AssessResult {
     std::vector<AssessWindow> windows;      // every interval both accurate and stable, in k order
     std::optional<std::size_t> nearest;     // the window that holds the setting, or the nearest to it
     const CodeProfile* code = nullptr;
-    StabilityPressure pressure; // the pressure at rest the verdicts assume
-    std::string verdict;        // the one line
+    StabilityPressure pressure;          // the pressure at rest the verdicts assume
+    std::optional<GlassAtSetting> glass; // with a glass asked for and a setting recommended
+    std::string verdict;                 // the one line
     bool accurate(double epsilon) const { return worst <= epsilon; }
 };
 
