@@ -35,21 +35,27 @@ def test_a_csv_takes_a_box_and_has_no_time(tmp_path):
         sphkern.read_particles(str(tmp_path / "none.csv"))
 
 
-def test_particles_takes_a_file_or_a_runs_files_as_the_command_line(tmp_path):
-    import json
-    import os
-    import subprocess
-    cli = os.environ.get("SPHKERN_CLI") or os.path.join(os.path.dirname(sphkern.__file__), "..", "sphkern")
-    rng = np.random.default_rng(9)
+def write_run(tmp_path, times):
+    """A run's SWIFT snapshots at these times, 400 random particles each."""
+    rng = np.random.default_rng(5)
     files = []
-    for k, t in enumerate([0.4, 0.1]):
-        path = tmp_path / f"snap_{k}.hdf5"
+    for k, t in enumerate(times):
+        path = tmp_path / f"snap_{k:03d}.hdf5"
         with h5py.File(path, "w") as f:
             f.create_group("Header").attrs.update({"BoxSize": [1.0, 1.0, 1.0], "NumPart_Total": [400, 0, 0, 0, 0, 0],
                                                    "MassTable": [0.0] * 6, "Time": [t]})
             part = f.create_group("PartType0")
             part["Coordinates"], part["Masses"] = rng.uniform(0, 1, (400, 3)), np.full(400, 1 / 400)
         files.append(str(path))
+    return files
+
+
+def test_particles_takes_a_file_or_a_runs_files_as_the_command_line(tmp_path):
+    import json
+    import os
+    import subprocess
+    cli = os.environ.get("SPHKERN_CLI") or os.path.join(os.path.dirname(sphkern.__file__), "..", "sphkern")
+    files = write_run(tmp_path, [0.4, 0.1])
     one = sphkern.particles("cubic_bspline", files[0], h_over_l=1.3)
     series = sphkern.particles("cubic_bspline", files, h_over_l=1.3)
     assert [s["time"] for s in series] == [0.1, 0.4] and series[1]["statistics"] == one["statistics"]
@@ -71,21 +77,6 @@ def test_bad_arguments_name_the_keyword(tmp_path):
         sphkern.particles("cubic_bspline", [str(tmp_path / "none.csv"), str(tmp_path / "p.csv")], box=[1, 1], h_over_l=1.2)
     with pytest.raises(sphkern.BadValue, match="box"):
         sphkern.read_particles(str(tmp_path / "p.csv"), box=[1, -1])
-
-
-def write_run(tmp_path, times):
-    """A run's SWIFT snapshots at these times, 400 random particles each."""
-    rng = np.random.default_rng(5)
-    files = []
-    for k, t in enumerate(times):
-        path = tmp_path / f"snap_{k:03d}.hdf5"
-        with h5py.File(path, "w") as f:
-            f.create_group("Header").attrs.update({"BoxSize": [1.0, 1.0, 1.0], "NumPart_Total": [400, 0, 0, 0, 0, 0],
-                                                   "MassTable": [0.0] * 6, "Time": [t]})
-            part = f.create_group("PartType0")
-            part["Coordinates"], part["Masses"] = rng.uniform(0, 1, (400, 3)), np.full(400, 1 / 400)
-        files.append(str(path))
-    return files
 
 
 def test_a_series_skips_a_broken_snapshot_with_keep_going_and_warns_naming_it(tmp_path):
