@@ -90,7 +90,8 @@ constexpr double near_root = 5e-2, near_margin = 1.08;
 // times its h, and takes its Newton steps on that list while h stays inside it; a particle
 // whose step leaves it is taken up by the next pass, from where the step led. The neighbours
 // farther than an h's own search reach are left out of that h's sums (their mass counted as
-// zero), so each sum is the one a search at that h would give, in the same order.
+// zero), so each sum has the terms a search at that h would give (added in lanes: the last
+// bits are the list's, the same on any number of threads).
 class DensityPass {
 public:
     DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing,
