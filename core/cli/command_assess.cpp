@@ -167,7 +167,7 @@ Action add_assess_command(Command app)
         .capture_default_str();
     command.add_option("--glass", options->glass,
                        "Also relax a glass of this many particles at the recommended setting and measure it "
-                       "there (100 to 10^6; default none)");
+                       "there (100 to 10^5; default none)");
     add_evaluation_options(command, options->evaluation);
     command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
     command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");

@@ -212,7 +212,7 @@ shells : sequence of float, optional
 continue_past_support : bool, default False
     With shells: the kernel's formula evaluated past q = R instead of truncated.
 glass : int, default 0
-    Lattice: also relax a glass of this many particles (100 to 10^6) at the recommended
+    Lattice: also relax a glass of this many particles (100 to 10^5) at the recommended
     setting until its RMS e0 settles, and measure it there (0: none).
 
 Returns

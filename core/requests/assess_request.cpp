@@ -185,8 +185,8 @@ void check_assess_request(const AssessRequest& r, const AssessSources& sources)
     check_epsilon(r.epsilon, sources.epsilon);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
-    if (r.glass != 0 && (r.glass < 100 || r.glass > 1000000))
-        sources.glass.fail(fmt::format("{} particles; expected 100 to 1000000 (0: no glass)", r.glass));
+    if (r.glass != 0 && (r.glass < 100 || r.glass > 100000))
+        sources.glass.fail(fmt::format("{} particles; expected 100 to 100000 (0: no glass)", r.glass));
 }
 
 AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel,

@@ -55,7 +55,9 @@ def test_a_glass_that_does_not_settle_says_so(tmp_path):
 
 def test_bad_glass_counts_and_places_are_refused():
     line = run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--glass", "50", code=2).stderr.strip()
-    assert line.endswith("--glass: 50 particles; expected 100 to 1000000 (0: no glass)"), line
+    assert line.endswith("--glass: 50 particles; expected 100 to 100000 (0: no glass)"), line
+    line = run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--glass", "100001", code=2).stderr.strip()
+    assert line.endswith("--glass: 100001 particles; expected 100 to 100000 (0: no glass)"), line
     assert json.loads(run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--json").stdout)["glass"] is None
 
 
