@@ -289,6 +289,7 @@ void print_assess(const AssessRequest& r, const AssessResult& a)
                    stability_text(s));
     fmt::print(results_file(), "{}\n", a.verdict);
     if (a.glass) print_glass(*a.glass);
+    else if (r.glass > 0) fmt::print(results_file(), "no glass relaxed: the window recommends no setting\n");
 }
 
 } // namespace sphkern

@@ -53,7 +53,18 @@ def test_a_glass_that_does_not_settle_says_so(tmp_path):
     assert "not settled in 400 steps" in text.splitlines()[-1]
 
 
-def test_bad_glass_counts_and_places_are_refused():
+def test_no_glass_where_the_window_recommends_no_setting():
+    args = ("assess", "cubic_bspline", "fcc", "--k", "1.2", "--kmin", "0.5", "--kmax", "0.55", "--glass", "500")
+    assert run(*args).stdout.splitlines()[-1] == "no glass relaxed: the window recommends no setting"
+    assert json.loads(run(*args, "--json").stdout)["glass"] is None
+
+
+def test_bad_glass_counts_and_places_are_refused(tmp_path):
+    (tmp_path / "p.csv").write_text("x,y\n0.25,0.5\n0.75,0.5\n")
+    line = run("assess", "cubic_bspline", str(tmp_path / "p.csv"), "--box", "1,1", "--code", "pysph", "--hdx", "1.2",
+               "--glass", "500", code=2).stderr.strip()
+    assert line.endswith("--glass is for a lattice; on a particle file (" + str(tmp_path / "p.csv") +
+                         ") assess judges the set's own sums, expected none"), line
     line = run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--glass", "50", code=2).stderr.strip()
     assert line.endswith("--glass: 50 particles; expected 100 to 100000 (0: no glass)"), line
     line = run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--glass", "100001", code=2).stderr.strip()
