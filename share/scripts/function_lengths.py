@@ -43,6 +43,14 @@ def blank(text):
             if out[j] != "\n":
                 out[j] = " "
 
+    def clear_quoted(i, quote):
+        """Clears the literal opened at i up to its closing quote (or the line's end); returns past it."""
+        j = i + 1
+        while j < n and text[j] != quote and text[j] != "\n":
+            j += 2 if text[j] == "\\" else 1
+        clear(i + 1, min(j, n))
+        return j + 1
+
     while i < n:
         c = text[i]
         if c == "\n":
@@ -88,11 +96,7 @@ def blank(text):
                     clear(i + 1, j - 1)
                     i = j
                     continue
-            j = i + 1
-            while j < n and text[j] != '"' and text[j] != "\n":
-                j += 2 if text[j] == "\\" else 1
-            clear(i + 1, min(j, n))
-            i = j + 1
+            i = clear_quoted(i, '"')
         elif c == "'":
             # A digit separator (1'000'000) is inside a number: the word before starts with a digit.
             k = i
@@ -101,11 +105,7 @@ def blank(text):
             if k < i and text[k].isdigit():
                 i += 1
                 continue
-            j = i + 1
-            while j < n and text[j] != "'" and text[j] != "\n":
-                j += 2 if text[j] == "\\" else 1
-            clear(i + 1, min(j, n))
-            i = j + 1
+            i = clear_quoted(i, "'")
         else:
             i += 1
     return "".join(out)
