@@ -72,8 +72,13 @@ def test_bad_glass_counts_and_places_are_refused(tmp_path):
     assert json.loads(run("assess", "cubic_bspline", "fcc", "--k", "1.2", "--json").stdout)["glass"] is None
 
 
-def test_python_gives_the_command_lines_glass():
+def test_python_gives_the_command_lines_glass(tmp_path):
     sphkern = pytest.importorskip("sphkern")
+    with pytest.raises(sphkern.BadValue, match=r"^glass: 50 particles; expected 100 to 100000 \(0: no glass\)$"):
+        sphkern.assess("cubic_bspline", "fcc", k=1.2, glass=50)
+    (tmp_path / "p.csv").write_text("x,y\n0.25,0.5\n0.75,0.5\n")
+    with pytest.raises(sphkern.BadValue, match=r"shells and glass are for a lattice; on a particle file"):
+        sphkern.assess("cubic_bspline", str(tmp_path / "p.csv"), box=[1, 1], code="pysph", value=1.2, glass=500)
     doc = sphkern.assess("wendland_c2", "fcc", code="swift", value=1.2348, glass=500)
     cli = json.loads(run("assess", "wendland_c2", "fcc", "--code", "swift", "--eta", "1.2348", "--glass", "500",
                          "--json").stdout)
