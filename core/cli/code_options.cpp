@@ -20,32 +20,20 @@ std::string option_of(std::string parameter)
     return "--" + parameter;
 }
 
-// Each code's parameter as an option, "With --code gadget2 or gadget4: ..." (the codes that
-// share a parameter named together), but those in `skip`.
+// Each code's parameter as an option (a parameter two codes share, once), but those in `skip`.
 void add_parameters(Command c, SettingOptions& o, const std::vector<std::string>& skip)
 {
-    std::vector<std::string> done = skip;
-    for (const auto& p : code_profiles()) {
-        if (std::find(done.begin(), done.end(), p.parameter) != done.end()) continue;
-        done.push_back(p.parameter);
-        std::vector<std::string> codes;
-        for (const auto& q : code_profiles())
-            if (q.parameter == p.parameter) codes.push_back(q.name);
-        c.add_option(option_of(p.parameter), o.parameters[p.parameter],
-                     fmt::format("With --code {}: {}", fmt::join(codes, " or "), p.parameter_help));
-    }
+    for (const auto& p : code_profiles())
+        if (std::find(skip.begin(), skip.end(), p.parameter) == skip.end() && !o.parameters.contains(p.parameter))
+            c.add_setting(p.parameter, o.parameters[p.parameter]);
 }
 
 } // namespace
 
-void add_setting_options(Command c, SettingOptions& o, const std::string& k_help)
+void add_setting_options(Command c, SettingOptions& o)
 {
-    c.add_option("--k", o.k, k_help);
-    std::vector<std::string> names;
-    for (const auto& p : code_profiles()) names.push_back(p.name);
-    c.add_option("--code", o.code,
-                 fmt::format("Give the resolution as an SPH code sets it: {}, with its parameter below",
-                             fmt::join(names, ", ")));
+    c.add_setting("k", o.k);
+    c.add_setting("code", o.code);
     add_parameters(c, o, {});
 }
 
@@ -143,10 +131,7 @@ void add_parameter_ranges(Command c, std::map<std::string, std::vector<double>>&
 {
     for (const auto& p : code_profiles()) {
         if (ranges.contains(p.parameter)) continue;
-        c.add_option(option_of(p.parameter) + "-range", ranges[p.parameter],
-                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs",
-                                 p.parameter))
-            .expected(2);
+        c.add_setting(p.parameter + "_range", ranges[p.parameter]).expected(2);
     }
 }
 

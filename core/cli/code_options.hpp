@@ -20,9 +20,8 @@ struct SettingOptions {
     std::map<std::string, std::optional<double>> parameters;
 };
 
-// --k (with `k_help`), --code and every code's parameter (code_table), SPlisHSPlasH's
-// --particle-radius too.
-void add_setting_options(Command command, SettingOptions& options, const std::string& k_help);
+// --k, --code and every code's parameter (code_table), SPlisHSPlasH's --particle-radius too.
+void add_setting_options(Command command, SettingOptions& options);
 
 // The codes' parameters but SWIFT's --eta and SPlisHSPlasH's --particle-radius, for a command
 // that declares those (and --code) itself (`particles`, `relax`: sphkern's own --eta beside

@@ -17,18 +17,14 @@ namespace sphkern::cli {
 
 void add_plugin_option(Command command, CommonOptions& options)
 {
-    command.add_option("--plugin", options.plugins, "Load this kernel plugin file too (repeatable)")
-        .one_value_per_use();
+    command.add_setting("plugin", options.plugins).one_value_per_use();
 }
 
-void add_json_option(Command command, CommonOptions& options)
-{
-    command.add_flag("--json", options.json, "Print machine-readable JSON on stdout");
-}
+void add_json_option(Command command, CommonOptions& options) { command.add_setting("json", options.json); }
 
 void add_set_option(Command command, std::vector<std::string>& sets)
 {
-    command.add_option("--set", sets, "Kernel parameter NAME=VALUE (repeatable)").one_value_per_use();
+    command.add_setting("params", sets).one_value_per_use();
 }
 
 std::map<std::string, double> parse_sets(const std::vector<std::string>& sets)
@@ -57,23 +53,18 @@ Kernel make_kernel(KernelRegistry& registry, const std::string& spec, const std:
     return Kernel(registry.find(spec), parse_sets(sets));
 }
 
-void add_point_options(Command command, EvaluationOptions& options, const std::string& gravity_help,
-                       const std::string& site_help)
+void add_point_options(Command command, EvaluationOptions& options)
 {
-    command.add_option("--ap", options.ap, "Volume coefficient: a name the lattice offers or a positive number")
-        .capture_default_str();
-    command.add_option("--gravity", options.gravity, gravity_help);
-    command.add_option("--site", options.site, site_help).capture_default_str();
+    command.add_setting("a_p", options.ap);
+    command.add_setting("gravity", options.gravity);
+    command.add_setting("site", options.site);
 }
 
 void add_evaluation_options(Command command, EvaluationOptions& options)
 {
-    add_point_options(command, options, "Gravity direction x,y[,z] (default: the lattice's)",
-                      "Motif site of the particle");
-    command.add_option("--shells", options.shells,
-                       "Sum over these shell radii only (in d, comma-separated), as the paper does");
-    command.add_flag("--continue-past-support", options.continue_past_support,
-                     "Evaluate the kernel's formula past q = R instead of truncating (needs --shells)");
+    add_point_options(command, options);
+    command.add_setting("shells", options.shells);
+    command.add_setting("continue_past_support", options.continue_past_support);
 }
 
 KernelOnLattice kernel_on_lattice(const CommonOptions& options, const std::string& kernel, const std::string& lattice,

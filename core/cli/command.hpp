@@ -49,16 +49,15 @@ KernelOnLattice kernel_on_lattice(const CommonOptions& options, const std::strin
 
 // The evaluation options shared by eps, roots and the commands after them.
 struct EvaluationOptions {
-    std::string ap = "voronoi";
+    std::string ap;      // the defaults: requests/settings
     std::string gravity; // empty: the lattice's
     int site = 0;
     std::string shells; // explicit radii "1,1.732,2"
     bool continue_past_support = false;
 };
 void add_evaluation_options(Command command, EvaluationOptions& options);
-// --ap, --gravity and --site alone (design, surface), with the command's own words for the last two.
-void add_point_options(Command command, EvaluationOptions& options, const std::string& gravity_help,
-                       const std::string& site_help);
+// --ap, --gravity and --site alone (design, surface; their help is the command's own).
+void add_point_options(Command command, EvaluationOptions& options);
 // The options as numbers, for a request; the option names, for its errors.
 EvaluationInputs evaluation_inputs(const EvaluationOptions& options);
 EvaluationSources evaluation_sources(const EvaluationOptions& options);

@@ -22,9 +22,9 @@ struct AssessOptions : CommonOptions {
     bool bias_correction = false;
     SettingOptions setting;
     std::map<std::string, std::vector<double>> ranges; // a code's parameter swept on a file
-    int steps = 10, threads = 0;
+    int steps = 0, threads = 0;                        // the defaults: requests/settings
     std::size_t glass = 0;
-    double k_min = 0.75, k_max = 2.0, epsilon = 0.01, gamma = 5.0 / 3.0, horizon = default_horizon;
+    double k_min = 0, k_max = 0, epsilon = 0, gamma = 0, horizon = 0;
     std::optional<double> coef_sound;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
@@ -145,42 +145,24 @@ Action add_assess_command(Command app)
     Command command = app.add_subcommand("assess", "One verdict on a setting (k, or an SPH code's own) on a lattice: "
                                                    "accuracy, stability and the recommended setting");
     auto options = std::make_shared<AssessOptions>();
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command
-        .add_option("lattice", options->lattice,
-                    "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary snapshot, a "
-                    "Phantom dump)")
-        .required();
-    add_setting_options(command, options->setting,
-                        "Smoothing coefficient, h = k d (or --code and the code's own setting)");
-    command.add_option("--kmin", options->k_min, "The window of the recommended setting: smallest k")
-        .capture_default_str();
-    command.add_option("--kmax", options->k_max, "Largest k of the window").capture_default_str();
-    command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
-    command.add_option("--gamma", options->gamma, "Adiabatic index of the stability analysis").capture_default_str();
-    command.add_option(
-        "--coef-sound", options->coef_sound,
-        "With a weakly compressible code (dualsphysics, pysph): its sound speed over sqrt(g H), whose "
-        "hydrostatic pressure at rest, up to rho c^2 / coef^2, the stability assumes (default the code's: "
-        "20, 10 sqrt(2))");
-    command.add_option("--horizon", options->horizon, "Growth time in d/c; slower instabilities count as weak")
-        .capture_default_str();
-    command.add_option("--glass", options->glass,
-                       "Also relax a glass of this many particles at the recommended setting and measure it "
-                       "there (100 to 10^5; default none)");
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
+    add_setting_options(command, options->setting);
+    command.add_setting("kmin", options->k_min);
+    command.add_setting("kmax", options->k_max);
+    command.add_setting("epsilon", options->epsilon);
+    command.add_setting("gamma", options->gamma);
+    command.add_setting("coef_sound", options->coef_sound);
+    command.add_setting("horizon", options->horizon);
+    command.add_setting("glass", options->glass);
     add_evaluation_options(command, options->evaluation);
-    command.add_option("--box", options->box, "Particle file: a periodic box Lx,Ly[,Lz] from the origin");
-    command.add_option("--array", options->array, "PySPH file: the particle array, or several (the first is measured)");
+    command.add_setting("box", options->box);
+    command.add_setting("array", options->array);
     add_parameter_ranges(command, options->ranges);
-    command.add_option("--steps", options->steps, "Particle file: steps of a parameter's sweep").capture_default_str();
-    command.add_option(
-        "--threads", options->threads,
-        "Threads of a particle file's sums, or of a lattice's stability scan over k (default: every core)");
-    command.add_option("--neighbours-by", options->neighbours_by,
-                       "Particle file: what the code's density solve counts, number or mass (default the code's)");
-    command.add_flag(
-        "--bias-correction", options->bias_correction,
-        "Particle file: the density bias the code subtracts when built so (gadget4: WENDLAND_BIAS_CORRECTION)");
+    command.add_setting("steps", options->steps);
+    command.add_setting("threads", options->threads);
+    command.add_setting("neighbours_by", options->neighbours_by);
+    command.add_setting("bias_correction", options->bias_correction);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);

@@ -15,12 +15,12 @@ namespace sphkern::cli {
 namespace {
 
 struct BlockCommandOptions : CommonOptions {
-    std::string kernel, lattice, size, form = "sum", vtk, csv;
+    std::string kernel, lattice, size, form, vtk, csv; // the defaults: requests/settings
     double k = 0;
     bool periodic = false;
     int threads = 0;
     std::vector<std::string> sets;
-    std::string ap = "voronoi";
+    std::string ap;
 };
 
 // "N1,N2[,N3]": whole numbers (the request checks their count).
@@ -53,16 +53,16 @@ BlockRequest request_from(const BlockCommandOptions& o)
 
 void add_block_options(Command command, BlockCommandOptions& o)
 {
-    command.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", o.lattice, "Lattice name or file").required();
-    command.add_option("--k", o.k, "Smoothing coefficient, h = k d").required();
-    command.add_option("--size", o.size, "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)").required();
-    command.add_flag("--periodic", o.periodic, "Periodic lateral sides (the top is always free)");
-    command.add_option("--form", o.form, "Gradient form: sum, difference or monaghan").capture_default_str();
-    command.add_option("--threads", o.threads, "Threads (default: every core)");
-    command.add_option("--ap", o.ap, "Volume coefficient: a name or a positive number").capture_default_str();
-    command.add_option("--vtk", o.vtk, "Write per-particle results for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
-    command.add_option("--csv", o.csv, "Write per-particle results as CSV");
+    command.add_setting("kernel", o.kernel);
+    command.add_setting("lattice", o.lattice);
+    command.add_setting("k", o.k);
+    command.add_setting("size", o.size);
+    command.add_setting("periodic", o.periodic);
+    command.add_setting("form", o.form);
+    command.add_setting("threads", o.threads);
+    command.add_setting("a_p", o.ap);
+    command.add_setting("vtk", o.vtk);
+    command.add_setting("csv", o.csv);
 }
 
 } // namespace

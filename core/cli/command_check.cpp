@@ -15,7 +15,7 @@ struct CheckOptions : CommonOptions {
     std::vector<std::string> sets;
     bool strict = false;
     bool all = false;
-    double timeout = 60;
+    double timeout = 0; // the default: requests/settings
 };
 
 CheckRequest request_from(const CheckOptions& o)
@@ -35,13 +35,13 @@ Action add_check_command(Command app)
 {
     Command command = app.add_subcommand("check", "Check kernels: normalisation, derivative, continuity, moments");
     auto options = std::make_shared<CheckOptions>();
-    command.add_option("kernel", options->names, "Kernel names (default with --plugin: that plugin)");
+    command.add_setting("kernel", options->names);
     add_plugin_option(command, *options);
     add_json_option(command, *options);
     add_set_option(command, options->sets);
-    command.add_flag("--all", options->all, "Check every kernel found");
-    command.add_flag("--strict", options->strict, "Exit 1 on a warning too");
-    command.add_option("--timeout", options->timeout, "Seconds a kernel may take").capture_default_str();
+    command.add_setting("all", options->all);
+    command.add_setting("strict", options->strict);
+    command.add_setting("timeout", options->timeout);
     return [options] {
         auto request = request_from(*options);
         check_check_request(request, check_sources(FrontEnd::command_line));

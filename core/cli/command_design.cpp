@@ -13,7 +13,7 @@ namespace {
 struct DesignOptions : CommonOptions {
     std::string kernel, lattice, parameter;
     std::vector<double> range;
-    double k_min = 0.75, k_max = 1.25;
+    double k_min = 0, k_max = 0; // the defaults: requests/settings
     int threads = 0;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
@@ -43,17 +43,14 @@ Action add_design_command(Command app)
 {
     Command command = app.add_subcommand("design", "Find (k, parameter) where eps_rho and eps_gradP both vanish");
     auto options = std::make_shared<DesignOptions>();
-    command.add_option("kernel", options->kernel, "Kernel (a blend A+B, or one with parameters)").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    command.add_option("--param", options->parameter, "The parameter to vary (alpha for a blend)").required();
-    command
-        .add_option("--range", options->range, "Parameter range A B (default: blends [-1, 2], else the declared range)")
-        .expected(2);
-    command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
-    command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
-    command.add_option("--threads", options->threads, "Threads of the scan along the parameter (default: every core)")
-        .check_range(0, 1024);
-    add_point_options(command, options->evaluation, "Gravity x,y[,z] (default: the lattice's)", "Motif site");
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
+    command.add_setting("param", options->parameter);
+    command.add_setting("range", options->range).expected(2);
+    command.add_setting("kmin", options->k_min);
+    command.add_setting("kmax", options->k_max);
+    command.add_setting("threads", options->threads).check_range(0, 1024);
+    add_point_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);

@@ -13,7 +13,7 @@ namespace {
 struct EpsOptions : CommonOptions {
     std::string kernel, lattice;
     SettingOptions setting;
-    std::string axis = "k";
+    std::string axis; // the default: requests/settings
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
 };
@@ -42,12 +42,10 @@ Action add_eps_command(Command app)
 {
     Command command = app.add_subcommand("eps", "eps_rho and eps_gradP of a kernel on a lattice at one k");
     auto options = std::make_shared<EpsOptions>();
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    add_setting_options(command, options->setting,
-                        "Smoothing coefficient, h = k d (or --code and the code's own setting)");
-    command.add_option("--axis", options->axis, "The scale of --k: k (h/d) or h_over_l (h/V^(1/D))")
-        .capture_default_str();
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
+    add_setting_options(command, options->setting);
+    command.add_setting("axis", options->axis);
     add_evaluation_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

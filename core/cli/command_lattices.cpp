@@ -12,12 +12,11 @@ Action add_lattices_command(Command app)
         app.add_subcommand("lattices", "List the shipped lattices, or describe the ones named (or files)");
     struct Options : CommonOptions {
         std::vector<std::string> lattices;
-        double radius = 3;
+        double radius = 0; // the default: requests/settings
     };
     auto options = std::make_shared<Options>();
-    command.add_option("lattice", options->lattices, "Lattice names or files to describe in full");
-    command.add_option("--radius", options->radius, "Shells up to this radius, in d, when describing")
-        .capture_default_str();
+    command.add_setting("lattice", options->lattices);
+    command.add_setting("radius", options->radius);
     add_json_option(command, *options);
     add_plugin_option(command, *options);
     return [options] {

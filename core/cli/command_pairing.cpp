@@ -18,29 +18,27 @@ struct PairingOptions : CommonOptions {
     std::string kernel, lattice;
     std::vector<std::string> sets;
     SettingOptions setting;
+    std::optional<double> k_min, k_max;
     PairingRequest request;
 };
 
 void add_options(Command c, PairingOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
-    c.add_option("lattice", o.lattice, "Lattice name or JSON file").required();
+    c.add_setting("kernel", o.kernel);
+    c.add_setting("lattice", o.lattice);
     auto& r = o.request;
-    add_setting_options(c, o.setting, "One k (h = k d)");
-    c.add_option("--kmin", r.k_min, "Smallest k of the range");
-    c.add_option("--kmax", r.k_max, "Largest k of the range");
-    c.add_option("--samples", r.samples, "Evenly spaced k over [kmin, kmax]").capture_default_str();
-    c.add_option("--noise", r.noise, "Gaussian displacement per axis at the start, in units of d")
-        .capture_default_str();
-    c.add_option("--duration", r.duration, "Time of motion, in units of d / c").capture_default_str();
-    c.add_option("--damping", r.damping, "Velocity damping rate, in units of c / h").capture_default_str();
-    c.add_option("--dt", r.time_step, "Time step, in units of h / c").capture_default_str();
-    c.add_option("--gamma", r.gamma, "Adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")
-        .capture_default_str();
-    c.add_option("--horizon", r.horizon, "Growth time (d/c) beyond which the linear verdict is weak")
-        .capture_default_str();
-    c.add_option("--seed", r.seed, "Seed of the noise").capture_default_str();
-    c.add_option("--threads", r.threads, "Threads (default: every core)");
+    add_setting_options(c, o.setting);
+    c.add_setting("kmin", o.k_min);
+    c.add_setting("kmax", o.k_max);
+    c.add_setting("samples", r.samples);
+    c.add_setting("noise", r.noise);
+    c.add_setting("duration", r.duration);
+    c.add_setting("damping", r.damping);
+    c.add_setting("dt", r.time_step);
+    c.add_setting("gamma", r.gamma);
+    c.add_setting("horizon", r.horizon);
+    c.add_setting("seed", r.seed);
+    c.add_setting("threads", r.threads);
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);
@@ -54,17 +52,19 @@ Action add_pairing_command(Command app)
         app.add_subcommand("pairing", "Linear stability against the motion of a disturbed lattice, k by k");
     auto options = std::make_shared<PairingOptions>();
     add_options(command, *options);
-    return [options, command] {
+    return [options] {
         auto& o = *options;
-        const bool range = command.count("--kmin") + command.count("--kmax") > 0;
+        const bool range = o.k_min || o.k_max;
         if (setting_given(o.setting) == range) throw Error(ExitCode::usage, "give --k, or --kmin and --kmax");
         std::optional<CodeSetting> code;
         if (!range) {
             code = code_setting(o.setting);
             // A code's k is known once the kernel and lattice are: checked then, as one k.
             o.request.k_min = o.request.k_max = code ? 1 : *o.setting.k, o.request.samples = 1;
-        } else if (command.count("--kmin") != 1 || command.count("--kmax") != 1) {
+        } else if (!o.k_min || !o.k_max) {
             throw Error(ExitCode::usage, "a range needs both --kmin and --kmax");
+        } else {
+            o.request.k_min = *o.k_min, o.request.k_max = *o.k_max;
         }
         const auto [code_source, value_source] = code_sources(o.setting);
         if (code) check_code_setting(*code, {code_source, value_source});

@@ -56,38 +56,24 @@ ParticleArguments arguments_of(const ParticlesOptions& o, ParticleSources& sourc
 
 void add_options(Command c, ParticlesOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
+    c.add_setting("kernel", o.kernel);
     add_source_options(c, o);
-    c.add_option("more", o.more,
-                 "Further snapshots of the run: the files (or folders) are measured as a series, ordered by "
-                 "the times in their headers");
-    c.add_flag("--keep-going", o.keep_going, "Series: report a snapshot that fails and go on with the rest");
-    c.add_option("--plot", o.plot, "Series: draw the errors against time (median, p1 to p99) as .svg, .png or .pdf");
-    c.add_option("--h-over-l", o.h_over_l,
-                 "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a "
-                 "file h)");
-    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
-    c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
-    c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.codes.code,
-                 "h as an SPH code sets it, from each particle's SPH density where the code solves for "
-                 "it: swift (--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), "
-                 "dualsphysics (--coefh); without its parameter, a file's h as the code stores it");
+    c.add_setting("more", o.more);
+    c.add_setting("keep_going", o.keep_going);
+    c.add_setting("plot", o.plot);
+    c.add_setting("h_over_l", o.h_over_l);
+    c.add_setting("eta", o.eta);
+    c.add_setting("nh", o.nh);
+    c.add_setting("k", o.k);
+    c.add_setting("code", o.codes.code);
     add_code_parameters(c, o.codes);
-    c.add_option("--neighbours-by", o.neighbours_by,
-                 "With --code: what its density solve counts, number or mass (default the "
-                 "code's; SWIFT's use_mass_weighted_num_ngb is mass)");
-    c.add_flag("--bias-correction", o.bias_correction,
-               "With --code: the density bias the code subtracts when built so "
-               "(gadget4: WENDLAND_BIAS_CORRECTION, Wendland kernels in 3D)");
-    c.add_option("--support-per-h", o.support_per_h,
-                 "File h: the support radius over the stored h (GADGET 1, SWIFT gamma, PySPH R)");
-    c.add_option("--h-over-l-range", o.h_over_l_range, "Sweep h / l over [A, B]").expected(2);
-    c.add_option("--eta-range", o.eta_range, "The old name of --h-over-l-range (refused, naming it)")
-        .expected(2)
-        .hidden();
-    c.add_option("--nh-range", o.nh_range, "Sweep N_H over [A, B]").expected(2);
-    c.add_option("--steps", o.steps, "Sweep: steps between A and B").capture_default_str();
+    c.add_setting("neighbours_by", o.neighbours_by);
+    c.add_setting("bias_correction", o.bias_correction);
+    c.add_setting("support_per_h", o.support_per_h);
+    c.add_setting("h_over_l_range", o.h_over_l_range).expected(2);
+    c.add_setting("eta_range", o.eta_range).expected(2);
+    c.add_setting("nh_range", o.nh_range).expected(2);
+    c.add_setting("steps", o.steps);
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
     c.get_option("--particle-radius")
         .excludes("--h-over-l")
@@ -96,17 +82,15 @@ void add_options(Command c, ParticlesOptions& o)
         .excludes("--h-over-l-range")
         .excludes("--nh-range")
         .excludes("--code");
-    c.add_option("--volume", o.volume,
-                 "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)");
-    c.add_option("--gravity", o.gravity, "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)");
-    c.add_option("--depth", o.depth, "Depth of the sum form's eps_gradp_sum, in units of h").capture_default_str();
-    c.add_option("--rho0", o.rho0, "Reference density of eps_rho (default: the set's total mass over its volume)");
-    c.add_option("--histogram", o.histogram, "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum");
-    c.add_option("--threads", o.threads, "Threads (default: every core)");
-    c.add_option("--memory-limit", o.memory_limit,
-                 "Memory budget in GiB (default: three quarters of the available memory)");
-    c.add_option("--csv", o.csv, "Write one row per particle as CSV");
-    c.add_option("--vtk", o.vtk, "Write the per-particle values for ParaView: F.vtk legacy VTK, F.vtu VTK XML");
+    c.add_setting("volume", o.volume);
+    c.add_setting("gravity", o.gravity);
+    c.add_setting("depth", o.depth);
+    c.add_setting("rho0", o.rho0);
+    c.add_setting("histogram", o.histogram);
+    c.add_setting("threads", o.threads);
+    c.add_setting("memory_limit", o.memory_limit);
+    c.add_setting("csv", o.csv);
+    c.add_setting("vtk", o.vtk);
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);

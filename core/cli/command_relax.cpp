@@ -31,62 +31,46 @@ namespace sphkern::cli {
 namespace {
 
 struct RelaxOptions : CommonOptions, SourceOptions {
-    std::string kernel, method = "pressure", output, history, tile;
+    std::string kernel, method, output, history, tile; // the defaults: requests/settings
     std::vector<std::string> sets;
     std::optional<double> h_over_l, eta, nh, k;
     std::optional<double> rho0, u; // of the written initial conditions
     SettingOptions codes;          // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
     RelaxSettings settings;
-    double memory_limit = 0, rdf_max = 3;
-    std::size_t rdf_bins = 60;
+    double memory_limit = 0, rdf_max = 0;
+    std::size_t rdf_bins = 0;
 };
 
 void add_options(Command c, RelaxOptions& o)
 {
-    c.add_option("kernel", o.kernel, "Kernel name or plugin file").required();
+    c.add_setting("kernel", o.kernel);
     add_source_options(c, o);
-    c.add_option("--h-over-l", o.h_over_l, "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)");
-    c.add_option("--eta", o.eta, "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)");
-    c.add_option("--nh", o.nh, "h from the neighbour number N_H = c_D (R h)^D n");
-    c.add_option("--k", o.k, "Lattice: h = k d");
-    c.add_option("--code", o.codes.code,
-                 "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full "
-                 "dump), its layout and h; "
-                 "with its parameter (--eta for swift), the run's h and each written h as the "
-                 "code sets it");
+    c.add_setting("h_over_l", o.h_over_l);
+    c.add_setting("eta", o.eta);
+    c.add_setting("nh", o.nh);
+    c.add_setting("k", o.k);
+    c.add_setting("code", o.codes.code);
     add_code_parameters(c, o.codes);
     // The radius gives a SPlisHSPlasH file's h, which a rule for h would leave unused.
     c.get_option("--particle-radius").excludes("--h-over-l").excludes("--nh").excludes("--k");
-    c.add_option("--method", o.method, "pressure (SPH pressure force with damping) or shift (particle shifting)")
-        .capture_default_str();
+    c.add_setting("method", o.method);
     auto& s = o.settings;
-    c.add_option("--steps", s.steps, "At most this many steps").capture_default_str();
-    c.add_option("--tolerance", s.tolerance, "Stop once a step's RMS move is below this many h (0: never)")
-        .capture_default_str();
-    c.add_option("--gamma", s.gamma, "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")
-        .capture_default_str();
-    c.add_option("--dt", s.time_step, "pressure: time step in units of h / c").capture_default_str();
-    c.add_option("--damping", s.damping, "pressure: velocity damping rate in units of c / h").capture_default_str();
-    c.add_option("--alpha", s.alpha, "shift: dx = -alpha h^2 sum_j V_j grad W_ij").capture_default_str();
-    c.add_option("--max-move", s.max_move, "shift: largest move of a step, in units of h").capture_default_str();
-    c.add_option("--threads", s.threads, "Threads (default: every core)");
-    c.add_option("--rdf-max", o.rdf_max, "g(r) up to this many mean spacings").capture_default_str();
-    c.add_option("--rdf-bins", o.rdf_bins, "g(r) bins").capture_default_str();
-    c.add_option("--memory-limit", o.memory_limit,
-                 "Memory budget in GiB (default: three quarters of the available memory)");
-    c.add_option("--output", o.output,
-                 "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with "
-                 "--code phantom any other name (a Phantom full dump, NAME_00000.tmp)");
-    c.add_option("--rho0", o.rho0, "With --output: the density written, masses rho0 V (default 1)");
-    c.add_option("--u", o.u,
-                 "With an HDF5 or Phantom --output: the internal energy written (default c^2 / (gamma (gamma - 1)), "
-                 "0.9 for gamma 5/3)");
-    c.add_option(
-        "--tile", o.tile,
-        "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger");
-    c.add_option("--history", o.history,
-                 "Write the history of the run: F.csv its steps as CSV, F.pvd the particles "
-                 "at every step as a ParaView series (F_k.vtu beside F.pvd)");
+    c.add_setting("steps", s.steps);
+    c.add_setting("tolerance", s.tolerance);
+    c.add_setting("gamma", s.gamma);
+    c.add_setting("dt", s.time_step);
+    c.add_setting("damping", s.damping);
+    c.add_setting("alpha", s.alpha);
+    c.add_setting("max_move", s.max_move);
+    c.add_setting("threads", s.threads);
+    c.add_setting("rdf_max", o.rdf_max);
+    c.add_setting("rdf_bins", o.rdf_bins);
+    c.add_setting("memory_limit", o.memory_limit);
+    c.add_setting("output", o.output);
+    c.add_setting("rho0", o.rho0);
+    c.add_setting("u", o.u);
+    c.add_setting("tile", o.tile);
+    c.add_setting("history", o.history);
     add_set_option(c, o.sets);
     add_plugin_option(c, o);
     add_json_option(c, o);

@@ -14,16 +14,16 @@ namespace {
 
 struct RootsOptions : CommonOptions {
     std::string kernel, lattice;
-    double k_min = 0.75, k_max = 1.25, epsilon = 0.01;
+    double k_min = 0, k_max = 0, epsilon = 0; // the defaults: requests/settings
     bool lateral = false;
-    std::string axis = "k";
+    std::string axis;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
     bool stability = false;
-    double gamma = 5.0 / 3.0, horizon = default_horizon;
-    int steps = 100, threads = 0;
+    double gamma = 0, horizon = 0;
+    int steps = 0, threads = 0;
     std::string convention, code;
-    std::string h_model = "fixed";
+    std::string h_model;
 };
 
 // The adapter: the option texts as types (an unknown axis, h model or code is refused here).
@@ -101,38 +101,21 @@ Action add_roots_command(Command app)
 {
     Command command = app.add_subcommand("roots", "Roots in k of eps_rho and eps_gradP, jumps and condition (22)");
     auto options = std::make_shared<RootsOptions>();
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file, or all").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file, or all (every shipped lattice)").required();
-    command.add_option("--kmin", options->k_min, "Smallest k").capture_default_str();
-    command.add_option("--kmax", options->k_max, "Largest k").capture_default_str();
-    command.add_option("--epsilon", options->epsilon, "Tolerance of condition (22)").capture_default_str();
-    command.add_flag("--lateral", options->lateral, "Count the lateral gradient error in condition (22) too");
-    command
-        .add_option("--axis", options->axis,
-                    "The scale of --kmin/--kmax: k (h/d), h_over_l (h/V^(1/D)) or nh (neighbours)")
-        .capture_default_str();
-    command.add_flag("--stability", options->stability,
-                     "Also the stable k intervals of the window (linear "
-                     "stability) and where condition (22) holds there");
-    command.add_option("--gamma", options->gamma, "With --stability: adiabatic index").capture_default_str();
-    command.add_option("--steps", options->steps, "With --stability: k intervals of the scan").capture_default_str();
-    command
-        .add_option("--threads", options->threads, "With --stability: threads of the scan over k (default: every core)")
-        .check_range(0, 1024);
-    command.add_option("--convention", options->convention, "The old name of --code, kept as its alias");
-    command.add_option("--code", options->code,
-                       "Also give every k as an SPH code's own setting, with its own SPH "
-                       "density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
-    command
-        .add_option("--horizon", options->horizon,
-                    "With --stability: growth time in d/c; slower instabilities "
-                    "count as stable (weak)")
-        .capture_default_str();
-    command
-        .add_option("--h-model", options->h_model,
-                    "With --stability: fixed or adaptive h (h = (h/l) (m/rho)^(1/D), "
-                    "grad-h terms); k is the equilibrium h = k d in both")
-        .capture_default_str();
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
+    command.add_setting("kmin", options->k_min);
+    command.add_setting("kmax", options->k_max);
+    command.add_setting("epsilon", options->epsilon);
+    command.add_setting("lateral", options->lateral);
+    command.add_setting("axis", options->axis);
+    command.add_setting("stability", options->stability);
+    command.add_setting("gamma", options->gamma);
+    command.add_setting("steps", options->steps);
+    command.add_setting("threads", options->threads).check_range(0, 1024);
+    command.add_setting("convention", options->convention);
+    command.add_setting("code", options->code);
+    command.add_setting("horizon", options->horizon);
+    command.add_setting("h_model", options->h_model);
     add_evaluation_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

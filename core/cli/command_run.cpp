@@ -24,18 +24,15 @@ Action add_run_command(Command app)
         bool no_plots = false;
         bool force = false;
         std::string reproduce;
-        std::string format = "svg";
+        std::string format; // the default: requests/settings
     };
     auto options = std::make_shared<Options>();
-    command.add_option("study", options->study, "Study file, or the name of a shipped study");
-    command.add_option("-o,--output", options->output, "Results folder (default: sphkern-results/<study name>)");
-    command.add_flag("--no-plots", options->no_plots, "Do not draw the figures");
-    command.add_option("--format", options->format, "Figure formats, comma-separated: svg, png, pdf")
-        .capture_default_str();
-    command.add_flag("--force", options->force, "Replace an existing results folder");
-    command
-        .add_option("--reproduce", options->reproduce,
-                    "Run the study a results.json records again and say whether the numbers agree (exit 1 if not)")
+    command.add_setting("study", options->study);
+    command.add_setting("output", options->output);
+    command.add_setting("no_plots", options->no_plots);
+    command.add_setting("format", options->format);
+    command.add_setting("force", options->force);
+    command.add_setting("reproduce", options->reproduce)
         .excludes(command.get_option("study"))
         .excludes("--output")
         .excludes("--force");

@@ -17,10 +17,10 @@ Action add_shells_command(Command app)
         std::string gravity;
     };
     auto options = std::make_shared<Options>();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    command.add_option("--radius", options->radius, "Largest radius, in units of d").required();
-    command.add_option("--site", options->site, "Motif site").capture_default_str();
-    command.add_option("--gravity", options->gravity, "Direction for the moments (default: the lattice's)");
+    command.add_setting("lattice", options->lattice);
+    command.add_setting("radius", options->radius);
+    command.add_setting("site", options->site);
+    command.add_setting("gravity", options->gravity);
     add_json_option(command, *options);
     add_plugin_option(command, *options);
     return [options] {

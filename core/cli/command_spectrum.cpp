@@ -17,11 +17,11 @@ Action add_spectrum_command(Command app)
     };
     auto options = std::make_shared<Options>();
     auto& request = options->request;
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("--dim", request.dimension, "Dimension D (1, 2 or 3)").required();
-    command.add_option("--k", request.k, "k for kernels whose formula depends on it").capture_default_str();
-    command.add_option("--max", request.kh_max, "Largest kappa h").capture_default_str();
-    command.add_option("--points", request.points, "Intervals on [0, max]").capture_default_str();
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("dim", request.dimension);
+    command.add_setting("k", request.k);
+    command.add_setting("max", request.kh_max);
+    command.add_setting("points", request.points);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);

@@ -25,9 +25,10 @@ std::vector<double> parse_wavevector(const std::string& text)
 }
 
 struct StabilityOptions : CommonOptions {
-    std::string kernel, lattice, wavevector, h_model = "fixed", code;
-    double k = 0, gamma = 5.0 / 3.0, k_min = 0, k_max = 0, horizon = default_horizon;
-    int threads = 0, steps = 50;
+    std::string kernel, lattice, wavevector, h_model, code; // the defaults: requests/settings
+    std::optional<double> k, k_min, k_max; // none given: refused as k = 0, with the k range as the other choice
+    double gamma = 0, horizon = 0;
+    int threads = 0, steps = 0;
     std::optional<int> grid, path;
     std::vector<std::string> sets;
 };
@@ -46,11 +47,11 @@ StabilitySources option_sources(const StabilityOptions& o)
 StabilityRequest request_from(const StabilityOptions& o)
 {
     StabilityRequest r;
-    if (o.k_max > 0 || o.k_min > 0) {
-        r.k_min = o.k_min;
-        r.k_max = o.k_max;
+    if (o.k_min || o.k_max) {
+        r.k_min = o.k_min.value_or(0);
+        r.k_max = o.k_max.value_or(0);
     } else {
-        r.k = o.k; // 0 when not given: refused as out of range, with the k range as the other choice
+        r.k = o.k.value_or(0);
     }
     r.steps = o.steps;
     if (!o.wavevector.empty()) r.wavevector = parse_wavevector(o.wavevector);
@@ -71,33 +72,22 @@ StabilityRequest request_from(const StabilityOptions& o)
 
 void add_stability_options(Command command, StabilityOptions& o)
 {
-    Option k_option = command.add_option("--k", o.k, "Smoothing coefficient, h = k d");
-    Option kmin_option = command.add_option("--kmin", o.k_min, "Scan k from here (with --kmax): stable intervals");
-    Option kmax_option = command.add_option("--kmax", o.k_max, "Scan k up to here");
-    command.add_option("--steps", o.steps, "Intervals of the k scan").capture_default_str();
+    Option k_option = command.add_setting("k", o.k);
+    Option kmin_option = command.add_setting("kmin", o.k_min);
+    Option kmax_option = command.add_setting("kmax", o.k_max);
+    command.add_setting("steps", o.steps);
     k_option.excludes(kmin_option).excludes(kmax_option);
     kmin_option.needs(kmax_option);
     kmax_option.needs(kmin_option);
-    command.add_option("--gamma", o.gamma, "Adiabatic index of P = rho c^2 / gamma").capture_default_str();
-    command.add_option("--wavevector", o.wavevector, "Cartesian wave vector x,y[,z] in 1/d: the modes there");
-    Option path_option = command.add_option("--path", o.path,
-                                            "Dispersion curves along the high-symmetry "
-                                            "path: about this many points");
+    command.add_setting("gamma", o.gamma);
+    command.add_setting("wavevector", o.wavevector);
+    Option path_option = command.add_setting("path", o.path);
     path_option.excludes(kmin_option).excludes(kmax_option);
-    command.add_option("--grid", o.grid,
-                       "First zone grid, points per reciprocal axis (default 8 in 3D, 32 "
-                       "in 2D; doubled until the minimum settles)");
-    command.add_option("--horizon", o.horizon, "Growth time in d/c: slower instabilities are weak")
-        .capture_default_str();
-    command
-        .add_option("--h-model", o.h_model,
-                    "Smoothing length: fixed (h = k d) or adaptive (h = eta "
-                    "(m/rho)^(1/D) with grad-h terms; k sets the equilibrium h = k d)")
-        .capture_default_str();
-    command.add_option("--threads", o.threads, "Threads (default: every core)").check_range(0, 1024);
-    command.add_option("--code", o.code,
-                       "With --kmin/--kmax: the stable intervals also in an SPH code's own setting, "
-                       "with its own density: swift, phantom, gadget2, gadget4, pysph or dualsphysics");
+    command.add_setting("grid", o.grid);
+    command.add_setting("horizon", o.horizon);
+    command.add_setting("h_model", o.h_model);
+    command.add_setting("threads", o.threads).check_range(0, 1024);
+    command.add_setting("code", o.code);
 }
 
 } // namespace
@@ -108,8 +98,8 @@ Action add_stability_command(Command app)
         app.add_subcommand("stability", "Linear stability of SPH on a lattice: dispersion, Brillouin-zone "
                                         "scan, long-wave sound speed");
     auto options = std::make_shared<StabilityOptions>();
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
     add_stability_options(command, *options);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

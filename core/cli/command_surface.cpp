@@ -11,9 +11,9 @@ namespace sphkern::cli {
 namespace {
 
 struct SurfaceOptions : CommonOptions {
-    std::string kernel, lattice, form = "sum";
+    std::string kernel, lattice, form; // the defaults: requests/settings
     SettingOptions setting;
-    int layers = 4;
+    int layers = 0;
     std::optional<int> termination;
     std::vector<std::string> sets;
     EvaluationOptions evaluation;
@@ -44,17 +44,13 @@ Action add_surface_command(Command app)
 {
     Command command = app.add_subcommand("surface", "Errors layer by layer below a free surface");
     auto options = std::make_shared<SurfaceOptions>();
-    command.add_option("kernel", options->kernel, "Kernel name or plugin file").required();
-    command.add_option("lattice", options->lattice, "Lattice name or file").required();
-    add_setting_options(command, options->setting, "Smoothing coefficient, h = k d (or --code and the code's setting)");
-    command.add_option("--layers", options->layers, "Report at least this many layers").capture_default_str();
-    command.add_option("--form", options->form, "Gradient form: sum, difference or monaghan").capture_default_str();
-    add_point_options(command, options->evaluation, "Gravity x,y[,z], normal to a lattice plane",
-                      "Motif site on the top layer");
-    command
-        .add_option("--termination", options->termination,
-                    "Which plane type is on top (an index from the listed terminations; default: --site's)")
-        .check_non_negative();
+    command.add_setting("kernel", options->kernel);
+    command.add_setting("lattice", options->lattice);
+    add_setting_options(command, options->setting);
+    command.add_setting("layers", options->layers);
+    command.add_setting("form", options->form);
+    add_point_options(command, options->evaluation);
+    command.add_setting("termination", options->termination).check_non_negative();
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);
     add_json_option(command, *options);

@@ -6,11 +6,16 @@
 #include <cstddef>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 
 namespace CLI {
 class App;
 class Option;
 } // namespace CLI
+
+namespace sphkern {
+class SettingTable;
+}
 
 namespace sphkern::cli {
 
@@ -35,10 +40,18 @@ private:
 };
 
 // A command (or the program) whose options are being declared, and after parsing, what was given.
+// A subcommand's options are its settings (requests/settings): declared there once, with
+// their names, help and defaults.
 class Command {
 public:
-    explicit Command(CLI::App& app) : app_(&app) {}
+    explicit Command(CLI::App& app, const SettingTable* settings = nullptr) : app_(&app), settings_(settings) {}
+    // The command of that name, with its table of settings.
     Command add_subcommand(const std::string& name, const std::string& description);
+    // The option (or positional) of the setting `key` as the command's table declares it:
+    // name, help, the default given to `value` and shown in --help where the table says; a
+    // positional is required unless it takes a list. T: as add_option's, and bool for a flag.
+    template <class T>
+    Option add_setting(std::string_view key, T& value);
     // T: std::string, int, unsigned, long long, unsigned long long, std::size_t, double,
     // std::optional<int or double>, std::vector of std::string or double (options.cpp).
     template <class T>
@@ -49,6 +62,7 @@ public:
 
 private:
     CLI::App* app_;
+    const SettingTable* settings_;
 };
 
 } // namespace sphkern::cli

@@ -20,10 +20,10 @@ struct ParticlesOptions : CommonOptions, SourceOptions {
     bool bias_correction = false;
     std::vector<std::string> sets, more; // more: a series' further files or folders
     std::vector<double> h_over_l_range, nh_range, eta_range;
-    double depth = 1, memory_limit = 0;
+    double depth = 0, memory_limit = 0; // the defaults: requests/settings
     std::optional<double> h_over_l, eta, nh, k, support_per_h, rho0;
     SettingOptions codes; // --code and the codes' parameters but --eta (SWIFT's, with --code swift)
-    int steps = 10, threads = 0;
+    int steps = 0, threads = 0;
     std::size_t histogram = 0;
     bool keep_going = false;
 };

@@ -21,29 +21,22 @@ namespace sphkern::cli {
 
 void add_source_options(Command c, SourceOptions& o)
 {
-    c.add_option("source", o.source,
-                 "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary "
-                 "snapshot, a Phantom dump)")
-        .required();
-    c.add_option("--size", o.size, "Lattice: cells of the periodic block, N1,N2[,N3]");
-    c.add_option("--cell", o.cell,
-                 "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)");
-    c.add_option("--sigma", o.sigma, "Lattice: Gaussian displacement per axis, in units of d");
-    c.add_option("--seed", o.seed, "Lattice and poisson: the random seed").capture_default_str();
-    c.add_option("--count", o.count, "Poisson: number of particles");
-    c.add_option("--dim", o.dim,
-                 "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate");
-    c.add_option("--box", o.box, "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin");
-    c.add_option("--particle-radius", o.particle_radius,
-                 "SPlisHSPlasH VTK file: the scene's particle radius r (the file holds none); h = r, support 4 r");
-    c.add_option("--array", o.array,
-                 "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours");
+    c.add_setting("source", o.source);
+    c.add_setting("size", o.size);
+    c.add_setting("cell", o.cell);
+    c.add_setting("sigma", o.sigma);
+    c.add_setting("seed", o.seed);
+    c.add_setting("count", o.count);
+    c.add_setting("dim", o.dim);
+    c.add_setting("box", o.box);
+    c.add_setting("particle_radius", o.particle_radius);
+    c.add_setting("array", o.array);
 }
 
 ParticleSource source_of(const SourceOptions& o)
 {
-    return particle_source_of({o.source, o.size, o.box, o.array, o.cell, o.sigma, o.seed, o.count, o.dim,
-                               o.particle_radius},
+    return particle_source_of({o.source, o.size, o.box, o.array, o.cell, o.sigma, o.seed, o.count.value_or(0),
+                               o.dim.value_or(0), o.particle_radius},
                               source_sources(FrontEnd::command_line));
 }
 
@@ -59,8 +52,9 @@ nlohmann::json source_inputs(const SourceOptions& o, const Kernel& kernel, FileD
     std::optional<Lattice> lattice;
     if (kind == SourceKind::lattice) lattice = load_lattice(o.source);
     nlohmann::json inputs = command_inputs(&kernel, lattice ? &*lattice : nullptr);
-    nlohmann::json source = {{"spec", o.source}, {"size", o.size}, {"sigma", o.sigma}, {"seed", o.seed},
-                             {"count", o.count}, {"box", o.box},   {"array", o.array}};
+    nlohmann::json source = {
+        {"spec", o.source}, {"size", o.size},  {"sigma", o.sigma}, {"seed", o.seed}, {"count", o.count.value_or(0)},
+        {"box", o.box},     {"array", o.array}};
     if (!o.cell.empty()) source["cell"] = o.cell;
     if (o.particle_radius) source["particle_radius"] = *o.particle_radius;
     if (kind == SourceKind::file)

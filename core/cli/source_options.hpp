@@ -19,8 +19,9 @@ namespace sphkern::cli {
 struct SourceOptions {
     std::string source, size, box, array, cell;
     double sigma = 0;
-    unsigned long long seed = 1, count = 0;
-    int dim = 0;
+    unsigned long long seed = 0;
+    std::optional<unsigned long long> count;
+    std::optional<int> dim;
     std::optional<double> particle_radius;
 };
 

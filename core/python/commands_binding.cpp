@@ -5,6 +5,7 @@
 #include "module_errors.hpp"
 #include "module_support.hpp"
 #include "python_types.hpp"
+#include "setting_keywords.hpp"
 
 #include "lattices/lattice.hpp"
 #include "requests/block_request.hpp"
@@ -195,25 +196,28 @@ py::dict pairing_command(const std::string& kernel_spec, const std::string& latt
 void bind_kernel_commands(py::module_& m)
 {
     const py::call_guard<InterruptScope> guard;
-    m.def("check", &check_command, py::arg("kernel") = py::none(), py::kw_only(), py::arg("all") = false,
-          py::arg("strict") = false, py::arg("timeout") = 60.0, py::arg("plugin") = py::none(),
-          py::arg("params") = py::none(), doc::check, guard);
+    const SettingKeywords check_keywords("check");
+    m.def("check", &check_command, check_keywords("kernel"), py::kw_only(), check_keywords("all"),
+          check_keywords("strict"), check_keywords("timeout"), check_keywords("plugin"), check_keywords("params"),
+          doc::check, guard);
     const SpectrumRequest spectrum_defaults;
-    m.def("spectrum", &spectrum_command, py::arg("kernel"), py::arg("dim"), py::kw_only(),
-          py::arg("k") = spectrum_defaults.k, py::arg("max") = spectrum_defaults.kh_max,
-          py::arg("points") = spectrum_defaults.points, py::arg("params") = py::none(), doc::spectrum, guard);
-    m.def("block", &block_command, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::arg("size"), py::kw_only(),
-          py::arg("periodic") = false, py::arg("form") = "sum", py::arg("threads") = 0, py::arg("a_p") = "voronoi",
-          py::arg("vtk") = py::none(), py::arg("csv") = py::none(), py::arg("params") = py::none(), doc::block, guard);
+    const SettingKeywords spectrum_keywords("spectrum");
+    m.def("spectrum", &spectrum_command, spectrum_keywords.required("kernel"), spectrum_keywords.required("dim"),
+          py::kw_only(), spectrum_keywords("k"), spectrum_keywords("max"), spectrum_keywords("points"),
+          spectrum_keywords("params"), doc::spectrum, guard);
+    const SettingKeywords block_keywords("block");
+    m.def("block", &block_command, block_keywords.required("kernel"), block_keywords.required("lattice"),
+          block_keywords.required("k"), block_keywords.required("size"), py::kw_only(), block_keywords("periodic"),
+          block_keywords("form"), block_keywords("threads"), block_keywords("a_p"), block_keywords("vtk"),
+          block_keywords("csv"), block_keywords("params"), doc::block, guard);
     const PairingRequest pairing_defaults;
-    m.def("pairing", &pairing_command, py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
-          py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("kmin") = py::none(),
-          py::arg("kmax") = py::none(), py::arg("samples") = pairing_defaults.samples,
-          py::arg("noise") = pairing_defaults.noise, py::arg("duration") = pairing_defaults.duration,
-          py::arg("damping") = pairing_defaults.damping, py::arg("dt") = pairing_defaults.time_step,
-          py::arg("gamma") = pairing_defaults.gamma, py::arg("horizon") = pairing_defaults.horizon,
-          py::arg("seed") = pairing_defaults.seed, py::arg("threads") = pairing_defaults.threads,
-          py::arg("params") = py::none(), doc::pairing, guard);
+    const SettingKeywords pairing_keywords("pairing");
+    m.def("pairing", &pairing_command, pairing_keywords.required("kernel"), pairing_keywords.required("lattice"),
+          pairing_keywords("k"), py::kw_only(), pairing_keywords("code"), pairing_keywords("value"),
+          pairing_keywords("kmin"), pairing_keywords("kmax"), pairing_keywords("samples"), pairing_keywords("noise"),
+          pairing_keywords("duration"), pairing_keywords("damping"), pairing_keywords("dt"), pairing_keywords("gamma"),
+          pairing_keywords("horizon"), pairing_keywords("seed"), pairing_keywords("threads"),
+          pairing_keywords("params"), doc::pairing, guard);
 }
 
 } // namespace sphkern

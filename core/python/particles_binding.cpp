@@ -5,6 +5,7 @@
 #include "module_support.hpp"
 #include "python_arrays.hpp"
 #include "python_types.hpp"
+#include "setting_keywords.hpp"
 
 #include "codes/code_table.hpp"
 #include "particles/particle_set.hpp"
@@ -364,6 +365,7 @@ py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, con
 
 void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
 {
+    const SettingKeywords particles_keywords("particles");
     m.def(
         "particles",
         [kernel_of,
@@ -391,15 +393,15 @@ void bind_particles(py::module_& m, KernelOf kernel_of, ToPython to_python)
                 return typed(measure(kernel, read_file(path_of(positions), box), given, to_python));
             return typed(measure_series(kernel, positions, box, given, keep_going, plot, to_python));
         },
-        py::arg("kernel"), py::arg("positions"), py::kw_only(), py::arg("box") = py::none(), py::arg("h") = py::none(),
-        py::arg("support_per_h") = py::none(), py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(),
-        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("neighbours_by") = py::none(),
-        py::arg("bias_correction") = false, py::arg("masses") = py::none(), py::arg("densities") = py::none(),
-        py::arg("rho0") = py::none(), py::arg("volume") = py::none(), py::arg("gravity") = py::none(),
-        py::arg("depth") = 1.0, py::arg("threads") = 0, py::arg("params") = py::none(),
-        py::arg("h_over_l_range") = py::none(), py::arg("nh_range") = py::none(), py::arg("steps") = 10,
-        py::arg("histogram") = 0, py::arg("keep_going") = false, py::arg("plot") = py::none(), doc::particles,
-        py::call_guard<InterruptScope>());
+        particles_keywords.required("kernel"), particles_keywords.required("positions"), py::kw_only(),
+        particles_keywords("box"), particles_keywords("h"), particles_keywords("support_per_h"),
+        particles_keywords("h_over_l"), particles_keywords("nh"), particles_keywords("code"),
+        particles_keywords("value"), particles_keywords("neighbours_by"), particles_keywords("bias_correction"),
+        particles_keywords("masses"), particles_keywords("densities"), particles_keywords("rho0"),
+        particles_keywords("volume"), particles_keywords("gravity"), particles_keywords("depth"),
+        particles_keywords("threads"), particles_keywords("params"), particles_keywords("h_over_l_range"),
+        particles_keywords("nh_range"), particles_keywords("steps"), particles_keywords("histogram"),
+        particles_keywords("keep_going"), particles_keywords("plot"), doc::particles, py::call_guard<InterruptScope>());
 }
 
 } // namespace sphkern

@@ -5,6 +5,7 @@
 #include "commands_binding.hpp"
 #include "module_support.hpp"
 #include "python_types.hpp"
+#include "setting_keywords.hpp"
 
 #include "particles/formats/particle_writers.hpp"
 #include "particles/tiled_set.hpp"
@@ -199,6 +200,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
 void bind_relax(py::module_& m)
 {
     const RelaxSettings d;
+    const SettingKeywords relax_keywords("relax");
     m.def(
         "relax",
         [](const std::string& kernel, const std::string& source, const OptionalIntSequence& size,
@@ -220,17 +222,16 @@ void bind_relax(py::module_& m)
                                   output, tiles, history, rho0, u},
                                  params);
         },
-        py::arg("kernel"), py::arg("source"), py::kw_only(), py::arg("size") = py::none(), py::arg("cell") = py::none(),
-        py::arg("sigma") = 0.0, py::arg("seed") = 1, py::arg("count") = py::none(), py::arg("dim") = py::none(),
-        py::arg("box") = py::none(), py::arg("particle_radius") = py::none(), py::arg("array") = py::none(),
-        py::arg("h_over_l") = py::none(), py::arg("nh") = py::none(), py::arg("k") = py::none(),
-        py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("method") = "pressure",
-        py::arg("steps") = d.steps, py::arg("tolerance") = d.tolerance, py::arg("gamma") = d.gamma,
-        py::arg("dt") = d.time_step, py::arg("damping") = d.damping, py::arg("alpha") = d.alpha,
-        py::arg("max_move") = d.max_move, py::arg("threads") = d.threads, py::arg("rdf_max") = 3.0,
-        py::arg("rdf_bins") = 60, py::arg("memory_limit") = 0.0, py::arg("output") = py::none(),
-        py::arg("rho0") = py::none(), py::arg("u") = py::none(), py::arg("tile") = py::none(),
-        py::arg("history") = py::none(), py::arg("params") = py::none(), doc::relax, py::call_guard<InterruptScope>());
+        relax_keywords.required("kernel"), relax_keywords.required("source"), py::kw_only(), relax_keywords("size"),
+        relax_keywords("cell"), relax_keywords("sigma"), relax_keywords("seed"), relax_keywords("count"),
+        relax_keywords("dim"), relax_keywords("box"), relax_keywords("particle_radius"), relax_keywords("array"),
+        relax_keywords("h_over_l"), relax_keywords("nh"), relax_keywords("k"), relax_keywords("code"),
+        relax_keywords("value"), relax_keywords("method"), relax_keywords("steps"), relax_keywords("tolerance"),
+        relax_keywords("gamma"), relax_keywords("dt"), relax_keywords("damping"), relax_keywords("alpha"),
+        relax_keywords("max_move"), relax_keywords("threads"), relax_keywords("rdf_max"), relax_keywords("rdf_bins"),
+        relax_keywords("memory_limit"), relax_keywords("output"), relax_keywords("rho0"), relax_keywords("u"),
+        relax_keywords("tile"), relax_keywords("history"), relax_keywords("params"), doc::relax,
+        py::call_guard<InterruptScope>());
 }
 
 } // namespace sphkern

@@ -29,6 +29,7 @@
 #include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
+#include "setting_keywords.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/error.hpp"
 #include "support/io/install_paths.hpp"
@@ -332,9 +333,10 @@ void bind_catalogues(py::module_& m, const Guard& guard)
 // The hydrostatic errors at k, the neighbour shells and the surface profile.
 void bind_accuracy(py::module_& m, const Guard& guard)
 {
-    m.def("eps", &eps, py::arg("kernel"), py::arg("lattice"), py::arg("k"), py::kw_only(), py::arg("a_p") = "voronoi",
-          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), py::arg("axis") = "k",
-          py::arg("shells") = py::none(), py::arg("continue_past_support") = false, doc::eps, guard);
+    const SettingKeywords eps_keywords("eps");
+    m.def("eps", &eps, eps_keywords.required("kernel"), eps_keywords.required("lattice"), eps_keywords.required("k"),
+          py::kw_only(), eps_keywords("a_p"), eps_keywords("gravity"), eps_keywords("site"), eps_keywords("params"),
+          eps_keywords("axis"), eps_keywords("shells"), eps_keywords("continue_past_support"), doc::eps, guard);
     m.def(
         "code_k",
         [](const std::string& kernel_spec, const std::string& lattice_spec, const std::string& code, double value,
@@ -352,6 +354,7 @@ void bind_accuracy(py::module_& m, const Guard& guard)
         },
         py::arg("kernel"), py::arg("lattice"), py::arg("code"), py::arg("value"), py::kw_only(),
         py::arg("a_p") = "voronoi", py::arg("site") = 0, py::arg("params") = py::none(), doc::code_k, guard);
+    const SettingKeywords shells_keywords("shells");
     m.def(
         "shells",
         [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
@@ -359,24 +362,26 @@ void bind_accuracy(py::module_& m, const Guard& guard)
             const ShellsRequest request{radius, site, gravity_input(gravity, lattice.dimension)};
             return to_python(run_shells(request, shells_sources(FrontEnd::python), lattice));
         },
-        py::arg("lattice"), py::arg("radius"), py::arg("site") = 0, py::arg("gravity") = py::none(), doc::shells,
-        guard);
-    m.def("surface", &surface, py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(),
-          py::arg("code") = py::none(), py::arg("value") = py::none(), py::arg("form") = "sum", py::arg("layers") = 4,
-          py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), py::arg("termination") = py::none(), doc::surface, guard);
+        shells_keywords.required("lattice"), shells_keywords.required("radius"), shells_keywords("site"),
+        shells_keywords("gravity"), doc::shells, guard);
+    const SettingKeywords surface_keywords("surface");
+    m.def("surface", &surface, surface_keywords.required("kernel"), surface_keywords.required("lattice"),
+          surface_keywords("k"), py::kw_only(), surface_keywords("code"), surface_keywords("value"),
+          surface_keywords("form"), surface_keywords("layers"), surface_keywords("a_p"), surface_keywords("gravity"),
+          surface_keywords("site"), surface_keywords("params"), surface_keywords("termination"), doc::surface, guard);
 }
 
 // The roots in k of both errors, with stability and a code's convention on request.
 void bind_roots(py::module_& m, const Guard& guard)
 {
-    m.def("roots", &roots, py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("kmin") = 0.75,
-          py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-          py::arg("params") = py::none(), py::arg("epsilon") = 0.01, py::arg("lateral") = false, py::arg("axis") = "k",
-          py::arg("stability") = false, py::arg("gamma") = 5.0 / 3.0, py::arg("steps") = 100,
-          py::arg("horizon") = default_horizon, py::arg("h_model") = "fixed", py::arg("convention") = py::none(),
-          py::arg("code") = py::none(), py::arg("shells") = py::none(), py::arg("continue_past_support") = false,
-          py::arg("threads") = 0, doc::roots, guard);
+    const SettingKeywords roots_keywords("roots");
+    m.def("roots", &roots, roots_keywords.required("kernel"), roots_keywords.required("lattice"), py::kw_only(),
+          roots_keywords("kmin"), roots_keywords("kmax"), roots_keywords("a_p"), roots_keywords("gravity"),
+          roots_keywords("site"), roots_keywords("params"), roots_keywords("epsilon"), roots_keywords("lateral"),
+          roots_keywords("axis"), roots_keywords("stability"), roots_keywords("gamma"), roots_keywords("steps"),
+          roots_keywords("horizon"), roots_keywords("h_model"), roots_keywords("convention"), roots_keywords("code"),
+          roots_keywords("shells"), roots_keywords("continue_past_support"), roots_keywords("threads"), doc::roots,
+          guard);
 }
 
 // The assess request of the keywords: k, or a code and its value; the window, the tolerance
@@ -425,6 +430,7 @@ py::dict assess_on_lattice(const std::string& kernel_spec, const std::string& la
 // One verdict on a setting: k, or a code's own (`sphkern assess`).
 void bind_assess(py::module_& m, const Guard& guard)
 {
+    const SettingKeywords assess_keywords("assess");
     m.def(
         "assess",
         [](const std::string& kernel_spec, const NameOrPath& lattice_or_file, std::optional<double> k,
@@ -469,21 +475,22 @@ void bind_assess(py::module_& m, const Guard& guard)
                                                        threads, glass),
                                      a_p, gravity, site, shells, continue_past_support);
         },
-        py::arg("kernel"), py::arg("lattice"), py::kw_only(), py::arg("k") = py::none(), py::arg("code") = py::none(),
-        py::arg("value") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 2.0, py::arg("epsilon") = 0.01,
-        py::arg("gamma") = 5.0 / 3.0, py::arg("coef_sound") = py::none(), py::arg("horizon") = default_horizon,
-        py::arg("a_p") = "voronoi", py::arg("gravity") = py::none(), py::arg("site") = 0,
-        py::arg("params") = py::none(), py::arg("box") = py::none(), py::arg("array") = py::none(),
-        py::arg("neighbours_by") = py::none(), py::arg("bias_correction") = false, py::arg("threads") = 0,
-        py::arg("steps") = 10, py::arg("eta_range") = py::none(), py::arg("hfact_range") = py::none(),
-        py::arg("nngb_range") = py::none(), py::arg("hdx_range") = py::none(), py::arg("coefh_range") = py::none(),
-        py::arg("particle_radius_range") = py::none(), py::arg("shells") = py::none(),
-        py::arg("continue_past_support") = false, py::arg("glass") = 0, doc::assess, guard);
+        assess_keywords.required("kernel"), assess_keywords.required("lattice"), py::kw_only(), assess_keywords("k"),
+        assess_keywords("code"), assess_keywords("value"), assess_keywords("kmin"), assess_keywords("kmax"),
+        assess_keywords("epsilon"), assess_keywords("gamma"), assess_keywords("coef_sound"), assess_keywords("horizon"),
+        assess_keywords("a_p"), assess_keywords("gravity"), assess_keywords("site"), assess_keywords("params"),
+        assess_keywords("box"), assess_keywords("array"), assess_keywords("neighbours_by"),
+        assess_keywords("bias_correction"), assess_keywords("threads"), assess_keywords("steps"),
+        assess_keywords("eta_range"), assess_keywords("hfact_range"), assess_keywords("nngb_range"),
+        assess_keywords("hdx_range"), assess_keywords("coefh_range"), assess_keywords("particle_radius_range"),
+        assess_keywords("shells"), assess_keywords("continue_past_support"), assess_keywords("glass"), doc::assess,
+        guard);
 }
 
 // Linear stability through the one stability request.
 void bind_stability(py::module_& m, const Guard& guard)
 {
+    const SettingKeywords stability_keywords("stability");
     m.def(
         "stability",
         [](const std::string& kernel_spec, const std::string& lattice_spec, std::optional<double> k, double gamma,
@@ -507,20 +514,21 @@ void bind_stability(py::module_& m, const Guard& guard)
             }
             return to_python(document);
         },
-        py::arg("kernel"), py::arg("lattice"), py::arg("k") = py::none(), py::kw_only(), py::arg("gamma") = 5.0 / 3.0,
-        py::arg("wavevector") = py::none(), py::arg("kmin") = py::none(), py::arg("kmax") = py::none(),
-        py::arg("steps") = 50, py::arg("grid") = 0, py::arg("path") = 0, py::arg("threads") = 0,
-        py::arg("horizon") = default_horizon, py::arg("params") = py::none(), py::arg("h_model") = "fixed",
-        py::arg("code") = py::none(), doc::stability, guard);
+        stability_keywords.required("kernel"), stability_keywords.required("lattice"), stability_keywords("k"),
+        py::kw_only(), stability_keywords("gamma"), stability_keywords("wavevector"), stability_keywords("kmin"),
+        stability_keywords("kmax"), stability_keywords("steps"), stability_keywords("grid"), stability_keywords("path"),
+        stability_keywords("threads"), stability_keywords("horizon"), stability_keywords("params"),
+        stability_keywords("h_model"), stability_keywords("code"), doc::stability, guard);
 }
 
 // Kernel design: where both errors vanish.
 void bind_design(py::module_& m, const Guard& guard)
 {
-    m.def("design", &design, py::arg("kernel"), py::arg("lattice"), py::arg("param"), py::kw_only(),
-          py::arg("range") = py::none(), py::arg("kmin") = 0.75, py::arg("kmax") = 1.25, py::arg("a_p") = "voronoi",
-          py::arg("gravity") = py::none(), py::arg("site") = 0, py::arg("params") = py::none(), py::arg("threads") = 0,
-          doc::design, guard);
+    const SettingKeywords design_keywords("design");
+    m.def("design", &design, design_keywords.required("kernel"), design_keywords.required("lattice"),
+          design_keywords.required("param"), py::kw_only(), design_keywords("range"), design_keywords("kmin"),
+          design_keywords("kmax"), design_keywords("a_p"), design_keywords("gravity"), design_keywords("site"),
+          design_keywords("params"), design_keywords("threads"), doc::design, guard);
 }
 
 // A kernel as an object, its functions vectorised over q.

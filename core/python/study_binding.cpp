@@ -3,6 +3,7 @@
 #include "command_docstrings.hpp"
 #include "commands_binding.hpp"
 #include "module_support.hpp"
+#include "setting_keywords.hpp"
 
 #include "requests/studies_request.hpp"
 #include "study/reproduce.hpp"
@@ -64,9 +65,9 @@ py::dict run_command(const std::optional<std::string>& study, const std::optiona
 void bind_studies(py::module_& m)
 {
     const py::call_guard<InterruptScope> guard;
-    m.def("run", &run_command, py::arg("study") = py::none(), py::arg("output") = py::none(), py::kw_only(),
-          py::arg("no_plots") = false, py::arg("format") = "svg", py::arg("force") = false,
-          py::arg("reproduce") = py::none(), doc::run, guard);
+    const SettingKeywords run_keywords("run");
+    m.def("run", &run_command, run_keywords("study"), run_keywords("output"), py::kw_only(), run_keywords("no_plots"),
+          run_keywords("format"), run_keywords("force"), run_keywords("reproduce"), doc::run, guard);
     m.def(
         "studies", []() -> py::list { return to_python(studies_listing()); }, doc::studies, guard);
 }

@@ -1,0 +1,63 @@
+#include "requests/settings/command_settings.hpp"
+
+#include "requests/settings/shared_settings.hpp"
+
+namespace sphkern {
+
+SettingTable relax_settings()
+{
+    return {
+        "relax",
+        {{positional("kernel", "Kernel name or plugin file"),
+          positional("source", "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET "
+                               "binary snapshot, a Phantom dump)"),
+          list("size", "Lattice: cells of the periodic block, N1,N2[,N3]"),
+          word("cell", "", "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)"),
+          number("sigma", "0", "Lattice: Gaussian displacement per axis, in units of d").default_hidden(),
+          integer("seed", "1", "Lattice and poisson: the random seed"),
+          integer("count", "", "Poisson: number of particles"),
+          integer("dim", "", "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate"),
+          list("box", "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin"),
+          number("particle_radius", "",
+                 "SPlisHSPlasH VTK file: the scene's particle radius r (the file holds none); h = r, support 4 r"),
+          word("array", "",
+               "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours"),
+          number("h_over_l", "", "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)"),
+          number("eta", "", "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)").command_line_only(),
+          number("nh", "", "h from the neighbour number N_H = c_D (R h)^D n"), number("k", "", "Lattice: h = k d"),
+          word("code", "",
+               "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full dump), its layout and h; "
+               "with its parameter (--eta for swift), the run's h and each written h as the code sets it")},
+         code_parameters({"eta", "particle_radius"}),
+         {word("method", "pressure", "pressure (SPH pressure force with damping) or shift (particle shifting)"),
+          integer("steps", "200", "At most this many steps"),
+          number("tolerance", "0", "Stop once a step's RMS move is below this many h (0: never)"),
+          number("gamma", "1.6666666666666667", "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma"),
+          number("dt", "0.2", "pressure: time step in units of h / c"),
+          number("damping", "0.5", "pressure: velocity damping rate in units of c / h"),
+          number("alpha", "0.1", "shift: dx = -alpha h^2 sum_j V_j grad W_ij"),
+          number("max_move", "0.1", "shift: largest move of a step, in units of h"),
+          integer("threads", "0", "Threads (default: every core)").default_hidden(),
+          number("rdf_max", "3", "g(r) up to this many mean spacings"),
+          integer("rdf_bins", "60", "g(r) bins"),
+          number("memory_limit", "0", "Memory budget in GiB (default: three quarters of the available memory)")
+              .default_hidden(),
+          word("output", "",
+               "Write the relaxed set: .h5/.hdf5 (SWIFT's layout, or --code's), .csv, or with --code phantom any other "
+               "name (a Phantom full dump, NAME_00000.tmp)"),
+          number("rho0", "", "With --output: the density written, masses rho0 V (default 1)"),
+          number("u", "",
+                 "With an HDF5 or Phantom --output: the internal energy written (default c^2 / (gamma (gamma - 1)), "
+                 "0.9 for gamma 5/3)"),
+          list("tile",
+               "With --output: write N1,N2[,N3] copies of the relaxed set side by side, in a box as many times larger"),
+          word("history", "",
+               "Write the history of the run: F.csv its steps as CSV, F.pvd the particles at every step as a ParaView "
+               "series (F_k.vtu beside F.pvd)"),
+          kernel_parameters(),
+          plugin_files(),
+          json_output(),
+          code_value()}}};
+}
+
+} // namespace sphkern

@@ -1,0 +1,64 @@
+// One setting a command takes, declared once: its key, type, default, one line of help and
+// how each front end spells it. The command line's options and Python's keywords are made
+// from it (cli/options, python/module_support); a test holds the docstrings to it.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sphkern {
+
+// What a setting holds, as both front ends give it: a number, a whole number, a word, a
+// flag, or a list (numbers or words, repeatable or comma-separated).
+enum class SettingType { number, integer, word, flag, list };
+
+struct Setting {
+    std::string key; // its name in a request's words, Python's spelling ("max_move")
+    SettingType type = SettingType::number;
+    std::string fallback;      // the default as text ("0.75", "voronoi", "0"); empty: none (absent, None)
+    std::string help;          // one line: the option's help, the docstring entry's first words
+    std::string option;        // the command line's "--max-move" or a positional's "kernel"; empty: none
+    std::string keyword;       // Python's keyword; empty: none
+    bool positional = false;   // before the options (kernel, lattice)
+    bool required = false;     // no default in either front end (a positional but a list, unless optional())
+    bool default_shown = true; // --help shows the fallback
+    bool hidden = false;       // left out of --help: an old name, kept to say the new one
+
+    // Modifiers, for the tables' rows: another option or keyword, none in one front end.
+    Setting& as_option(std::string name);
+    Setting& as_keyword(std::string name);
+    Setting& command_line_only();
+    Setting& python_only();
+    Setting& default_hidden(); // --help leaves the fallback out ("the default: every core" in the help)
+    Setting& optional();       // a positional that may be left out (Python's None)
+    Setting& mandatory();      // an option that must be given (no default in either front end)
+    Setting& old_name();       // hidden, on the command line only
+};
+
+// The rows of a table: the option is --key with - for _, the keyword the key.
+Setting number(std::string key, std::string fallback, std::string help);
+Setting integer(std::string key, std::string fallback, std::string help);
+Setting word(std::string key, std::string fallback, std::string help);
+Setting flag(std::string key, std::string help);
+Setting list(std::string key, std::string help);
+Setting positional(std::string key, std::string help);
+Setting positional_list(std::string key, std::string help); // one or more words
+
+// The settings of one command, in the order its --help lists them.
+class SettingTable {
+public:
+    SettingTable(std::string command, std::vector<std::vector<Setting>> groups);
+    const std::string& command() const { return command_; }
+    const std::vector<Setting>& settings() const { return settings_; }
+    // The setting of that key; std::logic_error for a key the command does not declare.
+    const Setting& operator[](std::string_view key) const;
+    // A copy with the settings of these keys replaced (another help or default for one command).
+    SettingTable with(std::vector<Setting> replaced) const;
+
+private:
+    std::string command_;
+    std::vector<Setting> settings_;
+};
+
+} // namespace sphkern

@@ -1,0 +1,74 @@
+#include "requests/settings/shared_settings.hpp"
+
+#include "codes/code_table.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+namespace sphkern {
+
+std::vector<Setting> evaluation_settings()
+{
+    return {
+        word("a_p", "voronoi", "Volume coefficient: a name the lattice offers or a positive number").as_option("--ap"),
+        list("gravity", "Gravity direction x,y[,z] (default: the lattice's)"),
+        integer("site", "0", "Motif site of the particle"),
+        list("shells", "Sum over these shell radii only (in d, comma-separated), as the paper does"),
+        flag("continue_past_support",
+             "Evaluate the kernel's formula past q = R instead of truncating (needs --shells)")};
+}
+
+Setting code_choice()
+{
+    std::vector<std::string> names;
+    for (const auto& p : code_profiles()) names.push_back(p.name);
+    return word("code", "",
+                fmt::format("Give the resolution as an SPH code sets it: {}, with its parameter below",
+                            fmt::join(names, ", ")));
+}
+
+std::vector<Setting> code_parameters(const std::vector<std::string>& skip)
+{
+    std::vector<Setting> settings;
+    std::vector<std::string> done = skip;
+    for (const auto& p : code_profiles()) {
+        if (std::find(done.begin(), done.end(), p.parameter) != done.end()) continue;
+        done.push_back(p.parameter);
+        // The codes that share a parameter are named together.
+        std::vector<std::string> codes;
+        for (const auto& q : code_profiles())
+            if (q.parameter == p.parameter) codes.push_back(q.name);
+        settings.push_back(
+            number(p.parameter, "", fmt::format("With --code {}: {}", fmt::join(codes, " or "), p.parameter_help))
+                .command_line_only());
+    }
+    return settings;
+}
+
+std::vector<Setting> parameter_ranges()
+{
+    std::vector<Setting> settings;
+    for (const auto& p : code_profiles())
+        if (std::none_of(settings.begin(), settings.end(),
+                         [&](const Setting& s) { return s.key == p.parameter + "_range"; }))
+            settings.push_back(
+                list(p.parameter + "_range",
+                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs",
+                                 p.parameter)));
+    return settings;
+}
+
+Setting code_value()
+{
+    return number("value", "", "The code's parameter (eta, hfact, nngb, hdx, coefh or particle_radius)").python_only();
+}
+
+Setting kernel_parameters() { return list("params", "Kernel parameter NAME=VALUE (repeatable)").as_option("--set"); }
+
+Setting plugin_files() { return list("plugin", "Load this kernel plugin file too (repeatable)").command_line_only(); }
+
+Setting json_output() { return flag("json", "Print machine-readable JSON on stdout").command_line_only(); }
+
+} // namespace sphkern

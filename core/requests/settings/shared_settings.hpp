@@ -1,0 +1,28 @@
+// The settings several commands share, declared once for all of them.
+#pragma once
+
+#include "requests/settings/setting.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sphkern {
+
+// --ap/a_p, --gravity, --site, --shells and --continue-past-support, as eps and roots take them.
+std::vector<Setting> evaluation_settings();
+// --code: "Give the resolution as an SPH code sets it: swift, ..., with its parameter below".
+Setting code_choice();
+// Each code's parameter as its option (--eta, --hfact, ...: "With --code gadget2 or gadget4: ..."),
+// on the command line only (Python gives `value` beside `code`), but those in `skip`.
+std::vector<Setting> code_parameters(const std::vector<std::string>& skip = {});
+// Each code's parameter as a sweep: --eta-range A B, ... (assess on a particle file).
+std::vector<Setting> parameter_ranges();
+// Python's `value` beside `code`: the code's parameter, whichever code.
+Setting code_value();
+// --set NAME=VALUE, Python's params.
+Setting kernel_parameters();
+// --plugin and --json, on the command line only.
+Setting plugin_files();
+Setting json_output();
+
+} // namespace sphkern

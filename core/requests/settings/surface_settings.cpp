@@ -1,0 +1,24 @@
+#include "requests/settings/command_settings.hpp"
+
+#include "requests/settings/shared_settings.hpp"
+
+namespace sphkern {
+
+SettingTable surface_settings()
+{
+    return {"surface",
+            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
+              number("k", "", "Smoothing coefficient, h = k d (or --code and the code's setting)"), code_choice()},
+             code_parameters(),
+             {integer("layers", "4", "Report at least this many layers"),
+              word("form", "sum", "Gradient form: sum, difference or monaghan"),
+              word("a_p", "voronoi", "Volume coefficient: a name the lattice offers or a positive number")
+                  .as_option("--ap"),
+              list("gravity", "Gravity x,y[,z], normal to a lattice plane"),
+              integer("site", "0", "Motif site on the top layer"),
+              integer("termination", "",
+                      "Which plane type is on top (an index from the listed terminations; default: --site's)"),
+              kernel_parameters(), plugin_files(), json_output(), code_value()}}};
+}
+
+} // namespace sphkern
