@@ -14,25 +14,10 @@ SettingTable particles_settings()
               .command_line_only(),
           positional_list("more", "Further snapshots of the run: the files (or folders) are measured as a series, "
                                   "ordered by the times in their headers")
-              .command_line_only(),
-          word("size", "", "Lattice: cells of the periodic block, N1,N2[,N3]").command_line_only(),
-          word("cell", "", "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)")
-              .command_line_only(),
-          number("sigma", "0", "Lattice: Gaussian displacement per axis, in units of d")
-              .default_hidden()
-              .command_line_only(),
-          integer("seed", "1", "Lattice and poisson: the random seed").command_line_only(),
-          integer("count", "", "Poisson: number of particles").command_line_only(),
-          integer("dim", "", "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate")
-              .command_line_only(),
-          list("box", "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin"),
-          number("particle_radius", "",
-                 "SPlisHSPlasH VTK file: the scene's particle radius r (the file holds none); h = r, support 4 r")
-              .command_line_only(),
-          word("array", "",
-               "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours")
-              .command_line_only(),
-          flag("keep_going", "Series: report a snapshot that fails and go on with the rest"),
+              .command_line_only()},
+         // Python takes positions and a box, not a source to make.
+         except_in_python(source_settings(), {"box"}),
+         {flag("keep_going", "Series: report a snapshot that fails and go on with the rest"),
           word("plot", "", "Series: draw the errors against time (median, p1 to p99) as .svg, .png or .pdf"),
           number("h_over_l", "", "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a file h)"),
           number("eta", "", "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)").command_line_only(),

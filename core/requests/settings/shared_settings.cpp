@@ -65,6 +65,29 @@ Setting code_value()
     return number("value", "", "The code's parameter (eta, hfact, nngb, hdx, coefh or particle_radius)").python_only();
 }
 
+std::vector<Setting> source_settings()
+{
+    return {list("size", "Lattice: cells of the periodic block, N1,N2[,N3]"),
+            word("cell", "", "Lattice: the cell --size counts, primitive (default) or rectangular (a rectangular box)"),
+            number("sigma", "0", "Lattice: Gaussian displacement per axis, in units of d").default_hidden(),
+            integer("seed", "1", "Lattice and poisson: the random seed"),
+            integer("count", "", "Poisson: number of particles"),
+            integer("dim", "",
+                    "Poisson: 2 or 3 (default 3); file: 2 reads a 3-column set with one constant coordinate"),
+            list("box", "Poisson: the box sides (default 1); file: a periodic box Lx,Ly[,Lz] from the origin"),
+            number("particle_radius", "",
+                   "SPlisHSPlasH VTK file: the scene's particle radius r (the file holds none); h = r, support 4 r"),
+            word("array", "",
+                 "PySPH file: the particle array, or A,B,...: measured on A, with the particles of all as neighbours")};
+}
+
+std::vector<Setting> except_in_python(std::vector<Setting> settings, const std::vector<std::string>& kept)
+{
+    for (auto& s : settings)
+        if (std::find(kept.begin(), kept.end(), s.key) == kept.end()) s.command_line_only();
+    return settings;
+}
+
 Setting kernel_parameters() { return list("params", "Kernel parameter NAME=VALUE (repeatable)").as_option("--set"); }
 
 Setting plugin_files() { return list("plugin", "Load this kernel plugin file too (repeatable)").command_line_only(); }

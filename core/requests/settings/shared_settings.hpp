@@ -19,6 +19,11 @@ std::vector<Setting> code_parameters(const std::vector<std::string>& skip = {});
 std::vector<Setting> parameter_ranges();
 // Python's `value` beside `code`: the code's parameter, whichever code.
 Setting code_value();
+// The source of a particle set's options: a lattice block (--size, --cell, --sigma, --seed),
+// a Poisson set (--count, --dim, --box) or a file's (--box, --particle-radius, --array).
+std::vector<Setting> source_settings();
+// The settings on the command line only, but those named.
+std::vector<Setting> except_in_python(std::vector<Setting> settings, const std::vector<std::string>& kept);
 // --set NAME=VALUE, Python's params.
 Setting kernel_parameters();
 // --plugin and --json, on the command line only.
