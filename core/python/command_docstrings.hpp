@@ -52,7 +52,7 @@ dim : int
     The dimension D: 1, 2 or 3.
 k : float, default 1.0
     k, for kernels whose formula depends on it, in [0.001, 100].
-max : float, default 20.0
+max : float, default 50.0
     The largest kappa h, in [0.1, 1000].
 points : int, default 500
     Intervals on [0, max], 1 to 100000.
@@ -138,7 +138,7 @@ samples : int, default 1
     Evenly spaced k over [kmin, kmax], 1 to 1000.
 noise : float, default 0.001
     The Gaussian displacement per axis at the start, in units of d, in (0, 0.01].
-duration : float, default 20.0
+duration : float, default 100.0
     The time of motion, in units of d / c.
 damping : float, default 0.1
     The velocity damping rate, in units of c / h.
@@ -146,7 +146,7 @@ dt : float, default 0.2
     The time step, in units of h / c.
 gamma : float, default 5/3
     The adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma.
-horizon : float, default 20.0
+horizon : float, default 100.0
     The growth time (d / c) beyond which the linear verdict is weak.
 seed : int, default 1
     The seed of the noise.
@@ -313,6 +313,30 @@ Examples
 --------
 >>> "potapov2021" in [s["name"] for s in sphkern.studies()]
 True
+)doc";
+
+inline constexpr const char* settings =
+    R"doc(The settings a command takes, as its table declares them once for the command line and Python.
+
+Parameters
+----------
+command : str
+    A command of `sphkern --help` ("roots", "particles", ...).
+
+Returns
+-------
+list of dict
+    One dict per setting, in the order of the command's --help: key, type ("number",
+    "integer", "word", "flag" or "list"), default (None where there is none), help, option
+    (the command line's spelling, None where it has none), keyword (Python's, None where it
+    has none), positional, required and hidden (an old name the command line keeps).
+
+Examples
+--------
+>>> [s["default"] for s in sphkern.settings("roots") if s["key"] == "kmin"]
+[0.75]
+>>> [s["option"] for s in sphkern.settings("eps") if s["key"] == "a_p"]
+['--ap']
 )doc";
 
 } // namespace sphkern::doc

@@ -1,7 +1,11 @@
 #include "setting_keywords.hpp"
 
+#include "support/error.hpp"
+#include "support/text/value_checks.hpp"
+
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -22,20 +26,66 @@ py::arg SettingKeywords::required(std::string_view key) const
     return py::arg(s.keyword.c_str()); // the table lives as long as the program
 }
 
+namespace {
+
+// The default as Python gives it: a float, an int, a bool, a str, or None.
+py::object default_of(const Setting& s)
+{
+    if (s.fallback.empty() || s.type == SettingType::list) return py::none();
+    switch (s.type) {
+    case SettingType::number: return py::float_(std::stod(s.fallback));
+    case SettingType::integer: return py::int_(std::stoll(s.fallback));
+    case SettingType::flag: return py::bool_(s.fallback == "true");
+    case SettingType::word:
+    case SettingType::list: break;
+    }
+    return py::str(s.fallback);
+}
+
+py::object text_or_none(const std::string& text) { return text.empty() ? py::object(py::none()) : py::str(text); }
+
+const char* type_name(SettingType type)
+{
+    switch (type) {
+    case SettingType::number: return "number";
+    case SettingType::integer: return "integer";
+    case SettingType::word: return "word";
+    case SettingType::flag: return "flag";
+    case SettingType::list: break;
+    }
+    return "list";
+}
+
+} // namespace
+
 py::arg_v SettingKeywords::operator()(std::string_view key) const
 {
     const Setting& s = keyword_setting(key);
     if (s.required) throw std::logic_error("setting " + s.key + " of " + table_.command() + " is required");
-    const py::arg name(s.keyword.c_str());
-    if (s.fallback.empty() || s.type == SettingType::list) return name = py::none();
-    switch (s.type) {
-    case SettingType::number: return name = py::float_(std::stod(s.fallback));
-    case SettingType::integer: return name = py::int_(std::stoll(s.fallback));
-    case SettingType::flag: return name = py::bool_(s.fallback == "true");
-    case SettingType::word:
-    case SettingType::list: break;
+    return py::arg(s.keyword.c_str()) = default_of(s);
+}
+
+py::list settings_listing(const std::string& command)
+{
+    const SettingTable* table = nullptr;
+    std::vector<std::string> names;
+    for (const auto& t : command_settings()) {
+        names.push_back(t.command());
+        if (t.command() == command) table = &t;
     }
-    return name = py::str(s.fallback);
+    if (!table)
+        throw Error(ExitCode::usage,
+                    "command: unknown command \"" + one_line(command) + "\"" + did_you_mean(command, names),
+                    ErrorKind::unknown_name);
+    py::list rows;
+    for (const auto& s : table->settings()) {
+        py::dict row;
+        row["key"] = s.key, row["type"] = type_name(s.type), row["default"] = default_of(s), row["help"] = s.help;
+        row["option"] = text_or_none(s.option), row["keyword"] = text_or_none(s.keyword);
+        row["positional"] = s.positional, row["required"] = s.required, row["hidden"] = s.hidden;
+        rows.append(row);
+    }
+    return rows;
 }
 
 } // namespace sphkern

@@ -24,4 +24,8 @@ private:
     const SettingTable& table_;
 };
 
+// sphkern.settings(command): the command's table as a list of dicts; sphkern.UnknownName for
+// a name that is no command.
+pybind11::list settings_listing(const std::string& command);
+
 } // namespace sphkern

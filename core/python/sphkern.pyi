@@ -152,6 +152,11 @@ def run(study: Optional[str]=..., output: Optional[str]=..., *, no_plots: bool=.
     ...
 
 
+def settings(command: str) -> list:
+    """The settings a command takes, as its table declares them once for the command line and Python."""
+    ...
+
+
 def shells(lattice: str, radius: float, site: int=..., gravity: Optional[Sequence[float]]=...) -> dict:
     """The neighbour shells of a lattice site, as `sphkern shells --json`."""
     ...

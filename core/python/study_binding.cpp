@@ -70,6 +70,7 @@ void bind_studies(py::module_& m)
           run_keywords("format"), run_keywords("force"), run_keywords("reproduce"), doc::run, guard);
     m.def(
         "studies", []() -> py::list { return to_python(studies_listing()); }, doc::studies, guard);
+    m.def("settings", &settings_listing, py::arg("command"), doc::settings, guard);
 }
 
 } // namespace sphkern

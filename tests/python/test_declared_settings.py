@@ -1,0 +1,139 @@
+"""Each command's settings are declared once, in its table (core/requests/settings); the
+command line's options and Python's keywords are made from it. Held here against what each
+front end shows: every option of `sphkern COMMAND --help`, in its order, with its help and the
+default it prints; every keyword of the function's signature with its default; and the
+default each docstring's Parameters entry states. A setting added, renamed or given another
+default in one place only fails here. Run by ctest with SPHKERN_CLI set."""
+import ast
+import math
+import os
+import re
+import subprocess
+
+import pytest
+
+import sphkern
+
+CLI = os.environ["SPHKERN_CLI"]
+
+
+def help_text(*words):
+    return subprocess.run([CLI, *words, "--help"], check=True, capture_output=True, text=True).stdout
+
+
+COMMANDS = [line.split()[0] for line in re.search(r"^Subcommands:\n((?:  .*\n?)+)", help_text(), re.M)
+            .group(1).splitlines() if re.match(r"^  \S", line)]
+
+
+def help_entries(command):
+    """(name, default shown or None, help) of each positional and option but --help, in order."""
+    text = help_text(command)
+    found = []
+    for title in ("Positionals", "Options"):
+        match = re.search(rf"^{title}:\n((?:[ \t].*\n?|\n(?=[ \t]))+)", text, re.M)
+        lines = match.group(1).splitlines() if match else []
+        for i, line in enumerate(lines):
+            if not re.match(r"^  \S", line):
+                continue
+            head, _, rest = line[2:].partition("  ")
+            words = head.split()
+            if not rest.strip() and i + 1 < len(lines) and re.match(r"^ {5,}\S", lines[i + 1]):
+                rest = lines[i + 1]  # CLI11 puts the help on the next line after a long head
+            name = words[0].split(",")[-1]
+            if name == "--help":
+                continue
+            default = re.search(r"=(\S+)$", words[1]).group(1) if len(words) > 1 and "=" in words[1] else None
+            found.append((words[0] if name.startswith("-") else name, default, rest.strip()))
+    return found
+
+
+def signature(function):
+    """keyword -> default as text (None without one) from the docstring's first line."""
+    definition = ast.parse(f"def {function.__doc__.splitlines()[0]}: pass").body[0]
+    args = definition.args.args + definition.args.kwonlyargs
+    defaults = [None] * (len(definition.args.args) - len(definition.args.defaults)) + \
+        definition.args.defaults + definition.args.kw_defaults
+    return {a.arg: (ast.literal_eval(d) if d is not None else "required") for a, d in zip(args, defaults)}
+
+
+def same_value(shown, declared):
+    if isinstance(declared, bool) or declared is None or isinstance(declared, str):
+        return shown == declared
+    return math.isclose(float(shown), declared, rel_tol=1e-5)  # --help rounds 5/3 to 1.66667
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_the_command_line_shows_the_table(command):
+    declared = [s for s in sphkern.settings(command) if s["option"] and not s["hidden"]]
+    shown = help_entries(command)
+    assert [name for name, _, _ in shown] == [s["option"] for s in declared]
+    for (name, default, text), s in zip(shown, declared):
+        assert text == s["help"], name
+        if s["type"] != "flag" and default is not None:
+            assert same_value(default, s["default"]), f"{command} {name}: --help shows {default}, declared {s['default']}"
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_the_function_takes_the_table(command):
+    declared = {s["keyword"]: s for s in sphkern.settings(command) if s["keyword"]}
+    taken = signature(getattr(sphkern, command))
+    assert sorted(taken) == sorted(declared)
+    for keyword, default in taken.items():
+        s = declared[keyword]
+        # A setting without a default may be required in Python where the command line takes
+        # another instead (eps's k: --code there, code_k here).
+        expected = "required" if s["required"] or (default == "required" and s["default"] is None) else s["default"]
+        assert default == expected, f"sphkern.{command}({keyword}=...): {default!r}, declared {expected!r}"
+
+
+def docstring_defaults(function):
+    """name -> the default its Parameters entry states; "kmin, kmax : float, default 0.75 and
+    1.25" gives each of the two its own."""
+    found = {}
+    for line in function.__doc__.splitlines():
+        match = re.fullmatch(r"(\w+(?:, \w+)*) : .*?, default (.+)", line)
+        if match:
+            names, values = match.group(1).split(", "), match.group(2).strip().split(" and ")
+            for name, value in zip(names, values if len(values) == len(names) else values * len(names)):
+                found[name] = value
+    return found
+
+
+def stated(text):
+    """A docstring's default as a value: 100, "voronoi", True, 5/3."""
+    fraction = re.fullmatch(r"(\d+)/(\d+)", text)
+    if fraction:
+        return int(fraction.group(1)) / int(fraction.group(2))
+    try:
+        return ast.literal_eval(text)
+    except (ValueError, SyntaxError):
+        return text
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_the_docstring_states_the_declared_defaults(command):
+    declared = {s["keyword"]: s["default"] for s in sphkern.settings(command) if s["keyword"]}
+    wrong = {}
+    for name, text in docstring_defaults(getattr(sphkern, command)).items():
+        value = stated(text)
+        if name in declared and not (same_value(value, declared[name]) if isinstance(value, (int, float)) and
+                                     not isinstance(value, bool) else value == declared[name]):
+            wrong[name] = (text, declared[name])
+    assert not wrong, f"sphkern.{command}: docstring defaults that are not the declared ones: {wrong}"
+
+
+def test_a_table_names_each_setting_once_and_every_command_has_one():
+    for command in COMMANDS:
+        keys = [s["key"] for s in sphkern.settings(command)]
+        assert len(keys) == len(set(keys)), command
+    with pytest.raises(sphkern.UnknownName, match=r'unknown command "root" \(did you mean "roots"\?\)'):
+        sphkern.settings("root")
+
+
+def test_an_old_name_is_hidden_and_still_read():
+    """particles --eta-range: declared as an old name, out of --help, refused naming the new one."""
+    old = [s for s in sphkern.settings("particles") if s["hidden"]]
+    assert [s["option"] for s in old] == ["--eta-range"]
+    run = subprocess.run([CLI, "particles", "wendland_c2", "poisson", "--count", "100", "--eta-range", "1", "2"],
+                         capture_output=True, text=True)
+    assert run.returncode == 2 and "--h-over-l-range" in run.stderr
