@@ -329,7 +329,9 @@ list of dict
     One dict per setting, in the order of the command's --help: key, type ("number",
     "integer", "word", "flag" or "list"), default (None where there is none), help, option
     (the command line's spelling, None where it has none), keyword (Python's, None where it
-    has none), positional, required and hidden (an old name the command line keeps).
+    has none), positional, required, hidden (an old name the command line keeps) and
+    bounds (None, or the values a number may take: min, max, low "open" or "closed", the
+    unit, and count: a whole number from min to max).
 
 Examples
 --------

@@ -56,6 +56,16 @@ const char* type_name(SettingType type)
     return "list";
 }
 
+// The values a number may take: {"min", "max", "low": "open" or "closed", "unit", "count"}, or None.
+py::object bounds_of(const Setting& s)
+{
+    if (!s.bounds) return py::none();
+    py::dict b;
+    b["min"] = s.bounds->min, b["max"] = s.bounds->max, b["unit"] = s.bounds->unit, b["count"] = s.bounds->count;
+    b["low"] = s.bounds->low == LowEnd::open ? "open" : "closed";
+    return b;
+}
+
 } // namespace
 
 py::arg_v SettingKeywords::operator()(std::string_view key) const
@@ -83,6 +93,7 @@ py::list settings_listing(const std::string& command)
         row["key"] = s.key, row["type"] = type_name(s.type), row["default"] = default_of(s), row["help"] = s.help;
         row["option"] = text_or_none(s.option), row["keyword"] = text_or_none(s.keyword);
         row["positional"] = s.positional, row["required"] = s.required, row["hidden"] = s.hidden;
+        row["bounds"] = bounds_of(s);
         rows.append(row);
     }
     return rows;

@@ -1,5 +1,7 @@
 #include "requests/pairing_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "codes/code_table.hpp"
 
 #include "requests/particles_request.hpp"
@@ -17,16 +19,16 @@ PairingSources pairing_sources(FrontEnd f)
 void check_pairing_request(const PairingRequest& r, const PairingSources& sources)
 {
     check_k_interval(r.k_min, r.k_max, sources.k_min, sources.k_max, IntervalEnds::may_meet);
-    check_range(r.samples, 1, 1000, sources.samples);
+    const SettingTable& declared = settings_of("pairing");
+    check_setting(declared["samples"], r.samples, sources.samples);
     if (r.samples > 1 && r.k_max == r.k_min) sources.samples.fail("several samples need kmin < kmax");
-    check_number(r.noise, 0, 0.01, LowEnd::open, sources.noise, " (units of d; the motion starts linear)");
-    check_number(r.duration, 0, 1e4, LowEnd::open, sources.duration, " (units of d / c)");
-    // The motion is relax's pressure method: its ranges.
-    check_number(r.damping, 0, 100, LowEnd::closed, sources.damping, " (units of c / h)");
-    check_number(r.time_step, 0, 0.5, LowEnd::open, sources.dt, " (units of h / c)");
-    check_number(r.gamma, min_gamma, 1e3, LowEnd::closed, sources.gamma);
+    check_setting(declared["noise"], r.noise, sources.noise);
+    check_setting(declared["duration"], r.duration, sources.duration);
+    check_setting(declared["damping"], r.damping, sources.damping);
+    check_setting(declared["dt"], r.time_step, sources.dt);
+    check_setting(declared["gamma"], r.gamma, sources.gamma);
     check_horizon(r.horizon, sources.horizon.name);
-    check_threads(r.threads, sources.threads);
+    check_setting(declared["threads"], r.threads, sources.threads);
 }
 
 std::optional<CodeK> pairing_code_k(PairingRequest& request, const std::optional<CodeSetting>& setting,

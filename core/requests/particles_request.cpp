@@ -1,5 +1,7 @@
 #include "requests/particles_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "lattices/numeric_inputs.hpp"
 #include "support/error.hpp"
 
@@ -55,7 +57,7 @@ SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int ste
         else check_number(value, 1, 1e5, LowEnd::closed, range, " (neighbours)");
     }
     if (!(to > from)) range.fail(fmt::format("[{}, {}]: expected min < max", from, to));
-    check_range(steps, 1, 1000, steps_source);
+    check_setting(settings_of("particles")["steps"], steps, steps_source);
     return {rule, from, to, steps};
 }
 
@@ -90,13 +92,14 @@ ParticleRequest particle_request(const ParticleArguments& given, const Kernel& k
     if (given.volume) request.volume = at_source(sources.volume, [&] { return parse_volume_model(*given.volume); });
     request.given_volumes = given.volumes;
     if (given.gravity) request.gravity = direction_of(*given.gravity, set.dimension, sources.gravity);
-    check_number(given.depth, 0, 1e6, LowEnd::closed, sources.depth, " (units of h)");
+    const SettingTable& declared = settings_of("particles");
+    check_setting(declared["depth"], given.depth, sources.depth);
     request.depth = given.depth;
     if (given.rho0) check_positive(*given.rho0, sources.rho0);
     request.rho0 = given.rho0;
-    check_threads(given.threads, sources.threads);
+    check_setting(declared["threads"], given.threads, sources.threads);
     request.threads = given.threads;
-    check_range(static_cast<double>(given.histogram), 0, 100000, sources.histogram);
+    check_setting(declared["histogram"], static_cast<double>(given.histogram), sources.histogram);
     request.histogram_bins = static_cast<std::size_t>(given.histogram);
     request.vectors = given.per_particle_files;
     return request;

@@ -1,5 +1,7 @@
 #include "requests/relax_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "codes/code_table.hpp"
 #include "codes/swift/swift_gamma.hpp"
 #include "codes/swift/swift_kernels.hpp"
@@ -36,15 +38,15 @@ RelaxMethod relax_method_of(const std::string& name, const ValueSource& source)
 
 void check_relax_settings(const RelaxSettings& s, const RelaxSources& sources)
 {
-    check_range(s.steps, 1, 10000000, sources.steps);
-    check_number(s.tolerance, 0, 1, LowEnd::closed, sources.tolerance, " (units of h per step)");
-    check_number(s.gamma, 0, 1e3, LowEnd::open, sources.gamma);
-    // Kick-drift-kick is stable for omega dt < 2; the fastest SPH sound waves have omega ~ 2 c / h.
-    check_number(s.time_step, 0, 0.5, LowEnd::open, sources.dt, " (units of h / c)");
-    check_number(s.damping, 0, 100, LowEnd::closed, sources.damping, " (units of c / h)");
-    check_number(s.alpha, 0, 10, LowEnd::open, sources.alpha);
-    check_number(s.max_move, 0, 0.5, LowEnd::open, sources.max_move, " (units of h)");
-    check_threads(s.threads, sources.threads);
+    const SettingTable& declared = settings_of("relax");
+    check_setting(declared["steps"], s.steps, sources.steps);
+    check_setting(declared["tolerance"], s.tolerance, sources.tolerance);
+    check_setting(declared["gamma"], s.gamma, sources.gamma);
+    check_setting(declared["dt"], s.time_step, sources.dt);
+    check_setting(declared["damping"], s.damping, sources.damping);
+    check_setting(declared["alpha"], s.alpha, sources.alpha);
+    check_setting(declared["max_move"], s.max_move, sources.max_move);
+    check_setting(declared["threads"], s.threads, sources.threads);
 }
 
 void check_rdf(double r_max, std::size_t bins, const RelaxSources& sources)

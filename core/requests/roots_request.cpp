@@ -1,5 +1,7 @@
 #include "requests/roots_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "analysis/site_errors.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/recommended_k.hpp"
@@ -22,7 +24,7 @@ void check_roots_request(const RootsRequest& r, const RootsSources& sources)
         throw Error(sources.epsilon.code, sources.epsilon.name + " must be in (0, 1)");
     check_gamma(r.model.gamma, sources.gamma.name);
     check_horizon(r.model.horizon, sources.horizon.name);
-    check_steps(r.model.steps, sources.steps);
+    check_setting(settings_of("roots")["steps"], r.model.steps, sources.steps);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

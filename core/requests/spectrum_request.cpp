@@ -1,5 +1,7 @@
 #include "requests/spectrum_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "support/error.hpp"
 #include "support/io/results_output.hpp"
 
@@ -13,10 +15,11 @@ namespace sphkern {
 
 void check_spectrum_request(const SpectrumRequest& r, const SpectrumSources& sources)
 {
-    check_range(r.dimension, 1, 3, sources.dimension);
-    check_range(r.k, 1e-3, 100, sources.k);
-    check_range(r.kh_max, 0.1, 1000, sources.kh_max);
-    check_range(r.points, 1, 100000, sources.points);
+    const SettingTable& declared = settings_of("spectrum");
+    check_setting(declared["dim"], r.dimension, sources.dimension);
+    check_setting(declared["k"], r.k, sources.k);
+    check_setting(declared["max"], r.kh_max, sources.kh_max);
+    check_setting(declared["points"], r.points, sources.points);
 }
 
 SpectrumResult run_spectrum(const SpectrumRequest& r, const SpectrumSources& sources, const Kernel& kernel)

@@ -1,5 +1,7 @@
 #include "requests/stability_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "analysis/hydrostatic_errors.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/stability_budget.hpp"
@@ -71,9 +73,10 @@ void check_stability_request(const StabilityRequest& r, const StabilitySources& 
     check_combination(r, sources);
     if (stability_mode(r) == StabilityMode::over_k) check_k_interval(*r.k_min, *r.k_max, sources.k_min, sources.k_max);
     else check_k(*r.k, sources.k, sources.k_hint);
-    check_steps(r.steps, sources.steps);
-    if (r.grid) check_range(*r.grid, 2, 400, sources.grid);
-    if (r.path_points) check_range(*r.path_points, 2, 100000, sources.path);
+    const SettingTable& declared = settings_of("stability");
+    check_setting(declared["steps"], r.steps, sources.steps);
+    if (r.grid) check_setting(declared["grid"], *r.grid, sources.grid);
+    if (r.path_points) check_setting(declared["path"], *r.path_points, sources.path);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
 }

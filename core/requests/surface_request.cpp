@@ -1,5 +1,7 @@
 #include "requests/surface_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "analysis/results_json.hpp"
 #include "support/io/results_output.hpp"
 
@@ -12,7 +14,7 @@ void check_surface_request(const SurfaceRequest& r, const SurfaceSources& source
 {
     if (r.code) check_code_setting(*r.code, {sources.code, sources.code_value});
     else check_k(r.k, sources.k);
-    check_range(r.layers, 1, max_surface_layers, sources.layers);
+    check_setting(settings_of("surface")["layers"], r.layers, sources.layers);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

@@ -122,6 +122,33 @@ def test_the_docstring_states_the_declared_defaults(command):
     assert not wrong, f"sphkern.{command}: docstring defaults that are not the declared ones: {wrong}"
 
 
+GUIDE = os.path.join(os.path.dirname(__file__), "..", "..", "share", "docs", "guide-python.md")
+
+
+def guide_defaults():
+    """(command, keyword, default as written) of each `command(..., keyword=value, ...)` in the guide."""
+    text = open(GUIDE, encoding="utf-8").read()
+    found = []
+    for command, arguments in re.findall(r"`(\w+)\(([^`]*)\)`", text):
+        if command in COMMANDS:
+            found += [(command, k, v) for k, v in re.findall(r"(\w+)=([^,)]+)", arguments)]
+    return found
+
+
+def test_the_python_guide_gives_the_declared_defaults():
+    cases = guide_defaults()
+    assert len(cases) > 50
+    wrong = []
+    for command, keyword, text in cases:
+        declared = {s["keyword"]: s["default"] for s in sphkern.settings(command)}
+        value = stated(text.strip())
+        ok = same_value(value, declared[keyword]) if isinstance(value, (int, float)) and not isinstance(
+            value, bool) else value == declared[keyword]
+        if not ok:
+            wrong.append((command, keyword, text, declared[keyword]))
+    assert not wrong
+
+
 def test_a_table_names_each_setting_once_and_every_command_has_one():
     for command in COMMANDS:
         keys = [s["key"] for s in sphkern.settings(command)]
@@ -137,3 +164,68 @@ def test_an_old_name_is_hidden_and_still_read():
     run = subprocess.run([CLI, "particles", "wendland_c2", "poisson", "--count", "100", "--eta-range", "1", "2"],
                          capture_output=True, text=True)
     assert run.returncode == 2 and "--h-over-l-range" in run.stderr
+
+
+# The least each command needs to reach its checks: positionals, then options (as keywords
+# too); a setting read only beside another gets that one (particles' steps: a sweep's).
+MINIMAL = {
+    "relax": (["wendland_c2", "poisson"], {"count": 100}),
+    "pairing": (["wendland_c2", "square"], {"kmin": 1.2, "kmax": 1.3}),
+    "spectrum": (["wendland_c2"], {"dim": 3}),
+    "surface": (["wendland_c2", "square"], {"k": 1.2}),
+    "stability": (["wendland_c2", "square"], {"kmin": 1.0, "kmax": 1.5}),
+    "roots": (["wendland_c2", "square"], {"stability": True}),
+    "particles": (["wendland_c2", "poisson"], {"count": 100, "dim": 2, "h_over_l": 1.2, "box": "1,1"}),
+}
+# Python's particles takes positions where the command line makes a Poisson set.
+PYTHON_POSITIONALS = {"particles": ["wendland_c2", [[0.1, 0.2], [0.6, 0.7]]]}
+BESIDE = {("particles", "steps"): {"h_over_l": None, "h_over_l_range": [1.1, 1.3]},("stability", "path"): {"k": 1.2, "kmin": None, "kmax": None},
+          ("stability", "grid"): {"k": 1.2, "kmin": None, "kmax": None}}
+
+
+def outside(bounds):
+    """A value just below and one just above the declared bounds (an open end: the end itself)."""
+    low = bounds["min"] if bounds["low"] == "open" else bounds["min"] - (1 if bounds["count"] else abs(bounds["min"]) * 0.5 + 0.5)
+    high = bounds["max"] + 1 if bounds["count"] else bounds["max"] * 1.5 + 1
+    return [low, high]
+
+
+def option_words(settings, given):
+    words = []
+    for key, value in given.items():
+        option = next(s["option"] for s in settings if s["key"] == key)
+        words += [option] if value is True else [option, *map(str, value)] if isinstance(value, list) else [
+            option, str(value)]
+    return words
+
+
+BOUNDED = [(command, s) for command in MINIMAL for s in sphkern.settings(command) if s["bounds"]]
+
+
+@pytest.mark.parametrize("command,setting", BOUNDED, ids=[f"{c}-{s['key']}" for c, s in BOUNDED])
+def test_a_value_outside_the_declared_bounds_is_refused_by_both_front_ends(command, setting):
+    """Every bound a table declares is checked, on the command line (exit 2, the option named)
+    and in Python (BadValue, the keyword named): the check is made from the table."""
+    positionals, base = MINIMAL[command]
+    settings = sphkern.settings(command)
+    for value in outside(setting["bounds"]):
+        value = int(value) if setting["type"] == "integer" else value
+        given = {k: v for k, v in {**base, **BESIDE.get((command, setting["key"]), {}), setting["key"]: value}.items()
+                 if v is not None}
+        if setting["option"]:
+            run = subprocess.run([CLI, command, *positionals, *option_words(settings, given)], capture_output=True,
+                                 text=True)
+            assert run.returncode == 2 and run.stderr.startswith(f"sphkern: error: {setting['option']} "), run.stderr
+        if setting["keyword"]:
+            with pytest.raises(sphkern.BadValue, match=rf"^{setting['keyword']} = "):
+                call_python(command, positionals, given)
+
+
+def call_python(command, positionals, given):
+    """The function as the command line was called: required keywords by position (spectrum's dim)."""
+    settings = sphkern.settings(command)
+    required = [s["keyword"] for s in settings if s["required"] and not s["positional"]]
+    taken = {s["key"]: s["keyword"] for s in settings if s["keyword"]}
+    keywords = {taken[k]: ([1, 1] if k == "box" else v) for k, v in given.items() if k in taken and k not in required}
+    return getattr(sphkern, command)(*PYTHON_POSITIONALS.get(command, positionals), *[given[k] for k in required],
+                                     **keywords)

@@ -37,13 +37,16 @@ SettingTable particles_settings()
           list("h_over_l_range", "Sweep h / l over [A, B]"),
           list("eta_range", "The old name of --h-over-l-range (refused, naming it)").old_name(),
           list("nh_range", "Sweep N_H over [A, B]"),
-          integer("steps", "10", "Sweep: steps between A and B"),
+          integer("steps", "10", "Sweep: steps between A and B").counted(1, 1000),
           word("volume", "", "uniform (box / N), file (m / rho) or voronoi (default: file if m and rho, else uniform)"),
           list("gravity", "Direction of eps_gradp, x,y[,z] (default: the lattice's, else -y or -z)"),
-          number("depth", "1", "Depth of the sum form's eps_gradp_sum, in units of h"),
+          number("depth", "1", "Depth of the sum form's eps_gradp_sum, in units of h")
+              .within(0, 1e6, LowEnd::closed, " (units of h)"),
           number("rho0", "", "Reference density of eps_rho (default: the set's total mass over its volume)"),
-          integer("histogram", "0", "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum").default_hidden(),
-          integer("threads", "0", "Threads (default: every core)").default_hidden(),
+          integer("histogram", "0", "Histogram bins of e0, eps_rho, eps_gradp and eps_gradp_sum")
+              .default_hidden()
+              .counted(0, 100000),
+          integer("threads", "0", "Threads (default: every core)").default_hidden().counted(0, 1024),
           number("memory_limit", "0", "Memory budget in GiB (default: three quarters of the available memory)")
               .default_hidden()
               .command_line_only(),

@@ -16,7 +16,7 @@ SettingTable roots_settings()
               flag("stability",
                    "Also the stable k intervals of the window (linear stability) and where condition (22) holds there"),
               number("gamma", "1.6666666666666667", "With --stability: adiabatic index"),
-              integer("steps", "100", "With --stability: k intervals of the scan"),
+              integer("steps", "100", "With --stability: k intervals of the scan").counted(1, max_scan_steps),
               integer("threads", "0", "With --stability: threads of the scan over k (default: every core)")
                   .default_hidden(),
               word("convention", "", "The old name of --code, kept as its alias"),

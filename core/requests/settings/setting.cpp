@@ -11,8 +11,11 @@ Setting row(std::string key, SettingType type, std::string fallback, std::string
 {
     std::string option = "--" + key;
     std::replace(option.begin(), option.end(), '_', '-');
-    std::string keyword = key;
-    return {std::move(key), type, std::move(fallback), std::move(help), std::move(option), std::move(keyword)};
+    Setting s;
+    s.keyword = key;
+    s.key = std::move(key), s.type = type, s.fallback = std::move(fallback), s.help = std::move(help);
+    s.option = std::move(option);
+    return s;
 }
 
 } // namespace
@@ -55,6 +58,26 @@ Setting& Setting::old_name()
 {
     hidden = true;
     return command_line_only();
+}
+
+Setting& Setting::counted(double min, double max)
+{
+    bounds = Bounds{min, max, LowEnd::closed, {}, true};
+    return *this;
+}
+
+Setting& Setting::within(double min, double max, LowEnd low, std::string unit)
+{
+    bounds = Bounds{min, max, low, std::move(unit), false};
+    return *this;
+}
+
+void check_setting(const Setting& setting, double value, const ValueSource& source)
+{
+    if (!setting.bounds) return;
+    const Bounds& b = *setting.bounds;
+    if (b.count) check_range(value, b.min, b.max, source);
+    else check_number(value, b.min, b.max, b.low, source, b.unit);
 }
 
 Setting number(std::string key, std::string fallback, std::string help)

@@ -2,6 +2,8 @@
 
 #include "requests/settings/shared_settings.hpp"
 
+#include "analysis/surface_profile.hpp"
+
 namespace sphkern {
 
 SettingTable surface_settings()
@@ -10,7 +12,7 @@ SettingTable surface_settings()
             {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
               number("k", "", "Smoothing coefficient, h = k d (or --code and the code's setting)"), code_choice()},
              code_parameters(),
-             {integer("layers", "4", "Report at least this many layers"),
+             {integer("layers", "4", "Report at least this many layers").counted(1, max_surface_layers),
               word("form", "sum", "Gradient form: sum, difference or monaghan"),
               word("a_p", "voronoi", "Volume coefficient: a name the lattice offers or a positive number")
                   .as_option("--ap"),

@@ -71,8 +71,6 @@ void check_positive(double value, const ValueSource& source)
         throw Error(source.code, source.about(value) + ": expected a positive finite number");
 }
 
-void check_steps(int steps, const ValueSource& source) { check_range(steps, 1, max_scan_steps, source); }
-
 namespace {
 
 bool valid_interval(double k_min, double k_max, IntervalEnds kind)

@@ -72,7 +72,6 @@ void check_number(double value, double min, double max, LowEnd low, const ValueS
 void check_positive(double value, const ValueSource& source);
 // The intervals of a k scan (roots --stability, stability over k): 1 to 2000.
 constexpr int max_scan_steps = 2000;
-void check_steps(int steps, const ValueSource& source);
 
 // A k interval: 0 < min < max <= 100, or min <= max where one point is a valid interval.
 enum class IntervalEnds { distinct, may_meet };
