@@ -6,6 +6,7 @@
 #include "requests/assess_particles.hpp"
 #include "requests/assess_request.hpp"
 #include "requests/assess_sweep.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
 
@@ -51,7 +52,8 @@ AssessSources option_sources(const AssessOptions& o)
             ValueSource::option("--gamma"),
             ValueSource::option("--horizon"),
             ValueSource::option("--coef-sound"),
-            ValueSource::option("--glass")};
+            ValueSource::option("--glass"),
+            ValueSource::option("--threads")};
 }
 
 // A code's setting on a particle file: h as `particles --code` sets it, judged on the set.
@@ -65,7 +67,7 @@ int assess_file(const AssessOptions& o)
                     "none for the file's own h)");
     check_epsilon(o.epsilon, ValueSource::option("--epsilon"));
     const auto range = parameter_range(o.ranges, o.setting.code);
-    check_threads(o.threads, ValueSource::option("--threads"));
+    check_setting(settings_of("assess")["threads"], o.threads, ValueSource::option("--threads"));
     auto registry = discover_kernels(o);
     auto kernel = make_kernel(registry, o.kernel, o.sets);
     SourceOptions source;
@@ -130,7 +132,6 @@ int assess_lattice(const AssessOptions& o)
     const auto sources = option_sources(o);
     const auto request = request_from(o);
     check_assess_request(request, sources);
-    check_threads(o.threads, ValueSource::option("--threads"));
     const auto [lattice, kernel] = kernel_on_lattice(o, o.kernel, o.lattice, o.sets);
     const auto result = run_assess(request, sources, kernel, lattice);
     if (o.json) print_json(assess_document(request, result), command_inputs(&kernel, &lattice));

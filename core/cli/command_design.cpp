@@ -34,7 +34,7 @@ DesignRequest request_from(const DesignOptions& o)
 // The window refused as input (exit 3).
 DesignSources option_sources(const DesignOptions& o)
 {
-    return {ValueSource::option("--kmin/--kmax"), evaluation_sources(o.evaluation)};
+    return {ValueSource::option("--kmin/--kmax"), evaluation_sources(o.evaluation), ValueSource::option("--threads")};
 }
 
 } // namespace
@@ -49,7 +49,7 @@ Action add_design_command(Command app)
     command.add_setting("range", options->range).expected(2);
     command.add_setting("kmin", options->k_min);
     command.add_setting("kmax", options->k_max);
-    command.add_setting("threads", options->threads).check_range(0, 1024);
+    command.add_setting("threads", options->threads);
     add_point_options(command, options->evaluation);
     add_set_option(command, options->sets);
     add_plugin_option(command, *options);

@@ -8,6 +8,7 @@
 #include "particles/particles_memory.hpp"
 #include "requests/particles_report.hpp"
 #include "requests/particles_request.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
@@ -128,7 +129,7 @@ Measured measure_source(const ParticlesOptions& o, const Kernel& kernel, const s
 {
     PhaseTimes phases;
     auto sources = particle_sources(FrontEnd::command_line);
-    check_threads(o.threads, sources.threads); // the set is read on them
+    check_setting(settings_of("particles")["threads"], o.threads, sources.threads); // the set is read on them
     if (const auto snapshot = snapshot_in_slabs(source_of(o), source_sources(FrontEnd::command_line))) {
         check_output_targets(outputs, snapshot->sample().linked_files); // what the file reached through its links
         return measure_in_slabs(o, kernel, *snapshot, sources, csv, vtk, check);

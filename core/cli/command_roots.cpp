@@ -50,7 +50,8 @@ RootsRequest request_from(const RootsOptions& o)
 RootsSources option_sources(const RootsOptions& o)
 {
     return {ValueSource::option("--kmin/--kmax"), ValueSource::option("--epsilon"), ValueSource::option("--gamma"),
-            ValueSource::option("--horizon"),     ValueSource::option("--steps"),   evaluation_sources(o.evaluation)};
+            ValueSource::option("--horizon"),     ValueSource::option("--steps"),   evaluation_sources(o.evaluation),
+            ValueSource::option("--threads")};
 }
 
 // The lattices and kernels named, "all" for every one.
@@ -111,7 +112,7 @@ Action add_roots_command(Command app)
     command.add_setting("stability", options->stability);
     command.add_setting("gamma", options->gamma);
     command.add_setting("steps", options->steps);
-    command.add_setting("threads", options->threads).check_range(0, 1024);
+    command.add_setting("threads", options->threads);
     command.add_setting("convention", options->convention);
     command.add_setting("code", options->code);
     command.add_setting("horizon", options->horizon);

@@ -40,7 +40,8 @@ StabilitySources option_sources(const StabilityOptions& o)
             ValueSource::option("--kmax"),    ValueSource::option("--gamma"),
             ValueSource::option("--horizon"), ValueSource::option("--wavevector " + one_line(o.wavevector)),
             ValueSource::option("--steps"),   ValueSource::option("--grid"),
-            ValueSource::option("--path"),    " (or give --kmin and --kmax)"};
+            ValueSource::option("--path"),    " (or give --kmin and --kmax)",
+            ValueSource::option("--threads")};
 }
 
 // The adapter: the text of the wave vector and h model (the request checks which options go together).
@@ -86,7 +87,7 @@ void add_stability_options(Command command, StabilityOptions& o)
     command.add_setting("grid", o.grid);
     command.add_setting("horizon", o.horizon);
     command.add_setting("h_model", o.h_model);
-    command.add_setting("threads", o.threads).check_range(0, 1024);
+    command.add_setting("threads", o.threads);
     command.add_setting("code", o.code);
 }
 

@@ -63,12 +63,6 @@ Option Option::needs(Option other)
     return *this;
 }
 
-Option Option::check_range(int min, int max)
-{
-    option_->check(CLI::Range(min, max));
-    return *this;
-}
-
 Option Option::check_non_negative()
 {
     option_->check(CLI::NonNegativeNumber);

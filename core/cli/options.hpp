@@ -31,7 +31,6 @@ public:
     Option excludes(Option other);
     Option excludes(const std::string& name);
     Option needs(Option other);
-    Option check_range(int min, int max);
     Option check_non_negative();
     Option check_member(std::initializer_list<int> values);
 

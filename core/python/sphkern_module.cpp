@@ -26,6 +26,7 @@
 #include "requests/lattices_request.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/roots_request.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "requests/shells_request.hpp"
 #include "requests/stability_request.hpp"
 #include "requests/surface_request.hpp"
@@ -170,7 +171,6 @@ RootsRequest roots_request(double kmin, double kmax, double epsilon, bool latera
     r.epsilon = epsilon;
     r.lateral = lateral;
     r.stability = stability;
-    check_threads(threads, ValueSource::argument("threads"));
     r.model = {gamma, horizon, steps, parse_h_model(h_model, "h_model"), threads};
     // convention is the old name of code: the same answer, with the code's own density.
     if (convention && code) throw Error(ExitCode::input, "give one of code and convention (its old name)");
@@ -212,7 +212,6 @@ py::dict design(const std::string& kernel_spec, const std::string& lattice_spec,
 {
     DesignRequest request;
     request.parameter = param;
-    check_threads(threads, ValueSource::argument("threads"));
     request.threads = threads;
     request.k_min = kmin;
     request.k_max = kmax;
@@ -398,7 +397,8 @@ AssessRequest assess_request_of(std::optional<double> k, const std::optional<std
     if (code) request.setting.code = CodeSetting{*code, *value};
     request.window_min = kmin, request.window_max = kmax;
     request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
-    check_threads(threads, ValueSource::argument("threads"));
+    // Checked here for a particle file too, which check_assess_request does not see.
+    check_setting(settings_of("assess")["threads"], threads, ValueSource::argument("threads"));
     request.threads = threads, request.glass = glass;
     return request;
 }

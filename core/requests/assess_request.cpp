@@ -1,5 +1,7 @@
 #include "requests/assess_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "analysis/resolution_axis.hpp"
 #include "requests/code_setting.hpp"
 #include "stability/brillouin_zone.hpp"
@@ -187,6 +189,7 @@ void check_assess_request(const AssessRequest& r, const AssessSources& sources)
     check_horizon(r.horizon, sources.horizon.name);
     if (r.glass != 0 && (r.glass < 100 || r.glass > 100000))
         sources.glass.fail(fmt::format("{} particles; expected 100 to 100000 (0: no glass)", r.glass));
+    check_setting(settings_of("assess")["threads"], r.threads, sources.threads);
 }
 
 AssessResult run_assess(const AssessRequest& r, const AssessSources& sources, const Kernel& kernel,

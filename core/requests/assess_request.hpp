@@ -34,6 +34,7 @@ struct AssessSources {
     ValueSource window, epsilon, gamma, horizon;
     ValueSource coef_sound = ValueSource::argument("coef_sound");
     ValueSource glass = ValueSource::argument("glass");
+    ValueSource threads = ValueSource::argument("threads");
 };
 
 struct AssessStability {

@@ -1,5 +1,7 @@
 #include "requests/block_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "support/error.hpp"
 #include "support/io/chunked_writer.hpp"
 #include "support/io/results_output.hpp"
@@ -17,7 +19,7 @@ void check_block_request(const BlockRequest& r, const BlockSources& sources)
 {
     check_k(r.k, sources.k);
     if (r.cells.size() > 3) sources.size.fail("expected N1,N2[,N3] integers");
-    check_range(r.threads, 0, 1024, sources.threads);
+    check_setting(settings_of("block")["threads"], r.threads, sources.threads);
 }
 
 BlockRun run_block(const BlockRequest& r, const BlockSources& sources, const Kernel& kernel, const Lattice& lattice)

@@ -1,5 +1,7 @@
 #include "requests/design_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "support/io/results_output.hpp"
 #include "support/process/parallel_for.hpp"
 
@@ -13,6 +15,7 @@ void check_design_request(const DesignRequest& r, const DesignSources& sources)
 {
     check_k_interval(r.k_min, r.k_max, sources.window);
     check_evaluation(r.evaluation, sources.evaluation);
+    check_setting(settings_of("design")["threads"], r.threads, sources.threads);
 }
 
 DesignOutcome run_design(const DesignRequest& r, const DesignSources& sources, const Kernel& kernel,

@@ -26,6 +26,7 @@ struct DesignRequest {
 struct DesignSources {
     ValueSource window; // the k window as one value: "--kmin/--kmax" or "kmin/kmax"
     EvaluationSources evaluation;
+    ValueSource threads = ValueSource::argument("threads");
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.

@@ -32,8 +32,6 @@ void name_code(ParticleArguments& given, const std::string& code, std::optional<
     else given.stored_h_code = code;
 }
 
-void check_threads(int threads, const ValueSource& source) { check_range(threads, 0, 1024, source); }
-
 namespace {
 
 std::optional<SmoothingSweep> sweep_of(const ParticleArguments& given, const ParticleSources& sources)

@@ -51,7 +51,4 @@ ParticleRequest particle_request(const ParticleArguments& given, const Kernel& k
 SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int steps, const ValueSource& range,
                              const ValueSource& steps_source);
 
-// The thread count every request takes: 0 (every core) to 1024.
-void check_threads(int threads, const ValueSource& source);
-
 } // namespace sphkern

@@ -25,6 +25,7 @@ void check_roots_request(const RootsRequest& r, const RootsSources& sources)
     check_gamma(r.model.gamma, sources.gamma.name);
     check_horizon(r.model.horizon, sources.horizon.name);
     check_setting(settings_of("roots")["steps"], r.model.steps, sources.steps);
+    check_setting(settings_of("roots")["threads"], r.model.threads, sources.threads);
     check_evaluation(r.evaluation, sources.evaluation);
 }
 

@@ -35,6 +35,7 @@ struct RootsSources {
     ValueSource window; // the k window as one value: "--kmin/--kmax" or "kmin/kmax"
     ValueSource epsilon, gamma, horizon, steps;
     EvaluationSources evaluation;
+    ValueSource threads = ValueSource::argument("threads");
 };
 
 // Every value that does not need the kernel or lattice; an Error naming its source.

@@ -77,6 +77,7 @@ void check_stability_request(const StabilityRequest& r, const StabilitySources& 
     check_setting(declared["steps"], r.steps, sources.steps);
     if (r.grid) check_setting(declared["grid"], *r.grid, sources.grid);
     if (r.path_points) check_setting(declared["path"], *r.path_points, sources.path);
+    check_setting(declared["threads"], r.threads, sources.threads);
     check_gamma(r.gamma, sources.gamma.name);
     check_horizon(r.horizon, sources.horizon.name);
 }

@@ -46,6 +46,7 @@ StabilityMode stability_mode(const StabilityRequest& request);
 struct StabilitySources {
     ValueSource k, k_min, k_max, gamma, horizon, wavevector, steps, grid, path;
     std::string k_hint; // said after a k out of range, e.g. " (or give --kmin and --kmax)"
+    ValueSource threads = ValueSource::argument("threads");
 };
 
 // Every value that does not need the kernel or lattice, and which of them go together;

@@ -175,6 +175,8 @@ MINIMAL = {
     "surface": (["wendland_c2", "square"], {"k": 1.2}),
     "stability": (["wendland_c2", "square"], {"kmin": 1.0, "kmax": 1.5}),
     "roots": (["wendland_c2", "square"], {"stability": True}),
+    "design": (["wendland_c2_shape", "fcc"], {"param": "beta"}),
+    "assess": (["cubic_bspline", "square"], {"k": 1.2}),
     "particles": (["wendland_c2", "poisson"], {"count": 100, "dim": 2, "h_over_l": 1.2, "box": "1,1"}),
 }
 # Python's particles takes positions where the command line makes a Poisson set.

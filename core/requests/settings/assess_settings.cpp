@@ -32,7 +32,8 @@ SettingTable assess_settings()
          {integer("steps", "10", "Particle file: steps of a parameter's sweep"),
           integer("threads", "0",
                   "Threads of a particle file's sums, or of a lattice's stability scan over k (default: every core)")
-              .default_hidden(),
+              .default_hidden()
+              .counted(0, 1024),
           word("neighbours_by", "",
                "Particle file: what the code's density solve counts, number or mass (default the code's)"),
           flag("bias_correction",

@@ -12,7 +12,7 @@ SettingTable block_settings()
               list("size", "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)").mandatory(),
               flag("periodic", "Periodic lateral sides (the top is always free)"),
               word("form", "sum", "Gradient form: sum, difference or monaghan"),
-              integer("threads", "0", "Threads (default: every core)").default_hidden(),
+              integer("threads", "0", "Threads (default: every core)").default_hidden().counted(0, 1024),
               word("a_p", "voronoi", "Volume coefficient: a name or a positive number").as_option("--ap"),
               word("vtk", "", "Write per-particle results for ParaView: F.vtk legacy VTK, F.vtu VTK XML"),
               word("csv", "", "Write per-particle results as CSV"), kernel_parameters(), plugin_files(),

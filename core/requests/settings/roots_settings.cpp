@@ -18,7 +18,8 @@ SettingTable roots_settings()
               number("gamma", "1.6666666666666667", "With --stability: adiabatic index"),
               integer("steps", "100", "With --stability: k intervals of the scan").counted(1, max_scan_steps),
               integer("threads", "0", "With --stability: threads of the scan over k (default: every core)")
-                  .default_hidden(),
+                  .default_hidden()
+                  .counted(0, 1024),
               word("convention", "", "The old name of --code, kept as its alias"),
               word("code", "",
                    "Also give every k as an SPH code's own setting, with its own SPH density: swift, phantom, gadget2, "

@@ -26,7 +26,7 @@ SettingTable stability_settings()
               word("h_model", "fixed",
                    "Smoothing length: fixed (h = k d) or adaptive (h = eta (m/rho)^(1/D) with grad-h terms; k sets the "
                    "equilibrium h = k d)"),
-              integer("threads", "0", "Threads (default: every core)").default_hidden(),
+              integer("threads", "0", "Threads (default: every core)").default_hidden().counted(0, 1024),
               word("code", "",
                    "With --kmin/--kmax: the stable intervals also in an SPH code's own setting, with its own density: "
                    "swift, phantom, gadget2, gadget4, pysph or dualsphysics"),
