@@ -149,6 +149,20 @@ def test_the_python_guide_gives_the_declared_defaults():
     assert not wrong
 
 
+SCHEMA = os.path.join(os.path.dirname(__file__), "..", "..", "share", "schemas", "study.schema.json")
+
+
+def test_the_study_schema_gives_the_stability_sections_keys_the_declared_bounds():
+    """A study's stability section is a front end of `stability`: its keys take that command's
+    settings (path_points is --path), and the schema that editors check a study with says so."""
+    import json
+    section = json.load(open(SCHEMA, encoding="utf-8"))["properties"]["stability"]["properties"]
+    declared = {s["key"]: s["bounds"] for s in sphkern.settings("stability")}
+    for schema_entry, key in ((section["grid"], "grid"), (section["path_points"], "path"),
+                              (section["k"]["properties"]["steps"], "steps")):
+        assert (schema_entry["minimum"], schema_entry["maximum"]) == (declared[key]["min"], declared[key]["max"]), key
+
+
 def test_a_table_names_each_setting_once_and_every_command_has_one():
     for command in COMMANDS:
         keys = [s["key"] for s in sphkern.settings(command)]
