@@ -8,7 +8,7 @@ SettingTable assess_settings()
 {
     return {
         "assess",
-        {{positional("kernel", "Kernel name or plugin file"),
+        {{kernel_name(),
           positional("lattice", "Lattice name or file, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET binary "
                                 "snapshot, a Phantom dump)"),
           number("k", "", "Smoothing coefficient, h = k d (or --code and the code's own setting)"), code_choice()},

@@ -7,8 +7,7 @@ namespace sphkern {
 SettingTable block_settings()
 {
     return {"block",
-            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
-              number("k", "", "Smoothing coefficient, h = k d").mandatory(),
+            {{kernel_name(), lattice_name(), number("k", "", "Smoothing coefficient, h = k d").mandatory(),
               list("size", "Cells along the basis vectors: N1,N2[,N3] (the last is vertical)").mandatory(),
               flag("periodic", "Periodic lateral sides (the top is always free)"),
               word("form", "sum", "Gradient form: sum, difference or monaghan"),

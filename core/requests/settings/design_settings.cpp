@@ -7,8 +7,7 @@ namespace sphkern {
 SettingTable design_settings()
 {
     return {"design",
-            {{positional("kernel", "Kernel (a blend A+B, or one with parameters)"),
-              positional("lattice", "Lattice name or file"),
+            {{positional("kernel", "Kernel (a blend A+B, or one with parameters)"), lattice_name(),
               word("param", "", "The parameter to vary (alpha for a blend)").mandatory(),
               list("range", "Parameter range A B (default: blends [-1, 2], else the declared range)"),
               number("kmin", "0.75", "Smallest k"), number("kmax", "1.25", "Largest k"),

@@ -7,7 +7,7 @@ namespace sphkern {
 SettingTable eps_settings()
 {
     return {"eps",
-            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
+            {{kernel_name(), lattice_name(),
               number("k", "", "Smoothing coefficient, h = k d (or --code and the code's own setting)"),
               code_choice().command_line_only()},
              code_parameters(),

@@ -9,8 +9,8 @@ namespace sphkern {
 SettingTable pairing_settings()
 {
     return {"pairing",
-            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or JSON file"),
-              number("k", "", "One k (h = k d)"), code_choice()},
+            {{kernel_name(), positional("lattice", "Lattice name or JSON file"), number("k", "", "One k (h = k d)"),
+              code_choice()},
              code_parameters(),
              {number("kmin", "", "Smallest k of the range"), number("kmax", "", "Largest k of the range"),
               integer("samples", "1", "Evenly spaced k over [kmin, kmax]").counted(1, 1000),

@@ -8,7 +8,7 @@ SettingTable particles_settings()
 {
     return {
         "particles",
-        {{positional("kernel", "Kernel name or plugin file"),
+        {{kernel_name(),
           positional("source", "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET "
                                "binary snapshot, a Phantom dump)")
               .command_line_only(),

@@ -8,7 +8,7 @@ SettingTable relax_settings()
 {
     return {
         "relax",
-        {{positional("kernel", "Kernel name or plugin file"),
+        {{kernel_name(),
           positional("source", "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET "
                                "binary snapshot, a Phantom dump)")},
          source_settings(),

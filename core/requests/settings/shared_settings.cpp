@@ -9,6 +9,10 @@
 
 namespace sphkern {
 
+Setting kernel_name() { return positional("kernel", "Kernel name or plugin file"); }
+
+Setting lattice_name() { return positional("lattice", "Lattice name or file"); }
+
 std::vector<Setting> evaluation_settings()
 {
     return {

@@ -8,6 +8,9 @@
 
 namespace sphkern {
 
+// The positionals most commands start with: "Kernel name or plugin file", "Lattice name or file".
+Setting kernel_name();
+Setting lattice_name();
 // --ap/a_p, --gravity, --site, --shells and --continue-past-support, as eps and roots take them.
 std::vector<Setting> evaluation_settings();
 // --code: "Give the resolution as an SPH code sets it: swift, ..., with its parameter below".

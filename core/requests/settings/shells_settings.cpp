@@ -7,9 +7,9 @@ namespace sphkern {
 SettingTable shells_settings()
 {
     return {"shells",
-            {{positional("lattice", "Lattice name or file"),
-              number("radius", "", "Largest radius, in units of d").mandatory(), integer("site", "0", "Motif site"),
-              list("gravity", "Direction for the moments (default: the lattice's)"), json_output(), plugin_files()}}};
+            {{lattice_name(), number("radius", "", "Largest radius, in units of d").mandatory(),
+              integer("site", "0", "Motif site"), list("gravity", "Direction for the moments (default: the lattice's)"),
+              json_output(), plugin_files()}}};
 }
 
 } // namespace sphkern

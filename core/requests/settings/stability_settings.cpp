@@ -7,8 +7,7 @@ namespace sphkern {
 SettingTable stability_settings()
 {
     return {"stability",
-            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
-              number("k", "", "Smoothing coefficient, h = k d"),
+            {{kernel_name(), lattice_name(), number("k", "", "Smoothing coefficient, h = k d"),
               number("kmin", "", "Scan k from here (with --kmax): stable intervals"),
               number("kmax", "", "Scan k up to here"),
               integer("steps", "50", "Intervals of the k scan").counted(1, max_scan_steps),

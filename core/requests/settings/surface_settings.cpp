@@ -9,7 +9,7 @@ namespace sphkern {
 SettingTable surface_settings()
 {
     return {"surface",
-            {{positional("kernel", "Kernel name or plugin file"), positional("lattice", "Lattice name or file"),
+            {{kernel_name(), lattice_name(),
               number("k", "", "Smoothing coefficient, h = k d (or --code and the code's setting)"), code_choice()},
              code_parameters(),
              {integer("layers", "4", "Report at least this many layers").counted(1, max_surface_layers),
