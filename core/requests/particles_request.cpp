@@ -50,10 +50,9 @@ std::optional<SmoothingSweep> sweep_of(const ParticleArguments& given, const Par
 SmoothingSweep checked_sweep(SmoothingRule rule, double from, double to, int steps, const ValueSource& range,
                              const ValueSource& steps_source)
 {
-    for (const double value : {from, to}) {
-        if (rule == SmoothingRule::eta) check_number(value, 0, 100, LowEnd::open, range);
-        else check_number(value, 1, 1e5, LowEnd::closed, range, " (neighbours)");
-    }
+    // A sweep's values are h_over_l's or nh's: their bounds.
+    const Setting& swept = settings_of("particles")[rule == SmoothingRule::eta ? "h_over_l" : "nh"];
+    for (const double value : {from, to}) check_setting(swept, value, range);
     if (!(to > from)) range.fail(fmt::format("[{}, {}]: expected min < max", from, to));
     check_setting(settings_of("particles")["steps"], steps, steps_source);
     return {rule, from, to, steps};

@@ -1,5 +1,7 @@
 #include "requests/smoothing_request.hpp"
 
+#include "requests/settings/command_settings.hpp"
+
 #include "support/error.hpp"
 
 #include <fmt/format.h>
@@ -19,8 +21,10 @@ SmoothingSpec smoothing_spec(const SmoothingArguments& given, const SmoothingSou
     require_at_most_one({{given.eta.has_value(), &sources.eta},
                          {given.nh.has_value(), &sources.nh},
                          {given.k.has_value(), &sources.k}});
-    if (given.eta) check_number(*given.eta, 0, 100, LowEnd::open, sources.eta);
-    if (given.nh) check_number(*given.nh, 1, 1e5, LowEnd::closed, sources.nh, " (neighbours)");
+    // The bounds are particles' and relax's alike (shared_settings).
+    const SettingTable& declared = settings_of("particles");
+    if (given.eta) check_setting(declared["h_over_l"], *given.eta, sources.eta);
+    if (given.nh) check_setting(declared["nh"], *given.nh, sources.nh);
     if (given.k) check_k(*given.k, sources.k);
     if (given.eta) return {SmoothingRule::eta, *given.eta, 0};
     if (given.nh) return {SmoothingRule::nh, *given.nh, 0};

@@ -195,7 +195,8 @@ MINIMAL = {
 }
 # Python's particles takes positions where the command line makes a Poisson set.
 PYTHON_POSITIONALS = {"particles": ["wendland_c2", [[0.1, 0.2], [0.6, 0.7]]]}
-BESIDE = {("particles", "steps"): {"h_over_l": None, "h_over_l_range": [1.1, 1.3]},("stability", "path"): {"k": 1.2, "kmin": None, "kmax": None},
+BESIDE = {("particles", "steps"): {"h_over_l": None, "h_over_l_range": [1.1, 1.3]},
+          ("particles", "nh"): {"h_over_l": None},("stability", "path"): {"k": 1.2, "kmin": None, "kmax": None},
           ("stability", "grid"): {"k": 1.2, "kmin": None, "kmax": None}}
 
 

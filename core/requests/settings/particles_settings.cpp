@@ -19,10 +19,9 @@ SettingTable particles_settings()
          except_in_python(source_settings(), {"box"}),
          {flag("keep_going", "Series: report a snapshot that fails and go on with the rest"),
           word("plot", "", "Series: draw the errors against time (median, p1 to p99) as .svg, .png or .pdf"),
-          number("h_over_l", "", "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a file h)"),
+          h_over_l_setting("h over the mean spacing l = V^(1/D), sphkern's own (default 1.2 without a file h)"),
           number("eta", "", "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)").command_line_only(),
-          number("nh", "", "h from the neighbour number N_H = c_D (R h)^D n"),
-          number("k", "", "Lattice: h = k d").command_line_only(),
+          nh_setting(), number("k", "", "Lattice: h = k d").command_line_only(),
           word("code", "",
                "h as an SPH code sets it, from each particle's SPH density where the code solves for it: swift "
                "(--eta), phantom (--hfact), gadget2 or gadget4 (--nngb), pysph (--hdx), dualsphysics (--coefh); "

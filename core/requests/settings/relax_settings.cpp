@@ -12,9 +12,9 @@ SettingTable relax_settings()
           positional("source", "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET "
                                "binary snapshot, a Phantom dump)")},
          source_settings(),
-         {number("h_over_l", "", "h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)"),
+         {h_over_l_setting("h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)"),
           number("eta", "", "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)").command_line_only(),
-          number("nh", "", "h from the neighbour number N_H = c_D (R h)^D n"), number("k", "", "Lattice: h = k d"),
+          nh_setting(), number("k", "", "Lattice: h = k d"),
           word("code", "",
                "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full dump), its layout and h; "
                "with its parameter (--eta for swift), the run's h and each written h as the code sets it")},

@@ -92,6 +92,17 @@ std::vector<Setting> except_in_python(std::vector<Setting> settings, const std::
     return settings;
 }
 
+Setting h_over_l_setting(std::string help)
+{
+    return number("h_over_l", "", std::move(help)).within(0, 100, LowEnd::open);
+}
+
+Setting nh_setting()
+{
+    return number("nh", "", "h from the neighbour number N_H = c_D (R h)^D n")
+        .within(1, 1e5, LowEnd::closed, " (neighbours)");
+}
+
 Setting kernel_parameters() { return list("params", "Kernel parameter NAME=VALUE (repeatable)").as_option("--set"); }
 
 Setting plugin_files() { return list("plugin", "Load this kernel plugin file too (repeatable)").command_line_only(); }

@@ -27,6 +27,10 @@ Setting code_value();
 std::vector<Setting> source_settings();
 // The settings on the command line only, but those named.
 std::vector<Setting> except_in_python(std::vector<Setting> settings, const std::vector<std::string>& kept);
+// sphkern's own h over the mean spacing (with the command's help) and the neighbour number
+// N_H, in (0, 100] and [1, 1e5]: particles and relax alike, and their sweeps.
+Setting h_over_l_setting(std::string help);
+Setting nh_setting();
 // --set NAME=VALUE, Python's params.
 Setting kernel_parameters();
 // --plugin and --json, on the command line only.
