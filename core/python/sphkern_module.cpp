@@ -351,8 +351,9 @@ void bind_accuracy(py::module_& m, const Guard& guard)
             py::gil_scoped_release unlocked;
             return run_eps_at_k(request, sources, kernel, lattice).k;
         },
-        py::arg("kernel"), py::arg("lattice"), py::arg("code"), py::arg("value"), py::kw_only(),
-        py::arg("a_p") = "voronoi", py::arg("site") = 0, py::arg("params") = py::none(), doc::code_k, guard);
+        // eps --code's setting, as Python gives it: eps's rows but code and value, required here.
+        eps_keywords.required("kernel"), eps_keywords.required("lattice"), py::arg("code"), py::arg("value"),
+        py::kw_only(), eps_keywords("a_p"), eps_keywords("site"), eps_keywords("params"), doc::code_k, guard);
     const SettingKeywords shells_keywords("shells");
     m.def(
         "shells",
