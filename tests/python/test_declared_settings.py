@@ -192,7 +192,10 @@ MINIMAL = {
     "design": (["wendland_c2_shape", "fcc"], {"param": "beta"}),
     "assess": (["cubic_bspline", "square"], {"k": 1.2}),
     "particles": (["wendland_c2", "poisson"], {"count": 100, "dim": 2, "h_over_l": 1.2, "box": "1,1"}),
+    "block": (["wendland_c2", "square"], {"k": 1.2, "size": "4,4"}),
 }
+# Python's spelling of the command line's comma-separated values.
+PYTHON_VALUES = {"box": [1, 1], "size": [4, 4]}
 # Python's particles takes positions where the command line makes a Poisson set.
 PYTHON_POSITIONALS = {"particles": ["wendland_c2", [[0.1, 0.2], [0.6, 0.7]]]}
 BESIDE = {("particles", "steps"): {"h_over_l": None, "h_over_l_range": [1.1, 1.3]},
@@ -243,6 +246,7 @@ def call_python(command, positionals, given):
     settings = sphkern.settings(command)
     required = [s["keyword"] for s in settings if s["required"] and not s["positional"]]
     taken = {s["key"]: s["keyword"] for s in settings if s["keyword"]}
-    keywords = {taken[k]: ([1, 1] if k == "box" else v) for k, v in given.items() if k in taken and k not in required}
+    given = {k: PYTHON_VALUES.get(k, v) for k, v in given.items()}
+    keywords = {taken[k]: v for k, v in given.items() if k in taken and k not in required}
     return getattr(sphkern, command)(*PYTHON_POSITIONALS.get(command, positionals), *[given[k] for k in required],
                                      **keywords)
