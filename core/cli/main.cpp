@@ -1,6 +1,7 @@
 // sphkern: accuracy of SPH smoothing kernels on regular particle lattices.
 #include "cli/command.hpp"
 #include "cli/usage_hints.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "support/error.hpp"
 #include "support/io/provenance.hpp"
 #include "support/io/results_output.hpp"
@@ -25,7 +26,7 @@ namespace {
 int fail(const std::string& message, ExitCode code)
 {
     std::fflush(results_file());
-    std::cerr << "sphkern: error: " << one_line(message) << std::endl;
+    std::cerr << "sphkern: error: " << one_line(spelled_message(FrontEnd::command_line, message)) << std::endl;
     return static_cast<int>(code);
 }
 

@@ -5,6 +5,7 @@
 #include "particles/sources/particle_source.hpp"
 #include "requests/particles_report.hpp"
 #include "requests/particles_series.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "study/series_figure.hpp"
 #include "support/error.hpp"
 #include "support/io/atomic_file.hpp"
@@ -137,8 +138,9 @@ int measure_series(const ParticlesOptions& o, const Kernel& kernel)
         } catch (const Error& e) {
             // A bad snapshot may be skipped; the settings, the outputs and an interrupt stop every one.
             if (!o.keep_going || e.code() != ExitCode::input) throw snapshot_error(e, file, i, files.size());
-            spdlog::warn("{}", snapshot_error(e, file, i, files.size()).what());
-            failed.push_back({{"file", file}, {"error", e.what()}});
+            spdlog::warn("{}",
+                         spelled_message(FrontEnd::command_line, snapshot_error(e, file, i, files.size()).what()));
+            failed.push_back({{"file", file}, {"error", spelled_message(FrontEnd::command_line, e.what())}});
         }
         progress.step(file);
     }

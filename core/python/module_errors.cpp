@@ -1,5 +1,6 @@
 #include "module_errors.hpp"
 
+#include "requests/settings/command_settings.hpp"
 #include "support/error.hpp"
 
 namespace py = pybind11;
@@ -85,7 +86,7 @@ void bind_errors(py::module_& m)
         try {
             if (p) std::rethrow_exception(p);
         } catch (const Error& e) {
-            const std::string message = one_line(e.what());
+            const std::string message = one_line(spelled_message(FrontEnd::python, e.what()));
             if (e.code() == ExitCode::interrupted) PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
             else set_python_error(class_of(e), message, e.code());
         }

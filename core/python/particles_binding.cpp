@@ -14,6 +14,7 @@
 #include "requests/particles_report.hpp"
 #include "requests/particles_request.hpp"
 #include "requests/particles_series.hpp"
+#include "requests/settings/command_settings.hpp"
 #include "study/series_figure.hpp"
 #include "support/error.hpp"
 #include "support/process/interruption.hpp"
@@ -349,7 +350,8 @@ py::list measure_series(const Kernel& kernel, const PositionsOrFiles& files, con
             snapshots.push_back(std::move(snapshot)), documents.push_back(std::move(one));
         } catch (const Error& e) {
             if (!keep_going || e.code() != ExitCode::input) throw;
-            const std::string message = fmt::format("skipped {}: {}", path, e.what());
+            const std::string message =
+                fmt::format("skipped {}: {}", path, spelled_message(FrontEnd::python, e.what()));
             if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
         }
     }

@@ -35,7 +35,6 @@
 #include "support/error.hpp"
 #include "support/io/install_paths.hpp"
 #include "support/process/interruption.hpp"
-#include "support/text/setting_names.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <fmt/format.h>
@@ -556,7 +555,6 @@ PYBIND11_MODULE(sphkern, m)
     const auto folder = module_folder();
     set_home(folder.parent_path(), (folder / SPHKERN_PYTHON_TO_PREFIX).lexically_normal());
     bind_errors(m);
-    name_settings_for(FrontEnd::python); // hints from below requests/ name Python's arguments
     // Every call runs with sphkern's signal handlers, Python's own before and after it.
     const Guard guard;
     bind_particles(m, &kernel_of, &to_python);

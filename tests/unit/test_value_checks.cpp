@@ -1,5 +1,6 @@
 // The one set of input validators: each refusal names its source and keeps its exit code.
 #include "helpers.hpp"
+#include "support/text/setting_names.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <doctest/doctest.h>
@@ -83,4 +84,15 @@ TEST_CASE("value checks: motif sites")
           "site -1 does not exist; lattice honeycomb has sites 0 to 1");
     auto located = refusal([] { at_source(ValueSource::json("s.json", "/lattices/0"), [] { fail_input("bad"); }); });
     CHECK(located.first == "s.json: /lattices/0: bad");
+}
+
+TEST_CASE("a setting named below the front ends is spelled by the one that shows the message")
+{
+    const std::string message = "a smaller " + setting_named("max_move") + " or more " + setting_named("dt");
+    const auto option = [](std::string_view key) { return value_named(FrontEnd::command_line, key).name; };
+    CHECK(spell_settings(message, option) == "a smaller --max-move or more --dt");
+    CHECK(spell_settings(message, [](std::string_view key) { return std::string(key); }) ==
+          "a smaller max_move or more dt");
+    // Braces that hold no key are the message's own (a file name, a JSON text).
+    CHECK(spell_settings("f{{A b}}.csv {{}} {{x", option) == "f{{A b}}.csv {{}} {{x");
 }

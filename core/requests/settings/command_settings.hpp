@@ -4,6 +4,7 @@
 
 #include "requests/settings/setting.hpp"
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -31,5 +32,10 @@ SettingTable studies_settings();
 const std::vector<SettingTable>& command_settings();
 // The table of one command; std::logic_error for a command without one.
 const SettingTable& settings_of(std::string_view command);
+
+// A message with the settings that layers below requests/ named (setting_named) spelled as
+// the front end spells them: the option or keyword a table gives the key ("--ap", "a_p"),
+// else the front end's plain spelling of it ("--memory-limit", "memory_limit").
+std::string spelled_message(FrontEnd front_end, std::string_view message);
 
 } // namespace sphkern

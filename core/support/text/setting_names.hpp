@@ -1,18 +1,19 @@
-// How the running front end spells a setting in the hints that the layers below requests/
-// give ("a smaller --dt" on the command line, "a smaller dt" in Python), from its key in
-// Python's spelling. The front end says which it is once, before any work; the command
-// line is the default.
+// A setting named in a message by a layer below requests/, which knows no front end ("a
+// smaller dt"): a mark of its key (Python's spelling) that the front end showing the message
+// spells its own way, "--dt" on the command line, "dt" in Python (spell_settings). No front
+// end is remembered here: each spells the messages it shows.
 #pragma once
 
-#include "support/text/value_checks.hpp"
-
+#include <functional>
 #include <string>
 #include <string_view>
 
 namespace sphkern {
 
-void name_settings_for(FrontEnd front_end);
-
+// "{{max_move}}": the mark of a setting in a message.
 std::string setting_named(std::string_view key);
+
+// The message with each mark replaced by spell(key).
+std::string spell_settings(std::string_view message, const std::function<std::string(std::string_view)>& spell);
 
 } // namespace sphkern
