@@ -385,6 +385,9 @@ void bind_roots(py::module_& m, const Guard& guard)
 
 // The assess request of the keywords: k, or a code and its value; the window, the tolerance
 // and the stability's settings.
+// Whether an assess keyword holds its declared default.
+bool is_default(const char* key, double value) { return value == std::stod(settings_of("assess")[key].fallback); }
+
 AssessRequest assess_request_of(std::optional<double> k, const std::optional<std::string>& code,
                                 std::optional<double> value, double kmin, double kmax, double epsilon, double gamma,
                                 std::optional<double> coef_sound, double horizon, int threads, std::size_t glass)
@@ -397,8 +400,6 @@ AssessRequest assess_request_of(std::optional<double> k, const std::optional<std
     if (code) request.setting.code = CodeSetting{*code, *value};
     request.window_min = kmin, request.window_max = kmax;
     request.epsilon = epsilon, request.gamma = gamma, request.horizon = horizon, request.coef_sound = coef_sound;
-    // Checked here for a particle file too, which check_assess_request does not see.
-    check_setting(settings_of("assess")["threads"], threads, ValueSource::argument("threads"));
     request.threads = threads, request.glass = glass;
     return request;
 }
@@ -446,10 +447,11 @@ void bind_assess(py::module_& m, const Guard& guard)
                 py::str(py::module_::import("os").attr("fspath")(lattice_or_file)).cast<std::string>();
             if (source_kind(lattice_spec) == SourceKind::file) {
                 // The lattice's keywords mean nothing on a particle set: said, not ignored.
-                const bool lattice_keywords = k || coef_sound || glass || !gravity.is_none() || !shells.is_none() ||
-                                              continue_past_support || kmin != 0.75 || kmax != 2.0 ||
-                                              gamma != 5.0 / 3.0 || horizon != default_horizon || site != 0 ||
-                                              !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == "voronoi");
+                const bool lattice_keywords =
+                    k || coef_sound || glass || !gravity.is_none() || !shells.is_none() || continue_past_support ||
+                    !is_default("kmin", kmin) || !is_default("kmax", kmax) || !is_default("gamma", gamma) ||
+                    !is_default("horizon", horizon) || site != 0 ||
+                    !(py::isinstance<py::str>(a_p) && a_p.cast<std::string>() == settings_of("assess")["a_p"].fallback);
                 if (lattice_keywords)
                     fail_input(fmt::format(
                         "k, kmin, kmax, gamma, coef_sound, horizon, a_p, gravity, site, shells and glass are for a "
@@ -464,9 +466,9 @@ void bind_assess(py::module_& m, const Guard& guard)
                     if (!range->is_none()) f.ranges[name] = range->cast<std::vector<double>>();
                 return assess_particle_file(kernel_of(kernel_spec, params), lattice_spec, f, &to_python);
             }
-            if (!box.is_none() || array || neighbours_by || bias_correction || steps != 10 || !eta_range.is_none() ||
-                !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() || !coefh_range.is_none() ||
-                !particle_radius_range.is_none())
+            if (!box.is_none() || array || neighbours_by || bias_correction || !is_default("steps", steps) ||
+                !eta_range.is_none() || !hfact_range.is_none() || !nngb_range.is_none() || !hdx_range.is_none() ||
+                !coefh_range.is_none() || !particle_radius_range.is_none())
                 fail_input(fmt::format("box, array, neighbours_by, bias_correction, steps and the parameter ranges "
                                        "are for a particle file; {} is a lattice, expected none",
                                        lattice_spec));

@@ -169,6 +169,8 @@ def test_a_table_names_each_setting_once_and_every_command_has_one():
         assert len(keys) == len(set(keys)), command
     with pytest.raises(sphkern.UnknownName, match=r'unknown command "root" \(did you mean "roots"\?\)'):
         sphkern.settings("root")
+    with pytest.raises(TypeError):
+        sphkern.settings(3)
 
 
 def test_an_old_name_is_hidden_and_still_read():

@@ -137,17 +137,4 @@ const Setting& SettingTable::operator[](std::string_view key) const
     throw std::logic_error("command " + command_ + " declares no setting " + std::string(key));
 }
 
-SettingTable SettingTable::with(std::vector<Setting> replaced) const
-{
-    SettingTable copy = *this;
-    for (auto& r : replaced) {
-        auto it = std::find_if(copy.settings_.begin(), copy.settings_.end(),
-                               [&](const Setting& s) { return s.key == r.key; });
-        if (it == copy.settings_.end())
-            throw std::logic_error("command " + command_ + " declares no setting " + r.key + " to replace");
-        *it = std::move(r);
-    }
-    return copy;
-}
-
 } // namespace sphkern

@@ -1,6 +1,6 @@
 // One setting a command takes, declared once: its key, type, default, one line of help and
 // how each front end spells it. The command line's options and Python's keywords are made
-// from it (cli/options, python/module_support); a test holds the docstrings to it.
+// from it (cli/options, python/setting_keywords); a test holds the docstrings to it.
 #pragma once
 
 #include "support/text/value_checks.hpp"
@@ -29,7 +29,7 @@ struct Setting {
     std::string key; // its name in a request's words, Python's spelling ("max_move")
     SettingType type = SettingType::number;
     std::string fallback;         // the default as text ("0.75", "voronoi", "0"); empty: none (absent, None)
-    std::string help;             // one line: the option's help, the docstring entry's first words
+    std::string help;             // one line: the option's help, and what sphkern.settings lists
     std::string option;           // the command line's "--max-move" or a positional's "kernel"; empty: none
     std::string keyword;          // Python's keyword; empty: none
     bool positional = false;      // before the options (kernel, lattice)
@@ -72,8 +72,6 @@ public:
     const std::vector<Setting>& settings() const { return settings_; }
     // The setting of that key; std::logic_error for a key the command does not declare.
     const Setting& operator[](std::string_view key) const;
-    // A copy with the settings of these keys replaced (another help or default for one command).
-    SettingTable with(std::vector<Setting> replaced) const;
 
 private:
     std::string command_;

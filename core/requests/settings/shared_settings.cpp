@@ -33,19 +33,31 @@ Setting code_choice()
                             fmt::join(names, ", ")));
 }
 
+namespace {
+
+// The first code of each parameter (gadget2 and gadget4 share nngb), in the table's order.
+std::vector<const CodeProfile*> one_per_parameter()
+{
+    std::vector<const CodeProfile*> first;
+    for (const auto& p : code_profiles())
+        if (std::none_of(first.begin(), first.end(), [&](const CodeProfile* q) { return q->parameter == p.parameter; }))
+            first.push_back(&p);
+    return first;
+}
+
+} // namespace
+
 std::vector<Setting> code_parameters(const std::vector<std::string>& skip)
 {
     std::vector<Setting> settings;
-    std::vector<std::string> done = skip;
-    for (const auto& p : code_profiles()) {
-        if (std::find(done.begin(), done.end(), p.parameter) != done.end()) continue;
-        done.push_back(p.parameter);
+    for (const CodeProfile* p : one_per_parameter()) {
+        if (std::find(skip.begin(), skip.end(), p->parameter) != skip.end()) continue;
         // The codes that share a parameter are named together.
         std::vector<std::string> codes;
         for (const auto& q : code_profiles())
-            if (q.parameter == p.parameter) codes.push_back(q.name);
+            if (q.parameter == p->parameter) codes.push_back(q.name);
         settings.push_back(
-            number(p.parameter, "", fmt::format("With --code {}: {}", fmt::join(codes, " or "), p.parameter_help))
+            number(p->parameter, "", fmt::format("With --code {}: {}", fmt::join(codes, " or "), p->parameter_help))
                 .command_line_only());
     }
     return settings;
@@ -54,19 +66,19 @@ std::vector<Setting> code_parameters(const std::vector<std::string>& skip)
 std::vector<Setting> parameter_ranges()
 {
     std::vector<Setting> settings;
-    for (const auto& p : code_profiles())
-        if (std::none_of(settings.begin(), settings.end(),
-                         [&](const Setting& s) { return s.key == p.parameter + "_range"; }))
-            settings.push_back(
-                list(p.parameter + "_range",
-                     fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs",
-                                 p.parameter)));
+    for (const CodeProfile* p : one_per_parameter())
+        settings.push_back(
+            list(p->parameter + "_range",
+                 fmt::format("Particle file: sweep {} over [A, B] (--steps), and find the value the set needs",
+                             p->parameter)));
     return settings;
 }
 
 Setting code_value()
 {
-    return number("value", "", "The code's parameter (eta, hfact, nngb, hdx, coefh or particle_radius)").python_only();
+    std::vector<std::string> parameters;
+    for (const CodeProfile* p : one_per_parameter()) parameters.push_back(p->parameter);
+    return number("value", "", fmt::format("The code's parameter ({})", fmt::join(parameters, ", "))).python_only();
 }
 
 std::vector<Setting> source_settings()
