@@ -14,6 +14,9 @@ struct SweepParameters {
     double k = 1, a_p = 1;
     GradientForm form = GradientForm::sum;
     double reach = 0; // the radius searched: the grid's (search_reach)
+    // Each pair once (symmetric_pair_pass), its terms added to both particles; else every
+    // particle gathers its own (pair_pass): the same sums to rounding.
+    bool each_pair_once = true;
 };
 
 // One sweep over every particle of the grid (the block as a particle set, in the block's

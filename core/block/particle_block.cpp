@@ -91,7 +91,7 @@ BlockResult evaluate_block(const Kernel& kernel, const Lattice& lattice, const B
 
     // Sum and difference forms need no densities: one sweep computes each pair's distance
     // once and both sums from it. Monaghan's form needs every density first.
-    const SweepParameters parameters{dim, options.k, options.a_p, options.form, reach};
+    const SweepParameters parameters{dim, options.k, options.a_p, options.form, reach, options.each_pair_once};
     result.timings.fused = options.form != GradientForm::monaghan;
     spdlog::debug("evaluating a block of {} particles on {} threads", count, result.threads);
     auto t0 = Clock::now();

@@ -26,6 +26,9 @@ struct BlockOptions {
     double a_p = 1.0;
     GradientForm form = GradientForm::sum;
     int threads = 0; // 0: every core
+    // Each pair evaluated once for both particles; false: every particle gathers its own (the
+    // same sums to rounding; tests compare the two).
+    bool each_pair_once = true;
 };
 
 struct BlockTimings {

@@ -742,6 +742,68 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
     use_compress_path(widest_compress_path());
 }
 
+TEST_CASE("each pair once: a particle keeps exactly its neighbours whose key is above its own, on every path")
+{
+    for (int path = 0; path <= static_cast<int>(widest_compress_path()); ++path)
+        for (int dim : {2, 3})
+            for (bool periodic : {true, false}) {
+                use_compress_path(static_cast<CompressPath>(path));
+                CAPTURE(path);
+                CAPTURE(dim);
+                CAPTURE(periodic);
+                const auto set = random_set(dim, dim == 3 ? 2000 : 1000, periodic, 41 + dim);
+                const double reach = dim == 3 ? 0.18 : 0.12;
+                const NeighbourGrid grid(set, reach);
+                const PairOrder order(grid);
+                std::vector<double> ids(grid.points());
+                std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+                ClusterCandidates cluster;
+                Neighbours nb;
+                std::size_t wrong = 0, taken = 0, ghosts = 0;
+                for (std::size_t c = 0; c < grid.clusters(); ++c) {
+                    gather_cluster(grid, c, {nullptr, reach}, ids.data(), nullptr, cluster, &order);
+                    for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
+                        if (!grid.visited(p)) continue;
+                        gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
+                        std::vector<int> kept(grid.points(), 0);
+                        for (std::size_t j = 0; j < nb.count; ++j) {
+                            const auto point = static_cast<std::size_t>(nb.a[j]);
+                            kept[point] += 1;
+                            // The slot names the neighbour's place among the cluster's candidates.
+                            wrong += cluster.key[static_cast<std::size_t>(nb.slot[j])] != order.keys[point];
+                        }
+                        for (std::size_t j = 0; j < grid.points(); ++j) {
+                            const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
+                                         dz = grid.z()[j] - grid.z()[p];
+                            const bool near = j != p && dx * dx + dy * dy + dz * dz <= reach * reach;
+                            const bool later = grid.visited(j) ? j > p : true;
+                            wrong += kept[j] != (near && later ? 1 : 0);
+                            taken += near && later && grid.visited(j), ghosts += near && !grid.visited(j);
+                        }
+                    }
+                }
+                CHECK(wrong == 0);
+                // Every pair of particles within reach, by brute force over the set (and its
+                // images in a periodic box), taken once; a pair through a ghost from both sides.
+                std::size_t pairs = 0, across = 0;
+                for (std::size_t i = 0; i < set.size(); ++i)
+                    for (std::size_t j = i + 1; j < set.size(); ++j) {
+                        Eigen::Vector3d d = set.position(j) - set.position(i);
+                        bool wrapped = false;
+                        for (int axis = 0; periodic && axis < dim; ++axis) { // the nearest image (a rectangular box)
+                            const double side = set.box->edges(axis, axis), shift = side * std::round(d[axis] / side);
+                            d[axis] -= shift, wrapped = wrapped || shift != 0;
+                        }
+                        if (d.norm() > reach) continue;
+                        pairs += !wrapped, across += wrapped;
+                    }
+                CHECK(taken == pairs);
+                CHECK(ghosts == 2 * across);
+                CHECK(pairs > 5 * set.size());
+            }
+    use_compress_path(widest_compress_path());
+}
+
 TEST_CASE("a long thin set gets no more bins than four per point, and every neighbour is still found")
 {
     // A diagonal line of points, 2000 reaches long: the per-axis bin counts alone would multiply

@@ -123,6 +123,30 @@ TEST_CASE("the relaxation sums agree with a brute-force sum over periodic images
         }
 }
 
+TEST_CASE("the relaxation sums, each pair once, are the same bits on 1, 2 and 7 threads, 2D and 3D")
+{
+    const Kernel kernel = shipped_kernel("wendland_c2");
+    for (int dim : {2, 3}) {
+        CAPTURE(dim);
+        // Large enough for many tiles of each colour (symmetric_pair_pass).
+        const ParticleSet set = poisson_set(20000, dim, 1.0, 11);
+        const double l = std::pow(1.0 / static_cast<double>(set.size()), 1.0 / dim);
+        ForceModel m = model_for(set, 1.3 * l, 1.3);
+        m.threads = 1;
+        ForceField one;
+        compute_forces(kernel, set, m, one);
+        for (int threads : {2, 7}) {
+            m.threads = threads;
+            ForceField many;
+            compute_forces(kernel, set, m, many);
+            CHECK(many.density == one.density);
+            CHECK(many.gx == one.gx);
+            CHECK(many.gz == one.gz);
+            CHECK(many.ay == one.ay);
+        }
+    }
+}
+
 TEST_CASE("the pressure force on a lattice plane wave is -omega^2 times the displacement of section 10")
 {
     // fcc with (111) layers in the xy plane: a wave vector along z is a threefold axis, where

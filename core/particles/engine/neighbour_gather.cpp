@@ -23,27 +23,31 @@ void Neighbours::reserve(std::size_t n)
 {
     if (dx.size() >= n) return;
     const std::size_t size = std::max(n, 2 * dx.size());
-    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw, &inv_r}) v->resize(size);
+    for (auto* v : {&r2, &dx, &dy, &dz, &r, &q, &a, &b, &w, &dw, &inv_r, &slot}) v->resize(size);
     index.resize(size);
 }
 
 namespace {
 
-// The points of one run with 0 < r2 <= reach2, appended at `m` of every output array;
-// `zeros` counts the points at r2 = 0 (the point itself, or a duplicate).
+// The points of one run with 0 < r2 <= reach2 (and, each pair once, key > min_key), appended
+// at `m` of every output array; `zeros` counts the points at r2 = 0 (the point itself, or a
+// duplicate; each pair once, those with key > min_key: duplicates only).
 struct RunInput {
     const double *x, *y, *z, *a, *b;
     std::size_t n;
     double xi, yi, zi, reach2;
+    const double* key = nullptr;
+    double min_key = 0;
 };
 struct Compacted {
     double *dx, *dy, *dz, *r2, *a, *b;
     std::uint32_t* index; // room for the AVX2 pass's indices of the points kept
+    double* slot;         // each pair once: the place of each point kept among the run's
 };
 
 // Branch-free: every point is written, and the count moves on only for those inside.
 // Without b (with_b false), the b arrays are not touched; without r2 (with_r2 false), r2 is not.
-template <bool with_b, bool with_r2>
+template <bool with_b, bool with_r2, bool half>
 std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t m, std::size_t& zeros)
 {
     // Local copies: the compiler need not reload them after every store.
@@ -53,6 +57,8 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
     const double* __restrict a = in.a, * __restrict b = in.b;
     double* __restrict dx = out.dx, * __restrict dy = out.dy, * __restrict dz = out.dz;
     double* __restrict r2_out = out.r2, * __restrict va = out.a, * __restrict vb = out.b;
+    const double* __restrict key = in.key;
+    double* __restrict slot = out.slot;
     std::size_t at_zero = 0;
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = x[c] - in.xi, ey = y[c] - in.yi, ez = z[c] - in.zi;
@@ -61,8 +67,10 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
         if (a) va[m] = a[c];
         if constexpr (with_r2) r2_out[m] = r2;
         if constexpr (with_b) vb[m] = b[c];
-        at_zero += r2 == 0;
-        m += r2 <= in.reach2 && r2 > 0;
+        bool later = true;
+        if constexpr (half) slot[m] = static_cast<double>(c), later = key[c] > in.min_key;
+        at_zero += r2 == 0 && later;
+        m += r2 <= in.reach2 && r2 > 0 && later;
     }
     zeros += at_zero;
     return m;
@@ -71,7 +79,7 @@ std::size_t append_within_scalar(const RunInput& in, Compacted out, std::size_t 
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
 // Eight points at a time: compress in registers, then a full store (a compressing store to
 // memory is slow on some processors); the outputs have room for eight more.
-template <bool with_b, bool with_r2>
+template <bool with_b, bool with_r2, bool half>
 __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInput& in, Compacted out, std::size_t m,
                                                                     std::size_t& zeros)
 {
@@ -79,10 +87,13 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
     double *dx = out.dx, *dy = out.dy, *dz = out.dz, *r2_out = out.r2, *va = out.a, *vb = out.b;
     const std::size_t n = in.n;
     const __m512d xi = _mm512_set1_pd(in.xi), yi = _mm512_set1_pd(in.yi), zi = _mm512_set1_pd(in.zi);
-    const __m512d reach2 = _mm512_set1_pd(in.reach2), zero = _mm512_setzero_pd();
+    const __m512d reach2 = _mm512_set1_pd(in.reach2), zero = _mm512_setzero_pd(), min_key = _mm512_set1_pd(in.min_key);
     unsigned at_zero = 0;
     for (std::size_t c = 0; c < n; c += 8) {
-        const __mmask8 live = n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - c)) - 1);
+        __mmask8 live = n - c >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - c)) - 1);
+        [[maybe_unused]] __m512d keys = zero;
+        if constexpr (half)
+            keys = _mm512_maskz_loadu_pd(live, in.key + c), live &= _mm512_cmp_pd_mask(keys, min_key, _CMP_GT_OQ);
         const __m512d ex = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, x + c), xi);
         const __m512d ey = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, y + c), yi);
         const __m512d ez = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, z + c), zi);
@@ -98,6 +109,11 @@ __attribute__((target("avx512f"))) std::size_t append_within_avx512(const RunInp
         if (a) _mm512_storeu_pd(va + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, a + c)));
         if constexpr (with_b)
             _mm512_storeu_pd(vb + m, _mm512_maskz_compress_pd(inside, _mm512_maskz_loadu_pd(live, b + c)));
+        if constexpr (half) {
+            const __m512d slots =
+                _mm512_add_pd(_mm512_set1_pd(static_cast<double>(c)), _mm512_setr_pd(0, 1, 2, 3, 4, 5, 6, 7));
+            _mm512_storeu_pd(out.slot + m, _mm512_maskz_compress_pd(inside, slots));
+        }
         m += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(inside)));
     }
     zeros += at_zero;
@@ -151,16 +167,22 @@ __attribute__((target("avx2"))) inline void near_and_zero(const double* x, const
     zero = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_setzero_pd(), _CMP_EQ_OQ)));
 }
 
+// The mask of four keys above min_key.
+__attribute__((target("avx2"))) inline unsigned keys_above(const double* key, __m256d min_key)
+{
+    return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(key), min_key, _CMP_GT_OQ)));
+}
+
 // As append_within_avx512, in two steps: the indices of the points inside, eight candidates
 // at a time (a 32-bit permutation per mask: AVX2 moves eight indices as cheaply as four
 // doubles), then x_j - x_i and the values of just those points. The inputs have room for
 // eight more points than in.n (a cluster's candidates), the outputs too.
-template <bool with_b, bool with_r2>
+template <bool with_b, bool with_r2, bool half>
 __attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& in, Compacted out, std::size_t m,
                                                                std::size_t& zeros)
 {
     const __m256d xi = _mm256_set1_pd(in.xi), yi = _mm256_set1_pd(in.yi), zi = _mm256_set1_pd(in.zi);
-    const __m256d reach2 = _mm256_set1_pd(in.reach2);
+    const __m256d reach2 = _mm256_set1_pd(in.reach2), min_key = _mm256_set1_pd(in.min_key);
     std::uint32_t* index = out.index;
     std::size_t kept = 0;
     unsigned at_zero = 0;
@@ -170,7 +192,8 @@ __attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& i
         unsigned near_lo, zero_lo, near_hi, zero_hi;
         near_and_zero(in.x + c, in.y + c, in.z + c, xi, yi, zi, reach2, near_lo, zero_lo);
         near_and_zero(in.x + c + 4, in.y + c + 4, in.z + c + 4, xi, yi, zi, reach2, near_hi, zero_hi);
-        const unsigned live = in.n - c >= 8 ? 0xffu : (1u << (in.n - c)) - 1;
+        unsigned live = in.n - c >= 8 ? 0xffu : (1u << (in.n - c)) - 1;
+        if constexpr (half) live &= keys_above(in.key + c, min_key) | keys_above(in.key + c + 4, min_key) << 4;
         const unsigned zero = (zero_lo | zero_hi << 4) & live, inside = (near_lo | near_hi << 4) & live & ~zero;
         at_zero += static_cast<unsigned>(std::popcount(zero));
         const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(index_compress_table.row[inside]));
@@ -192,6 +215,7 @@ __attribute__((target("avx2"))) std::size_t append_within_avx2(const RunInput& i
         if constexpr (with_r2) r2[j] = ex * ex + ey * ey + ez * ez;
         if (a) va[j] = a[k];
         if constexpr (with_b) vb[j] = b[k];
+        if constexpr (half) out.slot[m + j] = static_cast<double>(k);
     }
     return m + kept;
 }
@@ -206,18 +230,26 @@ CompressPath& chosen_path()
     return path;
 }
 
-template <bool with_b, bool with_r2>
+template <bool with_b, bool with_r2, bool half>
 AppendWithin append_within_for(CompressPath path)
 {
     switch (path) {
 #ifdef SPHKERN_HAVE_AVX512_COMPRESS
-    case CompressPath::avx512: return append_within_avx512<with_b, with_r2>;
+    case CompressPath::avx512: return append_within_avx512<with_b, with_r2, half>;
 #endif
 #ifdef SPHKERN_HAVE_AVX2_COMPRESS
-    case CompressPath::avx2: return append_within_avx2<with_b, with_r2>;
+    case CompressPath::avx2: return append_within_avx2<with_b, with_r2, half>;
 #endif
-    default: return append_within_scalar<with_b, with_r2>;
+    default: return append_within_scalar<with_b, with_r2, half>;
     }
+}
+
+template <bool half>
+AppendWithin append_within_for(CompressPath path, bool with_b, bool with_r2)
+{
+    return with_b
+               ? (with_r2 ? append_within_for<true, true, half>(path) : append_within_for<true, false, half>(path))
+               : (with_r2 ? append_within_for<false, true, half>(path) : append_within_for<false, false, half>(path));
 }
 
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
@@ -270,7 +302,7 @@ void ClusterCandidates::reserve(std::size_t n)
 {
     if (x.size() >= n) return;
     const std::size_t size = std::max(n, 2 * x.size());
-    for (auto* v : {&x, &y, &z, &a, &b}) v->resize(size);
+    for (auto* v : {&x, &y, &z, &a, &b, &key}) v->resize(size);
 }
 
 namespace {
@@ -282,7 +314,7 @@ std::size_t append_near_box_scalar(const RunInput& in, const double* lo, const d
     const double* __restrict x = in.x, * __restrict y = in.y, * __restrict z = in.z;
     const double* __restrict a = in.a, * __restrict b = in.b;
     double* __restrict ox = out.x.data(), * __restrict oy = out.y.data(), * __restrict oz = out.z.data();
-    double* __restrict oa = out.a.data(), * __restrict ob = out.b.data();
+    double* __restrict oa = out.a.data(), * __restrict ob = out.b.data(), * __restrict okey = out.key.data();
     for (std::size_t c = 0; c < in.n; ++c) {
         const double ex = std::max({0.0, lo[0] - x[c], x[c] - hi[0]});
         const double ey = std::max({0.0, lo[1] - y[c], y[c] - hi[1]});
@@ -290,7 +322,8 @@ std::size_t append_near_box_scalar(const RunInput& in, const double* lo, const d
         ox[m] = x[c], oy[m] = y[c], oz[m] = z[c];
         if (a) oa[m] = a[c];
         if (b) ob[m] = b[c];
-        m += ex * ex + ey * ey + ez * ez <= in.reach2;
+        if (in.key) okey[m] = in.key[c];
+        m += ex * ex + ey * ey + ez * ez <= in.reach2 && (!in.key || in.key[c] > in.min_key);
     }
     return m;
 }
@@ -322,7 +355,12 @@ __attribute__((target("avx512f"))) std::size_t append_near_box_avx512(const RunI
             _mm512_maskz_max_pd(all, _mm512_maskz_max_pd(all, zero, _mm512_sub_pd(lz, pz)), _mm512_sub_pd(pz, hz));
         const __m512d d2 =
             _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey)), _mm512_mul_pd(ez, ez));
-        const __mmask8 inside = _mm512_mask_cmp_pd_mask(live, d2, reach2, _CMP_LE_OQ);
+        __mmask8 inside = _mm512_mask_cmp_pd_mask(live, d2, reach2, _CMP_LE_OQ);
+        if (in.key) {
+            const __m512d keys = _mm512_maskz_loadu_pd(live, in.key + c);
+            inside &= _mm512_cmp_pd_mask(keys, _mm512_set1_pd(in.min_key), _CMP_GT_OQ);
+            _mm512_storeu_pd(out.key.data() + m, _mm512_maskz_compress_pd(inside, keys));
+        }
         _mm512_storeu_pd(ox + m, _mm512_maskz_compress_pd(inside, px));
         _mm512_storeu_pd(oy + m, _mm512_maskz_compress_pd(inside, py));
         _mm512_storeu_pd(oz + m, _mm512_maskz_compress_pd(inside, pz));
@@ -353,9 +391,16 @@ __attribute__((target("avx2"))) std::size_t append_near_box_avx2(const RunInput&
         const __m256d ez = _mm256_max_pd(_mm256_max_pd(zero, _mm256_sub_pd(lz, pz)), _mm256_sub_pd(pz, hz));
         const __m256d d2 =
             _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
-        const unsigned inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live))) &
-                                static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, reach2, _CMP_LE_OQ)));
+        unsigned inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(live))) &
+                          static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, reach2, _CMP_LE_OQ)));
+        __m256d keys = _mm256_setzero_pd();
+        if (in.key) {
+            keys = _mm256_maskload_pd(in.key + c, live);
+            inside &=
+                static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(keys, _mm256_set1_pd(in.min_key), _CMP_GT_OQ)));
+        }
         const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(compress_table.row[inside]));
+        if (in.key) _mm256_storeu_pd(out.key.data() + m, compress4(keys, order));
         _mm256_storeu_pd(ox + m, compress4(px, order));
         _mm256_storeu_pd(oy + m, compress4(py, order));
         _mm256_storeu_pd(oz + m, compress4(pz, order));
@@ -385,28 +430,37 @@ AppendNearBox append_near_box_for(CompressPath path)
 } // namespace
 
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach, const double* a, const double* b,
-                    ClusterCandidates& out)
+                    ClusterCandidates& out, const PairOrder* order)
 {
     const AppendNearBox append_near_box = append_near_box_for(chosen_path());
-    out.count = 0, out.reach = 0, out.with_a = a != nullptr, out.with_b = b != nullptr;
+    out.count = 0, out.reach = 0, out.with_a = a != nullptr, out.with_b = b != nullptr, out.with_key = order != nullptr;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
+    std::size_t first = 0; // the cluster's first visited point
     for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
         if (!grid.visited(p)) continue;
         const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
         for (int d = 0; d < 3; ++d)
             lo[d] = any ? std::min(lo[d], at[d]) : at[d], hi[d] = any ? std::max(hi[d], at[d]) : at[d];
         out.reach = std::max(out.reach, reach[p]);
+        if (!any) first = p;
         any = true;
     }
     if (!any) return;
     // A hair wider than any particle's reach2: the box distance rounds no larger than r.
     RunInput in{nullptr, nullptr, nullptr, nullptr, nullptr, 0, 0, 0, 0, out.reach * out.reach * (1 + 1e-12)};
+    // Each pair once: no particle of the cluster takes a candidate whose key is not above its own.
+    in.min_key = static_cast<double>(first);
     std::size_t m = 0;
     grid.for_each_run_near_box(lo, hi, out.reach, [&](std::size_t begin, std::size_t end) {
+        if (order) { // the visited points before the cluster's first take their pairs from their side
+            const std::size_t cut = std::min(end, first);
+            if (begin < cut && order->unpaired_before[cut] == order->unpaired_before[begin]) begin = cut;
+            if (begin == end) return;
+        }
         in.n = end - begin;
         in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a ? a + begin : nullptr;
-        in.b = b ? b + begin : nullptr;
+        in.b = b ? b + begin : nullptr, in.key = order ? order->keys.data() + begin : nullptr;
         out.reserve(m + in.n + neighbour_lanes);
         m = append_near_box(in, lo, hi, out, m);
     });
@@ -417,23 +471,36 @@ void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& clu
                          const std::string& set_name, Neighbours& nb, bool with_r2)
 {
     const CompressPath path = chosen_path();
-    const AppendWithin append =
-        cluster.with_b ? (with_r2 ? append_within_for<true, true>(path) : append_within_for<true, false>(path))
-                       : (with_r2 ? append_within_for<false, true>(path) : append_within_for<false, false>(path));
-    const RunInput in{cluster.x.data(), cluster.y.data(),
-                      cluster.z.data(), cluster.with_a ? cluster.a.data() : nullptr,
-                      cluster.b.data(), cluster.count,
-                      grid.x()[p],      grid.y()[p],
-                      grid.z()[p],      reach2};
+    const bool half = cluster.with_key;
+    const AppendWithin append = half ? append_within_for<true>(path, cluster.with_b, with_r2)
+                                     : append_within_for<false>(path, cluster.with_b, with_r2);
+    const RunInput in{cluster.x.data(),   cluster.y.data(),
+                      cluster.z.data(),   cluster.with_a ? cluster.a.data() : nullptr,
+                      cluster.b.data(),   cluster.count,
+                      grid.x()[p],        grid.y()[p],
+                      grid.z()[p],        reach2,
+                      cluster.key.data(), static_cast<double>(p)};
     nb.reserve(cluster.count + neighbour_lanes);
     std::size_t zeros = 0;
-    const std::size_t m =
-        append(in, {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(), nb.index.data()},
-               0, zeros);
-    require_alone(grid, p, zeros, set_name);
+    const std::size_t m = append(in,
+                                 {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(),
+                                  nb.index.data(), nb.slot.data()},
+                                 0, zeros);
+    // Each pair once, p itself is not among the candidates kept, and a point at r = 0 is a duplicate.
+    if (half && zeros > 0) fail_duplicate(grid, p, set_name);
+    if (!half) require_alone(grid, p, zeros, set_name);
     for (std::size_t j = m; j < m + neighbour_lanes; ++j)
-        nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2;
+        nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r2[j] = reach2,
+        nb.slot[j] = static_cast<double>(cluster.count);
     nb.count = m;
+}
+
+PairOrder::PairOrder(const NeighbourGrid& grid) : keys(grid.points()), unpaired_before(grid.points() + 1)
+{
+    for (std::size_t p = 0; p < keys.size(); ++p) {
+        keys[p] = grid.visited(p) ? static_cast<double>(p) : unpaired_key(grid);
+        unpaired_before[p + 1] = unpaired_before[p] + (grid.visited(p) ? 0 : 1);
+    }
 }
 
 double search_reach(double support_radius) { return support_radius * std::sqrt(1 + 2 * support_edge); }

@@ -23,10 +23,10 @@ public:
     std::uint64_t first, second;
 };
 
-// One point's neighbours (x_j - x_i, r2, r on request, the gathered values a_j and b_j) and
-// room for q, W, W' and 1 / r of a caller.
+// One point's neighbours (x_j - x_i, r2, r on request, the gathered values a_j and b_j, each
+// pair once their places among the cluster's candidates) and room for q, W, W' and 1 / r of a caller.
 struct Neighbours {
-    std::vector<double> r2, dx, dy, dz, r, q, a, b, w, dw, inv_r;
+    std::vector<double> r2, dx, dy, dz, r, q, a, b, w, dw, inv_r, slot;
     std::vector<std::uint32_t> index; // scratch of the candidate pass
     std::size_t count = 0;
     void reserve(std::size_t n);
@@ -53,11 +53,26 @@ void use_compress_path(CompressPath path); // not thread-safe: for tests, before
 // particles) of the box around them, in the grid's fixed order, contiguous, so that each
 // particle's pass over them stays in L1 and the rows are cut once per cluster, not per particle.
 struct ClusterCandidates {
-    std::vector<double> x, y, z, a, b; // a and b only when gathered with them
+    std::vector<double> x, y, z, a, b, key; // a, b and key only when gathered with them
     std::size_t count = 0;
     double reach = 0;
-    bool with_a = true, with_b = false;
+    bool with_a = true, with_b = false, with_key = false;
     void reserve(std::size_t n);
+};
+
+// Each pair once (symmetric_pair_pass): the key of a point orders the pairs. A visited
+// particle's key is its point, and a particle takes only the neighbours whose key is above its
+// own, so a pair of particles is taken by the first of them; a ghost or a neighbours-only
+// point has the unpaired key, the grid's point count, above every particle's: its pair is
+// taken from the particle's side only, and from the other particle's side through that one's
+// own ghost (a pair across a periodic side is evaluated twice, once for each particle, as the
+// gather does). Sums by point have one slot more, at the unpaired key, that takes the terms
+// of the unpaired and is not read: the scatter needs no branch.
+inline double unpaired_key(const NeighbourGrid& grid) { return static_cast<double>(grid.points()); }
+struct PairOrder {
+    std::vector<double> keys;                   // per point
+    std::vector<std::uint32_t> unpaired_before; // per point and one past the last: unpaired points before it
+    explicit PairOrder(const NeighbourGrid& grid);
 };
 
 // A value per point of the grid (in its point order), or one for every point (per_point null:
@@ -70,9 +85,11 @@ struct PointValues {
 
 // The candidates of cluster c for particles whose support radius is reach[point], with a[j]
 // unless a is null and b[j] unless b is null per point (grid's point order). count = 0 for a
-// cluster with no visited point (ghosts and neighbours-only particles).
+// cluster with no visited point (ghosts and neighbours-only particles). With a pair order,
+// each pair once: only the candidates whose key is above the cluster's first particle's (the
+// runs of points before it that hold no unpaired point are not read).
 void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach, const double* a, const double* b,
-                    ClusterCandidates& out);
+                    ClusterCandidates& out, const PairOrder* order = nullptr);
 
 // The neighbours of point p of the cluster within sqrt(reach2), p itself left out, from
 // the cluster's candidates in one pass that keeps the points inside (by the widest
@@ -80,8 +97,10 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
 // r only by fill_distances). After the `count` neighbours, up to the next multiple of neighbour_lanes,
 // entries with a = b = dx = dy = dz = 0 and r2 = reach2. Without r2 (with_r2 false) the
 // neighbours' r2 is not written (one compress fewer per eight candidates, for a caller that
-// computes it again from dx, dy, dz). Throws Error(input) naming both ids for another particle
-// at p's position.
+// computes it again from dx, dy, dz). With the cluster's keys, each pair once: only the
+// neighbours whose key is above p's, their places among the cluster's candidates in nb.slot
+// (the place past the last in the padding).
+// Throws Error(input) naming both ids for another particle at p's position.
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
                          const std::string& set_name, Neighbours& nb, bool with_r2 = true);
 

@@ -83,6 +83,11 @@ public:
     // (ParticleSet::neighbours_only), whose points are candidates of the others all the same.
     bool visited(std::size_t point) const { return (source_[point] & unvisited_bit) == 0; }
 
+    // The rows of bins kept along y and z (a row runs along x); the clusters of row (y, z) are
+    // [(z rows_y + y) clusters_per_row, + clusters_per_row).
+    std::size_t rows(int axis) const { return n_[axis]; }
+    std::size_t clusters_per_row() const { return (n_[0] + bins_per_cluster - 1) / bins_per_cluster; }
+
     // Clusters in sweep order (bins_per_cluster bins of one row); the points of cluster c are
     // [cluster_begin(c), cluster_end(c)).
     std::size_t clusters() const { return n_[1] * n_[2] * clusters_per_row(); }
@@ -122,7 +127,6 @@ public:
     }
 
 private:
-    std::size_t clusters_per_row() const { return (n_[0] + bins_per_cluster - 1) / bins_per_cluster; }
     // The bin of coordinate c along axis a: the one formula of the sort and the search, so
     // that a point within the chord lies in a bin of the cut run (the formula is monotone).
     // Counted from the window's first row (0 for a whole set).
