@@ -29,9 +29,9 @@ Action add_shells_command(Command app)
         ShellsRequest request{options->radius, options->site, std::nullopt};
         if (!options->gravity.empty())
             request.gravity = parse_number_list(options->gravity, ValueSource::option("--gravity"));
-        const auto document = run_shells(request, shells_sources(FrontEnd::command_line), lattice);
-        if (options->json) print_json(document, command_inputs(nullptr, &lattice));
-        else print_shells(document);
+        const ShellsResult result = run_shells(request, shells_sources(FrontEnd::command_line), lattice);
+        if (options->json) print_json(shells_json(result), command_inputs(nullptr, &lattice));
+        else print_shells(result);
         return 0;
     };
 }

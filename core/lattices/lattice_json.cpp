@@ -32,27 +32,23 @@ nlohmann::json lattice_description_json(const Lattice& lattice, double radius)
         sites.push_back({{"site", s},
                          {"fractional", std::vector<double>(m.data(), m.data() + lattice.dimension)},
                          {"position", std::vector<double>(x.data(), x.data() + lattice.dimension)},
-                         {"shells", shells_json(lattice, s, radius, lattice.gravity)["shells"]}});
+                         {"shells", shell_rows_json(shell_rows(lattice, s, radius, lattice.gravity))}});
     }
     document["shells_radius"] = radius;
     document["site_details"] = sites;
     return document;
 }
 
-nlohmann::json shells_json(const Lattice& lattice, int site, double radius, const Eigen::Vector3d& e)
+nlohmann::json shell_rows_json(const std::vector<ShellRow>& rows)
 {
-    auto shells = lattice_shells(lattice, site, radius);
     nlohmann::json list = nlohmann::json::array();
-    int total = 0;
-    for (const auto& s : shells) {
-        total += s.count;
+    for (const ShellRow& s : rows)
         list.push_back({{"radius", s.radius},
                         {"radius_squared", s.radius * s.radius},
                         {"count", s.count},
-                        {"cumulative", total},
-                        {"gravity_moment", s.directional_moment(e)}});
-    }
-    return {{"lattice", lattice.name}, {"site", site}, {"radius", radius}, {"shells", list}};
+                        {"cumulative", s.cumulative},
+                        {"gravity_moment", s.moment_along}});
+    return list;
 }
 
 } // namespace sphkern

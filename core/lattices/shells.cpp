@@ -49,4 +49,15 @@ std::vector<Shell> lattice_shells(const Lattice& lattice, int site, double r_max
     return shells;
 }
 
+std::vector<ShellRow> shell_rows(const Lattice& lattice, int site, double r_max, const Eigen::Vector3d& e)
+{
+    std::vector<ShellRow> rows;
+    int total = 0;
+    for (const Shell& s : lattice_shells(lattice, site, r_max)) {
+        total += s.count;
+        rows.push_back({s.radius, s.count, total, s.directional_moment(e)});
+    }
+    return rows;
+}
+
 } // namespace sphkern

@@ -26,4 +26,13 @@ struct Shell {
 // for a non-positive or non-finite radius, a bad site, or a request beyond the limit.
 std::vector<Shell> lattice_shells(const Lattice& lattice, int site, double r_max);
 
+// A shell as `shells` lists it: its radius, its count and the count up to it, and its moment
+// along a direction e.
+struct ShellRow {
+    double radius = 0;
+    int count = 0, cumulative = 0;
+    double moment_along = 0; // sum (e . r_hat)^2
+};
+std::vector<ShellRow> shell_rows(const Lattice& lattice, int site, double r_max, const Eigen::Vector3d& e);
+
 } // namespace sphkern

@@ -359,7 +359,7 @@ void bind_accuracy(py::module_& m, const Guard& guard)
         [](const std::string& lattice_spec, double radius, int site, const OptionalSequence& gravity) -> py::dict {
             auto lattice = load_lattice(lattice_spec);
             const ShellsRequest request{radius, site, gravity_input(gravity, lattice.dimension)};
-            return to_python(run_shells(request, shells_sources(FrontEnd::python), lattice));
+            return to_python(shells_json(run_shells(request, shells_sources(FrontEnd::python), lattice)));
         },
         shells_keywords.required("lattice"), shells_keywords.required("radius"), shells_keywords("site"),
         shells_keywords("gravity"), doc::shells, guard);

@@ -15,23 +15,30 @@ ShellsSources shells_sources(FrontEnd f)
     return {value_named(f, "radius"), {value_named(f, "site").name, ExitCode::input}, value_named(f, "gravity")};
 }
 
-nlohmann::json run_shells(const ShellsRequest& r, const ShellsSources& sources, const Lattice& lattice)
+ShellsResult run_shells(const ShellsRequest& r, const ShellsSources& sources, const Lattice& lattice)
 {
     check_positive(r.radius, sources.radius);
     check_site(r.site, lattice.sites(), lattice.name, sources.site);
     const Eigen::Vector3d e =
         r.gravity ? direction_of(*r.gravity, lattice.dimension, sources.gravity) : lattice.gravity;
-    return shells_json(lattice, r.site, r.radius, e);
+    return {lattice.name, r.site, r.radius, shell_rows(lattice, r.site, r.radius, e)};
 }
 
-void print_shells(const nlohmann::json& document)
+nlohmann::json shells_json(const ShellsResult& result)
+{
+    return {{"lattice", result.lattice},
+            {"site", result.site},
+            {"radius", result.radius},
+            {"shells", shell_rows_json(result.shells)}};
+}
+
+void print_shells(const ShellsResult& result)
 {
     fmt::print(results_file(), "{:>12} {:>10} {:>6} {:>10} {:>14}\n", "radius/d", "radius^2", "count", "total",
                "sum (e.r^)^2");
-    for (const auto& s : document["shells"])
-        fmt::print(results_file(), "{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s["radius"].get<double>(),
-                   s["radius_squared"].get<double>(), s["count"].get<int>(), s["cumulative"].get<int>(),
-                   s["gravity_moment"].get<double>());
+    for (const ShellRow& s : result.shells)
+        fmt::print(results_file(), "{:>12.8f} {:>10.6f} {:>6} {:>10} {:>14.8f}\n", s.radius, s.radius * s.radius,
+                   s.count, s.cumulative, s.moment_along);
 }
 
 } // namespace sphkern

@@ -4,11 +4,13 @@
 #pragma once
 
 #include "lattices/lattice.hpp"
+#include "lattices/shells.hpp"
 #include "support/text/value_checks.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace sphkern {
@@ -24,11 +26,21 @@ struct ShellsSources {
 };
 ShellsSources shells_sources(FrontEnd front_end);
 
-// A positive radius, a site the lattice has, a direction of its dimension: the document
-// `sphkern shells --json` prints (without provenance and inputs).
-nlohmann::json run_shells(const ShellsRequest& request, const ShellsSources& sources, const Lattice& lattice);
+// The shells of a site up to a radius, each with its moment along the request's direction.
+struct ShellsResult {
+    std::string lattice;
+    int site = 0;
+    double radius = 0;
+    std::vector<ShellRow> shells;
+};
 
-// The text `sphkern shells` prints, from that document.
-void print_shells(const nlohmann::json& document);
+// A positive radius, a site the lattice has, a direction of its dimension; an Error naming
+// the value's source otherwise.
+ShellsResult run_shells(const ShellsRequest& request, const ShellsSources& sources, const Lattice& lattice);
+
+// The document `sphkern shells --json` prints (without provenance and inputs) and Python returns.
+nlohmann::json shells_json(const ShellsResult& result);
+// The text `sphkern shells` prints.
+void print_shells(const ShellsResult& result);
 
 } // namespace sphkern
