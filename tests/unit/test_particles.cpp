@@ -7,6 +7,8 @@
 #include "lattices/rectangular_cell.hpp"
 #include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/neighbour_grid.hpp"
+#include "particles/engine/pair_pass.hpp"
+#include "particles/engine/symmetric_pair_pass.hpp"
 #include "particles/formats/particle_files.hpp"
 #include "particles/particle_analysis.hpp"
 #include "particles/sources/lattice_particles.hpp"
@@ -28,6 +30,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <numbers>
 #include <numeric>
 #include <random>
@@ -802,6 +805,103 @@ TEST_CASE("each pair once: a particle keeps exactly its neighbours whose key is 
                 CHECK(pairs > 5 * set.size());
             }
     use_compress_path(widest_compress_path());
+}
+
+namespace {
+
+// Per particle (the set's order): sum_j w(r / R) and sum_j w'(r / R) (x_j - x_i) / r over the
+// neighbours within R, with w(q) = (1 - q^2)^3, once by every particle gathering its own and
+// once by the pass that takes each pair once (on `threads` threads).
+struct PairSumsBothWays {
+    std::vector<double> gathered, paired; // four a particle
+};
+PairSumsBothWays pair_sums_both_ways(const ParticleSet& set, double reach, int threads)
+{
+    const NeighbourGrid grid(set, reach, threads);
+    auto terms = [&](const Neighbours& nb, std::size_t j, double* t) {
+        const double r = std::sqrt(nb.r2[j]), q = r / reach, u = 1 - q * q, slope = -6 * q * u * u / r;
+        t[0] = u * u * u, t[1] = slope * nb.dx[j], t[2] = slope * nb.dy[j], t[3] = slope * nb.dz[j];
+    };
+    PairSumsBothWays out{std::vector<double>(4 * set.size()), std::vector<double>(4 * set.size())};
+    pair_pass(
+        grid, set.name, {{nullptr, reach}, nullptr, nullptr, true, ""}, threads,
+        [&](int, std::size_t p, Neighbours& nb) {
+            double* own = out.gathered.data() + 4 * grid.source(p);
+            for (std::size_t j = 0; j < nb.count; ++j) {
+                double t[4];
+                terms(nb, j, t);
+                for (int a = 0; a < 4; ++a) own[a] += t[a];
+            }
+        },
+        [](int) {});
+    std::vector<double> sums(4 * (grid.points() + 1));
+    symmetric_pair_pass<4>(
+        grid, set.name, {reach, nullptr, nullptr, true, ""}, threads, sums.data(),
+        [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
+            std::vector<double> theirs[4]; // per call: each thread its own
+            for (auto& v : theirs) v.assign(nb.count, 0.0);
+            for (std::size_t j = 0; j < nb.count; ++j) {
+                double t[4];
+                terms(nb, j, t);
+                for (int a = 0; a < 4; ++a) sums[4 * p + a] += t[a];
+                // The other particle's: the same value, the opposite gradient.
+                theirs[0][j] = t[0], theirs[1][j] = -t[1], theirs[2][j] = -t[2], theirs[3][j] = -t[3];
+            }
+            add_to_pairs<4>(nb, {theirs[0].data(), theirs[1].data(), theirs[2].data(), theirs[3].data()}, cluster_sums);
+        });
+    for_each_visited(grid, threads, [&](std::size_t p, std::size_t i) {
+        for (int a = 0; a < 4; ++a) out.paired[4 * i + a] = sums[4 * p + a];
+    });
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("each pair once equals every particle gathering its own (1e-13) on lattice, Poisson and file sets, 2D and "
+          "3D, with neighbours-only particles, and is the same bits on 1, 2 and 7 threads")
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("sphkern-pairs-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    struct Case {
+        std::string name;
+        ParticleSet set;
+        double reach;
+    };
+    std::vector<Case> cases;
+    for (int dim : {2, 3})
+        for (bool periodic : {true, false})
+            cases.push_back({fmt::format("Poisson {}D{}", dim, periodic ? " periodic" : ""),
+                             random_set(dim, dim == 3 ? 6000 : 3000, periodic, 7 + dim), dim == 3 ? 0.13 : 0.08});
+    LatticeBlockSpec spec;
+    spec.cells = {7, 7, 6}, spec.sigma = 0.05;
+    cases.push_back({"fcc block", lattice_particles(load_lattice("fcc"), spec), 2.1});
+    spec.cells = {14, 12, 1};
+    cases.push_back({"triangular block", lattice_particles(load_lattice("triangular"), spec), 2.3});
+    {
+        // A file: positions as a CSV holds them, in two clumps of different density, with no box.
+        ParticleSet clumps = random_set(3, 4000, false, 5);
+        for (std::size_t i = 0; i < clumps.size(); i += 2) clumps.x[i] *= 0.3, clumps.y[i] *= 0.3;
+        std::ofstream csv(dir / "clumps.csv");
+        csv << "x,y,z\n" << std::setprecision(17);
+        for (std::size_t i = 0; i < clumps.size(); ++i)
+            csv << clumps.x[i] << ',' << clumps.y[i] << ',' << clumps.z[i] << '\n';
+    }
+    cases.push_back({"CSV file", read_particle_file(dir / "clumps.csv", {}), 0.12});
+    ParticleSet some_neighbours_only = random_set(3, 5000, true, 3);
+    some_neighbours_only.neighbours_only = 1500; // the last 1500: candidates only
+    cases.push_back({"Poisson with neighbours-only particles", some_neighbours_only, 0.13});
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        const auto one = pair_sums_both_ways(c.set, c.reach, 1);
+        double worst = 0, scale = 0;
+        for (std::size_t i = 0; i < 4 * c.set.measured(); ++i)
+            worst = std::max(worst, std::abs(one.paired[i] - one.gathered[i])),
+            scale = std::max(scale, std::abs(one.gathered[i]));
+        CHECK(scale > 1);
+        CHECK(worst < 1e-13 * scale);
+        for (int threads : {2, 7}) CHECK(pair_sums_both_ways(c.set, c.reach, threads).paired == one.paired);
+    }
+    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a long thin set gets no more bins than four per point, and every neighbour is still found")
