@@ -434,6 +434,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
 {
     const AppendNearBox append_near_box = append_near_box_for(chosen_path());
     out.count = 0, out.reach = 0, out.with_a = a != nullptr, out.with_b = b != nullptr, out.with_key = order != nullptr;
+    out.any_unpaired = false;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
     std::size_t first = 0; // the cluster's first visited point
@@ -457,6 +458,7 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
             const std::size_t cut = std::min(end, first);
             if (begin < cut && order->unpaired_before[cut] == order->unpaired_before[begin]) begin = cut;
             if (begin == end) return;
+            out.any_unpaired = out.any_unpaired || order->unpaired_before[end] > order->unpaired_before[begin];
         }
         in.n = end - begin;
         in.x = grid.x() + begin, in.y = grid.y() + begin, in.z = grid.z() + begin, in.a = a ? a + begin : nullptr;

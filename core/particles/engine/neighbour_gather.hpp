@@ -57,6 +57,7 @@ struct ClusterCandidates {
     std::size_t count = 0;
     double reach = 0;
     bool with_a = true, with_b = false, with_key = false;
+    bool any_unpaired = false; // each pair once: a candidate may have the unpaired key (a ghost near)
     void reserve(std::size_t n);
 };
 

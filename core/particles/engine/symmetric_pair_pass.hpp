@@ -63,6 +63,7 @@ inline void add_to_pairs(const Neighbours& nb, const std::array<const double*, Q
 // unpaired one once.
 inline std::size_t gathered_pairs(const Neighbours& nb, const ClusterCandidates& cluster, double unpaired)
 {
+    if (!cluster.any_unpaired) return 2 * nb.count;
     std::size_t paired = 0;
     for (std::size_t j = 0; j < nb.count; ++j) paired += cluster.key[static_cast<std::size_t>(nb.slot[j])] != unpaired;
     return nb.count + paired;
