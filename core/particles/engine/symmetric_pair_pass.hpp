@@ -1,7 +1,7 @@
 // The particle engine's pass that takes each pair once, for sums whose pair terms both
 // particles share (one h): a particle is given only its neighbours whose key is above its own
-// (PairOrder), and the visitor adds each pair's term to both. Half the search and half the
-// kernel calls of pair_pass.
+// (PairOrder), and the visitor adds each pair's term to both: half the kernel calls of
+// pair_pass, and a third less of each particle's search (BENCHMARKS.md).
 //
 // A pair's second particle lies in the first's row of bins (along x), the next row along y,
 // or one of the three beside it in the next layer along z. The grid is cut into tiles, each a
