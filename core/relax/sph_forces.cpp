@@ -66,15 +66,17 @@ void add_force_terms(const PairSums& s, const Neighbours& nb, double* own, doubl
 // Calls visit(p, neighbours, cluster_sums) for every particle of the set on the engine's pass
 // that takes each pair once, with dx, dy, dz, r, slot and a (unless null) of each later
 // neighbour within the support radius `reach` (and its edge); sums of Q quantities a point.
+// The density and force passes share the grid and its pair order.
 template <std::size_t Q, class Visit>
-void for_each_particle(const NeighbourGrid& grid, const ParticleSet& set, double reach, const double* a, int threads,
-                       double* sums, const Visit& visit)
+void for_each_particle(const NeighbourGrid& grid, const PairOrder& order, const ParticleSet& set, double reach,
+                       const double* a, int threads, double* sums, const Visit& visit)
 {
-    symmetric_pair_pass<Q>(grid, set.name, {search_reach(reach), a, nullptr, true, ""}, threads, sums,
-                           [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
-                               fill_distances(nb);
-                               visit(p, nb, cluster_sums);
-                           });
+    SymmetricPassInputs in{search_reach(reach), a, nullptr, true, ""};
+    in.order = &order;
+    symmetric_pair_pass<Q>(grid, set.name, in, threads, sums, [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
+        fill_distances(nb);
+        visit(p, nb, cluster_sums);
+    });
 }
 
 // Names the cause of a sum that is not finite: the kernel at a neighbour's q, or else h.
@@ -95,12 +97,13 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
     out.phases.restart();
     const NeighbourGrid grid(set, reach, model.threads);
+    const PairOrder order(grid);
     out.phases.lap("grid");
     // Every value is written by the passes: sized, not cleared, so that no thread zeroes them alone.
     out.density.resize(n);
     const double w0 = kernel.w(0, dim, model.k);
     std::vector<double> density(grid.points() + 1, 0.0); // and the unpaired key's
-    for_each_particle<1>(grid, set, reach, nullptr, model.threads, density.data(),
+    for_each_particle<1>(grid, order, set, reach, nullptr, model.threads, density.data(),
                          [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
                              scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
                              kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
@@ -128,7 +131,7 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->resize(model.pressure ? n : 0);
     const double scale = 1 / (hd * model.h);                  // W' = dW/dq: dW/dr = W' / h^(D+1)
     std::vector<double> forces(6 * (grid.points() + 1), 0.0); // six a point, and the unpaired key's
-    for_each_particle<6>(grid, set, reach, pi_points.data(), model.threads, forces.data(),
+    for_each_particle<6>(grid, order, set, reach, pi_points.data(), model.threads, forces.data(),
                          [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
                              scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
                              kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);

@@ -695,9 +695,13 @@ TEST_CASE(
         }
 }
 
-TEST_CASE("a cluster's shared candidates hold, once each, every point within each of its particles' support")
+namespace {
+
+// f(set, dim, periodic) on random sets of 2000 (3D) or 1000 (2D) points, periodic and free, on
+// every compress path the processor can take (scalar, AVX2, AVX-512); the widest path after.
+template <class F>
+void on_every_path(std::uint64_t seed, const F& f)
 {
-    // Every path the processor can take (scalar, AVX2, AVX-512) keeps the same points.
     for (int path = 0; path <= static_cast<int>(widest_compress_path()); ++path)
         for (int dim : {2, 3})
             for (bool periodic : {true, false}) {
@@ -705,106 +709,107 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
                 CAPTURE(path);
                 CAPTURE(dim);
                 CAPTURE(periodic);
-                const auto set = random_set(dim, dim == 3 ? 2000 : 1000, periodic, 31 + dim);
-                // Variable h: each particle's reach between 0.5 and 1 of the grid's.
-                const double reach = dim == 3 ? 0.18 : 0.12;
-                std::vector<double> reaches(set.size());
-                for (std::size_t i = 0; i < set.size(); ++i)
-                    reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
-                const NeighbourGrid grid(set, reach);
-                const std::vector<double> point_reaches = grid.gather(reaches);
-                std::vector<double> ids(grid.points());
-                std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
-                ClusterCandidates cluster;
-                Neighbours nb;
-                std::size_t checked = 0, wrong = 0, neighbours = 0;
-                for (std::size_t b = 0; b < grid.clusters(); ++b) {
-                    gather_cluster(grid, b, {point_reaches.data(), 0}, ids.data(), nullptr, cluster);
-                    std::vector<int> seen(grid.points(), 0);
-                    for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
-                    for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
-                        if (!grid.visited(p)) continue;
-                        const double r = reaches[grid.source(p)];
-                        gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
-                        std::vector<int> kept(grid.points(), 0);
-                        for (std::size_t j = 0; j < nb.count; ++j) kept[static_cast<std::size_t>(nb.a[j])] += 1;
-                        for (std::size_t j = 0; j < grid.points(); ++j) {
-                            const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
-                                         dz = grid.z()[j] - grid.z()[p];
-                            const bool near = j != p && dx * dx + dy * dy + dz * dz <= r * r;
-                            wrong += (near && seen[j] != 1) || kept[j] != (near ? 1 : 0);
-                            neighbours += near;
-                        }
-                        ++checked;
-                    }
-                }
-                CHECK(checked == set.size());
-                CHECK(wrong == 0);
-                CHECK(neighbours > 10 * set.size());
+                f(random_set(dim, dim == 3 ? 2000 : 1000, periodic, seed + static_cast<std::uint64_t>(dim)), dim,
+                  periodic);
             }
     use_compress_path(widest_compress_path());
 }
 
+} // namespace
+
+TEST_CASE("a cluster's shared candidates hold, once each, every point within each of its particles' support")
+{
+    // Every path the processor can take keeps the same points.
+    on_every_path(31, [](const ParticleSet& set, int dim, bool) {
+        // Variable h: each particle's reach between 0.5 and 1 of the grid's.
+        const double reach = dim == 3 ? 0.18 : 0.12;
+        std::vector<double> reaches(set.size());
+        for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
+        const NeighbourGrid grid(set, reach);
+        const std::vector<double> point_reaches = grid.gather(reaches);
+        std::vector<double> ids(grid.points());
+        std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+        ClusterCandidates cluster;
+        Neighbours nb;
+        std::size_t checked = 0, wrong = 0, neighbours = 0;
+        for (std::size_t b = 0; b < grid.clusters(); ++b) {
+            gather_cluster(grid, b, {point_reaches.data(), 0}, ids.data(), nullptr, cluster);
+            std::vector<int> seen(grid.points(), 0);
+            for (std::size_t c = 0; c < cluster.count; ++c) seen[static_cast<std::size_t>(cluster.a[c])] += 1;
+            for (std::size_t p = grid.cluster_begin(b); p < grid.cluster_end(b); ++p) {
+                if (!grid.visited(p)) continue;
+                const double r = reaches[grid.source(p)];
+                gather_from_cluster(grid, cluster, p, r * r, set.name, nb);
+                std::vector<int> kept(grid.points(), 0);
+                for (std::size_t j = 0; j < nb.count; ++j) kept[static_cast<std::size_t>(nb.a[j])] += 1;
+                for (std::size_t j = 0; j < grid.points(); ++j) {
+                    const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
+                                 dz = grid.z()[j] - grid.z()[p];
+                    const bool near = j != p && dx * dx + dy * dy + dz * dz <= r * r;
+                    wrong += (near && seen[j] != 1) || kept[j] != (near ? 1 : 0);
+                    neighbours += near;
+                }
+                ++checked;
+            }
+        }
+        CHECK(checked == set.size());
+        CHECK(wrong == 0);
+        CHECK(neighbours > 10 * set.size());
+    });
+}
+
 TEST_CASE("each pair once: a particle keeps exactly its neighbours whose key is above its own, on every path")
 {
-    for (int path = 0; path <= static_cast<int>(widest_compress_path()); ++path)
-        for (int dim : {2, 3})
-            for (bool periodic : {true, false}) {
-                use_compress_path(static_cast<CompressPath>(path));
-                CAPTURE(path);
-                CAPTURE(dim);
-                CAPTURE(periodic);
-                const auto set = random_set(dim, dim == 3 ? 2000 : 1000, periodic, 41 + dim);
-                const double reach = dim == 3 ? 0.18 : 0.12;
-                const NeighbourGrid grid(set, reach);
-                const PairOrder order(grid);
-                std::vector<double> ids(grid.points());
-                std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
-                ClusterCandidates cluster;
-                Neighbours nb;
-                std::size_t wrong = 0, taken = 0, ghosts = 0;
-                for (std::size_t c = 0; c < grid.clusters(); ++c) {
-                    gather_cluster(grid, c, {nullptr, reach}, ids.data(), nullptr, cluster, &order);
-                    for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-                        if (!grid.visited(p)) continue;
-                        gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
-                        std::vector<int> kept(grid.points(), 0);
-                        for (std::size_t j = 0; j < nb.count; ++j) {
-                            const auto point = static_cast<std::size_t>(nb.a[j]);
-                            kept[point] += 1;
-                            // The slot names the neighbour's place among the cluster's candidates.
-                            wrong += cluster.key[static_cast<std::size_t>(nb.slot[j])] != order.keys[point];
-                        }
-                        for (std::size_t j = 0; j < grid.points(); ++j) {
-                            const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
-                                         dz = grid.z()[j] - grid.z()[p];
-                            const bool near = j != p && dx * dx + dy * dy + dz * dz <= reach * reach;
-                            const bool later = grid.visited(j) ? j > p : true;
-                            wrong += kept[j] != (near && later ? 1 : 0);
-                            taken += near && later && grid.visited(j), ghosts += near && !grid.visited(j);
-                        }
-                    }
+    on_every_path(41, [](const ParticleSet& set, int dim, bool periodic) {
+        const double reach = dim == 3 ? 0.18 : 0.12;
+        const NeighbourGrid grid(set, reach);
+        const PairOrder order(grid);
+        std::vector<double> ids(grid.points());
+        std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+        ClusterCandidates cluster;
+        Neighbours nb;
+        std::size_t wrong = 0, taken = 0, ghosts = 0;
+        for (std::size_t c = 0; c < grid.clusters(); ++c) {
+            gather_cluster(grid, c, {nullptr, reach}, ids.data(), nullptr, cluster, &order);
+            for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
+                if (!grid.visited(p)) continue;
+                gather_from_cluster(grid, cluster, p, reach * reach, set.name, nb);
+                std::vector<int> kept(grid.points(), 0);
+                for (std::size_t j = 0; j < nb.count; ++j) {
+                    const auto point = static_cast<std::size_t>(nb.a[j]);
+                    kept[point] += 1;
+                    // The slot names the neighbour's place among the cluster's candidates.
+                    wrong += cluster.key[static_cast<std::size_t>(nb.slot[j])] != order.keys[point];
                 }
-                CHECK(wrong == 0);
-                // Every pair of particles within reach, by brute force over the set (and its
-                // images in a periodic box), taken once; a pair through a ghost from both sides.
-                std::size_t pairs = 0, across = 0;
-                for (std::size_t i = 0; i < set.size(); ++i)
-                    for (std::size_t j = i + 1; j < set.size(); ++j) {
-                        Eigen::Vector3d d = set.position(j) - set.position(i);
-                        bool wrapped = false;
-                        for (int axis = 0; periodic && axis < dim; ++axis) { // the nearest image (a rectangular box)
-                            const double side = set.box->edges(axis, axis), shift = side * std::round(d[axis] / side);
-                            d[axis] -= shift, wrapped = wrapped || shift != 0;
-                        }
-                        if (d.norm() > reach) continue;
-                        pairs += !wrapped, across += wrapped;
-                    }
-                CHECK(taken == pairs);
-                CHECK(ghosts == 2 * across);
-                CHECK(pairs > 5 * set.size());
+                for (std::size_t j = 0; j < grid.points(); ++j) {
+                    const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
+                                 dz = grid.z()[j] - grid.z()[p];
+                    const bool near = j != p && dx * dx + dy * dy + dz * dz <= reach * reach;
+                    const bool later = grid.visited(j) ? j > p : true;
+                    wrong += kept[j] != (near && later ? 1 : 0);
+                    taken += near && later && grid.visited(j), ghosts += near && !grid.visited(j);
+                }
             }
-    use_compress_path(widest_compress_path());
+        }
+        CHECK(wrong == 0);
+        // Every pair of particles within reach, by brute force over the set (and its
+        // images in a periodic box), taken once; a pair through a ghost from both sides.
+        std::size_t pairs = 0, across = 0;
+        for (std::size_t i = 0; i < set.size(); ++i)
+            for (std::size_t j = i + 1; j < set.size(); ++j) {
+                Eigen::Vector3d d = set.position(j) - set.position(i);
+                bool wrapped = false;
+                for (int axis = 0; periodic && axis < dim; ++axis) { // the nearest image (a rectangular box)
+                    const double side = set.box->edges(axis, axis), shift = side * std::round(d[axis] / side);
+                    d[axis] -= shift, wrapped = wrapped || shift != 0;
+                }
+                if (d.norm() > reach) continue;
+                pairs += !wrapped, across += wrapped;
+            }
+        CHECK(taken == pairs);
+        CHECK(ghosts == 2 * across);
+        CHECK(pairs > 5 * set.size());
+    });
 }
 
 namespace {

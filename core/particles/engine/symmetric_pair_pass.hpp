@@ -36,6 +36,8 @@ struct SymmetricPassInputs {
     bool with_r2 = true;       // nb.r2 written (else the visitor takes distances from dx, dy, dz)
     std::string progress;      // the progress line's label; empty: none
     bool count_pairs = false;  // the pass returns the pairs (else 0)
+    // The grid's pair order, from a caller that runs several passes on one grid; null: made here.
+    const PairOrder* order = nullptr;
 };
 
 // A tile: the clusters [begin, end) of a block of rows of one layer.
@@ -92,7 +94,8 @@ template <std::size_t Q, class Visit>
 std::size_t symmetric_pair_pass(const NeighbourGrid& grid, const std::string& set_name, const SymmetricPassInputs& in,
                                 int threads, double* sums, const Visit& visit)
 {
-    const PairOrder order(grid);
+    const std::optional<PairOrder> own_order = in.order ? std::nullopt : std::optional<PairOrder>(grid);
+    const PairOrder& order = in.order ? *in.order : *own_order;
     const auto colours = tiles_by_colour(grid);
     const std::size_t workers = static_cast<std::size_t>(std::max(1, threads));
     std::size_t tiles = 0, finished = 0;
