@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 
 namespace sphkern {
@@ -25,6 +26,10 @@ double length_unit(const ParticleSet& set)
 }
 
 namespace {
+
+// The skin of the forces' pair list, in h: the fastest of 0.1, 0.2, 0.3 and 0.5 on the pairing
+// runs and relaxations measured (BENCHMARKS.md, "Pair lists that last").
+constexpr double pair_list_skin = 0.2;
 
 // RMS e0 and |e1| of the sums just computed (block sums: the same on any thread count).
 void record_errors(const RelaxState& s, RelaxStep& step)
@@ -123,7 +128,7 @@ bool pressure_step(const Kernel& kernel, RelaxState& s, double dt, double dampin
     const Moves moves =
         move_all(s, [&](std::size_t i) { return Eigen::Vector3d(s.vx[i] * dt, s.vy[i] * dt, s.vz[i] * dt); });
     if (!finish_moves(s, step, moves)) return false;
-    compute_forces(kernel, s.set, s.model, s.forces);
+    compute_forces(kernel, s.set, s.model, s.forces, &s.pairs);
     kick(s, dt / 2, factor);
     const double kinetic = parallel_sum(s.set.size(), s.model.threads, [&](std::size_t i) {
         return s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
@@ -143,7 +148,7 @@ bool shift_step(const Kernel& kernel, RelaxState& s, const RelaxSettings& settin
         return d;
     });
     if (!finish_moves(s, step, moves)) return false;
-    compute_forces(kernel, s.set, s.model, s.forces);
+    compute_forces(kernel, s.set, s.model, s.forces, &s.pairs);
     return true;
 }
 
@@ -160,14 +165,15 @@ RelaxState start_state(const Kernel& kernel, ParticleSet set, double h, const Re
     s.model.k = h / d;
     s.model.pressure = settings.method == RelaxMethod::pressure;
     s.model.threads = worker_threads(settings.threads);
+    s.model.skin = pair_list_skin;
     s.set = std::move(set);
     // rho0: the mean SPH density of the start, where P / rho = c^2 / gamma (on a lattice, every particle's).
     ForceModel density_only = s.model;
     density_only.pressure = false;
-    compute_forces(kernel, s.set, density_only, s.forces);
+    compute_forces(kernel, s.set, density_only, s.forces, &s.pairs);
     const double total = parallel_sum(n, s.model.threads, [&](std::size_t i) { return s.forces.density[i]; });
     s.model.rho0 = total / static_cast<double>(n);
-    if (s.model.pressure) compute_forces(kernel, s.set, s.model, s.forces);
+    if (s.model.pressure) compute_forces(kernel, s.set, s.model, s.forces, &s.pairs);
     for (auto* v : {&s.vx, &s.vy, &s.vz, &s.ux, &s.uy, &s.uz}) v->assign(n, 0.0);
     return s;
 }
@@ -259,6 +265,7 @@ RelaxResult relax_particles(const Kernel& kernel, ParticleSet set, double h, con
     // The steps' time less their passes' is the rest: kicks, moves and the errors.
     phases.lap("steps");
     double passes = 0;
+    spdlog::debug("{}: {} pair lists built", s.set.name, s.pairs.builds);
     for (const auto& [name, seconds] : s.forces.phases.phases()) result.phases.add(name, seconds), passes += seconds;
     result.phases.add("start", phases.phases().front().second);
     result.phases.add("moves", std::max(0.0, phases.phases().back().second - passes));

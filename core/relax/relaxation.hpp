@@ -34,6 +34,7 @@ struct RelaxState {
     std::vector<double> ux, uy, uz;
     ForceField forces;
     ForceModel model;
+    KeptPairs pairs; // the forces' pair list, kept from step to step while it holds
 };
 
 struct RelaxResult {

@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <string>
 
 namespace sphkern {
 
@@ -63,21 +65,53 @@ void add_force_terms(const PairSums& s, const Neighbours& nb, double* own, doubl
     }
 }
 
-// Calls visit(p, neighbours, cluster_sums) for every particle of the set on the engine's pass
-// that takes each pair once, with dx, dy, dz, r, slot and a (unless null) of each later
-// neighbour within the support radius `reach` (and its edge); sums of Q quantities a point.
-// The density and force passes share the grid and its pair order.
-template <std::size_t Q, class Visit>
-void for_each_particle(const NeighbourGrid& grid, const PairOrder& order, const ParticleSet& set, double reach,
-                       const double* a, int threads, double* sums, const Visit& visit)
+// A kept list pays where it serves this many calls or more (BENCHMARKS.md, "Pair lists that last").
+constexpr double lasting_calls = 4;
+
+// The kept list where it holds or, where the particles moved little enough since the last call
+// for a new one to last lasting_calls calls, a new one; else none (this call searches).
+PairList* lasting_list(const ParticleSet& set, const ForceModel& model, double support, KeptPairs& kept)
 {
-    SymmetricPassInputs in{search_reach(reach), a, nullptr, true, ""};
-    in.order = &order;
-    symmetric_pair_pass<Q>(grid, set.name, in, threads, sums, [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
-        fill_distances(nb);
-        visit(p, nb, cluster_sums);
-    });
+    const double moved = kept.since_last ? kept.since_last->farthest(set, model.threads) : 0.0;
+    kept.since_last.emplace(set);
+    const bool same = kept.list && kept.list->support() == support;
+    if (same && kept.list->follow(set)) return kept.list.get();
+    const double half_skin = model.skin * model.h / 2;
+    if (!(half_skin > 0 && moved * lasting_calls <= half_skin)) {
+        kept.list.reset();
+        return nullptr;
+    }
+    if (same) kept.list->rebuild(set);
+    else kept.list.reset(), kept.list = std::make_shared<PairList>(set, support, 2 * half_skin, model.threads);
+    ++kept.builds;
+    return kept.list.get();
 }
+
+// Where a call's pairs come from: a kept list, or a search of this call's own grid.
+class PairSource {
+public:
+    PairSource(const ParticleSet& set, const ForceModel& model, double support, KeptPairs* kept)
+        : list_(kept ? lasting_list(set, model, support, *kept) : nullptr), support_(support), set_name_(set.name)
+    {
+        if (!list_) grid_.emplace(set, support, model.threads), order_.emplace(*grid_);
+    }
+    const NeighbourGrid& grid() const { return list_ ? list_->grid() : *grid_; }
+    template <std::size_t Q, class Visit>
+    void pass(const double* a, int threads, double* sums, const Visit& visit) const
+    {
+        if (list_) return list_->pass<Q>(a, threads, sums, visit);
+        SymmetricPassInputs in{search_reach(support_), a, nullptr, true, ""};
+        in.order = &*order_;
+        symmetric_pair_pass<Q>(*grid_, set_name_, in, threads, sums, visit);
+    }
+
+private:
+    const PairList* list_;
+    std::optional<NeighbourGrid> grid_;
+    std::optional<PairOrder> order_;
+    double support_;
+    std::string set_name_;
+};
 
 // Names the cause of a sum that is not finite: the kernel at a neighbour's q, or else h.
 [[noreturn]] void fail_non_finite(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, std::size_t i,
@@ -90,28 +124,29 @@ void for_each_particle(const NeighbourGrid& grid, const PairOrder& order, const 
 
 } // namespace
 
-void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, ForceField& out)
+void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, ForceField& out,
+                    KeptPairs* kept)
 {
     const int dim = set.dimension;
     const std::size_t n = set.size();
     const double reach = kernel.support() * model.h, hd = std::pow(model.h, dim);
     out.phases.restart();
-    const NeighbourGrid grid(set, reach, model.threads);
-    const PairOrder order(grid);
+    const PairSource pairs(set, model, reach, kept);
+    const NeighbourGrid& grid = pairs.grid();
     out.phases.lap("grid");
     // Every value is written by the passes: sized, not cleared, so that no thread zeroes them alone.
     out.density.resize(n);
     const double w0 = kernel.w(0, dim, model.k);
     std::vector<double> density(grid.points() + 1, 0.0); // and the unpaired key's
-    for_each_particle<1>(grid, order, set, reach, nullptr, model.threads, density.data(),
-                         [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
-                             scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
-                             kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
-                             const double own = sum_of(nb.w.data(), nb.count);
-                             if (!std::isfinite(own)) fail_non_finite(kernel, set, model, grid.source(p), nb);
-                             density[p] += own;
-                             add_to_pairs<1>(nb, {nb.w.data()}, cluster_sums);
-                         });
+    pairs.pass<1>(nullptr, model.threads, density.data(), [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
+        fill_distances(nb);
+        scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
+        kernel.w_batch(nb.q.data(), nb.w.data(), nb.count, dim, model.k);
+        const double own = sum_of(nb.w.data(), nb.count);
+        if (!std::isfinite(own)) fail_non_finite(kernel, set, model, grid.source(p), nb);
+        density[p] += own;
+        add_to_pairs<1>(nb, {nb.w.data()}, cluster_sums);
+    });
     for_each_visited(grid, model.threads,
                      [&](std::size_t p, std::size_t i) { out.density[i] = model.mass * (w0 + density[p]) / hd; });
     out.phases.lap("density");
@@ -131,15 +166,16 @@ void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceMod
     for (auto* v : {&out.ax, &out.ay, &out.az}) v->resize(model.pressure ? n : 0);
     const double scale = 1 / (hd * model.h);                  // W' = dW/dq: dW/dr = W' / h^(D+1)
     std::vector<double> forces(6 * (grid.points() + 1), 0.0); // six a point, and the unpaired key's
-    for_each_particle<6>(grid, order, set, reach, pi_points.data(), model.threads, forces.data(),
-                         [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
-                             scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
-                             kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
-                             const PairSums s = pair_sums(nb, scale, model.pressure ? pi_points[p] : 0.0);
-                             if (!std::isfinite(s.g[0] + s.g[1] + s.g[2] + s.a[0] + s.a[1] + s.a[2]))
-                                 fail_non_finite(kernel, set, model, grid.source(p), nb);
-                             add_force_terms(s, nb, forces.data() + 6 * p, cluster_sums);
-                         });
+    pairs.pass<6>(pi_points.data(), model.threads, forces.data(),
+                  [&](std::size_t p, Neighbours& nb, double* cluster_sums) {
+                      fill_distances(nb);
+                      scale_distances(nb.r.data(), nb.count, 1 / model.h, nb.q.data());
+                      kernel.dw_batch(nb.q.data(), nb.dw.data(), nb.count, dim, model.k);
+                      const PairSums s = pair_sums(nb, scale, model.pressure ? pi_points[p] : 0.0);
+                      if (!std::isfinite(s.g[0] + s.g[1] + s.g[2] + s.a[0] + s.a[1] + s.a[2]))
+                          fail_non_finite(kernel, set, model, grid.source(p), nb);
+                      add_force_terms(s, nb, forces.data() + 6 * p, cluster_sums);
+                  });
     for_each_visited(grid, model.threads, [&](std::size_t p, std::size_t i) {
         const double* f = forces.data() + 6 * p;
         out.gx[i] = -model.volume * f[0], out.gy[i] = -model.volume * f[1], out.gz[i] = -model.volume * f[2];

@@ -9,8 +9,11 @@
 #include "support/process/phase_times.hpp"
 
 #include "kernels/kernel.hpp"
+#include "particles/engine/pair_list.hpp"
 #include "particles/particle_set.hpp"
 
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace sphkern {
@@ -25,6 +28,9 @@ struct ForceModel {
     double k = 1;         // h / d, the argument of kernels that depend on k
     bool pressure = true; // false: the density and the gradient sum only
     int threads = 1;
+    // The pair list's buffer beyond the support, in h: a list kept across calls (KeptPairs)
+    // holds until a particle has moved half of it.
+    double skin = 0;
 };
 
 struct ForceField {
@@ -35,8 +41,20 @@ struct ForceField {
     double pressure(double density, const ForceModel& model) const;
 };
 
+// What calls on one set as it moves (relax's steps) keep: a pair list, used while no particle
+// has moved more than half its skin since it was built, and built (again) only where the
+// particles moved so little since the last call that the list would last several calls;
+// elsewhere each call searches its own grid.
+struct KeptPairs {
+    std::shared_ptr<PairList> list;
+    std::optional<MovesSince> since_last; // the positions of the last call
+    int builds = 0;
+};
+
 // Throws Error(input) for two particles at one place (naming them), a box narrower than
-// twice the support, and a non-finite sum (naming the particle).
-void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, ForceField& out);
+// twice the support, and a non-finite sum (naming the particle). With `kept`, the pairs may
+// come from its list (the same sums to rounding, 1e-13).
+void compute_forces(const Kernel& kernel, const ParticleSet& set, const ForceModel& model, ForceField& out,
+                    KeptPairs* kept = nullptr);
 
 } // namespace sphkern

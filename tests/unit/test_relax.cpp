@@ -147,6 +147,66 @@ TEST_CASE("the relaxation sums, each pair once, are the same bits on 1, 2 and 7 
     }
 }
 
+namespace {
+
+// The largest difference of two force fields' values, over the largest value.
+double field_difference(const ForceField& a, const ForceField& b)
+{
+    double worst = 0, scale = 0;
+    const std::vector<double> ForceField::*values[] = {&ForceField::density, &ForceField::gx, &ForceField::gy,
+                                                       &ForceField::gz,      &ForceField::ax, &ForceField::ay,
+                                                       &ForceField::az};
+    for (const auto v : values)
+        for (std::size_t i = 0; i < (a.*v).size(); ++i)
+            worst = std::max(worst, std::abs((a.*v)[i] - (b.*v)[i])), scale = std::max(scale, std::abs((b.*v)[i]));
+    return worst / scale;
+}
+
+// The set with every particle moved by `step` times a fixed pseudo-random vector of length up to 1, wrapped.
+ParticleSet shifted(ParticleSet set, double step)
+{
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        const double t = 0.7 * static_cast<double>(i);
+        set.x[i] += step * std::sin(t), set.y[i] += step * std::cos(1.3 * t), set.z[i] += step * std::sin(2.1 * t);
+    }
+    wrap_into_box(set);
+    return set;
+}
+
+} // namespace
+
+TEST_CASE("relax's kept pair list gives the forces of a fresh search (1e-13), and is built only where the particles "
+          "move slowly enough for it to last")
+{
+    const Kernel kernel = shipped_kernel("wendland_c2");
+    const ParticleSet start = poisson_set(3000, 3, 1.0, 5);
+    const double l = std::pow(1.0 / static_cast<double>(start.size()), 1.0 / 3);
+    ForceModel m = model_for(start, 1.3 * l, 1.3);
+    m.skin = 0.2; // in h: kept while no particle has moved 0.1 h
+    KeptPairs kept;
+    ForceField field, fresh;
+    compute_forces(kernel, start, m, field, &kept);
+    CHECK(kept.builds == 1);
+    // Moved 0.02 h at most: the list holds.
+    const ParticleSet slow = shifted(start, 0.02 * m.h / std::sqrt(3.0));
+    compute_forces(kernel, slow, m, field, &kept);
+    compute_forces(kernel, slow, m, fresh);
+    CHECK(kept.builds == 1);
+    CHECK(field_difference(field, fresh) < 1e-13);
+    CHECK(field_difference(field, fresh) > 0); // the list's order of the terms, not the fresh grid's
+    // Moved 0.3 h since the last call: no list would last four calls; this call searches.
+    const ParticleSet fast = shifted(slow, 0.3 * m.h / std::sqrt(3.0));
+    compute_forces(kernel, fast, m, field, &kept);
+    compute_forces(kernel, fast, m, fresh);
+    CHECK(kept.list == nullptr);
+    CHECK(field.density == fresh.density);
+    CHECK(field.ax == fresh.ax);
+    // At rest again: a list is built (its grid's bins are a skin wider, its order another).
+    compute_forces(kernel, fast, m, field, &kept);
+    CHECK(kept.builds == 2);
+    CHECK(field_difference(field, fresh) < 1e-13);
+}
+
 TEST_CASE("the pressure force on a lattice plane wave is -omega^2 times the displacement of section 10")
 {
     // fcc with (111) layers in the xy plane: a wave vector along z is a threefold axis, where

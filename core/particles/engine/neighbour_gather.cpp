@@ -255,25 +255,30 @@ AppendWithin append_within_for(CompressPath path, bool with_b, bool with_r2)
 [[noreturn]] void fail_duplicate(const NeighbourGrid& grid, std::size_t p, const std::string& set_name)
 {
     // The pair the search counted: its squared distance is 0, whether or not the positions are equal.
-    const double xi = grid.x()[p], yi = grid.y()[p], zi = grid.z()[p];
+    const double at[3] = {grid.x()[p], grid.y()[p], grid.z()[p]};
     for (std::size_t j = 0; j < grid.points(); ++j) {
-        const double dx = grid.x()[j] - xi, dy = grid.y()[j] - yi, dz = grid.z()[j] - zi;
-        if (j == p || dx * dx + dy * dy + dz * dz != 0) continue;
-        const auto i = grid.id(p), k = grid.id(j);
-        if (dx == 0 && dy == 0 && dz == 0)
-            throw CoincidentParticles(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})",
-                                                  set_name, std::min(i, k), std::max(i, k), xi, yi, zi),
-                                      std::min(i, k), std::max(i, k));
-        throw CoincidentParticles(
-            fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance "
-                        "to be a number (it underflows to 0); expected distinct positions",
-                        set_name, std::min(i, k), std::max(i, k), std::hypot(dx, dy, dz)),
-            std::min(i, k), std::max(i, k));
+        const double d[3] = {grid.x()[j] - at[0], grid.y()[j] - at[1], grid.z()[j] - at[2]};
+        if (j != p && d[0] * d[0] + d[1] * d[1] + d[2] * d[2] == 0)
+            fail_coincident(set_name, grid.id(p), grid.id(j), at, d);
     }
     throw std::logic_error("a duplicate position that is not there");
 }
 
 } // namespace
+
+void fail_coincident(const std::string& set_name, std::uint64_t i, std::uint64_t k, const double* at, const double* d)
+{
+    const auto first = std::min(i, k), second = std::max(i, k);
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+        throw CoincidentParticles(fmt::format("{}: particles {} and {} are at the same position ({:g}, {:g}, {:g})",
+                                              set_name, first, second, at[0], at[1], at[2]),
+                                  first, second);
+    throw CoincidentParticles(
+        fmt::format("{}: particles {} and {} are {:g} apart, too close for their squared distance "
+                    "to be a number (it underflows to 0); expected distinct positions",
+                    set_name, first, second, std::hypot(d[0], d[1], d[2])),
+        first, second);
+}
 
 CompressPath widest_compress_path()
 {
@@ -467,6 +472,18 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
         m = append_near_box(in, lo, hi, out, m);
     });
     out.count = m;
+}
+
+std::size_t compress_run(const double* const* xyz, const double* a, const double* b, std::size_t n, const double* at,
+                         double reach2, Neighbours& nb, std::size_t& zeros)
+{
+    const AppendWithin append = append_within_for<false>(chosen_path(), b != nullptr, true);
+    const RunInput in{xyz[0], xyz[1], xyz[2], a, b, n, at[0], at[1], at[2], reach2};
+    nb.reserve(n + neighbour_lanes);
+    return append(in,
+                  {nb.dx.data(), nb.dy.data(), nb.dz.data(), nb.r2.data(), nb.a.data(), nb.b.data(), nb.index.data(),
+                   nb.slot.data()},
+                  0, zeros);
 }
 
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,

@@ -23,6 +23,10 @@ public:
     std::uint64_t first, second;
 };
 
+// Two particles (ids i and k) at a squared distance of 0: one at `at`, the other d from it.
+[[noreturn]] void fail_coincident(const std::string& set_name, std::uint64_t i, std::uint64_t k, const double* at,
+                                  const double* d);
+
 // One point's neighbours (x_j - x_i, r2, r on request, the gathered values a_j and b_j, each
 // pair once their places among the cluster's candidates) and room for q, W, W' and 1 / r of a caller.
 struct Neighbours {
@@ -104,6 +108,13 @@ void gather_cluster(const NeighbourGrid& grid, std::size_t c, PointValues reach,
 // Throws Error(input) naming both ids for another particle at p's position.
 void gather_from_cluster(const NeighbourGrid& grid, const ClusterCandidates& cluster, std::size_t p, double reach2,
                          const std::string& set_name, Neighbours& nb, bool with_r2 = true);
+
+// The points of one run (positions xyz[0..2], values a and b unless null; n of them, with
+// room for neighbour_lanes more after) within sqrt(reach2) of `at` with r2 > 0, written to nb
+// from its start (dx, dy, dz, r2, a, b) by the widest CompressPath; returns how many, and
+// adds the points at r2 = 0 to `zeros`.
+std::size_t compress_run(const double* const* xyz, const double* a, const double* b, std::size_t n, const double* at,
+                         double reach2, Neighbours& nb, std::size_t& zeros);
 
 // `zeros` candidates of point p at r = 0: one (p itself) is right; throws Error(input) naming
 // both ids for two, std::logic_error for none.

@@ -14,8 +14,11 @@ std::vector<std::vector<PairTile>> tiles_by_colour(const NeighbourGrid& grid)
     for (std::size_t z = 0; z < nz; ++z)
         for (std::size_t y = 0, block = 0; y < ny; y += rows, ++block) {
             const std::size_t first = (z * ny + y) * per_row, last = (z * ny + std::min(ny, y + rows)) * per_row;
-            colours[layers ? z % 2 * 2 + block % 2 : block % 2].push_back({first, last});
+            colours[layers ? z % 2 * 2 + block % 2 : block % 2].push_back({first, last, 0});
         }
+    std::size_t index = 0;
+    for (auto& tiles : colours)
+        for (PairTile& tile : tiles) tile.index = index++;
     return colours;
 }
 

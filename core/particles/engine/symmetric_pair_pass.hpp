@@ -40,9 +40,10 @@ struct SymmetricPassInputs {
     const PairOrder* order = nullptr;
 };
 
-// A tile: the clusters [begin, end) of a block of rows of one layer.
+// A tile: the clusters [begin, end) of a block of rows of one layer; `index` counts the tiles
+// colour after colour.
 struct PairTile {
-    std::size_t begin, end;
+    std::size_t begin, end, index;
 };
 // The tiles of each colour, in sweep order. They depend on the grid alone.
 std::vector<std::vector<PairTile>> tiles_by_colour(const NeighbourGrid& grid);
@@ -83,6 +84,50 @@ void for_each_visited(const NeighbourGrid& grid, int threads, const F& f)
     });
 }
 
+// work(thread, tile) for every tile of `colours`, the colours one after another, each tile on
+// one thread (tiles of one colour never write to one particle); a progress line by tile where
+// `label` is not empty.
+template <class Work>
+void for_each_tile_by_colour(const std::vector<std::vector<PairTile>>& colours, int threads, const std::string& label,
+                             const Work& work)
+{
+    std::size_t tiles = 0, finished = 0;
+    for (const auto& tiles_of_colour : colours) tiles += tiles_of_colour.size();
+    std::optional<Progress> progress;
+    if (!label.empty()) progress.emplace(label, tiles);
+    for (const auto& tiles_of_colour : colours) {
+        std::atomic<std::size_t> next{0};
+        ParallelFor pass;
+        pass.run(static_cast<std::size_t>(std::max(1, threads)), threads, [&](int thread, std::size_t, std::size_t) {
+            for (std::size_t t; pass.keep_going() && (t = next.fetch_add(1)) < tiles_of_colour.size();) {
+                if (progress && thread == 0) progress->reach(finished + t, "tile " + std::to_string(finished + t));
+                work(thread, tiles_of_colour[t]);
+            }
+        });
+        finished += tiles_of_colour.size();
+    }
+}
+
+// Adds each candidate's cluster sums (Q a candidate) to its particle's (an unpaired one's to
+// the slot not read): where a cluster's pairs' other terms reach the particles.
+template <std::size_t Q>
+void add_cluster_sums(const ClusterCandidates& cluster, const double* cluster_sums, double* sums)
+{
+    for (std::size_t k = 0; k < cluster.count; ++k) {
+        double* to = sums + Q * static_cast<std::int64_t>(cluster.key[k]);
+        const double* from = cluster_sums + Q * k;
+        for (std::size_t q = 0; q < Q; ++q) to[q] += from[q];
+    }
+}
+
+// A thread's room for one cluster at a time.
+struct ClusterScratch {
+    ClusterCandidates cluster;
+    Neighbours nb;
+    std::vector<double> cluster_sums;
+    std::size_t pairs = 0;
+};
+
 // Each pair once, on sums of Q quantities for each point of the grid (`sums`, Q to a point,
 // and Q more for the unpaired key, which are not read): visit(p, nb, cluster_sums) for every
 // particle point p, with nb holding its neighbours whose key is above p's (dx, dy, dz, r2
@@ -96,51 +141,26 @@ std::size_t symmetric_pair_pass(const NeighbourGrid& grid, const std::string& se
 {
     const std::optional<PairOrder> own_order = in.order ? std::nullopt : std::optional<PairOrder>(grid);
     const PairOrder& order = in.order ? *in.order : *own_order;
-    const auto colours = tiles_by_colour(grid);
-    const std::size_t workers = static_cast<std::size_t>(std::max(1, threads));
-    std::size_t tiles = 0, finished = 0;
-    for (const auto& tiles_of_colour : colours) tiles += tiles_of_colour.size();
-    std::optional<Progress> progress;
-    if (!in.progress.empty()) progress.emplace(in.progress, tiles);
-    struct Scratch {
-        ClusterCandidates cluster;
-        Neighbours nb;
-        std::vector<double> cluster_sums;
-        std::size_t pairs = 0;
-    };
-    std::vector<Scratch> scratch(workers);
+    std::vector<ClusterScratch> scratch(static_cast<std::size_t>(std::max(1, threads)));
     const double unpaired = unpaired_key(grid);
-    for (const auto& tiles_of_colour : colours) {
-        std::atomic<std::size_t> next{0};
-        ParallelFor pass;
-        pass.run(workers, threads, [&](int thread, std::size_t, std::size_t) {
-            Scratch& mine = scratch[static_cast<std::size_t>(thread)];
-            ClusterCandidates& cluster = mine.cluster;
-            for (std::size_t t; pass.keep_going() && (t = next.fetch_add(1)) < tiles_of_colour.size();) {
-                if (progress && thread == 0) progress->reach(finished + t, "tile " + std::to_string(finished + t));
-                for (std::size_t c = tiles_of_colour[t].begin; c < tiles_of_colour[t].end; ++c) {
-                    gather_cluster(grid, c, {nullptr, in.reach}, in.a, in.b, cluster, &order);
-                    if (cluster.count == 0) continue;
-                    mine.cluster_sums.assign(Q * (cluster.count + 1), 0.0);
-                    for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
-                        if (!grid.visited(p)) continue;
-                        gather_from_cluster(grid, cluster, p, in.reach * in.reach, set_name, mine.nb, in.with_r2);
-                        visit(p, mine.nb, mine.cluster_sums.data());
-                        if (in.count_pairs) mine.pairs += gathered_pairs(mine.nb, cluster, unpaired);
-                    }
-                    // The candidates' sums to their particles' (an unpaired one's to the slot not read).
-                    for (std::size_t k = 0; k < cluster.count; ++k) {
-                        double* to = sums + Q * static_cast<std::int64_t>(cluster.key[k]);
-                        const double* from = mine.cluster_sums.data() + Q * k;
-                        for (std::size_t q = 0; q < Q; ++q) to[q] += from[q];
-                    }
-                }
+    for_each_tile_by_colour(tiles_by_colour(grid), threads, in.progress, [&](int thread, const PairTile& tile) {
+        ClusterScratch& mine = scratch[static_cast<std::size_t>(thread)];
+        ClusterCandidates& cluster = mine.cluster;
+        for (std::size_t c = tile.begin; c < tile.end; ++c) {
+            gather_cluster(grid, c, {nullptr, in.reach}, in.a, in.b, cluster, &order);
+            if (cluster.count == 0) continue;
+            mine.cluster_sums.assign(Q * (cluster.count + 1), 0.0);
+            for (std::size_t p = grid.cluster_begin(c); p < grid.cluster_end(c); ++p) {
+                if (!grid.visited(p)) continue;
+                gather_from_cluster(grid, cluster, p, in.reach * in.reach, set_name, mine.nb, in.with_r2);
+                visit(p, mine.nb, mine.cluster_sums.data());
+                if (in.count_pairs) mine.pairs += gathered_pairs(mine.nb, cluster, unpaired);
             }
-        });
-        finished += tiles_of_colour.size();
-    }
+            add_cluster_sums<Q>(cluster, mine.cluster_sums.data(), sums);
+        }
+    });
     std::size_t pairs = 0;
-    for (const Scratch& mine : scratch) pairs += mine.pairs;
+    for (const ClusterScratch& mine : scratch) pairs += mine.pairs;
     return pairs;
 }
 
