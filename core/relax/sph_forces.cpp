@@ -68,8 +68,9 @@ void add_force_terms(const PairSums& s, const Neighbours& nb, double* own, doubl
 // A kept list pays where it serves this many calls or more (BENCHMARKS.md, "Pair lists that last").
 constexpr double lasting_calls = 4;
 
-// The kept list where it holds or, where the particles moved little enough since the last call
-// for a new one to last lasting_calls calls, a new one; else none (this call searches).
+// The kept list where it holds or, where the particles moved since the last call, but so
+// little that a new one would last lasting_calls calls, a new one; else none (this call
+// searches: with no move seen yet, as at a relaxation's start, a list may not last).
 PairList* lasting_list(const ParticleSet& set, const ForceModel& model, double support, KeptPairs& kept)
 {
     const double moved = kept.since_last ? kept.since_last->farthest(set, model.threads) : 0.0;
@@ -77,7 +78,7 @@ PairList* lasting_list(const ParticleSet& set, const ForceModel& model, double s
     const bool same = kept.list && kept.list->support() == support;
     if (same && kept.list->follow(set)) return kept.list.get();
     const double half_skin = model.skin * model.h / 2;
-    if (!(half_skin > 0 && moved * lasting_calls <= half_skin)) {
+    if (!(half_skin > 0 && moved > 0 && moved * lasting_calls <= half_skin)) {
         kept.list.reset();
         return nullptr;
     }
