@@ -6,7 +6,7 @@
 
 #include "particles/formats/particle_writers.hpp"
 #include "particles/particles_memory.hpp"
-#include "particles/tiled_set.hpp"
+#include "requests/relax_output.hpp"
 #include "requests/relax_report.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/relax_series.hpp"
@@ -97,41 +97,6 @@ void write_history(const RelaxOptions& o, const std::vector<RelaxStep>& steps, R
     else write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
 }
 
-// --rho0 and --u: positive and finite, for an output that holds them (a .csv holds m, not u).
-void check_initial_state(const RelaxOptions& o)
-{
-    for (const auto& [value, name] : {std::pair{o.rho0, "--rho0"}, std::pair{o.u, "--u"}}) {
-        if (!value) continue;
-        check_positive(*value, ValueSource::option(name));
-        if (o.output.empty())
-            throw Error(ExitCode::usage, fmt::format("{} sets what --output writes; expected --output too", name));
-    }
-    if (o.u && o.output.ends_with(".csv"))
-        throw Error(ExitCode::usage,
-                    fmt::format("--u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 "
-                                "or .hdf5 --output (or a Phantom dump)",
-                                o.output));
-}
-
-// The run; where it diverges, the steps before it (all finite) still go to --history, and the
-// error says so. The set itself is not written: its positions are what diverged.
-RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o,
-                                 RelaxSeries* series)
-{
-    try {
-        if (!series) return relax_particles(kernel, std::move(set), h, o.settings);
-        return relax_particles(kernel, std::move(set), h, o.settings,
-                               [series](const RelaxState& state, const RelaxStep& step) {
-                                   series->write_step(state, step);
-                               });
-    } catch (const RelaxDiverged& e) {
-        if (o.history.empty()) throw;
-        write_history(o, e.history, series);
-        throw Error(e.code(),
-                    fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, o.history));
-    }
-}
-
 // The series' .vtu files against what the run reads; their names differ from each other and
 // from --output (.h5 or .csv) by construction, so each is checked alone.
 void check_series_targets(const RelaxSeries& series, const std::vector<std::string>& inputs)
@@ -144,35 +109,10 @@ std::optional<RelaxCode> relax_code_of(const RelaxOptions& o)
 {
     std::optional<RelaxCode> code;
     if (const auto choice = code_beside_own_eta(o.codes, o.eta)) code = RelaxCode{choice->code, choice->value};
-    const ValueSource value_source = code_sources(o.codes).second;
-    if (code && code->value && (o.h_over_l || o.nh || o.k))
-        throw Error(ExitCode::usage,
-                    fmt::format("--code {} sets h with {}; expected no --h-over-l, --nh or --k beside it", code->name,
-                                value_source.name));
+    const auto [code_source, value_source] = code_sources(o.codes);
+    if (code)
+        check_code_beside_h(*code, o.h_over_l || o.nh || o.k, FrontEnd::command_line, {code_source, value_source});
     return code;
-}
-
-// What --output wrote, and where, said beside the results.
-struct WrittenSet {
-    std::string text;
-    nlohmann::json json;
-};
-
-// The relaxed set (tiled by --tile) and its initial conditions, written to --output.
-WrittenSet write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const RelaxOptions& o,
-                             const std::optional<RelaxCode>& code, const std::array<int, 3>& tiles)
-{
-    const ParticleSet written = o.tile.empty() ? ParticleSet{} : tiled_set(run.state.set, tiles, o.settings.threads);
-    const ParticleSet& out = o.tile.empty() ? run.state.set : written;
-    write_particle_file(o.output, out,
-                        initial_conditions(kernel, out, run, {o.settings.gamma, o.rho0.value_or(1), o.u}, code,
-                                           o.settings.threads),
-                        o.settings.threads);
-    const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
-    const std::string layout = o.output.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
-    const std::string where = std::filesystem::absolute(o.output).lexically_normal().string();
-    return {fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout),
-            {{"file", where}, {"particles", out.size()}, {"layout", layout}}};
 }
 
 } // namespace
@@ -200,9 +140,8 @@ Action add_relax_command(Command app)
             check_series_targets(*series, read_inputs(o.source, o.kernel, o.plugins));
         }
         if (!o.output.empty()) check_relax_output(o.output, value_named(FrontEnd::command_line, "output"), code);
-        if (!o.tile.empty() && o.output.empty())
-            throw Error(ExitCode::usage, "--tile copies the set --output writes; expected --output too");
-        check_initial_state(o);
+        const RelaxOutput output{o.output, o.tile, o.rho0, o.u};
+        check_relax_output_settings(output, FrontEnd::command_line);
         auto registry = discover_kernels(o);
         auto kernel = make_kernel(registry, o.kernel, o.sets);
         const auto digest = o.json ? start_source_digest(o) : nullptr;
@@ -216,9 +155,17 @@ Action add_relax_command(Command app)
         if (!o.output.empty())
             require_box_for_output(set, o, o.output.ends_with(".csv") ? ParticleLayout::swift : relax_layout(code));
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
-        const RelaxResult run = relax_until_diverged(kernel, std::move(set), h, o, series ? &*series : nullptr);
+        RelaxSeries* steps = series ? &*series : nullptr;
+        const RelaxResult run =
+            relax_until_diverged(kernel, std::move(set), h, o.settings,
+                                 steps ? [steps](const RelaxState& state,
+                                                 const RelaxStep& step) { steps->write_step(state, step); }
+                                       : std::function<void(const RelaxState&, const RelaxStep&)>(),
+                                 o.history,
+                                 [&](const std::vector<RelaxStep>& history) { write_history(o, history, steps); });
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
-        const WrittenSet wrote = o.output.empty() ? WrittenSet{} : write_relaxed_set(kernel, run, o, code, tiles);
+        const WrittenSet wrote =
+            o.output.empty() ? WrittenSet{} : write_relaxed_set(kernel, run, output, o.settings, code, tiles);
         if (!o.history.empty()) write_history(o, run.history, series ? &*series : nullptr);
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);

@@ -9,6 +9,7 @@
 
 #include "particles/formats/particle_writers.hpp"
 #include "particles/tiled_set.hpp"
+#include "requests/relax_output.hpp"
 #include "requests/relax_report.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"
@@ -73,20 +74,6 @@ ParticleSource source_of(const SourceGiven& g)
                               source_sources(FrontEnd::python));
 }
 
-// The run; where it diverges, the steps before it still go to `history`, and the error says so.
-RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,
-                                 const std::optional<std::string>& history)
-{
-    try {
-        return relax_particles(kernel, std::move(set), h, settings);
-    } catch (const RelaxDiverged& e) {
-        if (!history) throw;
-        write_file_atomically(*history, [&](std::ostream& out) { write_relax_history_csv(out, e.history); });
-        throw Error(e.code(),
-                    fmt::format("{}; the history up to step {} is in {}", e.what(), e.history.back().step, *history));
-    }
-}
-
 struct RelaxGiven {
     std::optional<double> h_over_l, nh, k;
     std::optional<std::string> code;
@@ -101,49 +88,19 @@ struct RelaxGiven {
 };
 
 // The code and its setting, if given; where the setting sets h, no other h beside it.
-std::optional<RelaxCode> relax_code_given(const RelaxGiven& g)
+std::optional<RelaxCode> relax_code_given(const RelaxGiven& g, const CodeSettingSources& sources)
 {
     if (g.value && !g.code) fail_input("value: the parameter of a code; expected code too");
     std::optional<RelaxCode> code;
     if (g.code) code = RelaxCode{*g.code, g.value};
-    if (code && code->value && (g.h_over_l || g.nh || g.k))
-        fail_input(fmt::format("code {} sets h with value; expected no h_over_l, nh or k beside it", code->name));
+    if (code) check_code_beside_h(*code, g.h_over_l || g.nh || g.k, FrontEnd::python, sources);
     return code;
 }
 
-// rho0 and u: positive and finite, for an output that holds them (a .csv holds m, not u); tile
-// copies the set output writes.
-void check_output_settings(const RelaxGiven& g)
+// The steps as CSV.
+void write_history(const std::string& file, const std::vector<RelaxStep>& steps)
 {
-    for (const auto& [value, key] : {std::pair{g.rho0, "rho0"}, std::pair{g.u, "u"}})
-        if (value) {
-            check_positive(*value, named(key));
-            if (!g.output) fail_input(fmt::format("{}: sets what output writes; expected output too", key));
-        }
-    if (g.u && g.output->ends_with(".csv"))
-        fail_input(
-            fmt::format("u: {} holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output (or a "
-                        "Phantom dump)",
-                        *g.output));
-    if (g.tile && !g.output) fail_input("tile: copies the set output writes; expected output too");
-}
-
-// The relaxed set (tiled by tile) and its initial conditions, written to output; what was written.
-nlohmann::json write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const RelaxGiven& g,
-                                 const std::optional<RelaxCode>& code, const std::array<int, 3>& tiles)
-{
-    const bool csv = g.output->ends_with(".csv");
-    const ParticleSet tiled = g.tile ? tiled_set(run.state.set, tiles, g.settings.threads) : ParticleSet{};
-    const ParticleSet& out = g.tile ? tiled : run.state.set;
-    write_particle_file(*g.output, out,
-                        initial_conditions(kernel, out, run, {g.settings.gamma, g.rho0.value_or(1), g.u}, code,
-                                           g.settings.threads),
-                        g.settings.threads);
-    const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
-    const std::string layout = csv ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
-    return {{"file", std::filesystem::absolute(*g.output).lexically_normal().string()},
-            {"particles", out.size()},
-            {"layout", layout}};
+    write_file_atomically(file, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
 }
 
 py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g,
@@ -155,7 +112,7 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
     check_relax_settings(g.settings, sources);
     check_rdf(g.rdf_max, g.rdf_bins, sources);
     const CodeSettingSources code_sources{named("code"), named("value")};
-    const std::optional<RelaxCode> code = relax_code_given(g);
+    const std::optional<RelaxCode> code = relax_code_given(g, code_sources);
     if (source_given.particle_radius && (g.h_over_l || g.nh || g.k))
         fail_input("particle_radius gives a SPlisHSPlasH file's h; expected no h_over_l, nh or k beside it");
     SmoothingSpec spec = smoothing_spec({g.h_over_l, g.nh, g.k, std::nullopt}, sources.smoothing);
@@ -167,7 +124,8 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
         if (std::filesystem::exists(spec_text)) inputs.push_back(spec_text);
     check_output_targets(outputs, inputs);
     if (g.output) check_relax_output(*g.output, named("output"), code);
-    check_output_settings(g);
+    const RelaxOutput output{g.output.value_or(""), g.tile.value_or(""), g.rho0, g.u};
+    check_relax_output_settings(output, FrontEnd::python);
     const ParticleSource source = source_of(source_given);
     const auto kernel = kernel_of(kernel_spec, params);
     nlohmann::json document;
@@ -182,13 +140,13 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
         const bool csv = g.output && g.output->ends_with(".csv");
         if (g.output) require_layout_box(set, csv ? ParticleLayout::swift : relax_layout(code), "output " + *g.output);
         const auto tiles = tiles_of(g.tile.value_or(""), set, named("tile"));
-        run = relax_until_diverged(kernel, std::move(set), h, g.settings, g.history);
+        run = relax_until_diverged(kernel, std::move(set), h, g.settings, {}, g.history.value_or(""),
+                                   [&](const std::vector<RelaxStep>& steps) { write_history(*g.history, steps); });
         const RelaxedSet judged = judge_relaxed(kernel, run, g.settings.threads, g.rdf_max, g.rdf_bins);
         document = relax_json(kernel, g.settings, run, judged);
         if (code) document["code"] = relax_code_json(*code);
-        if (g.output) document["output"] = write_relaxed_set(kernel, run, g, code, tiles);
-        if (g.history)
-            write_file_atomically(*g.history, [&](std::ostream& out) { write_relax_history_csv(out, run.history); });
+        if (g.output) document["output"] = write_relaxed_set(kernel, run, output, g.settings, code, tiles).json;
+        if (g.history) write_history(*g.history, run.history);
     }
     py::dict out = to_python(document);
     out["positions"] = positions_array(run.state.set);

@@ -194,6 +194,15 @@ std::string relax_code_text(const RelaxCode& code)
                            : "written with the run's h in the code's convention");
 }
 
+void check_code_beside_h(const RelaxCode& code, bool h_given, FrontEnd f, const CodeSettingSources& sources)
+{
+    if (!code.value || !h_given) return;
+    throw Error(sources.code.code,
+                fmt::format("{} {} sets h with {}; expected no {}, {} or {} beside it", sources.code.name, code.name,
+                            sources.value.name, value_named(f, "h_over_l").name, value_named(f, "nh").name,
+                            value_named(f, "k").name));
+}
+
 void check_relax_output(const std::string& file, const ValueSource& source, const std::optional<RelaxCode>& code)
 {
     // An unknown code is left to check_relax_code, which names --code.

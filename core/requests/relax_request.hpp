@@ -48,6 +48,10 @@ struct RelaxCode {
     std::optional<double> value;
 };
 
+// A code whose parameter is given sets h: no other rule for h beside it (h_given: h_over_l, nh
+// or k), named as the front end names them.
+void check_code_beside_h(const RelaxCode& code, bool h_given, FrontEnd front_end, const CodeSettingSources& sources);
+
 // A code, a value its parameter can take, a kernel it ships; named alone only beside an
 // output (empty: none); an output other than .csv only for the codes whose initial conditions
 // sphkern writes (the codes with a layout: HDF5, or Phantom's dump), and a name the code opens

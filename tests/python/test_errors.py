@@ -92,6 +92,12 @@ def test_an_output_that_cannot_be_written_is_an_os_error(tmp_path):
     (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, size=[2, 2, 2]), ["size cuts a lattice"]),
     (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, tile=[2, 2, 2]), ["tile", "expected output"]),
     (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, value=1.2), ["value", "expected code"]),
+    (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, rho0=2.0),
+     ["rho0 sets what output writes; expected output too"]),
+    (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, output="x.csv", u=2.0),
+     ["u: x.csv holds x, y[, z], h and m, no internal energy; expected an .h5 or .hdf5 output"]),
+    (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, code="swift", value=1.2, nh=50.0),
+     ["code swift sets h with value; expected no h_over_l, nh or k beside it"]),
     (lambda: sphkern.run("design", "/tmp/never", format="gif"), ["format gif", "expected svg, png or pdf"]),
     (lambda: sphkern.run("design", reproduce="x.json"), ["reproduce", "expected no study"]),
 ])
