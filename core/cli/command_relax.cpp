@@ -97,6 +97,17 @@ void write_history(const RelaxOptions& o, const std::vector<RelaxStep>& steps, R
     else write_file_atomically(o.history, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
 }
 
+// The run, each step's particles to the series where --history names one; a diverged run's
+// steps to --history.
+RelaxResult relax_with_history(const Kernel& kernel, ParticleSet set, double h, const RelaxOptions& o,
+                               RelaxSeries* series)
+{
+    std::function<void(const RelaxState&, const RelaxStep&)> observe;
+    if (series) observe = [series](const RelaxState& state, const RelaxStep& step) { series->write_step(state, step); };
+    return relax_until_diverged(kernel, std::move(set), h, o.settings, observe, o.history,
+                                [&](const std::vector<RelaxStep>& steps) { write_history(o, steps, series); });
+}
+
 // The series' .vtu files against what the run reads; their names differ from each other and
 // from --output (.h5 or .csv) by construction, so each is checked alone.
 void check_series_targets(const RelaxSeries& series, const std::vector<std::string>& inputs)
@@ -155,14 +166,7 @@ Action add_relax_command(Command app)
         if (!o.output.empty())
             require_box_for_output(set, o, o.output.ends_with(".csv") ? ParticleLayout::swift : relax_layout(code));
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
-        RelaxSeries* steps = series ? &*series : nullptr;
-        const RelaxResult run =
-            relax_until_diverged(kernel, std::move(set), h, o.settings,
-                                 steps ? [steps](const RelaxState& state,
-                                                 const RelaxStep& step) { steps->write_step(state, step); }
-                                       : std::function<void(const RelaxState&, const RelaxStep&)>(),
-                                 o.history,
-                                 [&](const std::vector<RelaxStep>& history) { write_history(o, history, steps); });
+        const RelaxResult run = relax_with_history(kernel, std::move(set), h, o, series ? &*series : nullptr);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
         const WrittenSet wrote =
             o.output.empty() ? WrittenSet{} : write_relaxed_set(kernel, run, output, o.settings, code, tiles);
