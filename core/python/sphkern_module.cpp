@@ -512,7 +512,7 @@ void bind_stability(py::module_& m, const Guard& guard)
             nlohmann::json document;
             {
                 py::gil_scoped_release unlocked;
-                document = run_stability(request, sources, kernel, lattice);
+                document = stability_json(run_stability(request, sources, kernel, lattice));
             }
             return to_python(document);
         },

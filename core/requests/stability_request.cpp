@@ -3,6 +3,7 @@
 #include "requests/settings/command_settings.hpp"
 
 #include "analysis/hydrostatic_errors.hpp"
+#include "analysis/results_json.hpp"
 #include "stability/dispersion.hpp"
 #include "stability/stability_budget.hpp"
 #include "stability/stability_json.hpp"
@@ -48,22 +49,21 @@ void check_combination(const StabilityRequest& r, const StabilitySources& source
 
 // The stable intervals in a code's own setting, with the lattice's density at site 0 (its
 // voronoi volume, as the dispersion matrix has it).
-nlohmann::json intervals_in_code(const CodeProfile& code, const Kernel& kernel, const Lattice& lattice, double k_max,
-                                 const nlohmann::json& document)
+CodeIntervals intervals_in_code(const CodeProfile& code, const Kernel& kernel, const Lattice& lattice, double k_max,
+                                const StabilityOverK& scan)
 {
     require_code_kernel(code, kernel, lattice.dimension);
     require_lattice_volume(code, "a window of k at the lattice's a_p");
     const double a_p = lattice.volume_coefficient("voronoi");
     const HydrostaticErrors errors(kernel, lattice, 0, a_p, lattice.gravity, k_max);
-    auto value = [&](double k) {
-        return code_parameter(code, kernel, lattice.dimension, a_p, k, errors.at(k).eps_rho);
+    auto in_code = [&](const std::vector<KInterval>& intervals) {
+        std::vector<KInterval> out;
+        for (const KInterval& i : intervals)
+            out.push_back({code_parameter(code, kernel, lattice.dimension, a_p, i.from, errors.at(i.from).eps_rho),
+                           code_parameter(code, kernel, lattice.dimension, a_p, i.to, errors.at(i.to).eps_rho)});
+        return out;
     };
-    nlohmann::json out = {{"name", code.name}, {"parameter", code.parameter}};
-    for (const char* key : {"stable_intervals", "stable_at_horizon"}) {
-        out[key] = nlohmann::json::array();
-        for (const auto& i : document[key]) out[key].push_back({value(i[0].get<double>()), value(i[1].get<double>())});
-    }
-    return out;
+    return {code.name, code.parameter, in_code(scan.stable), in_code(scan.usable)};
 }
 
 } // namespace
@@ -82,8 +82,8 @@ void check_stability_request(const StabilityRequest& r, const StabilitySources& 
     check_horizon(r.horizon, sources.horizon.name);
 }
 
-nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& sources, const Kernel& kernel,
-                             const Lattice& lattice)
+StabilityResult run_stability(const StabilityRequest& r, const StabilitySources& sources, const Kernel& kernel,
+                              const Lattice& lattice)
 {
     const int threads = worker_threads(r.threads);
     const int grid = r.grid.value_or(0);
@@ -95,26 +95,38 @@ nlohmann::json run_stability(const StabilityRequest& r, const StabilitySources& 
     case StabilityMode::path:
         check_dispersion_work("the dispersion path", kernel, lattice, *r.k, *r.path_points,
                               fmt::format("a smaller {} or {}", k, path));
-        return dispersion_path_document(kernel, lattice, *r.k, r.gamma, *r.path_points, r.h_model);
+        return {path_dispersion(kernel, lattice, *r.k, r.gamma, *r.path_points, r.h_model), std::nullopt};
     case StabilityMode::wavevector: {
         const auto kappa = checked_wavevector(*r.wavevector, lattice.dimension, sources.wavevector.name);
-        return dispersion_document(kernel, lattice, *r.k, r.gamma, kappa, r.h_model);
+        return {modes_at(kernel, lattice, *r.k, r.gamma, kappa, r.h_model), std::nullopt};
     }
     case StabilityMode::over_k: {
         check_stability_budget("the stability scan over k", r.steps, grid, lattice.dimension,
                                fmt::format("a smaller {} or {}", steps, grid_name));
         check_stability_work("the stability scan over k", kernel, lattice, *r.k_min, *r.k_max, r.steps, grid,
                              fmt::format("a smaller {}, {} or {}", k_max, steps, grid_name));
-        auto document = stability_over_k_document(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid, threads,
-                                                  r.horizon, r.h_model);
-        if (r.code) document["code"] = intervals_in_code(*r.code, kernel, lattice, *r.k_max, document);
-        return document;
+        StabilityAgainstK scan = stability_against_k(kernel, lattice, *r.k_min, *r.k_max, r.steps, r.gamma, grid,
+                                                     threads, r.horizon, r.h_model);
+        std::optional<CodeIntervals> code;
+        if (r.code) code = intervals_in_code(*r.code, kernel, lattice, *r.k_max, scan.scan);
+        return {std::move(scan), std::move(code)};
     }
     case StabilityMode::zone_scan: break;
     }
     check_stability_work("the stability zone scan", kernel, lattice, *r.k, *r.k, 0, grid,
                          fmt::format("a smaller {} or {}", k, grid_name));
-    return stability_document(kernel, lattice, *r.k, r.gamma, grid, threads, r.horizon, r.h_model);
+    return {zone_scan(kernel, lattice, *r.k, r.gamma, grid, threads, r.horizon, r.h_model), std::nullopt};
+}
+
+nlohmann::json stability_json(const StabilityResult& result)
+{
+    nlohmann::json document = std::visit([](const auto& r) { return stability_json(r); }, result.result);
+    if (result.code)
+        document["code"] = {{"name", result.code->name},
+                            {"parameter", result.code->parameter},
+                            {"stable_intervals", intervals_json(result.code->stable)},
+                            {"stable_at_horizon", intervals_json(result.code->usable)}};
+    return document;
 }
 
 } // namespace sphkern

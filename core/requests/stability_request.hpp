@@ -2,10 +2,12 @@
 // Python's sphkern.stability): validated once, run by one dispatch on its mode.
 #pragma once
 
+#include "analysis/acceptance.hpp"
 #include "codes/code_table.hpp"
 #include "kernels/kernel.hpp"
 #include "lattices/lattice.hpp"
 #include "stability/h_model.hpp"
+#include "stability/stability_results.hpp"
 #include "stability/stability_scan.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -13,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace sphkern {
@@ -53,8 +56,22 @@ struct StabilitySources {
 // an Error naming its source.
 void check_stability_request(const StabilityRequest& request, const StabilitySources& sources);
 
-// The document `sphkern stability --json` prints for the request's mode.
-nlohmann::json run_stability(const StabilityRequest& request, const StabilitySources& sources, const Kernel& kernel,
-                             const Lattice& lattice);
+// A code's stable intervals (over_k with a code): the same intervals in the code's own setting.
+struct CodeIntervals {
+    std::string name, parameter;
+    std::vector<KInterval> stable, usable; // of the code's parameter
+};
+
+// What run_stability computed for the request's mode, and the code's intervals where asked.
+struct StabilityResult {
+    std::variant<ZoneScan, WavevectorModes, PathDispersion, StabilityAgainstK> result;
+    std::optional<CodeIntervals> code;
+};
+
+StabilityResult run_stability(const StabilityRequest& request, const StabilitySources& sources, const Kernel& kernel,
+                              const Lattice& lattice);
+
+// The document `sphkern stability --json` prints (requests/stability_report.hpp prints the text).
+nlohmann::json stability_json(const StabilityResult& result);
 
 } // namespace sphkern
