@@ -110,9 +110,9 @@ Action add_stability_command(Command app)
         const auto sources = option_sources(*options);
         check_stability_request(request, sources);
         const auto [lattice, kernel] = kernel_on_lattice(*options, options->kernel, options->lattice, options->sets);
-        const auto document = stability_json(run_stability(request, sources, kernel, lattice));
-        if (options->json) print_json(document);
-        else print_stability(document, request, kernel.label(), lattice);
+        const StabilityResult result = run_stability(request, sources, kernel, lattice);
+        if (options->json) print_json(stability_json(result));
+        else print_stability(result, request, kernel.label(), lattice);
         return 0;
     };
 }

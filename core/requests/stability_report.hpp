@@ -1,17 +1,15 @@
-// The text `sphkern stability` prints: the document of run_stability, for the request's mode
-// (the modes at a wave vector, a path, the zone scan with the long waves, or k by k).
+// The text `sphkern stability` prints: run_stability's result, for the request's mode (the
+// modes at a wave vector, a path, the zone scan with the long waves, or k by k).
 #pragma once
 
 #include "lattices/lattice.hpp"
 #include "requests/stability_request.hpp"
 
-#include <nlohmann/json_fwd.hpp>
-
 #include <string>
 
 namespace sphkern {
 
-void print_stability(const nlohmann::json& document, const StabilityRequest& request, const std::string& kernel,
+void print_stability(const StabilityResult& result, const StabilityRequest& request, const std::string& kernel,
                      const Lattice& lattice);
 
 } // namespace sphkern
