@@ -3,6 +3,7 @@
 // and to brute force.
 #include "helpers.hpp"
 #include "lattices/lattice.hpp"
+#include "pair_test_sets.hpp"
 #include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/pair_list.hpp"
 #include "particles/engine/symmetric_pair_pass.hpp"
@@ -98,26 +99,7 @@ double worst_difference(const std::vector<double>& a, const std::vector<double>&
 TEST_CASE("a pair list that lasts gives the sums of a fresh search of the moved set (1e-13) with the same pairs, the "
           "same bits on 1, 2 and 7 threads, and holds only while no particle has moved half its skin")
 {
-    struct Case {
-        std::string name;
-        ParticleSet set;
-        double reach;
-    };
-    std::vector<Case> cases;
-    for (int dim : {2, 3})
-        for (bool periodic : {true, false}) {
-            PoissonSpec spec;
-            spec.dimension = dim, spec.count = dim == 3 ? 6000 : 3000, spec.seed = 3 + dim;
-            spec.box = Eigen::Vector3d(1.0, 1.3, 0.9);
-            ParticleSet set = poisson_particles(spec);
-            if (!periodic) set.box.reset();
-            cases.push_back(
-                {fmt::format("Poisson {}D{}", dim, periodic ? " periodic" : ""), set, dim == 3 ? 0.13 : 0.08});
-        }
-    LatticeBlockSpec spec;
-    spec.cells = {7, 7, 6}, spec.sigma = 0.05;
-    cases.push_back({"fcc block", lattice_particles(load_lattice("fcc"), spec), 2.1});
-    for (const Case& c : cases) {
+    for (const test::PairTestSet& c : test::pair_test_sets(3)) {
         CAPTURE(c.name);
         // Built with no skin and read where it was built: the symmetric pass's very sums.
         const PairList exact(c.set, c.reach, 0.0, 1);

@@ -5,6 +5,7 @@
 #include "analysis/site_errors.hpp"
 #include "helpers.hpp"
 #include "lattices/rectangular_cell.hpp"
+#include "pair_test_sets.hpp"
 #include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/neighbour_grid.hpp"
 #include "particles/engine/pair_pass.hpp"
@@ -867,20 +868,9 @@ TEST_CASE("each pair once equals every particle gathering its own (1e-13) on lat
 {
     const auto dir = std::filesystem::temp_directory_path() / ("sphkern-pairs-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    struct Case {
-        std::string name;
-        ParticleSet set;
-        double reach;
-    };
-    std::vector<Case> cases;
-    for (int dim : {2, 3})
-        for (bool periodic : {true, false})
-            cases.push_back({fmt::format("Poisson {}D{}", dim, periodic ? " periodic" : ""),
-                             random_set(dim, dim == 3 ? 6000 : 3000, periodic, 7 + dim), dim == 3 ? 0.13 : 0.08});
+    std::vector<test::PairTestSet> cases = test::pair_test_sets(7);
     LatticeBlockSpec spec;
-    spec.cells = {7, 7, 6}, spec.sigma = 0.05;
-    cases.push_back({"fcc block", lattice_particles(load_lattice("fcc"), spec), 2.1});
-    spec.cells = {14, 12, 1};
+    spec.sigma = 0.05, spec.cells = {14, 12, 1};
     cases.push_back({"triangular block", lattice_particles(load_lattice("triangular"), spec), 2.3});
     {
         // A file: positions as a CSV holds them, in two clumps of different density, with no box.
@@ -895,7 +885,7 @@ TEST_CASE("each pair once equals every particle gathering its own (1e-13) on lat
     ParticleSet some_neighbours_only = random_set(3, 5000, true, 3);
     some_neighbours_only.neighbours_only = 1500; // the last 1500: candidates only
     cases.push_back({"Poisson with neighbours-only particles", some_neighbours_only, 0.13});
-    for (const Case& c : cases) {
+    for (const test::PairTestSet& c : cases) {
         CAPTURE(c.name);
         const auto one = pair_sums_both_ways(c.set, c.reach, 1);
         double worst = 0, scale = 0;
