@@ -196,12 +196,4 @@ std::size_t PairList::listed_pairs() const
     return pairs;
 }
 
-std::size_t PairList::bytes() const
-{
-    std::size_t listed = 0;
-    for (const TileList& list : tile_lists_) listed += list.candidates.capacity() + list.neighbours.capacity();
-    return sizeof(std::uint32_t) * listed + sizeof(Range) * (cluster_candidates_.size() + point_neighbours_.size()) +
-           sizeof(double) * (x_.size() + y_.size() + z_.size() + 3 * since_build_->size() + order_->keys.size());
-}
-
 } // namespace sphkern

@@ -83,9 +83,8 @@ public:
         });
     }
 
-    // The listed pairs (each pair once) and the bytes the list holds, for the benchmarks.
+    // The listed pairs, each pair once (within the support and the skin).
     std::size_t listed_pairs() const;
-    std::size_t bytes() const;
 
 private:
     struct ListScratch : ClusterScratch {
