@@ -168,18 +168,18 @@ Action add_relax_command(Command app)
         const auto tiles = tiles_of(o.tile, set, ValueSource::option("--tile"));
         const RelaxResult run = relax_with_history(kernel, std::move(set), h, o, series ? &*series : nullptr);
         const RelaxedSet judged = judge_relaxed(kernel, run, o.settings.threads, o.rdf_max, o.rdf_bins);
-        const WrittenSet wrote =
-            o.output.empty() ? WrittenSet{} : write_relaxed_set(kernel, run, output, o.settings, code, tiles);
+        std::optional<WrittenSet> wrote;
+        if (!o.output.empty()) wrote = write_relaxed_set(kernel, run, output, o.settings, code, tiles);
         if (!o.history.empty()) write_history(o, run.history, series ? &*series : nullptr);
         if (o.json) {
             auto document = relax_json(kernel, o.settings, run, judged);
             if (code) document["code"] = relax_code_json(*code);
-            if (!wrote.text.empty()) document["output"] = wrote.json;
+            if (wrote) document["output"] = written_json(*wrote);
             print_json(document, source_inputs(o, kernel, digest.get()));
         } else {
             print_relax(results_file(), kernel, o.settings, run, judged);
             if (code) fmt::print(results_file(), "{}\n", relax_code_text(*code));
-            if (!wrote.text.empty()) fmt::print(results_file(), "{}\n", wrote.text);
+            if (wrote) fmt::print(results_file(), "{}\n", written_text(*wrote));
         }
         return 0;
     };

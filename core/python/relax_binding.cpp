@@ -145,7 +145,8 @@ py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source
         const RelaxedSet judged = judge_relaxed(kernel, run, g.settings.threads, g.rdf_max, g.rdf_bins);
         document = relax_json(kernel, g.settings, run, judged);
         if (code) document["code"] = relax_code_json(*code);
-        if (g.output) document["output"] = write_relaxed_set(kernel, run, output, g.settings, code, tiles).json;
+        if (g.output)
+            document["output"] = written_json(write_relaxed_set(kernel, run, output, g.settings, code, tiles));
         if (g.history) write_history(*g.history, run.history);
     }
     py::dict out = to_python(document);

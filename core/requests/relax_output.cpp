@@ -5,6 +5,7 @@
 #include "support/error.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 
@@ -44,9 +45,17 @@ WrittenSet write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const
                         settings.threads);
     const char* layouts[] = {"SWIFT HDF5", "GADGET HDF5", "PySPH HDF5", "Phantom full dump"};
     const std::string layout = output.file.ends_with(".csv") ? "CSV" : layouts[static_cast<int>(relax_layout(code))];
-    const std::string where = std::filesystem::absolute(output.file).lexically_normal().string();
-    return {fmt::format("wrote {}: {} particles, {} layout", where, out.size(), layout),
-            {{"file", where}, {"particles", out.size()}, {"layout", layout}}};
+    return {std::filesystem::absolute(output.file).lexically_normal().string(), layout, out.size()};
+}
+
+std::string written_text(const WrittenSet& w)
+{
+    return fmt::format("wrote {}: {} particles, {} layout", w.file, w.particles, w.layout);
+}
+
+nlohmann::json written_json(const WrittenSet& w)
+{
+    return {{"file", w.file}, {"particles", w.particles}, {"layout", w.layout}};
 }
 
 RelaxResult relax_until_diverged(const Kernel& kernel, ParticleSet set, double h, const RelaxSettings& settings,

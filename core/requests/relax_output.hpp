@@ -7,9 +7,10 @@
 #include "requests/relax_request.hpp"
 #include "support/text/value_checks.hpp"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <array>
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -28,12 +29,14 @@ struct RelaxOutput {
 // named as the front end names them.
 void check_relax_output_settings(const RelaxOutput& output, FrontEnd front_end);
 
-// The set written (tiled), its initial conditions at the run's settings and the code's h:
-// "wrote F: N particles, L layout" and {"file", "particles", "layout"}.
+// The set written (tiled), its initial conditions at the run's settings and the code's h.
 struct WrittenSet {
-    std::string text;
-    nlohmann::json json;
+    std::string file, layout; // the absolute path; "CSV", "SWIFT HDF5", ...
+    std::size_t particles = 0;
 };
+// "wrote F: N particles, L layout" and {"file", "particles", "layout"}.
+std::string written_text(const WrittenSet& written);
+nlohmann::json written_json(const WrittenSet& written);
 WrittenSet write_relaxed_set(const Kernel& kernel, const RelaxResult& run, const RelaxOutput& output,
                              const RelaxSettings& settings, const std::optional<RelaxCode>& code,
                              const std::array<int, 3>& tiles);
