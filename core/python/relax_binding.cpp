@@ -7,15 +7,9 @@
 #include "python_types.hpp"
 #include "setting_keywords.hpp"
 
-#include "particles/formats/particle_writers.hpp"
-#include "particles/tiled_set.hpp"
-#include "requests/relax_output.hpp"
-#include "requests/relax_report.hpp"
-#include "requests/relax_request.hpp"
+#include "requests/relax_run.hpp"
 #include "requests/source_request.hpp"
 #include "support/error.hpp"
-#include "support/io/atomic_file.hpp"
-#include "support/io/output_targets.hpp"
 #include "support/process/interruption.hpp"
 #include "support/text/value_checks.hpp"
 
@@ -74,7 +68,7 @@ ParticleSource source_of(const SourceGiven& g)
                               source_sources(FrontEnd::python));
 }
 
-struct RelaxGiven {
+struct RelaxArguments {
     std::optional<double> h_over_l, nh, k;
     std::optional<std::string> code;
     std::optional<double> value;
@@ -87,67 +81,51 @@ struct RelaxGiven {
     std::optional<double> rho0, u;
 };
 
-// The code and its setting, if given; where the setting sets h, no other h beside it.
-std::optional<RelaxCode> relax_code_given(const RelaxGiven& g, const CodeSettingSources& sources)
+// The code and its setting, if given.
+std::optional<RelaxCode> relax_code_given(const RelaxArguments& a)
 {
-    if (g.value && !g.code) fail_input("value: the parameter of a code; expected code too");
-    std::optional<RelaxCode> code;
-    if (g.code) code = RelaxCode{*g.code, g.value};
-    if (code) check_code_beside_h(*code, g.h_over_l || g.nh || g.k, FrontEnd::python, sources);
-    return code;
+    if (a.value && !a.code) fail_input("value: the parameter of a code; expected code too");
+    if (a.code) return RelaxCode{*a.code, a.value};
+    return std::nullopt;
 }
 
-// The steps as CSV.
-void write_history(const std::string& file, const std::vector<RelaxStep>& steps)
-{
-    write_file_atomically(file, [&](std::ostream& out) { write_relax_history_csv(out, steps); });
-}
-
-py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, RelaxGiven g,
+py::dict relax_command(const std::string& kernel_spec, const SourceGiven& source_given, const RelaxArguments& a,
                        const OptionalParams& params)
 {
-    set_memory_budget(g.memory_limit, named("memory_limit"));
-    const auto sources = relax_sources(FrontEnd::python);
-    g.settings.method = relax_method_of(g.method, sources.method);
-    check_relax_settings(g.settings, sources);
-    check_rdf(g.rdf_max, g.rdf_bins, sources);
-    const CodeSettingSources code_sources{named("code"), named("value")};
-    const std::optional<RelaxCode> code = relax_code_given(g, code_sources);
-    if (source_given.particle_radius && (g.h_over_l || g.nh || g.k))
+    set_memory_budget(a.memory_limit, named("memory_limit"));
+    if (source_given.particle_radius && (a.h_over_l || a.nh || a.k))
         fail_input("particle_radius gives a SPlisHSPlasH file's h; expected no h_over_l, nh or k beside it");
-    SmoothingSpec spec = smoothing_spec({g.h_over_l, g.nh, g.k, std::nullopt}, sources.smoothing);
-    std::vector<OutputTarget> outputs;
-    if (g.output) outputs.push_back({"output", *g.output});
-    if (g.history) outputs.push_back({"history", *g.history});
     std::vector<std::string> inputs;
     for (const auto& spec_text : {source_given.spec, kernel_spec})
         if (std::filesystem::exists(spec_text)) inputs.push_back(spec_text);
-    check_output_targets(outputs, inputs);
-    if (g.output) check_relax_output(*g.output, named("output"), code);
-    const RelaxOutput output{g.output.value_or(""), g.tile.value_or(""), g.rho0, g.u};
-    check_relax_output_settings(output, FrontEnd::python);
+    const bool primitive_block =
+        source_kind(source_given.spec) == SourceKind::lattice && source_given.cell.value_or("") != "rectangular";
+    const RelaxJob job = relax_job({a.h_over_l,
+                                    a.nh,
+                                    a.k,
+                                    relax_code_given(a),
+                                    {named("code"), named("value")},
+                                    a.method,
+                                    a.settings,
+                                    a.rdf_max,
+                                    a.rdf_bins,
+                                    a.output,
+                                    a.history,
+                                    a.tile.value_or(""),
+                                    a.rho0,
+                                    a.u,
+                                    primitive_block},
+                                   FrontEnd::python, inputs);
     const ParticleSource source = source_of(source_given);
     const auto kernel = kernel_of(kernel_spec, params);
     nlohmann::json document;
     RelaxResult run;
     {
         py::gil_scoped_release unlocked;
-        ParticleSet set = load_source(source, source_sources(FrontEnd::python), g.settings.threads);
-        if (code) check_relax_code(*code, g.output.value_or(""), kernel, set.dimension, code_sources);
-        if (code && code->value) spec = relax_code_smoothing(*code, kernel, set.dimension, code_sources);
-        check_output_targets(outputs, set.linked_files);
-        const double h = relax_h(spec, set, kernel, sources.smoothing);
-        const bool csv = g.output && g.output->ends_with(".csv");
-        if (g.output) require_layout_box(set, csv ? ParticleLayout::swift : relax_layout(code), "output " + *g.output);
-        const auto tiles = tiles_of(g.tile.value_or(""), set, named("tile"));
-        run = relax_until_diverged(kernel, std::move(set), h, g.settings, {}, g.history.value_or(""),
-                                   [&](const std::vector<RelaxStep>& steps) { write_history(*g.history, steps); });
-        const RelaxedSet judged = judge_relaxed(kernel, run, g.settings.threads, g.rdf_max, g.rdf_bins);
-        document = relax_json(kernel, g.settings, run, judged);
-        if (code) document["code"] = relax_code_json(*code);
-        if (g.output)
-            document["output"] = written_json(write_relaxed_set(kernel, run, output, g.settings, code, tiles));
-        if (g.history) write_history(*g.history, run.history);
+        ParticleSet set = load_source(source, source_sources(FrontEnd::python), a.settings.threads);
+        RelaxOutcome outcome = run_relax(kernel, std::move(set), job);
+        document = relax_outcome_json(kernel, job, outcome);
+        run = std::move(outcome.run);
     }
     py::dict out = to_python(document);
     out["positions"] = positions_array(run.state.set);

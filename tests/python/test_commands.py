@@ -168,6 +168,25 @@ def test_relax_is_the_command_s(tmp_path):
     np.testing.assert_allclose(positions[:, 0], [float(r["x"]) for r in rows], rtol=1e-12)
 
 
+def test_relax_s_series_history_is_the_command_s(tmp_path):
+    """Both front ends run one relaxation: a .pvd history is a ParaView series from Python too."""
+    args = dict(count=200, dim=2, steps=3, threads=1)
+    (tmp_path / "a").mkdir(), (tmp_path / "b").mkdir()
+    sphkern.relax("cubic_bspline", "poisson", history=str(tmp_path / "a" / "run.pvd"), **args)
+    cli_json("relax", "cubic_bspline", "poisson", "--count", "200", "--dim", "2", "--steps", "3", "--threads", "1",
+             "--history", str(tmp_path / "b" / "run.pvd"))
+    names = sorted(os.listdir(tmp_path / "a"))
+    assert names == ["run.pvd", "run_0.vtu", "run_1.vtu", "run_2.vtu", "run_3.vtu"]
+    assert names == sorted(os.listdir(tmp_path / "b"))
+    for name in names:
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name
+
+
+def test_relax_names_the_rectangular_cell_for_a_primitive_block(tmp_path):
+    with pytest.raises(ValueError, match="; cell='rectangular' cuts the block from the lattice's rectangular cell$"):
+        sphkern.relax("wendland_c2", "fcc", size=[3, 3, 3], k=1.2, steps=1, threads=1, output=str(tmp_path / "a.h5"))
+
+
 def test_relax_of_a_disturbed_lattice_block_is_the_command_s():
     mine = sphkern.relax("wendland_c2", "sc", size=[6, 6, 6], sigma=0.02, k=1.2, method="shift", steps=5,
                          threads=1)
