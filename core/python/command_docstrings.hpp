@@ -316,7 +316,7 @@ True
 )doc";
 
 inline constexpr const char* settings =
-    R"doc(The settings a command takes, as its table declares them once for the command line and Python.
+    R"doc(The settings a command takes, as its table declares them once for the command line, Python and studies.
 
 Parameters
 ----------
@@ -329,9 +329,11 @@ list of dict
     One dict per setting, in the order of the command's --help: key, type ("number",
     "integer", "word", "flag" or "list"), default (None where there is none), help, option
     (the command line's spelling, None where it has none), keyword (Python's, None where it
-    has none), positional, required, hidden (an old name the command line keeps) and
-    bounds (None, or the values a number may take: min, max, low "open" or "closed", the
-    unit, and count: a whole number from min to max).
+    has none), study (the JSON Pointer of the study section's key that takes it, below
+    the section: "/k/steps"; None where studies have none), positional, required, hidden
+    (an old name the command line keeps) and bounds (None, or the values a number may
+    take: min, max, low "open" or "closed", the unit, and count: a whole number from min to
+    max).
 
 Examples
 --------
@@ -339,6 +341,8 @@ Examples
 [0.75]
 >>> [s["option"] for s in sphkern.settings("eps") if s["key"] == "a_p"]
 ['--ap']
+>>> [s["study"] for s in sphkern.settings("stability") if s["key"] == "path"]
+['/path_points']
 )doc";
 
 } // namespace sphkern::doc

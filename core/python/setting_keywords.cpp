@@ -92,6 +92,7 @@ py::list settings_listing(const std::string& command)
         py::dict row;
         row["key"] = s.key, row["type"] = type_name(s.type), row["default"] = default_of(s), row["help"] = s.help;
         row["option"] = text_or_none(s.option), row["keyword"] = text_or_none(s.keyword);
+        row["study"] = text_or_none(s.study_key);
         row["positional"] = s.positional, row["required"] = s.required, row["hidden"] = s.hidden;
         row["bounds"] = bounds_of(s);
         rows.append(row);

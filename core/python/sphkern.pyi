@@ -153,7 +153,7 @@ def run(study: Optional[str]=..., output: Optional[str]=..., *, no_plots: bool=.
 
 
 def settings(command: str) -> list:
-    """The settings a command takes, as its table declares them once for the command line and Python."""
+    """The settings a command takes, as its table declares them once for the command line, Python and studies."""
     ...
 
 

@@ -152,15 +152,79 @@ def test_the_python_guide_gives_the_declared_defaults():
 SCHEMA = os.path.join(os.path.dirname(__file__), "..", "..", "share", "schemas", "study.schema.json")
 
 
-def test_the_study_schema_gives_the_stability_sections_keys_the_declared_bounds():
-    """A study's stability section is a front end of `stability`: its keys take that command's
-    settings (path_points is --path), and the schema that editors check a study with says so."""
+# The study sections that are front ends of a command: where the section sits in a study, a
+# study around it, and the schema's entry for it.
+STUDY_SECTIONS = {
+    "stability": ("/stability", lambda section: {"name": "s", "kernels": ["cubic_bspline"], "lattices": ["fcc"],
+                                                 "plots": False, "stability": section},
+                  lambda schema: schema["properties"]["stability"]),
+    "relax": ("/particles/sources/0/relax",
+              lambda section: {"name": "s", "kernels": ["wendland_c2"], "lattices": ["fcc"], "plots": False,
+                               "particles": {"sources": [{"poisson": 3, "count": 500,
+                                                          "relax": {"kernel": "wendland_c2", **section}}],
+                                             "nh": {"min": 30, "max": 60, "steps": 1}}},
+              lambda schema: schema["$defs"]["particle_relax"]),
+}
+
+
+def study_rows():
+    """(command, row) of every setting a study section takes, from the tables."""
+    rows = [(c, s) for c in COMMANDS for s in sphkern.settings(c) if s["study"]]
+    assert {c for c, _ in rows} == set(STUDY_SECTIONS), "a section took a command's rows: name it in STUDY_SECTIONS"
+    return rows
+
+
+def schema_entry(section_schema, pointer):
+    entry = section_schema
+    for token in pointer.strip("/").split("/"):
+        entry = entry["properties"][token]
+    return entry
+
+
+def test_the_study_schema_gives_each_study_key_the_declared_bounds():
+    """A study section is a front end of its command: its keys are the rows' study keys (path_points
+    is stability's --path), and the schema that editors check a study with takes the rows' bounds."""
     import json
-    section = json.load(open(SCHEMA, encoding="utf-8"))["properties"]["stability"]["properties"]
-    declared = {s["key"]: s["bounds"] for s in sphkern.settings("stability")}
-    for schema_entry, key in ((section["grid"], "grid"), (section["path_points"], "path"),
-                              (section["k"]["properties"]["steps"], "steps")):
-        assert (schema_entry["minimum"], schema_entry["maximum"]) == (declared[key]["min"], declared[key]["max"]), key
+    schema = json.load(open(SCHEMA, encoding="utf-8"))
+    for command, row in study_rows():
+        entry = schema_entry(STUDY_SECTIONS[command][2](schema), row["study"])
+        bounds = row["bounds"]
+        if row["type"] == "integer":
+            assert entry["type"] == "integer", (command, row["key"])
+        if not bounds:
+            continue
+        low = "minimum" if bounds["low"] == "closed" else "exclusiveMinimum"
+        assert (entry.get(low), entry.get("maximum")) == (bounds["min"], bounds["max"]), (command, row["key"], entry)
+
+
+def test_the_study_format_names_each_study_key():
+    text = open(os.path.join(os.path.dirname(SCHEMA), "..", "docs", "study-format.md"), encoding="utf-8").read()
+    for command, row in study_rows():
+        assert f'"{row["study"].split("/")[-1]}"' in text, (command, row["study"])
+
+
+def nested(pointer, value):
+    for token in reversed(pointer.strip("/").split("/")):
+        value = {token: value}
+    return value
+
+
+@pytest.mark.parametrize("command,key", [(c, s["key"]) for c, s in study_rows() if s["bounds"]])
+def test_a_study_key_out_of_its_rows_bounds_is_refused_at_its_pointer(tmp_path, command, key):
+    """Each bounded study key, just past its row's largest value: exit 3, named by its JSON Pointer."""
+    import json
+    row = next(s for s in sphkern.settings(command) if s["key"] == key)
+    too_large = row["bounds"]["max"] + 1
+    if row["type"] == "integer":
+        too_large = int(too_large)
+    at, study_of, _ = STUDY_SECTIONS[command]
+    study = tmp_path / "s.json"
+    study.write_text(json.dumps(study_of(nested(row["study"], too_large))))
+    done = subprocess.run([CLI, "run", str(study), "-o", str(tmp_path / "out")], capture_output=True, text=True)
+    assert done.returncode == 3, done.stderr
+    shown = str(too_large) if isinstance(too_large, int) else f"{too_large:g}"
+    assert f"s.json: {at}{row['study']} = {shown}" in done.stderr, done.stderr
+    assert not (tmp_path / "out").exists()
 
 
 def test_a_table_names_each_setting_once_and_every_command_has_one():

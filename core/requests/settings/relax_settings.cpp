@@ -8,19 +8,20 @@ SettingTable relax_settings()
 {
     return {
         "relax",
-        {{kernel_name(),
+        {{kernel_name().in_study("/kernel"),
           positional("source", "A lattice (name or file), poisson, or a particle file (.h5/.hdf5, .csv, .vtk, a GADGET "
                                "binary snapshot, a Phantom dump)")},
          source_settings(),
-         {h_over_l_setting("h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)"),
+         {h_over_l_setting("h over the mean spacing l = V^(1/D), sphkern's own (default 1.2)").in_study("/h_over_l"),
           number("eta", "", "With --code swift: SWIFT's eta, h = eta (m / rho)^(1/D)").command_line_only(),
-          nh_setting(), number("k", "", "Lattice: h = k d"),
+          nh_setting().in_study("/nh"), number("k", "", "Lattice: h = k d"),
           word("code", "",
                "The code --output is for: swift, gadget2, gadget4, pysph or phantom (a full dump), its layout and h; "
                "with its parameter (--eta for swift), the run's h and each written h as the code sets it")},
          code_parameters({"eta", "particle_radius"}),
-         {word("method", "pressure", "pressure (SPH pressure force with damping) or shift (particle shifting)"),
-          integer("steps", "200", "At most this many steps").counted(1, 10000000),
+         {word("method", "pressure", "pressure (SPH pressure force with damping) or shift (particle shifting)")
+              .in_study("/method"),
+          integer("steps", "200", "At most this many steps").counted(1, 10000000).in_study("/steps"),
           number("tolerance", "0", "Stop once a step's RMS move is below this many h (0: never)")
               .within(0, 1, LowEnd::closed, " (units of h per step)"),
           number("gamma", "1.6666666666666667", "pressure: adiabatic index of P = rho0 c^2 / gamma (rho / rho0)^gamma")

@@ -32,6 +32,12 @@ Setting& Setting::as_keyword(std::string name)
     return *this;
 }
 
+Setting& Setting::in_study(std::string pointer)
+{
+    study_key = std::move(pointer);
+    return *this;
+}
+
 Setting& Setting::command_line_only() { return as_keyword({}); }
 
 Setting& Setting::python_only() { return as_option({}); }

@@ -32,6 +32,7 @@ struct Setting {
     std::string help;             // one line: the option's help, and what sphkern.settings lists
     std::string option;           // the command line's "--max-move" or a positional's "kernel"; empty: none
     std::string keyword;          // Python's keyword; empty: none
+    std::string study_key;        // a study section's JSON Pointer to it ("/grid", "/k/steps"); empty: none
     bool positional = false;      // before the options (kernel, lattice)
     bool required = false;        // no default in either front end (a positional but a list, unless optional())
     bool default_shown = true;    // --help shows the fallback
@@ -41,6 +42,7 @@ struct Setting {
     // Modifiers, for the tables' rows: another option or keyword, none in one front end.
     Setting& as_option(std::string name);
     Setting& as_keyword(std::string name);
+    Setting& in_study(std::string pointer); // a study section's key below the section ("/path_points")
     Setting& command_line_only();
     Setting& python_only();
     Setting& default_hidden();                // --help leaves the fallback out ("the default: every core" in the help)

@@ -4,6 +4,7 @@
 #include "requests/particles_request.hpp"
 #include "requests/relax_request.hpp"
 #include "requests/source_request.hpp"
+#include "study/declared_keys.hpp"
 #include "support/error.hpp"
 #include "support/io/file_spec.hpp"
 
@@ -35,7 +36,7 @@ void refuse_old_eta(const JsonNode& node)
 StudyRelax read_relax(const JsonNode& node)
 {
     refuse_old_eta(node);
-    node.expect_keys({"kernel", "nh", "h_over_l", "steps", "method"});
+    node.expect_keys(declared_study_keys("relax")); // the block is a front end of `relax`: its keys are the rows'
     StudyRelax r;
     r.json_path = node.path();
     r.kernel = node.at("kernel").string();
@@ -45,13 +46,14 @@ StudyRelax read_relax(const JsonNode& node)
     sources.smoothing = {source("h_over_l"), source("nh"), source("k"), source("support_per_h"), ValueSource{}};
     sources.steps = source("steps");
     auto number = [&](const char* key) {
-        const auto n = node.find(key);
+        const auto n = declared_node(node, "relax", key);
         return n ? std::optional(n->number()) : std::nullopt;
     };
     r.smoothing =
         smoothing_spec({number("h_over_l"), number("nh"), std::nullopt, std::nullopt}, sources.smoothing, r.smoothing);
-    if (auto steps = node.find("steps")) r.settings.steps = static_cast<int>(steps->integer_in(INT_MIN, INT_MAX));
-    if (auto method = node.find("method")) r.settings.method = relax_method_of(method->string(), source("method"));
+    if (auto steps = declared_number(node, "relax", "steps")) r.settings.steps = static_cast<int>(*steps);
+    if (auto method = declared_node(node, "relax", "method"))
+        r.settings.method = relax_method_of(method->string(), source("method"));
     check_relax_settings(r.settings, sources);
     return r;
 }

@@ -1,11 +1,11 @@
 #include "study/sections/stability/stability_section.hpp"
 
 #include "codes/code_table.hpp"
-#include "requests/settings/command_settings.hpp"
 #include "stability/brillouin_zone.hpp"
 #include "stability/h_model.hpp"
 #include "stability/stability_budget.hpp"
 #include "stability/stability_scan.hpp"
+#include "study/declared_keys.hpp"
 #include "study/study.hpp"
 #include "study/study_inputs.hpp"
 #include "study/study_results.hpp"
@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <limits>
 #include <mutex>
 
 namespace sphkern {
@@ -165,27 +164,10 @@ private:
 
 } // namespace
 
-namespace {
-
-// A key of the section read as the stability command's setting `key` (a whole number where
-// that is one) and checked by its declared bounds, named by its pointer: the section is a
-// front end of that command.
-double declared_value(const JsonNode& value, const char* key)
-{
-    const Setting& setting = settings_of("stability")[key];
-    const double v =
-        setting.type == SettingType::integer
-            ? static_cast<double>(value.integer_in(std::numeric_limits<int>::min(), std::numeric_limits<int>::max()))
-            : value.number();
-    check_setting(setting, v, ValueSource::json(value.file(), value.path()));
-    return v;
-}
-
-} // namespace
-
 std::shared_ptr<const StudySection> read_stability_section(const JsonNode& node, const std::filesystem::path&)
 {
-    node.expect_keys({"gamma", "k", "grid", "dispersion_k", "path_points", "horizon", "h_model"});
+    // The section is a front end of `stability`: its settings' keys are the command's rows'.
+    node.expect_keys(declared_study_keys("stability", {"gamma", "k", "dispersion_k"}));
     StabilitySpec stability;
     if (auto gamma = node.find("gamma")) stability.gamma = gamma->number_in(1e-6, 1e6);
     if (auto k = node.find("k")) {
@@ -195,18 +177,17 @@ std::shared_ptr<const StudySection> read_stability_section(const JsonNode& node,
             stability.k_max = k->at("max").number_in(1e-3, 100);
             if (*stability.k_min >= *stability.k_max) k->at("max").error("expected max > min");
         }
-        if (auto steps = k->find("steps")) stability.steps = static_cast<int>(declared_value(*steps, "steps"));
     }
-    if (auto grid = node.find("grid")) stability.grid = static_cast<int>(declared_value(*grid, "grid"));
+    if (auto steps = declared_number(node, "stability", "steps")) stability.steps = static_cast<int>(*steps);
+    if (auto grid = declared_number(node, "stability", "grid")) stability.grid = static_cast<int>(*grid);
     if (auto k = node.find("dispersion_k")) stability.path_k = read_k_or_best(*k);
-    if (auto points = node.find("path_points"))
-        stability.path_points = static_cast<int>(declared_value(*points, "path"));
-    if (auto horizon = node.find("horizon")) {
+    if (auto points = declared_number(node, "stability", "path")) stability.path_points = static_cast<int>(*points);
+    if (auto horizon = declared_node(node, "stability", "horizon")) {
         stability.horizon = horizon->number();
         at_source(ValueSource::json(horizon->file(), horizon->path()),
                   [&] { check_horizon(stability.horizon, "horizon"); });
     }
-    if (auto model = node.find("h_model")) {
+    if (auto model = declared_node(node, "stability", "h_model")) {
         const std::string name = model->text();
         if (name != "fixed" && name != "adaptive") model->error("expected \"fixed\" or \"adaptive\"");
         stability.h_model = parse_h_model(name, "h_model");
