@@ -244,7 +244,8 @@ u : float, optional
 tile : sequence of int, optional
     With output: write [N1, N2] or [N1, N2, N3] copies of the relaxed set side by side.
 history : str, optional
-    Write the history of the run as CSV.
+    Write the history of the run: F.csv its steps as CSV, F.pvd the particles at every
+    step as a ParaView series (F_k.vtu beside F.pvd).
 params : dict of str to float, optional
     The kernel's parameters.
 

@@ -716,6 +716,21 @@ void on_every_path(std::uint64_t seed, const F& f)
     use_compress_path(widest_compress_path());
 }
 
+// Each point's index as its value a, to find it again among the kept neighbours.
+std::vector<double> point_indices(const NeighbourGrid& grid)
+{
+    std::vector<double> ids(grid.points());
+    std::iota(ids.begin(), ids.end(), 0.0);
+    return ids;
+}
+
+// Point j within r of point p, not p itself, by brute force over the grid's points.
+bool within(const NeighbourGrid& grid, std::size_t j, std::size_t p, double r)
+{
+    const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p], dz = grid.z()[j] - grid.z()[p];
+    return j != p && dx * dx + dy * dy + dz * dz <= r * r;
+}
+
 } // namespace
 
 TEST_CASE("a cluster's shared candidates hold, once each, every point within each of its particles' support")
@@ -728,8 +743,7 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
         for (std::size_t i = 0; i < set.size(); ++i) reaches[i] = reach * (0.5 + 0.5 * static_cast<double>(i % 7) / 6);
         const NeighbourGrid grid(set, reach);
         const std::vector<double> point_reaches = grid.gather(reaches);
-        std::vector<double> ids(grid.points());
-        std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+        const std::vector<double> ids = point_indices(grid);
         ClusterCandidates cluster;
         Neighbours nb;
         std::size_t checked = 0, wrong = 0, neighbours = 0;
@@ -744,9 +758,7 @@ TEST_CASE("a cluster's shared candidates hold, once each, every point within eac
                 std::vector<int> kept(grid.points(), 0);
                 for (std::size_t j = 0; j < nb.count; ++j) kept[static_cast<std::size_t>(nb.a[j])] += 1;
                 for (std::size_t j = 0; j < grid.points(); ++j) {
-                    const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
-                                 dz = grid.z()[j] - grid.z()[p];
-                    const bool near = j != p && dx * dx + dy * dy + dz * dz <= r * r;
+                    const bool near = within(grid, j, p, r);
                     wrong += (near && seen[j] != 1) || kept[j] != (near ? 1 : 0);
                     neighbours += near;
                 }
@@ -765,8 +777,7 @@ TEST_CASE("each pair once: a particle keeps exactly its neighbours whose key is 
         const double reach = dim == 3 ? 0.18 : 0.12;
         const NeighbourGrid grid(set, reach);
         const PairOrder order(grid);
-        std::vector<double> ids(grid.points());
-        std::iota(ids.begin(), ids.end(), 0.0); // a = the point's index, to find it again
+        const std::vector<double> ids = point_indices(grid);
         ClusterCandidates cluster;
         Neighbours nb;
         std::size_t wrong = 0, taken = 0, ghosts = 0;
@@ -783,9 +794,7 @@ TEST_CASE("each pair once: a particle keeps exactly its neighbours whose key is 
                     wrong += cluster.key[static_cast<std::size_t>(nb.slot[j])] != order.keys[point];
                 }
                 for (std::size_t j = 0; j < grid.points(); ++j) {
-                    const double dx = grid.x()[j] - grid.x()[p], dy = grid.y()[j] - grid.y()[p],
-                                 dz = grid.z()[j] - grid.z()[p];
-                    const bool near = j != p && dx * dx + dy * dy + dz * dz <= reach * reach;
+                    const bool near = within(grid, j, p, reach);
                     const bool later = grid.visited(j) ? j > p : true;
                     wrong += kept[j] != (near && later ? 1 : 0);
                     taken += near && later && grid.visited(j), ghosts += near && !grid.visited(j);
