@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 namespace sphkern {
@@ -55,16 +56,42 @@ void add_self(Neighbours& nb, double mass)
     nb.a[s] = mass;
 }
 
-// Keeps the neighbours with r2 <= reach2, in their order, padded as the gather pads (mass 0).
-void keep_within(Neighbours& nb, double reach2)
+// Keeps the neighbours with r2 <= reach2, in their order, padded as the gather pads (mass 0);
+// with `slots`, each one's place in the gathered list (nb.slot) too, where a measure finds its
+// dx, dy, dz and b.
+void keep_within(Neighbours& nb, double reach2, bool slots)
 {
     std::size_t kept = 0;
     for (std::size_t j = 0; j < nb.count; ++j) { // written at `kept` whether kept or not: no branch to mispredict
-        const double r2 = nb.r2[j], r = nb.r[j], a = nb.a[j];
-        nb.r2[kept] = r2, nb.r[kept] = r, nb.a[kept] = a, kept += r2 <= reach2;
+        const double r2 = nb.r2[j], r = nb.r[j], a = nb.a[j], slot = nb.slot[j];
+        nb.r2[kept] = r2, nb.r[kept] = r, nb.a[kept] = a;
+        if (slots) nb.slot[kept] = slot;
+        kept += r2 <= reach2;
     }
     nb.count = kept;
     for (std::size_t j = kept; j < padded_count(kept); ++j) nb.r2[j] = nb.r[j] = nb.a[j] = 0;
+}
+
+// The measures' neighbours of a particle solved at h from its solve's list (r2, m_j in a, W
+// and W' at h in w and dw, itself last; dx, dy, dz and V_j in b at their places in the
+// gathered list, nb.slot): those inside h's search reach but itself, in their order, with
+// V_j in a and m_j in b as the measures read them, and the padding zero. A place is never
+// before the entry's own index, so the arrays are compacted in place.
+std::size_t measured_neighbours(Neighbours& nb, double reach2)
+{
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j + 1 < nb.count; ++j) { // written at `kept` whether kept or not
+        const auto from = static_cast<std::size_t>(nb.slot[j]);
+        const double mass = nb.a[j], volume = nb.b[from], w = nb.w[j], dw = nb.dw[j];
+        const double dx = nb.dx[from], dy = nb.dy[from], dz = nb.dz[from];
+        nb.dx[kept] = dx, nb.dy[kept] = dy, nb.dz[kept] = dz, nb.w[kept] = w, nb.dw[kept] = dw;
+        nb.a[kept] = volume, nb.b[kept] = mass;
+        kept += nb.r2[j] <= reach2;
+    }
+    for (std::size_t j = kept; j < padded_count(kept); ++j)
+        nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = nb.w[j] = nb.dw[j] = 0;
+    nb.count = kept;
+    return kept;
 }
 
 // How far a pass's solve got: the largest relative residual at the particles' last
@@ -80,7 +107,10 @@ struct NewtonStep {
     bool solved;
 };
 
-constexpr double first_allowance = 1.15, allowance = 1.1;
+// Each pass gathers the neighbours within the support of this many times a particle's h:
+// wider costs every particle's search and sums its margin to the power D, narrower sends more
+// particles to a second pass (the first pass's wider margin of 1.15 was slower: BENCHMARKS.md).
+constexpr double allowance = 1.1;
 // Below this relative residual a particle's list is cut to near_margin times its next h.
 constexpr double near_root = 5e-2, near_margin = 1.08;
 
@@ -91,13 +121,15 @@ constexpr double near_root = 5e-2, near_margin = 1.08;
 // whose step leaves it is taken up by the next pass, from where the step led. The neighbours
 // farther than an h's own search reach are left out of that h's sums (their mass counted as
 // zero), so each sum has the terms a search at that h would give (added in lanes: the last
-// bits are the list's, the same on any number of threads).
+// bits are the list's, the same on any number of threads). With a MeasureCollector, a particle
+// is measured as it is solved, over its neighbours within its h's reach, with the W and W' of
+// the evaluation that solved it.
 class DensityPass {
 public:
     DensityPass(const Kernel& kernel, const ParticleSet& set, std::span<const double> mass, double spacing,
-                double self_weight, int threads)
+                double self_weight, int threads, MeasureCollector* measures)
         : kernel_(kernel), set_(set), mass_(mass), spacing_(spacing), self_weight_(self_weight), threads_(threads),
-          steps_(set.size(), 0)
+          measures_(measures), steps_(set.size(), 0)
     {}
 
     // Newton steps for the particles whose `solving` is set; `step(m, h, rho, drho)` gives the NewtonStep of a particle
@@ -119,6 +151,7 @@ public:
             grid_reach_ = 1.1 * kernel_.support() * h_max;
             grid_.emplace(set_, grid_reach_, threads_);
             mass_points_ = grid_->gather(mass_);
+            if (measures_ && measures_->volumes_differ()) volume_points_ = grid_->gather(measures_->volumes());
         }
         const NeighbourGrid& grid = *grid_;
         const std::vector<double> h_points = grid.gather(h);
@@ -129,12 +162,13 @@ public:
             only[p] = grid.visited(p) && solving[grid.source(p)];
         }
         std::vector<PassProgress> per_thread(static_cast<std::size_t>(std::max(1, threads_)));
-        const PairPassInputs in{{reach.data(), 0}, mass_points_.data(), nullptr, true, "", only.data()};
+        const double* volumes = volume_points_.empty() ? nullptr : volume_points_.data();
+        const PairPassInputs in{{reach.data(), 0}, mass_points_.data(), volumes, true, "", only.data()};
         pair_pass(
             grid, set_.name, in, threads_,
             [&](int thread, std::size_t p, Neighbours& nb) {
                 const std::size_t i = grid.source(p);
-                const Outcome o = solve(nb, p, i, h_points[p], allowance * h_points[p], step);
+                const Outcome o = solve(thread, nb, p, i, h_points[p], allowance * h_points[p], step);
                 PassProgress& progress = per_thread[static_cast<std::size_t>(thread)];
                 progress.residual = std::max(progress.residual, o.residual);
                 progress.left += o.end == End::beyond, progress.unsettled += o.end == End::unsettled;
@@ -160,15 +194,25 @@ private:
     // Point p's (particle i's) Newton steps from h over its neighbours nb, while h stays at most
     // h_top; nb holds the neighbours within the support of h_top.
     template <class Step>
-    Outcome solve(Neighbours& nb, std::size_t p, std::size_t i, double h, double h_top, const Step& step) const
+    Outcome solve(int thread, Neighbours& nb, std::size_t p, std::size_t i, double h, double h_top,
+                  const Step& step) const
     {
         roots_of(nb.r2.data(), nb.r.data(), padded_count(nb.count));
+        if (measures_)
+            for (std::size_t j = 0; j < nb.count; ++j) nb.slot[j] = static_cast<double>(j);
         add_self(nb, self_weight_ * mass_points_[p]);
         bool cut = false;
         for (int taken = steps_[i];;) {
             const auto [rho, drho] = density_at(nb, i, h);
             const NewtonStep s = step(mass_points_[p], h, rho, drho);
-            if (s.solved) return {End::solved, h, s.residual, taken};
+            if (s.solved) {
+                if (measures_) { // W and W' are this h's where the kernel's k is the measures'
+                    const double reach = search_reach(kernel_.support() * h);
+                    measures_->measure(thread, i, h, measured_neighbours(nb, reach * reach), nb,
+                                       measures_->spacing() == spacing_);
+                }
+                return {End::solved, h, s.residual, taken};
+            }
             if (++taken == max_steps) return {End::unsettled, h, s.residual, taken};
             if (s.next > h_top) return {End::beyond, s.next, s.residual, taken}; // beyond the neighbours gathered
             // Near its root a particle's steps stay close: the neighbours beyond a margin of
@@ -176,7 +220,7 @@ private:
             if (!cut && s.residual < near_root && s.next * near_margin < h_top) {
                 h_top = s.next * near_margin, cut = true;
                 const double top_reach = search_reach(kernel_.support() * h_top);
-                keep_within(nb, top_reach * top_reach);
+                keep_within(nb, top_reach * top_reach, measures_ != nullptr);
             }
             h = s.next;
         }
@@ -206,16 +250,18 @@ private:
     std::span<const double> mass_;
     double spacing_, self_weight_;
     int threads_;
+    MeasureCollector* measures_;
     std::optional<NeighbourGrid> grid_;
     double grid_reach_ = 0;
-    std::vector<double> mass_points_;
-    std::vector<std::uint8_t> steps_; // Newton steps taken per particle
+    std::vector<double> mass_points_, volume_points_; // volumes: where a collector reads them per neighbour
+    std::vector<std::uint8_t> steps_;                 // Newton steps taken per particle
 };
 
 } // namespace
 
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
-                                      double mean_volume, int threads, bool by_number, double self_weight)
+                                      double mean_volume, int threads, bool by_number, double self_weight,
+                                      MeasureCollector* measures)
 {
     if (set.neighbours_only > 0)
         fail_input(
@@ -245,7 +291,9 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
     PerParticle h =
         PerParticle::of(fill_particle_values(n, threads, [&](std::size_t i) { return h_of(mass(i), mean_density); }));
     std::vector<std::uint8_t> solving(n, 1);
-    DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), self_weight, threads);
+    if (measures && measures->with_mass() && equal)
+        throw std::logic_error("density_smoothing_lengths: the measures' masses are not the solve's");
+    DensityPass densities(kernel, set, masses, std::pow(mean_volume, 1.0 / dim), self_weight, threads, measures);
     constexpr double tolerance = 1e-12;
     const auto step = [&](double m, double now, double rho, double drho) {
         const double fixed = h_of(m, rho), g = now - fixed;
@@ -254,11 +302,8 @@ PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& s
         return NewtonStep{slope > 0 && newton > 0.5 * now && newton < 2 * now ? newton : fixed, std::abs(g) / now,
                           false};
     };
-    // The first guess may be far off, a later pass's start is one Newton step from its h: the
-    // first pass gathers a wider margin of h (each pass's search costs its margin to the power D).
     for (int pass = 1;; ++pass) {
-        const PassProgress progress =
-            densities(std::span<double>(h.values.data(), n), solving, pass == 1 ? first_allowance : allowance, step);
+        const PassProgress progress = densities(std::span<double>(h.values.data(), n), solving, allowance, step);
         spdlog::debug("h from the SPH density: pass {}, largest relative residual {:.3g}, {} particles left", pass,
                       progress.residual, progress.left);
         if (progress.unsettled > 0)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "particles/particle_measures.hpp"
 #include "particles/particle_set.hpp"
 #include "particles/per_particle.hpp"
 
@@ -18,7 +19,10 @@ namespace sphkern {
 // neighbours-only particles is refused (their h is not the solve's). `self_weight` scales each
 // particle's own term m_i W(0, h_i) in rho_i: below 1 where a code subtracts a bias from it
 // (GADGET-4's WENDLAND_BIAS_CORRECTION).
+// With `measures`, each particle is measured as it is solved, from the neighbours its solve
+// gathered (no second search); the collector's masses must be the solve's where it has any.
 PerParticle density_smoothing_lengths(const Kernel& kernel, const ParticleSet& set, double coefficient,
-                                      double mean_volume, int threads, bool by_number = false, double self_weight = 1);
+                                      double mean_volume, int threads, bool by_number = false, double self_weight = 1,
+                                      MeasureCollector* measures = nullptr);
 
 } // namespace sphkern

@@ -1,5 +1,6 @@
 #include "particles/particle_analysis.hpp"
 
+#include "particles/density_smoothing.hpp"
 #include "support/error.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/parallel_for.hpp"
@@ -8,7 +9,9 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <numeric>
 #include <stdexcept>
 
@@ -163,6 +166,52 @@ const Summary& ParticlePoint::statistic(const std::string& name) const
     throw std::logic_error("no statistic " + name);
 }
 
+namespace {
+
+// Every particle's h by `spec` and the measures at it. Where h comes from the SPH density with
+// each particle's own h (and the measures' masses are the solve's), each particle is measured
+// inside the solve from the neighbours it gathered: one search, not two (phase "h" then holds
+// the sums too).
+std::pair<PerParticle, ParticleMeasures> h_and_measures(const Kernel& kernel, const ParticleSet& set,
+                                                        const SmoothingSpec& spec, const ParticleRequest& request,
+                                                        ParticleAnswer& answer, int threads)
+{
+    PhaseTimes& phases = answer.phases;
+    phases.restart();
+    MeasureInputs inputs{{},
+                         answer.volumes.view(),
+                         set.mass,
+                         answer.rho0,
+                         answer.spacing,
+                         request.depth,
+                         answer.gravity,
+                         request.threads,
+                         request.vectors,
+                         spec.pair};
+    const bool same_masses = set.mass.empty() || !spec.by_number; // counted by number, the solve's masses are equal
+    if (spec.rule == SmoothingRule::density && spec.pair == PairSmoothing::own && set.neighbours_only == 0 &&
+        same_masses) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
+        MeasureCollector collector(kernel, set, inputs, threads);
+        PerParticle h = density_smoothing_lengths(kernel, set, spec.value, answer.mean_volume, threads, spec.by_number,
+                                                  spec.self_weight, &collector);
+        phases.lap("h");
+        ParticleMeasures measures = collector.finish(); // its seconds: the solve's with the sums
+        measures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        measures.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+        return {std::move(h), std::move(measures)};
+    }
+    PerParticle h = smoothing_lengths(set, kernel, spec, answer.mean_volume, threads);
+    phases.lap("h");
+    inputs.h = h.view();
+    ParticleMeasures measures = measure_particles(kernel, set, inputs);
+    phases.merge(measures.phases);
+    return {std::move(h), std::move(measures)};
+}
+
+} // namespace
+
 ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, const ParticleRequest& request)
 {
     kernel.require_dimension(set.dimension, set.name);
@@ -182,13 +231,7 @@ ParticleAnswer analyse_particles(const Kernel& kernel, const ParticleSet& set, c
     const int dim = set.dimension;
     const double R = kernel.support(), unit = std::pow(answer.mean_volume, 1.0 / dim);
     for (std::size_t p = 0; p < specs.size(); ++p) {
-        phases.restart();
-        auto h = smoothing_lengths(set, kernel, specs[p], answer.mean_volume, threads);
-        phases.lap("h");
-        MeasureInputs inputs{h.view(),      answer.volumes.view(), set.mass,        answer.rho0,     answer.spacing,
-                             request.depth, answer.gravity,        request.threads, request.vectors, specs[p].pair};
-        auto measures = measure_particles(kernel, set, inputs);
-        phases.merge(measures.phases);
+        auto [h, measures] = h_and_measures(kernel, set, specs[p], request, answer, threads);
         phases.restart();
         ParticlePoint point = summarise_point(measures, request.histogram_bins);
         // A particle that sees no other has no SPH sums to judge: h is too small for the set.

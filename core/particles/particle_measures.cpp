@@ -62,6 +62,12 @@ struct PointInputs {
 };
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+} // namespace
+
+// The sums of one particle and where they go: shared by the measures' own pass and the
+// collector of another pass's (MeasureCollector), hence not in the file's anonymous namespace.
+namespace measures_detail {
+
 // One particle's results in sweep order, before they go to the particle's own (file) place.
 struct PointResult {
     MeasureRecord scalars;
@@ -115,69 +121,43 @@ private:
     std::size_t pairs_ = 0; // the neighbours of the particles flushed
 };
 
-struct Sweep {
+// One particle's measures from its neighbours at its own h, whichever pass gathered them.
+struct PointMeasure {
     const Kernel& kernel;
     const ParticleSet& set;
     const MeasureInputs& in;
-    const NeighbourGrid& grid;
-    // V, h and the support radius (with its edge) in point order: read in sweep order, not by
-    // the particles' own (file) order, which on a disordered set is random in memory. Where
-    // every particle has the same, nothing is gathered (8 bytes a point fewer for each), and a
-    // uniform V is not gathered per neighbour either (one compress fewer per eight candidates,
-    // on every lattice and Poisson set).
-    PointInputs volume, h, reach;
-    std::vector<double> mass; // in point order; empty: m_j = rho0 V_j
-    // The mean pair h (h per point): each neighbour's point comes in nb.b (a double holds it
-    // exactly), its mass is read from `mass` by it.
-    bool pair_mean = false;
-    // One fused pass per particle over its neighbours (kept by the pair pass from its
-    // cluster's shared candidates): r, q and 1 / r, W and W' in one kernel call, and every
-    // sum, over arrays that stay in L1.
-    void measure(std::size_t p, Neighbours& nb, ResultBlock& out) const
+    double uniform_volume; // V_j of every j where positive; else V_j in nb.a
+    bool with_mass;        // m_j in nb.b (else m_j = rho0 V_j)
+
+    // How a measure finds W and W': computed from dx, dy, dz (with the mean pair h, nb.r holding
+    // h_i / h_ij of each neighbour), or given in nb.w and nb.dw at h.
+    enum class KernelValues { computed, pair_mean, given };
+
+    // One fused pass over particle i's n neighbours in nb (dx, dy, dz, and a and b as above;
+    // padded with zeros): r, q and 1 / r, W and W' in one kernel call, and every sum, over
+    // arrays that stay in L1.
+    void measure(std::size_t i, double h, double v_i, double m_i, std::size_t n, Neighbours& nb, KernelValues values,
+                 ResultBlock& out) const
     {
-        const std::size_t i = grid.source(p);
         const int dim = set.dimension;
-        const double h = this->h.view()[p], k = h / in.spacing;
-        const std::size_t n = pair_mean ? keep_pair_supports(h, nb) : nb.count, padded = padded_count(n);
+        const double k = h / in.spacing;
+        const std::size_t padded = padded_count(n);
         distances(nb, padded, 1 / h);
-        if (pair_mean)
+        if (values == KernelValues::pair_mean)
             for (std::size_t j = 0; j < n; ++j) nb.q[j] *= nb.r[j];
-        kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
-        if (pair_mean) pair_kernel_in_units_of(nb, n);
+        if (values != KernelValues::given) kernel.w_dw_batch(nb.q.data(), nb.w.data(), nb.dw.data(), padded, dim, k);
+        if (values == KernelValues::pair_mean) pair_kernel_in_units_of(nb, n);
         double t[neighbour_sum_count];
-        neighbour_sums(nb, padded, volume.view().per_point ? 0.0 : volume.all, !mass.empty(), set.dimension == 3, t);
-        const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + volume.view()[p] * w0;
+        neighbour_sums(nb, padded, uniform_volume, with_mass, set.dimension == 3, t);
+        const double w0 = kernel.w(0, dim, k), s0_total = t[s0] + v_i * w0;
         const double m1[3] = {t[m1x], t[m1y], t[m1z]}, e1[3] = {t[e1x], t[e1y], t[e1z]};
         const double E[6] = {t[exx], t[eyy], t[ezz], t[exy], t[exz], t[eyz]};
-        const std::optional<double> sm_total =
-            mass.empty() ? std::nullopt : std::optional<double>(t[sm] + mass[p] * w0);
+        const std::optional<double> sm_total = with_mass ? std::optional<double>(t[sm] + m_i * w0) : std::nullopt;
         PointResult& r = out.next();
         r.i = static_cast<std::uint32_t>(i);
         store(n, h, s0_total, sm_total, m1, e1, E, r);
         if (!std::isfinite(r.scalars.e0) || !std::isfinite(r.scalars.eps_gradp) || !std::isfinite(r.eps_rho))
             fail_non_finite(r, nb, h);
-    }
-
-    // The neighbours inside the support R h_ij of their pair, h_ij = (h_i + h_j) / 2, moved to
-    // the front in their order, with m_j in nb.b and h_i / h_ij in nb.r; then the padding.
-    std::size_t keep_pair_supports(double h_i, Neighbours& nb) const
-    {
-        const bool volumes = volume.view().per_point != nullptr;
-        std::size_t kept = 0;
-        for (std::size_t j = 0; j < nb.count; ++j) {
-            const auto point = static_cast<std::size_t>(nb.b[j]);
-            const double h_ij = 0.5 * (h_i + h.per_point[point]), edge = search_reach(kernel.support() * h_ij);
-            if (nb.dx[j] * nb.dx[j] + nb.dy[j] * nb.dy[j] + nb.dz[j] * nb.dz[j] > edge * edge) continue;
-            nb.dx[kept] = nb.dx[j], nb.dy[kept] = nb.dy[j], nb.dz[kept] = nb.dz[j];
-            if (volumes) nb.a[kept] = nb.a[j];
-            nb.b[kept] = mass.empty() ? 0.0 : mass[point];
-            nb.r[kept] = h_i / h_ij;
-            ++kept;
-        }
-        for (std::size_t j = kept; j < padded_count(kept); ++j)
-            nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r[j] = 1;
-        nb.count = kept;
-        return kept;
     }
 
     // W(r, h_ij) and W'(r, h_ij) in the units of h_i that the sums and `store` use: times
@@ -231,6 +211,58 @@ struct Sweep {
     }
 };
 
+} // namespace measures_detail
+
+namespace {
+
+using namespace measures_detail;
+
+struct Sweep {
+    PointMeasure point;
+    const NeighbourGrid& grid;
+    // V, h and the support radius (with its edge) in point order: read in sweep order, not by
+    // the particles' own (file) order, which on a disordered set is random in memory. Where
+    // every particle has the same, nothing is gathered (8 bytes a point fewer for each), and a
+    // uniform V is not gathered per neighbour either (one compress fewer per eight candidates,
+    // on every lattice and Poisson set).
+    PointInputs volume, h, reach;
+    std::vector<double> mass; // in point order; empty: m_j = rho0 V_j
+    // The mean pair h (h per point): each neighbour's point comes in nb.b (a double holds it
+    // exactly), its mass is read from `mass` by it.
+    bool pair_mean = false;
+
+    void measure(std::size_t p, Neighbours& nb, ResultBlock& out) const
+    {
+        const double h = this->h.view()[p];
+        const std::size_t n = pair_mean ? keep_pair_supports(h, nb) : nb.count;
+        point.measure(grid.source(p), h, volume.view()[p], mass.empty() ? 0.0 : mass[p], n, nb,
+                      pair_mean ? PointMeasure::KernelValues::pair_mean : PointMeasure::KernelValues::computed, out);
+    }
+
+    // The neighbours inside the support R h_ij of their pair, h_ij = (h_i + h_j) / 2, moved to
+    // the front in their order, with m_j in nb.b and h_i / h_ij in nb.r; then the padding.
+    std::size_t keep_pair_supports(double h_i, Neighbours& nb) const
+    {
+        const bool volumes = volume.view().per_point != nullptr;
+        std::size_t kept = 0;
+        for (std::size_t j = 0; j < nb.count; ++j) {
+            const auto point = static_cast<std::size_t>(nb.b[j]);
+            const double h_ij = 0.5 * (h_i + h.per_point[point]),
+                         edge = search_reach(this->point.kernel.support() * h_ij);
+            if (nb.dx[j] * nb.dx[j] + nb.dy[j] * nb.dy[j] + nb.dz[j] * nb.dz[j] > edge * edge) continue;
+            nb.dx[kept] = nb.dx[j], nb.dy[kept] = nb.dy[j], nb.dz[kept] = nb.dz[j];
+            if (volumes) nb.a[kept] = nb.a[j];
+            nb.b[kept] = mass.empty() ? 0.0 : mass[point];
+            nb.r[kept] = h_i / h_ij;
+            ++kept;
+        }
+        for (std::size_t j = kept; j < padded_count(kept); ++j)
+            nb.dx[j] = nb.dy[j] = nb.dz[j] = nb.a[j] = nb.b[j] = 0, nb.r[j] = 1;
+        nb.count = kept;
+        return kept;
+    }
+};
+
 // The search reach of every particle's support radius R h, from h in point order (one for all
 // for one h); with the mean pair h, of R (h + h_max) / 2, the widest of its pairs.
 PointInputs reaches(const NeighbourGrid& grid, const PointInputs& h, double support, bool pair_mean, double h_max)
@@ -253,10 +285,11 @@ std::vector<double> point_numbers(const NeighbourGrid& grid)
     return numbers;
 }
 
-void check_inputs(const ParticleSet& set, const MeasureInputs& in)
+// `with_h`: the inputs carry every particle's h (a collector's particles bring their own).
+void check_inputs(const ParticleSet& set, const MeasureInputs& in, bool with_h = true)
 {
     const std::size_t n = set.size();
-    if (in.h.size() != n || in.volume.size() != n || (!in.mass.empty() && in.mass.size() != n))
+    if ((with_h && in.h.size() != n) || in.volume.size() != n || (!in.mass.empty() && in.mass.size() != n))
         fail_input(fmt::format("{}: smoothing lengths, volumes or masses missing for some particles", set.name));
     if (!std::isfinite(in.rho0) || in.rho0 <= 0)
         fail_input(fmt::format("the reference density {} is not positive", in.rho0));
@@ -288,11 +321,11 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     // One h for every particle makes every pair's h that h.
     const bool pair_mean = inputs.pair == PairSmoothing::mean && !h_points.per_point.empty();
     PointInputs reach_points = reaches(grid, h_points, kernel.support(), pair_mean, h_max);
-    const Sweep sweep{kernel,
-                      set,
-                      inputs,
+    PointInputs volume_points = PointInputs::of(grid, inputs.volume, find_uniform);
+    const double uniform_volume = volume_points.per_point.empty() ? volume_points.all : 0.0;
+    const Sweep sweep{{kernel, set, inputs, uniform_volume, !inputs.mass.empty()},
                       grid,
-                      PointInputs::of(grid, inputs.volume, find_uniform),
+                      std::move(volume_points),
                       std::move(h_points),
                       std::move(reach_points),
                       inputs.mass.empty() ? std::vector<double>() : grid.gather(inputs.mass),
@@ -327,6 +360,60 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
     phases.lap("sums");
     out.phases = phases;
     return out;
+}
+
+struct MeasureCollector::State {
+    const ParticleSet& set;
+    const MeasureInputs& in;
+    PointMeasure point;
+    std::vector<ResultBlock> results;
+    ParticleMeasures out;
+};
+
+MeasureCollector::MeasureCollector(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs,
+                                   int threads)
+{
+    check_inputs(set, inputs, false);
+    if (inputs.slab || inputs.pair == PairSmoothing::mean || set.neighbours_only > 0)
+        throw std::logic_error("MeasureCollector: each particle's own h over one array of particles only");
+    kernel.require_dimension(set.dimension, set.name);
+    const double uniform_volume = inputs.volume.is_uniform() ? inputs.volume.uniform : 0.0;
+    state_.reset(new State{set, inputs, {kernel, set, inputs, uniform_volume, !inputs.mass.empty()}, {}, {}});
+    ParticleMeasures& out = state_->out;
+    out.threads = worker_threads(threads);
+    state_->results.resize(static_cast<std::size_t>(out.threads));
+    out.scalars.resize(set.size());
+    if (!inputs.mass.empty()) out.eps_rho.resize(set.size());
+    if (inputs.vectors) out.e1.resize(set.size()), out.m1.resize(set.size()), out.E.resize(set.size());
+}
+
+MeasureCollector::~MeasureCollector() = default;
+
+bool MeasureCollector::volumes_differ() const { return !(state_->point.uniform_volume > 0); }
+
+std::span<const double> MeasureCollector::volumes() const { return state_->in.volume.values; }
+
+bool MeasureCollector::with_mass() const { return state_->point.with_mass; }
+
+double MeasureCollector::spacing() const { return state_->in.spacing; }
+
+void MeasureCollector::measure(int thread, std::size_t i, double h, std::size_t n, Neighbours& nb, bool kernel_values)
+{
+    State& s = *state_;
+    ResultBlock& block = s.results[static_cast<std::size_t>(thread)];
+    using Values = PointMeasure::KernelValues;
+    s.point.measure(i, h, s.in.volume[i], s.point.with_mass ? s.in.mass[i] : 0.0, n, nb,
+                    kernel_values ? Values::given : Values::computed, block);
+    if (block.full()) block.flush(s.out);
+}
+
+ParticleMeasures MeasureCollector::finish()
+{
+    for (ResultBlock& block : state_->results) {
+        block.flush(state_->out);
+        state_->out.pairs += block.pairs();
+    }
+    return std::move(state_->out);
 }
 
 } // namespace sphkern

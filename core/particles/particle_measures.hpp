@@ -5,6 +5,7 @@
 #pragma once
 
 #include "kernels/kernel.hpp"
+#include "particles/engine/neighbour_gather.hpp"
 #include "particles/engine/neighbour_grid.hpp"
 #include "particles/particle_set.hpp"
 #include "particles/per_particle.hpp"
@@ -13,6 +14,7 @@
 #include "support/process/phase_times.hpp"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -79,6 +81,36 @@ struct ParticleMeasures {
 // Throws Error(input) for two particles at one position (naming both ids) and a non-finite kernel value (the kernel's
 // fault code).
 ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs);
+
+// The measures taken inside a pass that gathers each particle's neighbours for itself (the
+// density solve, which measures a particle at the h it solved, from the neighbours it summed):
+// the same sums as measure_particles with each particle's own h (in the order of that pass's
+// list). Not for slabs or the mean pair h. One particle at a time, from any of the threads.
+class MeasureCollector {
+public:
+    // inputs.h is not read: each particle comes with its own.
+    MeasureCollector(const Kernel& kernel, const ParticleSet& set, const MeasureInputs& inputs, int threads);
+    ~MeasureCollector();
+    MeasureCollector(const MeasureCollector&) = delete;
+    MeasureCollector& operator=(const MeasureCollector&) = delete;
+
+    // V_j is read per neighbour (in nb.a) only where the volumes differ; m_j (in nb.b) only with masses.
+    bool volumes_differ() const;
+    std::span<const double> volumes() const; // every particle's V where they differ
+    bool with_mass() const;
+    // Particle i at h over the first n entries of nb: dx, dy, dz, V_j in nb.a where the volumes
+    // differ, m_j in nb.b with masses; padded with zeros to padded_count(n). With
+    // `kernel_values`, W and W' at h (the kernel's k from spacing()) are in nb.w and nb.dw,
+    // padded with zeros too, and are not computed again.
+    double spacing() const;
+    void measure(int thread, std::size_t i, double h, std::size_t n, Neighbours& nb, bool kernel_values = false);
+    // Every particle measured once: the measures, their pairs and threads.
+    ParticleMeasures finish();
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 // ||E||_F of the stored components.
 double frobenius_norm(const std::array<double, 6>& E, int dimension);
