@@ -18,7 +18,7 @@ Axis parse_axis(const std::string& text, const std::string& what)
                    " \"eta\" is the old name of sphkern's own h / V^(1/D); expected h_over_l (SWIFT's eta is a code's "
                    "setting: --code swift --eta)");
     if (text == "nh") return Axis::nh;
-    fail_input(what + " \"" + text + "\" is unknown, expected k, h_over_l or nh");
+    fail_unknown(what + " \"" + text + "\" is unknown, expected k, h_over_l or nh");
 }
 
 const char* axis_name(Axis axis) { return axis == Axis::k ? "k" : axis == Axis::eta ? "h_over_l" : "nh"; }

@@ -11,7 +11,8 @@ VolumeModel parse_volume_model(const std::string& name)
     if (name == "uniform") return VolumeModel::uniform;
     if (name == "file") return VolumeModel::file;
     if (name == "voronoi") return VolumeModel::voronoi;
-    throw Error(ExitCode::usage, "\"" + name + "\" is unknown, expected uniform, file or voronoi");
+    throw Error(ExitCode::usage, "\"" + name + "\" is unknown, expected uniform, file or voronoi",
+                ErrorKind::unknown_name);
 }
 
 const char* volume_model_name(VolumeModel model)

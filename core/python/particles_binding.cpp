@@ -117,7 +117,9 @@ ParticleArguments arguments_of(ParticleSet& set, const Kernel& kernel, const Giv
     a.smoothing.eta = number_of(h_over_l, "h_over_l"), a.smoothing.nh = number_of(nh, "nh");
     if (py::isinstance<py::str>(volume)) {
         const auto name = volume.cast<std::string>();
-        if (name != "uniform" && name != "voronoi") fail_input("volume: expected \"uniform\", \"voronoi\" or an array");
+        if (name != "uniform" && name != "voronoi")
+            fail_unknown("volume: \"" + one_line(name) +
+                         "\" is unknown, expected \"uniform\", \"voronoi\" or an array");
         a.volume = name;
     } else if (!volume.is_none()) {
         const auto volumes = per_particle(volume, set.size(), "volume");

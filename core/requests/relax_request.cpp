@@ -33,7 +33,7 @@ RelaxMethod relax_method_of(const std::string& name, const ValueSource& source)
 {
     if (name == "pressure") return RelaxMethod::pressure;
     if (name == "shift") return RelaxMethod::shift;
-    source.fail(fmt::format("\"{}\" is unknown, expected pressure or shift", name));
+    source.fail(fmt::format("\"{}\" is unknown, expected pressure or shift", name), ErrorKind::unknown_name);
 }
 
 void check_relax_settings(const RelaxSettings& s, const RelaxSources& sources)

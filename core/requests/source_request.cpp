@@ -63,7 +63,9 @@ ParticleSource particle_source_of(const SourceArguments& o, const SourceSources&
     if (source.kind != SourceKind::lattice && !o.cell.empty())
         refuse(sources.cell, " is the cell of a lattice block; " + o.spec + " is not a lattice");
     if (!o.cell.empty() && o.cell != "primitive" && o.cell != "rectangular")
-        refuse(sources.cell, ": \"" + o.cell + "\" is unknown, expected primitive or rectangular");
+        throw Error(sources.cell.code,
+                    sources.cell.name + ": \"" + o.cell + "\" is unknown, expected primitive or rectangular",
+                    ErrorKind::unknown_name);
     source.block.rectangular = o.cell == "rectangular";
     if (source.kind != SourceKind::poisson && o.count) refuse(sources.count, " is for poisson sets");
     if (source.kind == SourceKind::lattice) {

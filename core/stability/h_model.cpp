@@ -15,7 +15,8 @@ HModel parse_h_model(const std::string& text, const std::string& what)
     if (text == "fixed") return HModel::fixed;
     if (text == "adaptive") return HModel::adaptive;
     throw Error(ExitCode::usage,
-                fmt::format("{} \"{}\" is not a smoothing-length model, expected fixed or adaptive", what, text));
+                fmt::format("{} \"{}\" is not a smoothing-length model, expected fixed or adaptive", what, text),
+                ErrorKind::unknown_name);
 }
 
 HDerivatives h_derivatives(double q, double w, double wq, double wqq, double h, int dim)

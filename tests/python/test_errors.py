@@ -45,6 +45,29 @@ def test_an_unknown_name_is_a_lookup_error(call, cli):
     assert "did you mean" in str(caught.value) or "is unknown" in str(caught.value) or "no parameter" in str(caught.value)
 
 
+@pytest.mark.parametrize("call, cli", [
+    (lambda: sphkern.relax("cubic_bspline", "poisson", count=100, dim=2, method="jiggle"),
+     ["relax", "cubic_bspline", "poisson", "--count", "100", "--dim", "2", "--method", "jiggle"]),
+    (lambda: sphkern.relax("cubic_bspline", "fcc", size=[3, 3, 3], cell="cubic"),
+     ["relax", "cubic_bspline", "fcc", "--size", "3,3,3", "--cell", "cubic"]),
+    (lambda: sphkern.stability("cubic_bspline", "fcc", k=1.2, h_model="variable"),
+     ["stability", "cubic_bspline", "fcc", "--k", "1.2", "--h-model", "variable"]),
+    (lambda: sphkern.eps("cubic_bspline", "fcc", 1.2, axis="q"), ["eps", "cubic_bspline", "fcc", "--k", "1.2", "--axis", "q"]),
+    (lambda: sphkern.surface("cubic_bspline", "fcc", 1.2, form="gather"),
+     ["surface", "cubic_bspline", "fcc", "--k", "1.2", "--form", "gather"]),
+    (lambda: sphkern.particles("cubic_bspline", [[0.1, 0.2], [0.6, 0.7]], box=[1, 1], h_over_l=1.2, volume="cells"),
+     None),
+])
+def test_a_word_outside_a_settings_choices_is_an_unknown_name(call, cli):
+    """A word a setting does not know (a method, a cell, an h model, an axis, a form, a volume
+    model) is an UnknownName, as an unknown kernel is: a LookupError, and still a ValueError."""
+    with pytest.raises(sphkern.UnknownName, match="is unknown|is not a") as caught:
+        call()
+    assert isinstance(caught.value, LookupError) and isinstance(caught.value, ValueError)
+    if cli:
+        assert cli_exit(*cli) in (2, 3)
+
+
 @pytest.mark.parametrize("call", [
     lambda: sphkern.load_lattice("/nonexistent/lattice.json"),
     lambda: sphkern.eps("cubic_bspline", "/nonexistent/lattice.json", 1.0),

@@ -151,7 +151,7 @@ def test_masses_densities_and_a_stored_h_equal_the_command_line(tmp_path):
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "threads": 5000},
      "threads = 5000, expected 0 to 1024"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "volume": "cells"},
-     "volume: expected \"uniform\", \"voronoi\" or an array"),
+     "volume: \"cells\" is unknown, expected \"uniform\", \"voronoi\" or an array"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "h": 0.1 + 0.5j},
      "h: complex numbers; expected real numbers"),
     ({"positions": np.random.default_rng(1).uniform(0, 1, (50, 2)), "box": [1, 1], "masses": np.r_[1.0, -1.0, np.ones(48)]},
