@@ -98,11 +98,11 @@ public:
     bool volumes_differ() const;
     std::span<const double> volumes() const; // every particle's V where they differ
     bool with_mass() const;
+    double spacing() const; // d of the kernel's k = h / d in the measures
     // Particle i at h over the first n entries of nb: dx, dy, dz, V_j in nb.a where the volumes
     // differ, m_j in nb.b with masses; padded with zeros to padded_count(n). With
     // `kernel_values`, W and W' at h (the kernel's k from spacing()) are in nb.w and nb.dw,
     // padded with zeros too, and are not computed again.
-    double spacing() const;
     void measure(int thread, std::size_t i, double h, std::size_t n, Neighbours& nb, bool kernel_values = false);
     // Every particle measured once: the measures, their pairs and threads.
     ParticleMeasures finish();
