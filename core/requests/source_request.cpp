@@ -41,6 +41,12 @@ void file_source(const SourceArguments& o, const SourceSources& sources, Particl
     }
 }
 
+// The setting's name, then the problem ("--size cuts a lattice into a block; ...").
+[[noreturn]] void refuse(const ValueSource& setting, const std::string& problem, ErrorKind kind = ErrorKind::general)
+{
+    throw Error(setting.code, setting.name + problem, kind);
+}
+
 } // namespace
 
 ParticleSource particle_source_of(const SourceArguments& o, const SourceSources& sources)
@@ -55,17 +61,13 @@ ParticleSource particle_source_of(const SourceArguments& o, const SourceSources&
         fail_unknown(fmt::format("unknown source \"{}\"{}; expected poisson, a lattice ({}) or a particle file", o.spec,
                                  did_you_mean(o.spec, names), fmt::join(names.begin(), names.end() - 1, ", ")));
     }
-    const auto refuse = [](const ValueSource& setting, const std::string& problem) {
-        throw Error(setting.code, setting.name + problem);
-    };
     if (source.kind != SourceKind::lattice && !o.size.empty())
         refuse(sources.size, " cuts a lattice into a block; " + o.spec + " is not a lattice");
     if (source.kind != SourceKind::lattice && !o.cell.empty())
         refuse(sources.cell, " is the cell of a lattice block; " + o.spec + " is not a lattice");
     if (!o.cell.empty() && o.cell != "primitive" && o.cell != "rectangular")
-        throw Error(sources.cell.code,
-                    sources.cell.name + ": \"" + o.cell + "\" is unknown, expected primitive or rectangular",
-                    ErrorKind::unknown_name);
+        refuse(sources.cell, ": \"" + o.cell + "\" is unknown, expected primitive or rectangular",
+               ErrorKind::unknown_name);
     source.block.rectangular = o.cell == "rectangular";
     if (source.kind != SourceKind::poisson && o.count) refuse(sources.count, " is for poisson sets");
     if (source.kind == SourceKind::lattice) {
