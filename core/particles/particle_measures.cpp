@@ -363,9 +363,7 @@ ParticleMeasures measure_particles(const Kernel& kernel, const ParticleSet& set,
 }
 
 struct MeasureCollector::State {
-    const ParticleSet& set;
-    const MeasureInputs& in;
-    PointMeasure point;
+    PointMeasure point; // holds the set and the inputs
     std::vector<ResultBlock> results;
     ParticleMeasures out;
 };
@@ -378,7 +376,7 @@ MeasureCollector::MeasureCollector(const Kernel& kernel, const ParticleSet& set,
         throw std::logic_error("MeasureCollector: each particle's own h over one array of particles only");
     kernel.require_dimension(set.dimension, set.name);
     const double uniform_volume = inputs.volume.is_uniform() ? inputs.volume.uniform : 0.0;
-    state_.reset(new State{set, inputs, {kernel, set, inputs, uniform_volume, !inputs.mass.empty()}, {}, {}});
+    state_.reset(new State{{kernel, set, inputs, uniform_volume, !inputs.mass.empty()}, {}, {}});
     ParticleMeasures& out = state_->out;
     out.threads = worker_threads(threads);
     state_->results.resize(static_cast<std::size_t>(out.threads));
@@ -391,18 +389,18 @@ MeasureCollector::~MeasureCollector() = default;
 
 bool MeasureCollector::volumes_differ() const { return !(state_->point.uniform_volume > 0); }
 
-std::span<const double> MeasureCollector::volumes() const { return state_->in.volume.values; }
+std::span<const double> MeasureCollector::volumes() const { return state_->point.in.volume.values; }
 
 bool MeasureCollector::with_mass() const { return state_->point.with_mass; }
 
-double MeasureCollector::spacing() const { return state_->in.spacing; }
+double MeasureCollector::spacing() const { return state_->point.in.spacing; }
 
 void MeasureCollector::measure(int thread, std::size_t i, double h, std::size_t n, Neighbours& nb, bool kernel_values)
 {
     State& s = *state_;
     ResultBlock& block = s.results[static_cast<std::size_t>(thread)];
     using Values = PointMeasure::KernelValues;
-    s.point.measure(i, h, s.in.volume[i], s.point.with_mass ? s.in.mass[i] : 0.0, n, nb,
+    s.point.measure(i, h, s.point.in.volume[i], s.point.with_mass ? s.point.in.mass[i] : 0.0, n, nb,
                     kernel_values ? Values::given : Values::computed, block);
     if (block.full()) block.flush(s.out);
 }
