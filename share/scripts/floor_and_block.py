@@ -7,7 +7,7 @@ once) against this build's on one thread; and `block cubic_bspline fcc --k 1.2 -
 100,100,100 --periodic` as a whole process, this build and earlier ones alternating, five runs
 on every core and five on one thread, median wall time and peak resident set. Prints Markdown.
 Usage: share/scripts/floor_and_block.py BUILD [NAME=EARLIER_BUILD ...]
-  e.g. share/scripts/floor_and_block.py build dd93a0d=/tmp/dd93/build 5927bc9=/tmp/base/build"""
+  e.g. share/scripts/floor_and_block.py build dd93a0d=<dd93a0d's tree>/build b38e52e=<b38e52e's tree>/build"""
 import json
 import os
 import pathlib

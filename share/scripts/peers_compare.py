@@ -16,8 +16,8 @@ a run costs once the particles moved) and the best of three warm calls (wall and
 SPHEvaluator's neighbour search keeps each particle's list (LinkedListNNPS with cache=True;
 NeighborCache in pysph/base/nnps_base.pyx finds a particle's neighbours on its first request
 and keeps them until update()), so a warm call sums over stored lists and searches nothing.
-They are timed against
-sphkern's block sweep (density and pressure gradient, neighbour search included) and against
+They are timed against sphkern's block sweep (density and pressure gradient, neighbour search
+included) and against
 `sphkern particles` on the same positions written as CSV with h = k (its grid and sums
 phases, the sums' CPU time and the whole process), best of three, the three codes taking
 turns so that a shared machine's load falls on each alike. Checked: PySPH's density against
