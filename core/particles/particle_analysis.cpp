@@ -1,6 +1,5 @@
 #include "particles/particle_analysis.hpp"
 
-#include "particles/density_smoothing.hpp"
 #include "support/error.hpp"
 #include "support/process/first_touch.hpp"
 #include "support/process/parallel_for.hpp"
@@ -194,8 +193,7 @@ std::pair<PerParticle, ParticleMeasures> h_and_measures(const Kernel& kernel, co
         const auto t0 = std::chrono::steady_clock::now();
         const std::clock_t c0 = std::clock(); // the process's CPU time, every thread
         MeasureCollector collector(kernel, set, inputs, threads);
-        PerParticle h = density_smoothing_lengths(kernel, set, spec.value, answer.mean_volume, threads, spec.by_number,
-                                                  spec.self_weight, &collector);
+        PerParticle h = smoothing_lengths(set, kernel, spec, answer.mean_volume, threads, &collector);
         phases.lap("h");
         ParticleMeasures measures = collector.finish(); // its seconds: the solve's with the sums
         measures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -25,8 +25,10 @@ double eta_for_neighbour_number(double nh, double support, int dimension)
 }
 
 PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
-                              double mean_volume, int threads)
+                              double mean_volume, int threads, MeasureCollector* measures)
 {
+    if (measures && spec.rule != SmoothingRule::density)
+        throw std::logic_error("smoothing_lengths: only the density's solve measures the particles");
     const int dim = set.dimension;
     const double R = kernel.support();
     auto uniform = [&](double value) { return PerParticle::same(set.size(), value); };
@@ -39,7 +41,7 @@ PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, cons
         return uniform(spec.value * set.spacing);
     case SmoothingRule::density:
         return density_smoothing_lengths(kernel, set, spec.value, mean_volume, threads, spec.by_number,
-                                         spec.self_weight);
+                                         spec.self_weight, measures);
     case SmoothingRule::file: break;
     }
     const double x = spec.support_per_h > 0 ? spec.support_per_h : set.support_per_h;

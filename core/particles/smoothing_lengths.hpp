@@ -10,6 +10,8 @@
 
 namespace sphkern {
 
+class MeasureCollector; // particles/particle_measures.hpp
+
 // density: h_i = value (m_i / rho_i)^(1/D) with rho_i the SPH density at h_i (density_smoothing.hpp).
 enum class SmoothingRule { eta, nh, k, file, density };
 
@@ -34,8 +36,10 @@ double eta_for_neighbour_number(double nh, double support, int dimension);
 
 // h of every particle, filled on `threads` threads; `mean_volume` is V̄ of h = eta V̄^(1/D).
 // The spec as checked against the set by requests/smoothing_request.hpp (a k without a
-// lattice, a file h without a convention: std::logic_error).
+// lattice, a file h without a convention: std::logic_error). With `measures`, a rule that
+// solves h from the SPH density measures each particle as it solves it
+// (density_smoothing_lengths); the other rules do not take one.
 PerParticle smoothing_lengths(const ParticleSet& set, const Kernel& kernel, const SmoothingSpec& spec,
-                              double mean_volume, int threads = 1);
+                              double mean_volume, int threads = 1, MeasureCollector* measures = nullptr);
 
 } // namespace sphkern
